@@ -1,0 +1,181 @@
+// TetMesh: the manifold tetrahedral mesh every tetcut operation works on.
+//
+// Storage is index based and struct-of-arrays (style: geogram's cell_to_v / cell_to_cell):
+//   tet_verts_  #T by 4 vertex ids, positively oriented, face i opposite vertex i;
+//   tet_adj_    #T by 4 packed neighbour references (4 * tet + mirror face), kNoNeighbour on the
+//               boundary, so crossing a face also tells which face of the neighbour we entered by;
+//   vert_tet_   one incident live tet per vertex (the seed of every shell walk);
+//   vert_boundary_faces_  number of boundary faces around each vertex, so "is this vertex on the
+//               surface?" (paper 3.3, removability) is O(1).
+// Removed tets and vertices stay as tombstones on free lists until compact() renumbers.
+//
+// Boundary classification is O(1) for faces and vertices and O(edge shell) for edges; shells are
+// walked from vert_tet_ through the adjacency. Nothing here scans the mesh except compact(),
+// boundary_faces() (an enumeration of the whole surface) and the canonical hash.
+//
+// A TetMesh is obtained from build_mesh() (mesh_builder.hpp), which validates its input. After
+// that, mutation goes through replace_tets(), the one local primitive every operation uses.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tetcut/attributes.hpp"
+#include "tetcut/ids.hpp"
+#include "tetcut/raw_mesh.hpp"
+#include "tetcut/vec3.hpp"
+
+namespace tetcut {
+
+// Where each old id went in compact(): kNoTet / kNoVert for tombstones.
+struct Renumbering {
+  std::vector<TetId> tet_old_to_new;
+  std::vector<VertId> vert_old_to_new;
+};
+
+// Tets are addressed by 30 bits in packed neighbour references: about 1.07e9 tets at most.
+inline constexpr std::uint32_t kMaxTets = (1u << 30) - 1;
+
+class TetMesh {
+ public:
+  using TetVerts = std::array<VertId, 4>;
+
+  TetMesh() = default;
+
+  // ---- sizes ------------------------------------------------------------------------------
+  [[nodiscard]] std::uint32_t tet_capacity() const { return static_cast<std::uint32_t>(tet_verts_.size()); }
+  [[nodiscard]] std::uint32_t vertex_capacity() const { return static_cast<std::uint32_t>(positions_.size()); }
+  [[nodiscard]] std::uint32_t num_tets() const { return live_tets_; }
+  [[nodiscard]] std::uint32_t num_vertices() const { return live_vertices_; }
+  [[nodiscard]] bool is_live(TetId t) const { return t.value < tet_capacity() && tet_verts_[t.value][0] != kDeadTetMarker; }
+  [[nodiscard]] bool is_live(VertId v) const { return v.value < vertex_capacity() && vert_tet_[v.value].valid(); }
+
+  // ---- elements ---------------------------------------------------------------------------
+  [[nodiscard]] TetVerts tet(TetId t) const {
+    const auto& v = tet_verts_[t.value];
+    return {VertId{v[0]}, VertId{v[1]}, VertId{v[2]}, VertId{v[3]}};
+  }
+  [[nodiscard]] VertId vertex(TetId t, int local) const { return VertId{tet_verts_[t.value][local]}; }
+  [[nodiscard]] const Vec3& position(VertId v) const { return positions_[v.value]; }
+  // Local index (0..3) of v in t, or -1.
+  [[nodiscard]] int local_index(TetId t, VertId v) const;
+
+  // The neighbour across face `face` of t and the face of the neighbour we enter by; an invalid
+  // FaceRef on the boundary.
+  [[nodiscard]] FaceRef neighbour(TetId t, int face) const;
+  [[nodiscard]] TetId vertex_tet(VertId v) const { return vert_tet_[v.value]; }
+
+  // ---- boundary classification (paper 3.3 needs these in O(1)) ----------------------------
+  [[nodiscard]] bool is_boundary_face(TetId t, int face) const { return tet_adj_[t.value][face] == kNoNeighbour; }
+  [[nodiscard]] bool is_boundary_vertex(VertId v) const { return vert_boundary_faces_[v.value] != 0; }
+  [[nodiscard]] std::uint32_t boundary_face_count(VertId v) const { return vert_boundary_faces_[v.value]; }
+  [[nodiscard]] int boundary_face_count(TetId t) const;
+  // O(edge shell): walks around the edge until it closes or meets the boundary.
+  [[nodiscard]] bool is_boundary_edge(TetId t, int local_edge) const;
+
+  // ---- shells -----------------------------------------------------------------------------
+  // The tets around v, face-connected walk from vertex_tet(v). `out` is cleared first. Cost
+  // O(shell^2) in the worst case through a linear membership test, which beats hashing for the
+  // shells of a few dozen tets that real meshes have.
+  void vertex_shell(VertId v, std::vector<TetId>& out) const;
+  // The vertices joined to v by an edge, in shell order then first-seen order.
+  void vertex_neighbours(VertId v, std::vector<VertId>& out, std::vector<TetId>& shell_scratch) const;
+
+  // The tets around an edge, ordered by rotation about it. For a boundary edge the walk starts
+  // at a tet with a boundary face on the edge and ends at the other; returns true in that case.
+  bool edge_shell(TetId t, int local_edge, std::vector<TetId>& out) const;
+
+  // Every boundary face (an enumeration of the surface: O(#T)).
+  void boundary_faces(std::vector<FaceRef>& out) const;
+
+  // Area-weighted unit normal of the boundary surface at a boundary vertex (zero vector for an
+  // interior vertex). O(shell).
+  [[nodiscard]] Vec3 boundary_normal(VertId v) const;
+  Vec3 boundary_normal(VertId v, std::vector<TetId>& shell_scratch) const;
+
+  [[nodiscard]] double volume(TetId t) const;
+  [[nodiscard]] double total_volume() const;  // O(#T)
+
+  // ---- attributes -------------------------------------------------------------------------
+  VertexAttributes& attributes() { return attributes_; }
+  [[nodiscard]] const VertexAttributes& attributes() const { return attributes_; }
+
+  // ---- mutation ---------------------------------------------------------------------------
+  // A new vertex, not yet used by any tet (it becomes live when a tet references it); attribute
+  // channels are zero.
+  VertId add_vertex(const Vec3& p);
+  // A new vertex at (1 - t) * a + t * b with every attribute channel interpolated the same way
+  // (paper 3.2: texture and mechanical data follow the split).
+  VertId add_vertex_on_edge(VertId a, VertId b, double t);
+
+  // The one local mutation primitive: removes `removed` and inserts `added`, gluing the new tets
+  // to each other and to the faces the removed ones shared with the rest of the mesh (matched by
+  // vertex triple); every other face of a new tet is boundary. Adjacency, boundary counts and
+  // vertex-to-tet references are updated locally (cost O(#removed + #added) plus the shells
+  // needed to re-seed vertex_tet). A vertex left without tets is removed. Ids of new tets are
+  // appended to `created` (may reuse ids of removed tets).
+  //
+  // Preconditions (asserted in debug builds, the caller's plan guarantees them): removed tets
+  // are live and distinct, added tets are positively oriented over live or newly added
+  // vertices, and no face ends up shared by more than two tets.
+  void replace_tets(std::span<const TetId> removed, std::span<const TetVerts> added,
+                    std::vector<TetId>* created = nullptr);
+  void remove_tets(std::span<const TetId> removed) { replace_tets(removed, {}, nullptr); }
+
+  // Renumbers live tets and vertices densely, keeping their relative order; attributes follow.
+  Renumbering compact();
+
+  // ---- raw views, for the independent checker and writers ----------------------------------
+  // #capacity by 4; a tombstone has kDeadTetMarker in its first entry.
+  [[nodiscard]] std::span<const std::array<std::uint32_t, 4>> raw_tets() const { return tet_verts_; }
+  [[nodiscard]] std::span<const Vec3> positions() const { return positions_; }
+  // Live tets and live vertices, renumbered densely (vertices in id order).
+  [[nodiscard]] RawMesh to_raw() const;
+
+  // Memory held by the topology and positions, in bytes (capacity, not size).
+  [[nodiscard]] std::size_t memory_bytes() const;
+
+  static constexpr std::uint32_t kNoNeighbour = 0xFFFFFFFFu;
+
+ private:
+  friend class MeshAssembler;      // mesh_builder.cpp fills the arrays directly
+  friend struct TetMeshTestAccess;  // tests corrupt engine state to prove the checker sees it
+
+  static constexpr std::uint32_t pack(TetId t, int face) { return (t.value << 2) | static_cast<std::uint32_t>(face); }
+
+  TetId allocate_tet();
+  void free_tet(TetId t);
+  void free_vertex(VertId v);
+  // vert_tet_ value of a vertex whose seed tet is being removed inside replace_tets().
+  static constexpr TetId kReseed{0xFFFFFFFEu};
+
+  std::vector<std::array<std::uint32_t, 4>> tet_verts_;  // kDeadTetMarker in [0] when dead
+  std::vector<std::array<std::uint32_t, 4>> tet_adj_;
+  std::vector<Vec3> positions_;
+  std::vector<TetId> vert_tet_;
+  std::vector<std::uint32_t> vert_boundary_faces_;
+  VertexAttributes attributes_;
+
+  std::uint32_t live_tets_ = 0;
+  std::uint32_t live_vertices_ = 0;
+  // Free lists, threaded through tombstones: a dead tet keeps the next free id in
+  // tet_verts_[t][1]; a dead vertex in free_vert_next_.
+  TetId free_tet_head_ = kNoTet;
+  std::vector<VertId> free_vert_next_;
+  VertId free_vert_head_ = kNoVert;
+
+  // Scratch for replace_tets, reused so that steady-state operations do not allocate.
+  struct FaceSlot {
+    std::array<std::uint32_t, 3> key;  // sorted vertex ids
+    std::uint32_t ref;                 // packed (tet, face)
+    std::uint8_t is_outer;             // a face of the untouched mesh facing the cavity
+  };
+  std::vector<FaceSlot> scratch_faces_;
+  std::vector<VertId> scratch_verts_;
+  std::vector<std::uint32_t> tet_stamp_;
+  std::uint32_t stamp_ = 0;
+};
+
+}  // namespace tetcut

@@ -1,0 +1,425 @@
+#include "tetcut/mesh.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+#include "tetcut/local_tables.hpp"
+#include "tetcut/predicates.hpp"
+
+namespace tetcut {
+namespace {
+
+std::array<std::uint32_t, 3> sorted_face_key(const std::array<std::uint32_t, 4>& v, int face) {
+  std::array<std::uint32_t, 3> k = {v[kFaceVerts[face][0]], v[kFaceVerts[face][1]], v[kFaceVerts[face][2]]};
+  if (k[0] > k[1]) std::swap(k[0], k[1]);
+  if (k[1] > k[2]) std::swap(k[1], k[2]);
+  if (k[0] > k[1]) std::swap(k[0], k[1]);
+  return k;
+}
+
+bool contains(const std::vector<TetId>& tets, TetId t) {
+  return std::find(tets.begin(), tets.end(), t) != tets.end();
+}
+
+}  // namespace
+
+int TetMesh::local_index(TetId t, VertId v) const {
+  const auto& verts = tet_verts_[t.value];
+  for (int i = 0; i < 4; ++i)
+    if (verts[i] == v.value) return i;
+  return -1;
+}
+
+FaceRef TetMesh::neighbour(TetId t, int face) const {
+  const std::uint32_t adj = tet_adj_[t.value][face];
+  if (adj == kNoNeighbour) return {};
+  return {TetId{adj >> 2}, static_cast<std::uint8_t>(adj & 3u)};
+}
+
+int TetMesh::boundary_face_count(TetId t) const {
+  int n = 0;
+  for (std::uint32_t adj : tet_adj_[t.value]) n += adj == kNoNeighbour;
+  return n;
+}
+
+// Rotation about an edge (style: CGAL's next_around_edge). We enter a tet through one of the two
+// faces containing the edge; we leave through the other one.
+namespace {
+struct EdgeWalker {
+  const std::vector<std::array<std::uint32_t, 4>>& verts;
+  const std::vector<std::array<std::uint32_t, 4>>& adj;
+  std::uint32_t a, b;
+
+  // The face of t, other than `entered`, that contains edge (a, b).
+  int exit_face(std::uint32_t t, int entered) const {
+    int la = 0, lb = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (verts[t][i] == a) la = i;
+      if (verts[t][i] == b) lb = i;
+    }
+    const std::uint8_t e = kEdgeIndex[la][lb];
+    return kEdgeFaces[e][0] == entered ? kEdgeFaces[e][1] : kEdgeFaces[e][0];
+  }
+};
+}  // namespace
+
+bool TetMesh::is_boundary_edge(TetId t, int local_edge) const {
+  EdgeWalker walk{tet_verts_, tet_adj_, tet_verts_[t.value][kEdgeVerts[local_edge][0]],
+                  tet_verts_[t.value][kEdgeVerts[local_edge][1]]};
+  std::uint32_t cur = t.value;
+  int face = kEdgeFaces[local_edge][0];
+  // A manifold edge shell closes or ends; the bound only guards against corrupted adjacency.
+  for (std::uint32_t steps = 0; steps <= tet_capacity(); ++steps) {
+    const std::uint32_t adj = tet_adj_[cur][face];
+    if (adj == kNoNeighbour) return true;
+    cur = adj >> 2;
+    if (cur == t.value) return false;
+    face = walk.exit_face(cur, static_cast<int>(adj & 3u));
+  }
+  assert(false && "edge walk did not terminate: corrupted adjacency");
+  return true;
+}
+
+bool TetMesh::edge_shell(TetId t, int local_edge, std::vector<TetId>& out) const {
+  out.clear();
+  EdgeWalker walk{tet_verts_, tet_adj_, tet_verts_[t.value][kEdgeVerts[local_edge][0]],
+                  tet_verts_[t.value][kEdgeVerts[local_edge][1]]};
+  // First direction: out of face kEdgeFaces[e][1]; collected backwards, then reversed, so that
+  // the result reads from one end (boundary face) through t to the other.
+  std::uint32_t cur = t.value;
+  int face = kEdgeFaces[local_edge][1];
+  bool open = false;
+  for (std::uint32_t steps = 0; steps <= tet_capacity(); ++steps) {
+    const std::uint32_t adj = tet_adj_[cur][face];
+    if (adj == kNoNeighbour) {
+      open = true;
+      break;
+    }
+    cur = adj >> 2;
+    if (cur == t.value) break;
+    out.push_back(TetId{cur});
+    face = walk.exit_face(cur, static_cast<int>(adj & 3u));
+  }
+  if (!open) {
+    // Closed ring: t first, then the ring in the direction walked.
+    out.insert(out.begin(), t);
+    return false;
+  }
+  std::reverse(out.begin(), out.end());
+  out.push_back(t);
+  cur = t.value;
+  face = kEdgeFaces[local_edge][0];
+  for (std::uint32_t steps = 0; steps <= tet_capacity(); ++steps) {
+    const std::uint32_t adj = tet_adj_[cur][face];
+    if (adj == kNoNeighbour) break;
+    cur = adj >> 2;
+    out.push_back(TetId{cur});
+    face = walk.exit_face(cur, static_cast<int>(adj & 3u));
+  }
+  return true;
+}
+
+void TetMesh::vertex_shell(VertId v, std::vector<TetId>& out) const {
+  out.clear();
+  const TetId seed = vert_tet_[v.value];
+  if (!seed.valid()) return;
+  out.push_back(seed);
+  // Breadth-first through the faces that contain v: in a manifold mesh they connect the shell.
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const TetId cur = out[i];
+    const int lv = local_index(cur, v);
+    for (int f = 0; f < 4; ++f) {
+      if (f == lv) continue;
+      const std::uint32_t adj = tet_adj_[cur.value][f];
+      if (adj == kNoNeighbour) continue;
+      const TetId next{adj >> 2};
+      if (!contains(out, next)) out.push_back(next);
+    }
+  }
+}
+
+void TetMesh::vertex_neighbours(VertId v, std::vector<VertId>& out, std::vector<TetId>& shell_scratch) const {
+  vertex_shell(v, shell_scratch);
+  out.clear();
+  for (TetId t : shell_scratch)
+    for (std::uint32_t w : tet_verts_[t.value])
+      if (w != v.value && std::find(out.begin(), out.end(), VertId{w}) == out.end()) out.push_back(VertId{w});
+}
+
+void TetMesh::boundary_faces(std::vector<FaceRef>& out) const {
+  out.clear();
+  for (std::uint32_t t = 0; t < tet_capacity(); ++t) {
+    if (tet_verts_[t][0] == kDeadTetMarker) continue;
+    for (int f = 0; f < 4; ++f)
+      if (tet_adj_[t][f] == kNoNeighbour) out.push_back({TetId{t}, static_cast<std::uint8_t>(f)});
+  }
+}
+
+Vec3 TetMesh::boundary_normal(VertId v) const {
+  std::vector<TetId> shell;
+  return boundary_normal(v, shell);
+}
+
+Vec3 TetMesh::boundary_normal(VertId v, std::vector<TetId>& shell_scratch) const {
+  if (!is_live(v) || !is_boundary_vertex(v)) return {};
+  vertex_shell(v, shell_scratch);
+  Vec3 sum{};
+  for (TetId t : shell_scratch) {
+    const int lv = local_index(t, v);
+    const auto& verts = tet_verts_[t.value];
+    for (int f = 0; f < 4; ++f) {
+      if (f == lv || tet_adj_[t.value][f] != kNoNeighbour) continue;
+      const Vec3& p = positions_[verts[kFaceVerts[f][0]]];
+      const Vec3& q = positions_[verts[kFaceVerts[f][1]]];
+      const Vec3& r = positions_[verts[kFaceVerts[f][2]]];
+      sum = sum + cross(q - p, r - p);  // twice the area times the outward unit normal
+    }
+  }
+  const double len = norm(sum);
+  return len > 0.0 ? (1.0 / len) * sum : Vec3{};
+}
+
+double TetMesh::volume(TetId t) const {
+  const auto& v = tet_verts_[t.value];
+  return signed_volume(positions_[v[0]], positions_[v[1]], positions_[v[2]], positions_[v[3]]);
+}
+
+double TetMesh::total_volume() const {
+  double sum = 0.0;
+  for (std::uint32_t t = 0; t < tet_capacity(); ++t)
+    if (tet_verts_[t][0] != kDeadTetMarker) sum += volume(TetId{t});
+  return sum;
+}
+
+// ---- mutation -----------------------------------------------------------------------------
+
+VertId TetMesh::add_vertex(const Vec3& p) {
+  VertId v;
+  if (free_vert_head_.valid()) {
+    v = free_vert_head_;
+    free_vert_head_ = free_vert_next_[v.value];
+    free_vert_next_[v.value] = kNoVert;
+    positions_[v.value] = p;
+    for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
+      for (double& x : attributes_.value(c, v.value)) x = 0.0;
+  } else {
+    v = VertId{vertex_capacity()};
+    positions_.push_back(p);
+    vert_tet_.push_back(kNoTet);
+    vert_boundary_faces_.push_back(0);
+    free_vert_next_.push_back(kNoVert);
+    attributes_.resize(vertex_capacity());
+  }
+  return v;
+}
+
+VertId TetMesh::add_vertex_on_edge(VertId a, VertId b, double t) {
+  const Vec3 p = (1.0 - t) * positions_[a.value] + t * positions_[b.value];
+  const VertId v = add_vertex(p);
+  attributes_.interpolate(v.value, a.value, b.value, t);
+  return v;
+}
+
+TetId TetMesh::allocate_tet() {
+  if (free_tet_head_.valid()) {
+    const TetId t = free_tet_head_;
+    free_tet_head_ = TetId{tet_verts_[t.value][1]};
+    return t;
+  }
+  assert(tet_capacity() < kMaxTets);
+  tet_verts_.push_back({kDeadTetMarker, kDeadTetMarker, kDeadTetMarker, kDeadTetMarker});
+  tet_adj_.push_back({kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour});
+  return TetId{tet_capacity() - 1};
+}
+
+void TetMesh::free_tet(TetId t) {
+  tet_verts_[t.value] = {kDeadTetMarker, free_tet_head_.value, kDeadTetMarker, kDeadTetMarker};
+  tet_adj_[t.value] = {kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour};
+  free_tet_head_ = t;
+}
+
+void TetMesh::free_vertex(VertId v) {
+  assert(vert_boundary_faces_[v.value] == 0);
+  vert_tet_[v.value] = kNoTet;
+  free_vert_next_[v.value] = free_vert_head_;
+  free_vert_head_ = v;
+}
+
+void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVerts> added,
+                           std::vector<TetId>* created) {
+  // Stamp the removed tets so that "is this neighbour also going?" is O(1).
+  if (tet_stamp_.size() < tet_capacity()) tet_stamp_.resize(tet_capacity(), 0);
+  if (++stamp_ == 0) {
+    std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0);
+    stamp_ = 1;
+  }
+  for (TetId r : removed) {
+    assert(is_live(r));
+    tet_stamp_[r.value] = stamp_;
+  }
+
+  scratch_faces_.clear();
+  scratch_verts_.clear();
+
+  // 1. The cavity's outer faces; boundary faces that disappear; vertices losing their seed.
+  for (TetId r : removed) {
+    const auto verts = tet_verts_[r.value];
+    for (int f = 0; f < 4; ++f) {
+      const std::uint32_t adj = tet_adj_[r.value][f];
+      if (adj == kNoNeighbour) {
+        for (int k = 0; k < 3; ++k) --vert_boundary_faces_[verts[kFaceVerts[f][k]]];
+      } else if (tet_stamp_[adj >> 2] != stamp_) {
+        scratch_faces_.push_back({sorted_face_key(verts, f), adj, 1});
+      }
+    }
+    for (std::uint32_t v : verts) {
+      const TetId seed = vert_tet_[v];
+      if (seed.valid() && seed != kReseed && tet_stamp_[seed.value] == stamp_) {
+        vert_tet_[v] = kReseed;
+        scratch_verts_.push_back(VertId{v});
+      }
+    }
+  }
+  for (TetId r : removed) free_tet(r);
+
+  // 2. The new tets, unglued for now.
+  const std::size_t first_created = created ? created->size() : 0;
+  for (const TetVerts& tv : added) {
+    const TetId t = allocate_tet();
+    auto& verts = tet_verts_[t.value];
+    for (int i = 0; i < 4; ++i) verts[i] = tv[i].value;
+    tet_adj_[t.value] = {kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour};
+    for (int f = 0; f < 4; ++f) scratch_faces_.push_back({sorted_face_key(verts, f), pack(t, f), 0});
+    for (std::uint32_t v : verts) {
+      const TetId seed = vert_tet_[v];
+      if (seed == kReseed) {
+        vert_tet_[v] = t;
+      } else if (!seed.valid()) {  // a vertex made by add_vertex, used for the first time
+        vert_tet_[v] = t;
+        ++live_vertices_;
+      }
+    }
+    if (created) created->push_back(t);
+  }
+  (void)first_created;
+
+  // 3. Glue faces with equal vertex triples. Sorting (not hashing) keeps it deterministic and
+  // allocation-free once the scratch vector has grown.
+  std::sort(scratch_faces_.begin(), scratch_faces_.end(), [](const FaceSlot& x, const FaceSlot& y) {
+    if (x.key != y.key) return x.key < y.key;
+    if (x.is_outer != y.is_outer) return x.is_outer > y.is_outer;
+    return x.ref < y.ref;
+  });
+  for (std::size_t i = 0; i < scratch_faces_.size();) {
+    std::size_t j = i + 1;
+    while (j < scratch_faces_.size() && scratch_faces_[j].key == scratch_faces_[i].key) ++j;
+    assert(j - i <= 2 && "a face would be shared by more than two tets");
+    if (j - i == 2) {
+      const std::uint32_t x = scratch_faces_[i].ref, y = scratch_faces_[i + 1].ref;
+      tet_adj_[x >> 2][x & 3u] = y;
+      tet_adj_[y >> 2][y & 3u] = x;
+    } else {
+      // Unmatched: a new boundary face (an outer face of the cavity left uncovered, or a face of
+      // a new tet on the surface).
+      const FaceSlot& s = scratch_faces_[i];
+      if (s.is_outer) tet_adj_[s.ref >> 2][s.ref & 3u] = kNoNeighbour;
+      for (std::uint32_t v : s.key) ++vert_boundary_faces_[v];
+    }
+    i = j;
+  }
+
+  // 4. Vertices that lost their seed and got none from a new tet: any outer tet that contains
+  // them will do (in a manifold shell the remaining tets touch the removed ones through a face
+  // containing the vertex); none means the vertex has no tets left and goes too.
+  for (VertId v : scratch_verts_) {
+    if (vert_tet_[v.value] != kReseed) continue;
+    TetId seed = kNoTet;
+    for (const FaceSlot& s : scratch_faces_) {
+      if (!s.is_outer) continue;
+      if (s.key[0] == v.value || s.key[1] == v.value || s.key[2] == v.value) {
+        seed = TetId{s.ref >> 2};
+        break;
+      }
+    }
+    if (seed.valid()) {
+      vert_tet_[v.value] = seed;
+    } else {
+      free_vertex(v);
+      --live_vertices_;
+    }
+  }
+
+  live_tets_ = live_tets_ - static_cast<std::uint32_t>(removed.size()) + static_cast<std::uint32_t>(added.size());
+}
+
+Renumbering TetMesh::compact() {
+  Renumbering map;
+  map.tet_old_to_new.assign(tet_capacity(), kNoTet);
+  map.vert_old_to_new.assign(vertex_capacity(), kNoVert);
+  std::uint32_t nt = 0, nv = 0;
+  for (std::uint32_t t = 0; t < tet_capacity(); ++t)
+    if (tet_verts_[t][0] != kDeadTetMarker) map.tet_old_to_new[t] = TetId{nt++};
+  std::vector<std::uint32_t> vert_new_to_old;
+  vert_new_to_old.reserve(live_vertices_);
+  for (std::uint32_t v = 0; v < vertex_capacity(); ++v)
+    if (vert_tet_[v].valid()) {
+      map.vert_old_to_new[v] = VertId{nv++};
+      vert_new_to_old.push_back(v);
+    }
+
+  std::vector<std::array<std::uint32_t, 4>> verts(nt), adj(nt);
+  for (std::uint32_t t = 0; t < tet_capacity(); ++t) {
+    const TetId n = map.tet_old_to_new[t];
+    if (!n.valid()) continue;
+    for (int i = 0; i < 4; ++i) {
+      verts[n.value][i] = map.vert_old_to_new[tet_verts_[t][i]].value;
+      const std::uint32_t a = tet_adj_[t][i];
+      adj[n.value][i] = a == kNoNeighbour ? kNoNeighbour : pack(map.tet_old_to_new[a >> 2], static_cast<int>(a & 3u));
+    }
+  }
+  std::vector<Vec3> positions(nv);
+  std::vector<TetId> vert_tet(nv);
+  std::vector<std::uint32_t> boundary(nv);
+  for (std::uint32_t n = 0; n < nv; ++n) {
+    const std::uint32_t old = vert_new_to_old[n];
+    positions[n] = positions_[old];
+    vert_tet[n] = map.tet_old_to_new[vert_tet_[old].value];
+    boundary[n] = vert_boundary_faces_[old];
+  }
+  attributes_.permute(vert_new_to_old);
+
+  tet_verts_ = std::move(verts);
+  tet_adj_ = std::move(adj);
+  positions_ = std::move(positions);
+  vert_tet_ = std::move(vert_tet);
+  vert_boundary_faces_ = std::move(boundary);
+  free_vert_next_.assign(nv, kNoVert);
+  free_tet_head_ = kNoTet;
+  free_vert_head_ = kNoVert;
+  tet_stamp_.assign(nt, 0);
+  stamp_ = 0;
+  return map;
+}
+
+RawMesh TetMesh::to_raw() const {
+  RawMesh raw;
+  std::vector<std::uint32_t> new_id(vertex_capacity(), kDeadTetMarker);
+  raw.positions.reserve(live_vertices_);
+  for (std::uint32_t v = 0; v < vertex_capacity(); ++v)
+    if (vert_tet_[v].valid()) {
+      new_id[v] = static_cast<std::uint32_t>(raw.positions.size());
+      raw.positions.push_back(positions_[v]);
+    }
+  raw.tets.reserve(live_tets_);
+  for (const auto& t : tet_verts_)
+    if (t[0] != kDeadTetMarker) raw.tets.push_back({new_id[t[0]], new_id[t[1]], new_id[t[2]], new_id[t[3]]});
+  return raw;
+}
+
+std::size_t TetMesh::memory_bytes() const {
+  return tet_verts_.capacity() * sizeof(tet_verts_[0]) + tet_adj_.capacity() * sizeof(tet_adj_[0]) +
+         positions_.capacity() * sizeof(Vec3) + vert_tet_.capacity() * sizeof(TetId) +
+         vert_boundary_faces_.capacity() * sizeof(std::uint32_t) + free_vert_next_.capacity() * sizeof(VertId);
+}
+
+}  // namespace tetcut
