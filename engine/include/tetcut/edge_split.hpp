@@ -1,0 +1,80 @@
+// Splitting a set of edges at their midpoints (paper 3.2): one new vertex per edge, shared by
+// every tet around it, and every affected tet replaced by its template (split_templates.hpp).
+// Also the baseline the templates are measured against: sequential bisection, one edge at a
+// time across its whole shell.
+//
+// Both plan first and apply second (style: Mmg's split_3d): if any child would be inverted or
+// flat by the exact predicate, the split is refused with a reason and the mesh is untouched.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tetcut/change_log.hpp"
+#include "tetcut/ids.hpp"
+#include "tetcut/mesh.hpp"
+
+namespace tetcut {
+
+struct Edge {
+  VertId a, b;
+};
+
+enum class SplitRefusal : std::uint8_t {
+  kNone,
+  kNotAnEdge,        // the two vertices are not joined by an edge of the mesh
+  kDegenerateChild,  // a child would be inverted or flat (floating-point degeneracy)
+};
+
+const char* to_string(SplitRefusal refusal);
+
+struct SplitResult {
+  SplitRefusal refusal = SplitRefusal::kNone;
+  Edge offending{};                 // the edge involved when refused
+  std::uint32_t edges_split = 0;
+  std::uint32_t tets_removed = 0;
+  std::uint32_t tets_created = 0;
+  double min_radius_ratio = 1.0;    // worst child created (1 when none)
+
+  [[nodiscard]] bool ok() const { return refusal == SplitRefusal::kNone; }
+};
+
+enum class SplitMethod : std::uint8_t { kTemplates, kBisection };
+
+// Caller-owned scratch: reuse one across calls and nothing is allocated once it has grown.
+class EdgeSplitter {
+ public:
+  // Splits every edge of `edges` (duplicates and either orientation allowed). Created tets are
+  // appended to `created` (if given) and recorded in `log` (if given).
+  SplitResult split(TetMesh& mesh, std::span<const Edge> edges, SplitMethod method,
+                    std::vector<TetId>* created = nullptr, ChangeLog* log = nullptr);
+
+ private:
+  struct PlannedEdge {
+    std::uint32_t lo, hi;  // sorted vertex ids: the global order of the paper's rule
+    VertId midpoint;
+  };
+  struct AffectedTet {
+    TetId tet;
+    std::uint8_t mask;
+  };
+
+  SplitResult plan_and_apply(TetMesh& mesh, SplitMethod method, std::vector<TetId>* created, ChangeLog* log);
+  [[nodiscard]] int find_edge(std::uint32_t lo, std::uint32_t hi) const;
+  bool collect_shell(const TetMesh& mesh, const PlannedEdge& e);
+
+  std::vector<PlannedEdge> edges_;
+  std::vector<AffectedTet> affected_;
+  std::vector<std::uint32_t> affected_slot_;  // per tet id: index into affected_ + 1, or 0
+  std::vector<TetId> shell_;
+  std::vector<TetId> parents_;
+  std::vector<std::array<std::uint8_t, 4>> labels_;      // one tet's children, local labels
+  std::vector<std::array<std::uint8_t, 4>> all_labels_;  // every planned child
+  std::vector<TetMesh::TetVerts> children_;
+  std::vector<std::uint8_t> children_per_parent_;
+  std::vector<TetId> created_scratch_;
+};
+
+}  // namespace tetcut

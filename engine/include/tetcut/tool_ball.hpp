@@ -1,0 +1,22 @@
+// The cautery tool as the paper models it (3.1): a ball of given diameter at the tool's tip.
+#pragma once
+
+#include "tetcut/vec3.hpp"
+
+namespace tetcut {
+
+struct Ball {
+  Vec3 centre;
+  double radius = 0.0;
+};
+
+// Distance from p to the closed tetrahedron (a, b, c, d): 0 inside, else the distance to the
+// closest point on its boundary (closest point on each face triangle, Ericson's method).
+double distance_to_tet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+// Whether the ball and the closed tetrahedron share a point.
+inline bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return distance_to_tet(ball.centre, a, b, c, d) <= ball.radius;
+}
+
+}  // namespace tetcut

@@ -1,0 +1,210 @@
+#include "tetcut/edge_split.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+#include "tetcut/local_tables.hpp"
+#include "tetcut/predicates.hpp"
+#include "tetcut/quality.hpp"
+#include "tetcut/split_templates.hpp"
+
+namespace tetcut {
+namespace {
+
+// The midpoint exactly as TetMesh::add_vertex_on_edge(a, b, 0.5) will compute it, so that the
+// orientation checked while planning is the orientation applied.
+Vec3 midpoint(const Vec3& a, const Vec3& b) { return (1.0 - 0.5) * a + 0.5 * b; }
+
+using Labels = std::array<std::uint8_t, 4>;
+
+// Sequential bisection of one tet, restricted to it: each split edge in global order halves
+// every sub-tet containing it. Identical to bisecting edge after edge across whole shells, and
+// planned without touching the mesh.
+void bisect_locally(std::uint8_t mask, const std::array<std::uint32_t, 4>& ids, std::vector<Labels>& out) {
+  out.assign(1, Labels{0, 1, 2, 3});
+  std::array<int, 6> order{};
+  int n = 0;
+  for (int e = 0; e < 6; ++e)
+    if ((mask >> e) & 1) order[n++] = e;
+  auto key = [&](int e) { return std::minmax(ids[kEdgeVerts[e][0]], ids[kEdgeVerts[e][1]]); };
+  std::sort(order.begin(), order.begin() + n, [&](int x, int y) { return key(x) < key(y); });
+  for (int k = 0; k < n; ++k) {
+    const int e = order[k];
+    const std::uint8_t x = kEdgeVerts[e][0], y = kEdgeVerts[e][1], m = static_cast<std::uint8_t>(4 + e);
+    const std::size_t count = out.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      Labels t = out[i];
+      const auto px = std::find(t.begin(), t.end(), x), py = std::find(t.begin(), t.end(), y);
+      if (px == t.end() || py == t.end()) continue;
+      Labels with_x = t, with_y = t;
+      with_x[static_cast<std::size_t>(py - t.begin())] = m;  // keeps x: same orientation
+      with_y[static_cast<std::size_t>(px - t.begin())] = m;
+      out[i] = with_x;
+      out.push_back(with_y);
+    }
+  }
+}
+
+}  // namespace
+
+const char* to_string(SplitRefusal refusal) {
+  switch (refusal) {
+    case SplitRefusal::kNone: return "none";
+    case SplitRefusal::kNotAnEdge: return "the two vertices are not joined by an edge of the mesh";
+    case SplitRefusal::kDegenerateChild: return "a child tet would be inverted or flat";
+  }
+  return "unknown";
+}
+
+int EdgeSplitter::find_edge(std::uint32_t lo, std::uint32_t hi) const {
+  const auto it = std::lower_bound(edges_.begin(), edges_.end(), std::make_pair(lo, hi),
+                                   [](const PlannedEdge& e, const std::pair<std::uint32_t, std::uint32_t>& k) {
+                                     return std::make_pair(e.lo, e.hi) < k;
+                                   });
+  if (it == edges_.end() || it->lo != lo || it->hi != hi) return -1;
+  return static_cast<int>(it - edges_.begin());
+}
+
+// Adds the tets around edge e to affected_, with the edge's bit in their mask.
+bool EdgeSplitter::collect_shell(const TetMesh& mesh, const PlannedEdge& e) {
+  mesh.vertex_shell(VertId{e.lo}, shell_);
+  TetId start = kNoTet;
+  for (TetId t : shell_)
+    if (mesh.local_index(t, VertId{e.hi}) >= 0) {
+      start = t;
+      break;
+    }
+  if (!start.valid()) return false;
+  const int la = mesh.local_index(start, VertId{e.lo}), lb = mesh.local_index(start, VertId{e.hi});
+  mesh.edge_shell(start, kEdgeIndex[la][lb], shell_);
+  for (TetId t : shell_) {
+    std::uint32_t& slot = affected_slot_[t.value];
+    if (slot == 0) {
+      affected_.push_back({t, 0});
+      slot = static_cast<std::uint32_t>(affected_.size());
+    }
+    const int a = mesh.local_index(t, VertId{e.lo}), b = mesh.local_index(t, VertId{e.hi});
+    affected_[slot - 1].mask = static_cast<std::uint8_t>(affected_[slot - 1].mask | (1u << kEdgeIndex[a][b]));
+  }
+  return true;
+}
+
+SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, SplitMethod method,
+                                std::vector<TetId>* created, ChangeLog* log) {
+  SplitResult result;
+  edges_.clear();
+  for (const Edge& e : edges) {
+    if (e.a == e.b || !mesh.is_live(e.a) || !mesh.is_live(e.b)) {
+      result.refusal = SplitRefusal::kNotAnEdge;
+      result.offending = e;
+      return result;
+    }
+    edges_.push_back({std::min(e.a.value, e.b.value), std::max(e.a.value, e.b.value), kNoVert});
+  }
+  std::sort(edges_.begin(), edges_.end(),
+            [](const PlannedEdge& x, const PlannedEdge& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); });
+  edges_.erase(std::unique(edges_.begin(), edges_.end(),
+                           [](const PlannedEdge& x, const PlannedEdge& y) { return x.lo == y.lo && x.hi == y.hi; }),
+               edges_.end());
+
+  if (affected_slot_.size() < mesh.tet_capacity()) affected_slot_.resize(mesh.tet_capacity(), 0);
+  affected_.clear();
+  bool all_edges = true;
+  for (const PlannedEdge& e : edges_)
+    if (!collect_shell(mesh, e)) {
+      result.refusal = SplitRefusal::kNotAnEdge;
+      result.offending = {VertId{e.lo}, VertId{e.hi}};
+      all_edges = false;
+      break;
+    }
+  if (all_edges) result = plan_and_apply(mesh, method, created, log);
+  for (const AffectedTet& a : affected_) affected_slot_[a.tet.value] = 0;  // leave the scratch clean
+  return result;
+}
+
+// Plans the children of every affected tet in labels (0..3 corners, 4 + e midpoints), checks
+// them with the exact predicate, and only then mutates: midpoints first, then one
+// replace_tets() for all parents.
+SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std::vector<TetId>* created,
+                                         ChangeLog* log) {
+  SplitResult result;
+  all_labels_.clear();
+  children_per_parent_.clear();
+  for (const AffectedTet& a : affected_) {
+    const TetMesh::TetVerts v = mesh.tet(a.tet);
+    const std::array<std::uint32_t, 4> ids = {v[0].value, v[1].value, v[2].value, v[3].value};
+    Vec3 p[10];
+    for (int i = 0; i < 4; ++i) p[i] = mesh.position(v[i]);
+    for (int e = 0; e < 6; ++e) p[4 + e] = midpoint(p[kEdgeVerts[e][0]], p[kEdgeVerts[e][1]]);
+    if (method == SplitMethod::kTemplates) {
+      std::uint8_t diagonal = 0;
+      if (a.mask == 63) {  // 1:8, cut the central octahedron along its shortest diagonal
+        double best = 0.0;
+        for (std::uint8_t d = 0; d < 3; ++d) {
+          const Vec3 delta = p[4 + d] - p[4 + opposite_edge(d)];
+          const double len2 = dot(delta, delta);
+          if (d == 0 || len2 < best) {
+            best = len2;
+            diagonal = d;
+          }
+        }
+      }
+      const SplitTemplate& tpl = split_template(a.mask, vertex_order_index(ids), diagonal);
+      labels_.assign(tpl.children.begin(), tpl.children.begin() + tpl.count);
+    } else {
+      bisect_locally(a.mask, ids, labels_);
+    }
+    for (const Labels& c : labels_) {
+      if (orientation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]) <= 0) {
+        for (int e = 0; e < 6; ++e)
+          if ((a.mask >> e) & 1) result.offending = {v[kEdgeVerts[e][0]], v[kEdgeVerts[e][1]]};
+        result.refusal = SplitRefusal::kDegenerateChild;
+        return result;
+      }
+      result.min_radius_ratio = std::min(result.min_radius_ratio, radius_ratio(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
+      all_labels_.push_back(c);
+    }
+    children_per_parent_.push_back(static_cast<std::uint8_t>(labels_.size()));
+  }
+
+  // Apply. Midpoints in global edge order, so their ids do not depend on the input order.
+  for (PlannedEdge& e : edges_) {
+    e.midpoint = mesh.add_vertex_on_edge(VertId{e.lo}, VertId{e.hi}, 0.5);
+    if (log) log->vertices.push_back({e.midpoint, VertId{e.lo}, VertId{e.hi}, 0.5});
+  }
+  parents_.clear();
+  children_.clear();
+  std::size_t next = 0;
+  for (std::size_t k = 0; k < affected_.size(); ++k) {
+    const TetMesh::TetVerts v = mesh.tet(affected_[k].tet);
+    parents_.push_back(affected_[k].tet);
+    for (int c = 0; c < children_per_parent_[k]; ++c, ++next) {
+      TetMesh::TetVerts child;
+      for (int i = 0; i < 4; ++i) {
+        const std::uint8_t l = all_labels_[next][i];
+        if (l < 4) {
+          child[i] = v[l];
+        } else {
+          const VertId x = v[kEdgeVerts[l - 4][0]], y = v[kEdgeVerts[l - 4][1]];
+          child[i] = edges_[static_cast<std::size_t>(find_edge(std::min(x.value, y.value), std::max(x.value, y.value)))].midpoint;
+        }
+      }
+      children_.push_back(child);
+    }
+  }
+  created_scratch_.clear();
+  mesh.replace_tets(parents_, children_, &created_scratch_);
+  if (log) {
+    log->removed.insert(log->removed.end(), parents_.begin(), parents_.end());
+    std::size_t c = 0;
+    for (std::size_t k = 0; k < parents_.size(); ++k)
+      for (int i = 0; i < children_per_parent_[k]; ++i) log->created.push_back({created_scratch_[c++], parents_[k]});
+  }
+  if (created) created->insert(created->end(), created_scratch_.begin(), created_scratch_.end());
+  result.edges_split = static_cast<std::uint32_t>(edges_.size());
+  result.tets_removed = static_cast<std::uint32_t>(parents_.size());
+  result.tets_created = static_cast<std::uint32_t>(children_.size());
+  return result;
+}
+
+}  // namespace tetcut

@@ -1,0 +1,48 @@
+#include "tetcut/tool_ball.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tetcut/predicates.hpp"
+
+namespace tetcut {
+namespace {
+
+// Closest point to p on triangle (a, b, c), by Voronoi regions (Ericson, Real-Time Collision
+// Detection, 5.1.5).
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + (vb * denom) * ab + (vc * denom) * ac;
+}
+
+}  // namespace
+
+double distance_to_tet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  // Inside (or on) a positively oriented tet: p is on the inner side of all four faces. The
+  // exact predicate makes the answer for points on a face exact too.
+  const int s0 = orientation(p, b, c, d), s1 = orientation(a, p, c, d), s2 = orientation(a, b, p, d),
+            s3 = orientation(a, b, c, p);
+  if (s0 >= 0 && s1 >= 0 && s2 >= 0 && s3 >= 0) return 0.0;
+  const Vec3 q[4] = {closest_on_triangle(p, b, c, d), closest_on_triangle(p, a, c, d), closest_on_triangle(p, a, b, d),
+                     closest_on_triangle(p, a, b, c)};
+  double best = norm(q[0] - p);
+  for (int i = 1; i < 4; ++i) best = std::min(best, norm(q[i] - p));
+  return best;
+}
+
+}  // namespace tetcut

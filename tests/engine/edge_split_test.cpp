@@ -1,0 +1,297 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <map>
+#include <numeric>
+#include <set>
+#include <bit>
+#include <cmath>
+
+#include "checked.hpp"
+#include "test_meshes.hpp"
+#include "tetcut/canonical_hash.hpp"
+#include "tetcut/edge_split.hpp"
+#include "tetcut/local_tables.hpp"
+#include "tetcut/quality.hpp"
+#include "tetcut/random.hpp"
+#include "tetcut/split_templates.hpp"
+
+namespace tetcut {
+namespace {
+
+// A generic (irregular) positive tet whose local vertex i gets global id perm[i].
+RawMesh single_tet_with_ids(const std::array<std::uint32_t, 4>& perm) {
+  const Vec3 corner[4] = {{0.1, 0.05, 0.0}, {1.3, 0.1, 0.2}, {0.2, 1.1, 0.1}, {0.3, 0.2, 0.9}};
+  RawMesh raw;
+  raw.positions.resize(4);
+  for (int i = 0; i < 4; ++i) raw.positions[perm[i]] = corner[i];
+  raw.tets.push_back(perm);
+  return raw;
+}
+
+std::vector<Edge> edges_of_mask(const TetMesh& mesh, TetId t, int mask) {
+  std::vector<Edge> edges;
+  for (int e = 0; e < 6; ++e)
+    if ((mask >> e) & 1) edges.push_back({mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])});
+  return edges;
+}
+
+// The paper's ten configurations, named by the shape of the split edges.
+std::string configuration(int mask) {
+  const int n = std::popcount(static_cast<unsigned>(mask));
+  auto on_face = [&](int m) {
+    for (int f = 0; f < 4; ++f) {
+      bool all_on_face = true;
+      for (int e = 0; e < 6; ++e)
+        if ((m >> e) & 1) all_on_face = all_on_face && kEdgeVerts[e][0] != f && kEdgeVerts[e][1] != f;
+      if (all_on_face) return true;
+    }
+    return false;
+  };
+  auto around_vertex = [&](int m) {
+    for (int v = 0; v < 4; ++v) {
+      bool all = true;
+      for (int e = 0; e < 6; ++e)
+        if ((m >> e) & 1) all = all && (kEdgeVerts[e][0] == v || kEdgeVerts[e][1] == v);
+      if (all) return true;
+    }
+    return false;
+  };
+  switch (n) {
+    case 1: return "1 edge";
+    case 2: return on_face(mask) ? "2 edges on a face" : "2 opposite edges";
+    case 3: return on_face(mask) ? "3 edges on a face" : around_vertex(mask) ? "3 edges around a vertex" : "3 edges along a path";
+    case 4: {
+      const int missing = 63 & ~mask;
+      return on_face(missing) ? "4 edges, 2 unsplit on a face" : "4 edges, 2 unsplit opposite";
+    }
+    case 5: return "5 edges";
+    default: return "6 edges";
+  }
+}
+
+TEST(SplitTemplates, OrderIndexIsAPermutationRank) {
+  std::array<std::uint32_t, 4> ids = {10, 20, 30, 40};
+  std::vector<int> seen(24, 0);
+  do ++seen[vertex_order_index(ids)];
+  while (std::next_permutation(ids.begin(), ids.end()));
+  for (int count : seen) EXPECT_EQ(count, 1);
+}
+
+// Issue 4: every subset of the 6 edges under every ordering of the vertex ids gives a valid
+// mesh with the configuration's tet count and the parent's volume.
+TEST(EdgeSplit, EverySubsetUnderEveryVertexOrderIsValidAndKeepsVolume) {
+  std::map<std::string, std::set<std::uint32_t>> counts;
+  for (SplitMethod method : {SplitMethod::kTemplates, SplitMethod::kBisection}) {
+    for (int mask = 1; mask < 64; ++mask) {
+      std::array<std::uint32_t, 4> perm = {0, 1, 2, 3};
+      do {
+        TetMesh mesh = testing::build_or_fail(single_tet_with_ids(perm));
+        const double volume = mesh.total_volume();
+        EdgeSplitter splitter;
+        const SplitResult r = splitter.split(mesh, edges_of_mask(mesh, TetId{0}, mask), method);
+        ASSERT_TRUE(r.ok()) << to_string(r.refusal);
+        ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kExact)) << "mask " << mask;
+        EXPECT_NEAR(mesh.total_volume(), volume, 1e-12 * volume) << "mask " << mask;
+        EXPECT_EQ(r.edges_split, static_cast<std::uint32_t>(std::popcount(static_cast<unsigned>(mask))));
+        EXPECT_EQ(mesh.num_vertices(), 4 + r.edges_split);
+        if (method == SplitMethod::kTemplates) {
+          const SplitTemplate& tpl = split_template(static_cast<std::uint8_t>(mask), vertex_order_index(perm));
+          EXPECT_EQ(r.tets_created, tpl.count);
+          counts[configuration(mask)].insert(r.tets_created);
+        }
+      } while (std::next_permutation(perm.begin(), perm.end()));
+    }
+  }
+  // The paper's ten configurations and their tet counts.
+  const std::map<std::string, std::set<std::uint32_t>> expected = {
+      {"1 edge", {2}},
+      {"2 edges on a face", {3}},
+      {"2 opposite edges", {4}},
+      {"3 edges on a face", {4}},
+      {"3 edges around a vertex", {4}},
+      {"3 edges along a path", {4, 5}},
+      {"4 edges, 2 unsplit on a face", {5, 6}},
+      {"4 edges, 2 unsplit opposite", {6}},
+      {"5 edges", {7}},
+      {"6 edges", {8}},
+  };
+  EXPECT_EQ(counts, expected);
+}
+
+// Two tets sharing a face, each with its own subset of split edges: the shared face must be
+// triangulated alike from both sides (no crack: the boundary area stays that of the pair).
+TEST(EdgeSplit, NeighboursWithDifferentSubsetsStayConformal) {
+  const RawMesh pair{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.9, 0.8, 0.7}}, {{0, 1, 2, 3}, {1, 2, 3, 4}}};
+  // The second tet's orientation: make it positive whatever the coordinates.
+  RawMesh raw = pair;
+  BuildResult built = build_mesh(raw, {.reorient_inverted = true});
+  ASSERT_TRUE(built.ok());
+  const RawMesh base = built.mesh->to_raw();
+  auto boundary_area = [](const TetMesh& m) {
+    std::vector<FaceRef> faces;
+    m.boundary_faces(faces);
+    double area = 0;
+    for (const FaceRef& f : faces) {
+      const Vec3 a = m.position(m.vertex(f.tet, kFaceVerts[f.face][0])), b = m.position(m.vertex(f.tet, kFaceVerts[f.face][1])),
+                 c = m.position(m.vertex(f.tet, kFaceVerts[f.face][2]));
+      area += 0.5 * norm(cross(b - a, c - a));
+    }
+    return area;
+  };
+  for (int mask0 = 1; mask0 < 64; ++mask0)
+    for (int mask1 = 0; mask1 < 64; mask1 += 7) {
+      TetMesh mesh = testing::build_or_fail(base);
+      const double area = boundary_area(mesh);
+      std::vector<Edge> edges = edges_of_mask(mesh, TetId{0}, mask0);
+      const std::vector<Edge> more = edges_of_mask(mesh, TetId{1}, mask1);
+      edges.insert(edges.end(), more.begin(), more.end());
+      EdgeSplitter splitter;
+      ASSERT_TRUE(splitter.split(mesh, edges, SplitMethod::kTemplates).ok());
+      ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kExact)) << mask0 << " " << mask1;
+      ASSERT_NEAR(boundary_area(mesh), area, 1e-12) << mask0 << " " << mask1;
+    }
+}
+
+TEST(EdgeSplit, UniformRefinementGivesEightTimesTheTets) {
+  for (SplitMethod method : {SplitMethod::kTemplates, SplitMethod::kBisection}) {
+    TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 2, 2));
+    const std::uint32_t tets = mesh.num_tets();
+    const double volume = mesh.total_volume();
+    std::vector<Edge> all;
+    for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
+      for (int e = 0; e < 6; ++e) all.push_back({mesh.vertex(TetId{t}, kEdgeVerts[e][0]), mesh.vertex(TetId{t}, kEdgeVerts[e][1])});
+    EdgeSplitter splitter;
+    ChangeLog log;
+    const SplitResult r = splitter.split(mesh, all, method, nullptr, &log);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(mesh.num_tets(), 8 * tets);
+    EXPECT_EQ(log.removed.size(), tets);
+    EXPECT_EQ(log.created.size(), 8u * tets);
+    EXPECT_EQ(log.vertices.size(), r.edges_split);
+    EXPECT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kExact, volume));
+  }
+}
+
+TEST(EdgeSplit, RandomEdgeSetsKeepTheMeshValidAfterEverySplit) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
+  const double volume = mesh.total_volume();
+  SplitMix64 rng(2024);
+  EdgeSplitter splitter;
+  for (int round = 0; round < 25; ++round) {
+    std::vector<Edge> edges;
+    const int n = 1 + static_cast<int>(rng.below(12));
+    while (static_cast<int>(edges.size()) < n) {
+      const TetId t{rng.below(mesh.tet_capacity())};
+      if (!mesh.is_live(t)) continue;
+      const int e = static_cast<int>(rng.below(6));
+      edges.push_back({mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])});
+    }
+    invariants::LocalChecker local(mesh);
+    ChangeLog log;
+    ASSERT_TRUE(splitter.split(mesh, edges, round % 2 ? SplitMethod::kBisection : SplitMethod::kTemplates, nullptr, &log).ok());
+    std::vector<TetId> created;
+    for (const CreatedTet& c : log.created) created.push_back(c.tet);
+    EXPECT_TRUE(local.after_operation(mesh, log.removed, created, {.level = invariants::CheckLevel::kLocal}, 0.0).ok());
+    ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kFull, volume)) << "round " << round;
+  }
+}
+
+TEST(EdgeSplit, ChildrenRememberTheirParentAndMidpointsTheirEdge) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(1, 1, 1));
+  const Edge e{mesh.vertex(TetId{0}, 0), mesh.vertex(TetId{0}, 1)};
+  std::vector<TetId> shell;
+  mesh.edge_shell(TetId{0}, 0, shell);
+  std::vector<TetId> parents = shell;
+  std::sort(parents.begin(), parents.end());
+  EdgeSplitter splitter;
+  ChangeLog log;
+  ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&e, 1), SplitMethod::kTemplates, nullptr, &log).ok());
+  ASSERT_EQ(log.vertices.size(), 1u);
+  EXPECT_EQ(mesh.position(log.vertices[0].vertex), 0.5 * (mesh.position(e.a) + mesh.position(e.b)));
+  EXPECT_EQ(log.created.size(), 2 * shell.size());
+  std::map<std::uint32_t, int> children_per_parent;
+  for (const CreatedTet& c : log.created) ++children_per_parent[c.parent.value];
+  for (TetId p : parents) EXPECT_EQ(children_per_parent[p.value], 2);
+}
+
+TEST(EdgeSplit, RefusesANonEdgeAndADegenerateChildLeavingTheMeshUntouched) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  const std::uint64_t before = mesh.num_tets();
+  EdgeSplitter splitter;
+  const Edge not_an_edge{VertId{0}, VertId{26}};  // opposite corners of the box
+  const SplitResult r = splitter.split(mesh, std::span<const Edge>(&not_an_edge, 1), SplitMethod::kTemplates);
+  EXPECT_EQ(r.refusal, SplitRefusal::kNotAnEdge);
+  EXPECT_EQ(mesh.num_tets(), before);
+
+  // Nearly flat tets: the rounded midpoints of their edges can fall on or across a face plane,
+  // so some splits must be refused, and a refused split must leave no trace.
+  SplitMix64 rng(99);
+  const Vec3 a{0.1, 0.2, 0.3}, b{1.7, 0.9, 0.35}, c{0.4, 1.3, 0.8};
+  const Vec3 normal = cross(b - a, c - a);
+  int refused = 0, accepted = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const double s = rng.unit(), t = rng.unit() * (1 - s);
+    const Vec3 d = a + s * (b - a) + t * (c - a) + (1e-17 * (1 + rng.unit())) * normal;
+    BuildResult built = build_mesh({{a, b, c, d}, {{0, 1, 2, 3}}}, {.reorient_inverted = true});
+    if (!built.ok()) continue;  // flat after all
+    TetMesh& thin = *built.mesh;
+    const std::uint64_t hash = canonical_hash(thin);
+    const int e = static_cast<int>(rng.below(6));
+    const Edge edge{thin.vertex(TetId{0}, kEdgeVerts[e][0]), thin.vertex(TetId{0}, kEdgeVerts[e][1])};
+    const SplitResult r = splitter.split(thin, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates);
+    if (r.refusal == SplitRefusal::kDegenerateChild) {
+      ++refused;
+      EXPECT_EQ(canonical_hash(thin), hash);
+      EXPECT_EQ(thin.num_tets(), 1u);
+      EXPECT_EQ(thin.vertex_capacity(), 4u) << "no midpoint was added";
+    } else {
+      ASSERT_TRUE(r.ok());
+      ++accepted;
+      EXPECT_TRUE(testing::mesh_is_valid(thin));
+    }
+  }
+  EXPECT_GT(refused, 0);
+  EXPECT_GT(accepted, 0);
+}
+
+// Issue 4's table: the worst radius ratio of the children relative to their parent's, for each
+// configuration, templates against bisection, over all vertex orders of a regular tet.
+TEST(EdgeSplit, QualityTableTemplatesAgainstBisection) {
+  const double s = 1.0 / std::sqrt(2.0);
+  const Vec3 regular[4] = {{1, 0, -s}, {-1, 0, -s}, {0, 1, s}, {0, -1, s}};
+  std::map<std::string, std::pair<double, double>> worst;  // configuration -> (templates, bisection)
+  for (int mask = 1; mask < 64; ++mask) {
+    std::array<std::uint32_t, 4> perm = {0, 1, 2, 3};
+    do {
+      for (SplitMethod method : {SplitMethod::kTemplates, SplitMethod::kBisection}) {
+        RawMesh raw;
+        raw.positions.resize(4);
+        for (int i = 0; i < 4; ++i) raw.positions[perm[i]] = regular[i];
+        raw.tets.push_back(perm);
+        BuildResult built = build_mesh(raw, {.reorient_inverted = true});
+        ASSERT_TRUE(built.ok());
+        TetMesh& mesh = *built.mesh;
+        const double parent = radius_ratio(regular[0], regular[1], regular[2], regular[3]);
+        EdgeSplitter splitter;
+        const SplitResult r = splitter.split(mesh, edges_of_mask(mesh, TetId{0}, mask), method);
+        ASSERT_TRUE(r.ok());
+        auto& slot = worst.try_emplace(configuration(mask), 1.0, 1.0).first->second;
+        double& w = method == SplitMethod::kTemplates ? slot.first : slot.second;
+        w = std::min(w, r.min_radius_ratio / parent);
+      }
+    } while (std::next_permutation(perm.begin(), perm.end()));
+  }
+  std::printf("%-30s %10s %10s\n", "configuration", "templates", "bisection");
+  for (const auto& [name, w] : worst) {
+    std::printf("%-30s %10.3f %10.3f\n", name.c_str(), w.first, w.second);
+    EXPECT_GT(w.first, 0.1) << name;
+  }
+  // The red 1:8 split along the shortest diagonal beats repeated bisection.
+  EXPECT_GT(worst["6 edges"].first, worst["6 edges"].second);
+}
+
+}  // namespace
+}  // namespace tetcut

@@ -1,0 +1,113 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "checked.hpp"
+#include "test_meshes.hpp"
+#include "tetcut/local_tables.hpp"
+#include "tetcut/refine.hpp"
+
+namespace tetcut {
+namespace {
+
+// The tets whose centroid lies within `radius` of `centre`: a stand-in for the tool query.
+std::vector<TetId> tets_near(const TetMesh& mesh, Vec3 centre, double radius) {
+  std::vector<TetId> out;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    if (!mesh.is_live(TetId{t})) continue;
+    Vec3 c{};
+    for (VertId v : mesh.tet(TetId{t})) c = c + 0.25 * mesh.position(v);
+    if (norm(c - centre) <= radius) out.push_back(TetId{t});
+  }
+  return out;
+}
+
+double longest_edge(const TetMesh& mesh, std::span<const TetId> tets) {
+  double longest = 0;
+  for (TetId t : tets)
+    for (int e = 0; e < 6; ++e)
+      longest = std::max(longest, norm(mesh.position(mesh.vertex(t, kEdgeVerts[e][1])) - mesh.position(mesh.vertex(t, kEdgeVerts[e][0]))));
+  return longest;
+}
+
+TEST(Refine, ParametersAreValidated) {
+  EXPECT_TRUE(validate({.d_ref = 0.1}) == std::nullopt);
+  EXPECT_TRUE(validate({.d_ref = 0.0}).has_value());
+  EXPECT_TRUE(validate({.d_ref = -1.0}).has_value());
+  EXPECT_TRUE(validate({.d_ref = std::numeric_limits<double>::quiet_NaN()}).has_value());
+  EXPECT_TRUE(validate({.d_ref = 0.1, .p = 1.0}).has_value());
+  EXPECT_TRUE(validate({.d_ref = 0.1, .p = std::numeric_limits<double>::infinity()}).has_value());
+  EXPECT_TRUE(validate({.d_ref = 0.1, .max_iterations = 0}).has_value());
+}
+
+TEST(Refine, RefinesUntilEveryEdgeOfTheNewTetsIsShorterThanDref) {
+  for (SplitMethod method : {SplitMethod::kTemplates, SplitMethod::kBisection}) {
+    TetMesh mesh = testing::build_or_fail(make_box_mesh(4, 4, 4));
+    const double volume = mesh.total_volume();
+    const std::vector<TetId> hit = tets_near(mesh, {0.5, 0.5, 0.5}, 0.2);
+    ASSERT_FALSE(hit.empty());
+    Refiner refiner;
+    std::vector<TetId> region;
+    ChangeLog log;
+    const RefineParams params{.d_ref = 0.1, .p = 1.5, .max_iterations = 10, .method = method, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}};
+    const RefineReport r = refiner.refine(mesh, hit, params, region, &log);
+    EXPECT_TRUE(r.converged);
+    EXPECT_GE(r.iterations, 2u) << "edges of 0.25 to 0.43 need two halvings to get under 0.1";
+    EXPECT_LE(r.iterations, 6u);
+    EXPECT_GT(r.tets_created, 0u);
+    EXPECT_GT(r.min_radius_ratio, 0.0);
+    EXPECT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kFull, volume));
+    // Every live tet of the region that meets the tool is short; the region holds only live tets.
+    std::vector<TetId> in_tool;
+    for (TetId t : region) {
+      EXPECT_TRUE(mesh.is_live(t));
+      const auto v = mesh.tet(t);
+      if (intersects(*params.focus, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
+        in_tool.push_back(t);
+    }
+    EXPECT_FALSE(in_tool.empty());
+    EXPECT_LE(longest_edge(mesh, in_tool), 0.1);
+  }
+}
+
+TEST(Refine, NothingToDoWhenTheTetsAreAlreadySmall) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  const std::vector<TetId> hit = tets_near(mesh, {0.5, 0.5, 0.5}, 0.5);
+  ASSERT_FALSE(hit.empty());
+  Refiner refiner;
+  std::vector<TetId> region;
+  const RefineReport r = refiner.refine(mesh, hit, {.d_ref = 10.0}, region);
+  EXPECT_EQ(r.iterations, 0u);
+  EXPECT_EQ(r.tets_created, 0u);
+  EXPECT_EQ(region.size(), hit.size());
+}
+
+TEST(Refine, IterationBoundStopsTheLoop) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  const std::vector<TetId> hit = tets_near(mesh, {0.5, 0.5, 0.5}, 0.5);
+  ASSERT_FALSE(hit.empty());
+  Refiner refiner;
+  std::vector<TetId> region;
+  const RefineReport r = refiner.refine(mesh, hit, {.d_ref = 0.01, .max_iterations = 1}, region);
+  EXPECT_EQ(r.iterations, 1u);
+  EXPECT_FALSE(r.converged);
+  EXPECT_TRUE(testing::mesh_is_valid(mesh));
+}
+
+// Paper 3.2: p close to 1 refines more widely, a large p adds no extra edges.
+TEST(Refine, SmallerPSplitsMoreEdges) {
+  auto run = [](double p) {
+    TetMesh mesh = testing::build_or_fail(make_box_mesh(4, 4, 4));
+    Refiner refiner;
+    std::vector<TetId> region;
+    return refiner.refine(mesh, tets_near(mesh, {0.5, 0.5, 0.5}, 0.3), {.d_ref = 0.2, .p = p, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}},
+                          region);
+  };
+  const RefineReport tight = run(1.05), loose = run(3.0);
+  EXPECT_GT(tight.edges_split, loose.edges_split);
+  EXPECT_GT(tight.tets_created, loose.tets_created);
+}
+
+}  // namespace
+}  // namespace tetcut
