@@ -1,0 +1,127 @@
+#include "gmsh_common.hpp"
+
+#include <string>
+
+namespace tetcut::io_detail {
+
+std::string_view gmsh_type_name(std::int64_t type) {
+  switch (type) {
+    case 1: return "line";
+    case 2: return "triangle";
+    case 3: return "quadrangle";
+    case 4: return "tetrahedron";
+    case 5: return "hexahedron";
+    case 6: return "prism";
+    case 7: return "pyramid";
+    case 8: return "second-order line";
+    case 9: return "second-order triangle";
+    case 10: return "second-order quadrangle";
+    case 11: return "second-order tetrahedron";
+    case 12: return "second-order hexahedron";
+    case 13: return "second-order prism";
+    case 14: return "second-order pyramid";
+    case 15: return "point";
+    case 16: return "8-node quadrangle";
+    case 17: return "20-node hexahedron";
+    case 18: return "15-node prism";
+    case 19: return "13-node pyramid";
+    default: return "";
+  }
+}
+
+std::string gmsh_ignored_kind(std::int64_t type) {
+  std::string kind = "elements of type " + std::to_string(type);
+  const std::string_view name = gmsh_type_name(type);
+  if (!name.empty()) {
+    kind += " (";
+    kind += name;
+    kind += ")";
+  }
+  return kind;
+}
+
+bool skip_gmsh_section(LineReader& lines, ErrorSink& sink, std::string_view name) {
+  const std::uint64_t start = lines.line_number();
+  const std::string end = "$End" + std::string(name);
+  std::string_view line;
+  while (lines.next(line)) {
+    if (trim(line) == end) return true;
+  }
+  return sink.fail(start, "section $" + std::string(name) + " has no " + end);
+}
+
+bool expect_gmsh_marker(LineReader& lines, ErrorSink& sink, std::string_view marker,
+                        std::string_view what) {
+  std::string_view line;
+  if (!lines.next_nonblank(line)) {
+    return sink.fail(lines.line_number(),
+                     "unexpected end of file: missing " + std::string(marker) + " after " +
+                         std::string(what));
+  }
+  if (trim(line) != marker) {
+    return sink.fail(lines.line_number(), "expected " + std::string(marker) + " after " +
+                                              std::string(what) + ", got " + quote(trim(line)));
+  }
+  return true;
+}
+
+bool GmshElementSink::add(ErrorSink& sink, std::uint64_t line, std::int64_t type,
+                          const std::string_view* node_tokens, std::size_t num_nodes) {
+  std::size_t expected = 0;
+  if (type == kGmshTet4) {
+    expected = 4;
+  } else if (type == kGmshTet10) {
+    expected = 10;
+  } else {
+    ignored.add(gmsh_ignored_kind(type));
+    return true;
+  }
+  if (num_nodes != expected) {
+    return sink.fail(line, "expected " + std::to_string(expected) + " node ids for a " +
+                               std::string(gmsh_type_name(type)) + ", got " +
+                               std::to_string(num_nodes));
+  }
+  std::array<std::uint32_t, 4> tet{};
+  // Both orders put the 4 corners first (Gmsh node ordering), so a 10-node tet keeps them.
+  for (std::size_t k = 0; k < expected; ++k) {
+    std::int64_t id = 0;
+    if (!parse_id(sink, line, node_tokens[k], id)) return false;
+    const std::uint32_t index = nodes->find(id);
+    if (index == NodeIdMap::kNone) {
+      return sink.fail(line, "node id " + std::to_string(id) + " not defined");
+    }
+    if (k < 4) tet[k] = index;
+  }
+  if (type == kGmshTet10) ++second_order_tets;
+  tets->push_back(tet);
+  return true;
+}
+
+void GmshElementSink::emit_notices(std::vector<std::string>& notices) const {
+  if (second_order_tets > 0) {
+    notices.push_back("read " + std::to_string(second_order_tets) +
+                      " second-order tetrahedra (type 11) as their 4 corner nodes");
+  }
+  ignored.emit(notices);
+}
+
+bool add_gmsh_node(ErrorSink& sink, std::uint64_t line, const std::vector<std::string_view>& tokens,
+                   NodeIdMap& ids, std::vector<Vec3>& positions) {
+  if (tokens.size() != 4) {
+    return sink.fail(line, "expected a node id and 3 coordinates, got " +
+                               std::to_string(tokens.size()) + " values");
+  }
+  std::int64_t id = 0;
+  Vec3 p;
+  if (!parse_id(sink, line, tokens[0], id) || !parse_coordinate(sink, line, tokens[1], p.x) ||
+      !parse_coordinate(sink, line, tokens[2], p.y) || !parse_coordinate(sink, line, tokens[3], p.z)) {
+    return false;
+  }
+  if (!ids.insert(id, static_cast<std::uint32_t>(positions.size()))) {
+    return sink.fail(line, "duplicate node id " + std::to_string(id));
+  }
+  positions.push_back(p);
+  return true;
+}
+
+}  // namespace tetcut::io_detail

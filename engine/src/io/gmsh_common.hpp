@@ -1,0 +1,46 @@
+// What the three Gmsh readers (1.0, 2.2, 4.1) share: the element-type table, section skipping,
+// and turning one element's node-id tokens into a tet (or an ignored element).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "text_reader.hpp"
+
+namespace tetcut::io_detail {
+
+inline constexpr int kGmshTet4 = 4;
+inline constexpr int kGmshTet10 = 11;
+
+// "triangle", "tetrahedron", ... or "" for a type we do not name.
+std::string_view gmsh_type_name(std::int64_t type);
+// "elements of type 2 (triangle)"
+std::string gmsh_ignored_kind(std::int64_t type);
+
+// Called on a "$Name" header line: skips to "$EndName". False (and an error) if it is missing.
+bool skip_gmsh_section(LineReader& lines, ErrorSink& sink, std::string_view name);
+// Reads the next non-blank line and requires it to be `marker` (e.g. "$EndNodes").
+bool expect_gmsh_marker(LineReader& lines, ErrorSink& sink, std::string_view marker,
+                        std::string_view what);
+
+// State shared while reading elements: the tets, the node map, the tallies for notices.
+struct GmshElementSink {
+  const NodeIdMap* nodes = nullptr;
+  std::vector<std::array<std::uint32_t, 4>>* tets = nullptr;
+  IgnoredTally ignored;
+  std::uint64_t second_order_tets = 0;
+
+  // One element of `type` with the node-id tokens `node_tokens` (already split off its id and
+  // tags). Ignores non-tets; errors on a tet with the wrong number of nodes or unknown nodes.
+  bool add(ErrorSink& sink, std::uint64_t line, std::int64_t type,
+           const std::string_view* node_tokens, std::size_t num_nodes);
+  void emit_notices(std::vector<std::string>& notices) const;
+};
+
+// Parses "id x y z" tokens (exactly 4) into the map and positions.
+bool add_gmsh_node(ErrorSink& sink, std::uint64_t line, const std::vector<std::string_view>& tokens,
+                   NodeIdMap& ids, std::vector<Vec3>& positions);
+
+}  // namespace tetcut::io_detail

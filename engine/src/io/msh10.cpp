@@ -1,0 +1,177 @@
+// Gmsh MSH 1.0 (read only): "$NOD" count, "id x y z" lines, "$ENDNOD"; "$ELM" count,
+// "id type reg-phys reg-elem num-nodes node..." lines, "$ENDELM".
+#include <string>
+
+#include "gmsh_common.hpp"
+#include "tetcut/io.hpp"
+
+namespace tetcut {
+
+namespace {
+
+using namespace io_detail;
+
+class Msh10Reader {
+ public:
+  Msh10Reader(std::string_view text, std::string_view name) : lines_(text), sink_(name) {}
+
+  ReadResult read() {
+    std::string_view line;
+    bool have_nodes = false;
+    bool have_elements = false;
+    while (!sink_.failed() && lines_.next_nonblank(line)) {
+      const std::string_view header = trim(line);
+      if (header == "$NOD") {
+        if (have_nodes) sink_.fail(lines_.line_number(), "second $NOD section");
+        else read_nodes();
+        have_nodes = true;
+      } else if (header == "$ELM") {
+        if (have_elements) sink_.fail(lines_.line_number(), "second $ELM section");
+        else if (!have_nodes) sink_.fail(lines_.line_number(), "$ELM before $NOD");
+        else read_elements();
+        have_elements = true;
+      } else if (header == "$Comments" || header == "$COMMENTS") {
+        skip_gmsh_section(lines_, sink_, header.substr(1));
+      } else {
+        sink_.fail(lines_.line_number(), "expected $NOD or $ELM, got " + quote(header));
+      }
+    }
+    if (!sink_.failed()) {
+      if (!have_nodes) sink_.fail(lines_.line_number(), "missing $NOD section");
+      else if (!have_elements) sink_.fail(lines_.line_number(), "missing $ELM section");
+    }
+    std::vector<std::string> notices;
+    elements_.emit_notices(notices);
+    return make_result(sink_, std::move(mesh_), std::move(notices));
+  }
+
+ private:
+  bool read_count(std::string_view section, std::uint64_t& count) {
+    std::string_view line;
+    if (!lines_.next_nonblank(line)) {
+      return sink_.fail(lines_.line_number(), "unexpected end of file: missing count in " + std::string(section));
+    }
+    split_tokens(line, tokens_);
+    if (tokens_.size() != 1) {
+      return sink_.fail(lines_.line_number(), "expected a count, got " + quote(trim(line)));
+    }
+    return parse_count(sink_, lines_.line_number(), tokens_[0], lines_.remaining_bytes(), count);
+  }
+
+  bool next_entry(std::string_view section, std::uint64_t i, std::uint64_t count) {
+    std::string_view line;
+    if (!lines_.next_nonblank(line)) {
+      return sink_.fail(lines_.line_number(), "unexpected end of file in " + std::string(section) +
+                                                  ": expected " + std::to_string(count) + " entries, got " +
+                                                  std::to_string(i));
+    }
+    split_tokens(line, tokens_);
+    if (tokens_[0][0] == '$') {
+      return sink_.fail(lines_.line_number(), "section ended after " + std::to_string(i) + " of " +
+                                                  std::to_string(count) + " entries");
+    }
+    return true;
+  }
+
+  void read_nodes() {
+    std::uint64_t count = 0;
+    if (!read_count("$NOD", count)) return;
+    mesh_.positions.reserve(count);
+    for (std::uint64_t i = 0; i < count; ++i) {
+      if (!next_entry("$NOD", i, count)) return;
+      if (!add_gmsh_node(sink_, lines_.line_number(), tokens_, ids_, mesh_.positions)) return;
+    }
+    expect_gmsh_marker(lines_, sink_, "$ENDNOD", "the last node");
+  }
+
+  void read_elements() {
+    std::uint64_t count = 0;
+    if (!read_count("$ELM", count)) return;
+    mesh_.tets.reserve(count);
+    elements_.nodes = &ids_;
+    elements_.tets = &mesh_.tets;
+    for (std::uint64_t i = 0; i < count; ++i) {
+      if (!next_entry("$ELM", i, count)) return;
+      const std::uint64_t at = lines_.line_number();
+      if (tokens_.size() < 5) {
+        sink_.fail(at, "expected 'id type reg-phys reg-elem num-nodes node...', got " +
+                           std::to_string(tokens_.size()) + " values");
+        return;
+      }
+      std::int64_t id = 0;
+      std::int64_t type = 0;
+      std::int64_t num_nodes = 0;
+      if (!parse_id(sink_, at, tokens_[0], id)) return;
+      if (!parse_i64(tokens_[1], type)) {
+        sink_.fail(at, "expected an element type, got " + quote(tokens_[1]));
+        return;
+      }
+      if (!parse_i64(tokens_[4], num_nodes) || num_nodes < 0 ||
+          static_cast<std::uint64_t>(num_nodes) != tokens_.size() - 5) {
+        sink_.fail(at, "element declares " + quote(tokens_[4]) + " nodes but lists " +
+                           std::to_string(tokens_.size() - 5));
+        return;
+      }
+      if (!elements_.add(sink_, at, type, tokens_.data() + 5, tokens_.size() - 5)) return;
+    }
+    expect_gmsh_marker(lines_, sink_, "$ENDELM", "the last element");
+  }
+
+  LineReader lines_;
+  ErrorSink sink_;
+  RawMesh mesh_;
+  NodeIdMap ids_;
+  GmshElementSink elements_;
+  std::vector<std::string_view> tokens_;
+};
+
+}  // namespace
+
+ReadResult read_msh10(std::string_view text, std::string_view name) {
+  return Msh10Reader(text, name).read();
+}
+
+// Tells the versions apart by the first section: $NOD is 1.0; $MeshFormat gives the version.
+ReadResult read_msh(std::string_view text, std::string_view name) {
+  LineReader lines(text);
+  std::string_view line;
+  std::vector<std::string_view> tokens;
+  bool other_header = false;
+  while (lines.next_nonblank(line)) {
+    const std::string_view header = trim(line);
+    if (header == "$NOD" || header == "$Comments" || header == "$COMMENTS") {
+      if (header == "$NOD") return read_msh10(text, name);
+      // Comments may precede either header; look past them.
+      std::string_view skipped;
+      while (lines.next(skipped) && trim(skipped) != "$EndComments" && trim(skipped) != "$ENDCOMMENTS") {
+      }
+      continue;
+    }
+    if (header == "$MeshFormat") {
+      if (lines.next_nonblank(line)) {
+        split_tokens(line, tokens);
+        if (!tokens.empty() && tokens[0] == "4.1") return read_msh41(text, name);
+        if (!tokens.empty() && (tokens[0] == "4" || tokens[0] == "4.0")) {
+          ReadResult r;
+          r.error = ParseError{std::string(name), lines.line_number(),
+                               "MSH 4.0 is not supported; save the mesh as MSH 4.1 or 2.2"};
+          return r;
+        }
+      }
+      // 2.x, and every other version for read_msh22 to refuse with a precise message.
+      return read_msh22(text, name);
+    }
+    other_header = true;
+    break;
+  }
+  ReadResult r;
+  if (!other_header) {
+    r.error = ParseError{std::string(name), lines.line_number(), "empty file: no $MeshFormat section"};
+  } else {
+    r.error = ParseError{std::string(name), lines.line_number(),
+                         "expected $MeshFormat (or $NOD for MSH 1.0), got " + io_detail::quote(trim(line))};
+  }
+  return r;
+}
+
+}  // namespace tetcut

@@ -1,0 +1,182 @@
+// TetGen .node / .ele. '#' starts a comment.
+//   .node: "numPoints 3 numAttributes numBoundaryMarkers(0|1)", then
+//          "id x y z [attributes...] [marker]" (ids start at 0 or 1, as the file chooses)
+//   .ele:  "numTets nodesPerTet(4|10) numAttributes", then "id n1 .. nk [attributes...]"
+// The .ele refers to the ids of the .node file, mapped like Gmsh ids.
+#include <algorithm>
+#include <string>
+
+#include "tetcut/io.hpp"
+#include "text_reader.hpp"
+
+namespace tetcut {
+
+namespace {
+
+using namespace io_detail;
+
+bool read_header(LineReader& lines, ErrorSink& sink, std::vector<std::string_view>& tokens,
+                 std::size_t min_values, std::size_t max_values, std::string_view what) {
+  if (!next_tokens(lines, tokens, '#')) return sink.fail(lines.line_number(), "empty file: missing " + std::string(what));
+  if (tokens.size() < min_values || tokens.size() > max_values) {
+    return sink.fail(lines.line_number(), "expected " + std::string(what) + ", got " +
+                                              std::to_string(tokens.size()) + " values");
+  }
+  return true;
+}
+
+bool small_count(ErrorSink& sink, std::uint64_t line, std::string_view token, std::uint64_t max,
+                 std::string_view what, std::uint64_t& value) {
+  if (!parse_u64(token, value) || value > max) {
+    return sink.fail(line, "bad " + std::string(what) + " " + quote(token));
+  }
+  return true;
+}
+
+bool read_node_file(std::string_view text, ErrorSink& sink, NodeIdMap& ids, RawMesh& mesh) {
+  LineReader lines(text);
+  std::vector<std::string_view> tokens;
+  if (!read_header(lines, sink, tokens, 1, 4, "'numPoints dimension numAttributes numMarkers'")) return false;
+  const std::uint64_t at = lines.line_number();
+  std::uint64_t count = 0;
+  std::uint64_t dim = 3;
+  std::uint64_t attributes = 0;
+  std::uint64_t markers = 0;
+  if (!parse_count(sink, at, tokens[0], lines.remaining_bytes(), count)) return false;
+  if (tokens.size() > 1 && !small_count(sink, at, tokens[1], 3, "dimension", dim)) return false;
+  if (dim != 3) return sink.fail(at, "only 3D points are supported, got dimension " + std::to_string(dim));
+  if (tokens.size() > 2 && !small_count(sink, at, tokens[2], 1000, "number of attributes", attributes)) return false;
+  if (tokens.size() > 3 && !small_count(sink, at, tokens[3], 1, "number of boundary markers", markers)) return false;
+  const std::size_t expected = 4 + attributes + markers;
+  mesh.positions.reserve(count);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    if (!next_tokens(lines, tokens, '#')) {
+      return sink.fail(lines.line_number(), "unexpected end of file: expected " + std::to_string(count) +
+                                                " points, got " + std::to_string(i));
+    }
+    const std::uint64_t line = lines.line_number();
+    if (tokens.size() != expected) {
+      return sink.fail(line, "expected " + std::to_string(expected) + " values for a point (id, x, y, z, " +
+                                 std::to_string(attributes) + " attributes, " + std::to_string(markers) +
+                                 " markers), got " + std::to_string(tokens.size()));
+    }
+    std::int64_t id = 0;
+    Vec3 p;
+    if (!parse_id(sink, line, tokens[0], id) || !parse_coordinate(sink, line, tokens[1], p.x) ||
+        !parse_coordinate(sink, line, tokens[2], p.y) || !parse_coordinate(sink, line, tokens[3], p.z)) {
+      return false;
+    }
+    if (!ids.insert(id, static_cast<std::uint32_t>(mesh.positions.size()))) {
+      return sink.fail(line, "duplicate point id " + std::to_string(id));
+    }
+    mesh.positions.push_back(p);
+  }
+  if (next_tokens(lines, tokens, '#')) {
+    return sink.fail(lines.line_number(), "unexpected data after the " + std::to_string(count) + " declared points");
+  }
+  return true;
+}
+
+bool read_ele_file(std::string_view text, ErrorSink& sink, const NodeIdMap& ids, RawMesh& mesh,
+                   std::vector<std::string>& notices) {
+  LineReader lines(text);
+  std::vector<std::string_view> tokens;
+  if (!read_header(lines, sink, tokens, 1, 3, "'numTetrahedra nodesPerTet numAttributes'")) return false;
+  const std::uint64_t at = lines.line_number();
+  std::uint64_t count = 0;
+  std::uint64_t per_tet = 4;
+  std::uint64_t attributes = 0;
+  if (!parse_count(sink, at, tokens[0], lines.remaining_bytes(), count)) return false;
+  if (tokens.size() > 1 && !small_count(sink, at, tokens[1], 10, "nodes per tetrahedron", per_tet)) return false;
+  if (per_tet != 4 && per_tet != 10) {
+    return sink.fail(at, "nodes per tetrahedron must be 4 or 10, got " + std::to_string(per_tet));
+  }
+  if (tokens.size() > 2 && !small_count(sink, at, tokens[2], 1000, "number of attributes", attributes)) return false;
+  const std::size_t expected = 1 + per_tet + attributes;
+  mesh.tets.reserve(count);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    if (!next_tokens(lines, tokens, '#')) {
+      return sink.fail(lines.line_number(), "unexpected end of file: expected " + std::to_string(count) +
+                                                " tetrahedra, got " + std::to_string(i));
+    }
+    const std::uint64_t line = lines.line_number();
+    if (tokens.size() != expected) {
+      return sink.fail(line, "expected " + std::to_string(per_tet) + " node ids for a tetrahedron (after its id, with " +
+                                 std::to_string(attributes) + " attributes), got " +
+                                 std::to_string(tokens.size() - 1 - std::min<std::size_t>(tokens.size() - 1, attributes)));
+    }
+    std::int64_t id = 0;
+    if (!parse_id(sink, line, tokens[0], id)) return false;
+    std::array<std::uint32_t, 4> tet{};
+    // TetGen's 10-node tets list the 4 corners first.
+    for (std::size_t k = 0; k < per_tet; ++k) {
+      std::int64_t node = 0;
+      if (!parse_id(sink, line, tokens[1 + k], node)) return false;
+      const std::uint32_t index = ids.find(node);
+      if (index == NodeIdMap::kNone) return sink.fail(line, "node id " + std::to_string(node) + " not defined");
+      if (k < 4) tet[k] = index;
+    }
+    mesh.tets.push_back(tet);
+  }
+  if (next_tokens(lines, tokens, '#')) {
+    return sink.fail(lines.line_number(), "unexpected data after the " + std::to_string(count) + " declared tetrahedra");
+  }
+  if (per_tet == 10 && count > 0) {
+    notices.push_back("read " + std::to_string(count) + " 10-node tetrahedra as their 4 corner nodes");
+  }
+  return true;
+}
+
+}  // namespace
+
+ReadResult read_tetgen(std::string_view node_text, std::string_view node_name,
+                       std::string_view ele_text, std::string_view ele_name) {
+  RawMesh mesh;
+  NodeIdMap ids;
+  std::vector<std::string> notices;
+  ErrorSink node_sink(node_name);
+  if (!read_node_file(node_text, node_sink, ids, mesh)) return make_result(node_sink, std::move(mesh), std::move(notices));
+  ErrorSink ele_sink(ele_name);
+  read_ele_file(ele_text, ele_sink, ids, mesh, notices);
+  return make_result(ele_sink, std::move(mesh), std::move(notices));
+}
+
+std::string format_tetgen_node(const RawMesh& mesh) {
+  std::string out;
+  out.reserve(64 + mesh.positions.size() * 64);
+  // 1-based, as TetGen writes by default.
+  append_uint(out, mesh.positions.size());
+  out += " 3 0 0\n";
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    const Vec3& p = mesh.positions[i];
+    append_uint(out, i + 1);
+    out += ' ';
+    append_double(out, p.x);
+    out += ' ';
+    append_double(out, p.y);
+    out += ' ';
+    append_double(out, p.z);
+    out += '\n';
+  }
+  out += "# written by tetcut\n";
+  return out;
+}
+
+std::string format_tetgen_ele(const RawMesh& mesh) {
+  std::string out;
+  out.reserve(64 + mesh.tets.size() * 48);
+  append_uint(out, mesh.tets.size());
+  out += " 4 0\n";
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    append_uint(out, t + 1);
+    for (std::uint32_t v : mesh.tets[t]) {
+      out += ' ';
+      append_uint(out, static_cast<std::uint64_t>(v) + 1);
+    }
+    out += '\n';
+  }
+  out += "# written by tetcut\n";
+  return out;
+}
+
+}  // namespace tetcut

@@ -1,0 +1,333 @@
+#include "text_reader.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <system_error>
+
+namespace tetcut::io_detail {
+
+std::string quote(std::string_view token) {
+  constexpr std::size_t kMax = 40;
+  std::string out = "'";
+  for (std::size_t i = 0; i < token.size() && i < kMax; ++i) {
+    const unsigned char c = static_cast<unsigned char>(token[i]);
+    if (c >= 0x20 && c < 0x7F) {
+      out += static_cast<char>(c);
+    } else {
+      constexpr char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  if (token.size() > kMax) out += "...";
+  out += "'";
+  return out;
+}
+
+std::string_view trim(std::string_view s) {
+  std::size_t b = 0;
+  std::size_t e = s.size();
+  while (b < e && is_space(s[b])) ++b;
+  while (e > b && is_space(s[e - 1])) --e;
+  return s.substr(b, e - b);
+}
+
+void split_tokens(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && is_space(line[i])) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !is_space(line[i])) ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    char x = a[i];
+    char y = b[i];
+    if (x >= 'A' && x <= 'Z') x = static_cast<char>(x - 'A' + 'a');
+    if (y >= 'A' && y <= 'Z') y = static_cast<char>(y - 'A' + 'a');
+    if (x != y) return false;
+  }
+  return true;
+}
+
+namespace {
+std::string_view strip_plus(std::string_view t) {
+  // from_chars rejects a leading '+', which C's strtod and most writers accept.
+  if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.remove_prefix(1);
+  return t;
+}
+}  // namespace
+
+bool parse_u64(std::string_view token, std::uint64_t& value) {
+  token = strip_plus(token);
+  if (token.empty()) return false;
+  const auto r = std::from_chars(token.data(), token.data() + token.size(), value);
+  return r.ec == std::errc() && r.ptr == token.data() + token.size();
+}
+
+bool parse_i64(std::string_view token, std::int64_t& value) {
+  token = strip_plus(token);
+  if (token.empty()) return false;
+  const auto r = std::from_chars(token.data(), token.data() + token.size(), value);
+  return r.ec == std::errc() && r.ptr == token.data() + token.size();
+}
+
+bool parse_double(std::string_view token, double& value) {
+  token = strip_plus(token);
+  if (token.empty()) return false;
+  const auto r = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (r.ptr != token.data() + token.size()) return false;
+  if (r.ec == std::errc::result_out_of_range) {
+    // Overflow or underflow: from_chars leaves value unchanged. Treat as the limit, so that the
+    // caller reports an infinite coordinate or accepts a denormal-range zero.
+    const bool negative = token[0] == '-';
+    const std::size_t e = token.find_first_of("eE");
+    const bool tiny = e != std::string_view::npos && e + 1 < token.size() && token[e + 1] == '-';
+    value = tiny ? (negative ? -0.0 : 0.0)
+                 : (negative ? -std::numeric_limits<double>::infinity()
+                             : std::numeric_limits<double>::infinity());
+    return true;
+  }
+  return r.ec == std::errc();
+}
+
+bool LineReader::next(std::string_view& line) {
+  if (pos_ >= text_.size()) return false;
+  std::size_t end = pos_;
+  while (end < text_.size() && text_[end] != '\n' && text_[end] != '\r') ++end;
+  line = text_.substr(pos_, end - pos_);
+  if (end < text_.size()) {
+    if (text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n') ++end;
+    ++end;
+  }
+  pos_ = end;
+  ++line_;
+  return true;
+}
+
+bool LineReader::next_nonblank(std::string_view& line) {
+  const std::uint64_t previous_line = line_;
+  while (next(line)) {
+    if (!trim(line).empty()) return true;
+  }
+  // At the end, stay on the last line that held something: that is where the file stops.
+  line_ = previous_line;
+  return false;
+}
+
+bool next_tokens(LineReader& lines, std::vector<std::string_view>& tokens, char comment) {
+  std::string_view line;
+  const LineReader start = lines;
+  while (lines.next(line)) {
+    if (comment != '\0') {
+      const std::size_t c = line.find(comment);
+      if (c != std::string_view::npos) line = line.substr(0, c);
+    }
+    split_tokens(line, tokens);
+    if (!tokens.empty()) return true;
+  }
+  tokens.clear();
+  // At the end, stay on the last line that held something (see next_nonblank).
+  lines = start;
+  while (lines.next(line)) {
+  }
+  lines.rewind_line_count(start.line_number());
+  return false;
+}
+
+void TokenReader::skip_space() {
+  while (pos_ < text_.size()) {
+    const char c = text_[pos_];
+    if (c == '\n') {
+      ++line_;
+      ++pos_;
+    } else if (c == '\r') {
+      // CRLF counts once; a lone CR is a line end too.
+      if (pos_ + 1 >= text_.size() || text_[pos_ + 1] != '\n') ++line_;
+      ++pos_;
+    } else if (is_space(c)) {
+      ++pos_;
+    } else if (comment_ != '\0' && c == comment_) {
+      while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') ++pos_;
+    } else {
+      return;
+    }
+  }
+}
+
+bool TokenReader::next(std::string_view& token) {
+  const std::uint64_t previous_line = line_;
+  skip_space();
+  if (pos_ >= text_.size()) {
+    // At the end, report the line of the last token, not the empty line after a final newline.
+    line_ = previous_line;
+    return false;
+  }
+  const std::size_t start = pos_;
+  while (pos_ < text_.size() && !is_space(text_[pos_]) &&
+         !(comment_ != '\0' && text_[pos_] == comment_)) {
+    ++pos_;
+  }
+  token = text_.substr(start, pos_ - start);
+  return true;
+}
+
+bool TokenReader::peek(std::string_view& token) {
+  const std::size_t pos = pos_;
+  const std::uint64_t line = line_;
+  const bool got = next(token);
+  pos_ = pos;
+  line_ = line;
+  return got;
+}
+
+std::string_view TokenReader::rest_of_line() {
+  const std::size_t start = pos_;
+  while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') ++pos_;
+  return text_.substr(start, pos_ - start);
+}
+
+void TokenReader::skip_past_blank_line() {
+  LineReader lines(text_.substr(pos_));
+  std::string_view line;
+  lines.next(line);  // the rest of the current line
+  while (lines.next(line)) {
+    if (trim(line).empty()) break;
+  }
+  pos_ += lines.offset();
+  line_ += lines.line_number();
+}
+
+bool check_count(ErrorSink& sink, std::uint64_t line, std::uint64_t count,
+                 std::size_t remaining_bytes) {
+  // The last entry may end the file without a separator, hence the + 1.
+  const std::uint64_t room = (static_cast<std::uint64_t>(remaining_bytes) + 1) / 2;
+  if (count > room || count > 0xFFFFFFFEull) {
+    return sink.fail(line, "count " + std::to_string(count) + " exceeds file size");
+  }
+  return true;
+}
+
+bool parse_count(ErrorSink& sink, std::uint64_t line, std::string_view token,
+                 std::size_t remaining_bytes, std::uint64_t& count) {
+  std::int64_t signed_value = 0;
+  if (parse_i64(token, signed_value) && signed_value < 0) {
+    return sink.fail(line, "negative count " + std::to_string(signed_value));
+  }
+  if (!parse_u64(token, count)) {
+    return sink.fail(line, "expected a count, got " + quote(token));
+  }
+  return check_count(sink, line, count, remaining_bytes);
+}
+
+bool parse_coordinate(ErrorSink& sink, std::uint64_t line, std::string_view token, double& value) {
+  if (!parse_double(token, value)) {
+    return sink.fail(line, "expected a coordinate, got " + quote(token));
+  }
+  if (std::isnan(value)) return sink.fail(line, "NaN coordinate");
+  if (std::isinf(value)) return sink.fail(line, "infinite coordinate " + quote(token));
+  return true;
+}
+
+bool parse_id(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& value) {
+  if (!parse_i64(token, value)) {
+    return sink.fail(line, "expected an integer id, got " + quote(token));
+  }
+  return true;
+}
+
+bool NodeIdMap::insert(std::int64_t id, std::uint32_t index) {
+  if (contiguous_) {
+    if (count_ == 0) {
+      first_ = id;
+      count_ = 1;
+      return true;
+    }
+    // Stay in contiguous mode while ids follow each other and indices follow insertions.
+    if (index == count_ && id > first_ &&
+        static_cast<std::uint64_t>(id) - static_cast<std::uint64_t>(first_) == count_) {
+      ++count_;
+      return true;
+    }
+    if (find(id) != kNone) return false;
+    contiguous_ = false;
+    map_.reserve(static_cast<std::size_t>(count_) * 2 + 16);
+    for (std::uint32_t i = 0; i < count_; ++i) map_.emplace(first_ + i, i);
+  }
+  return map_.emplace(id, index).second;
+}
+
+std::uint32_t NodeIdMap::find(std::int64_t id) const {
+  if (contiguous_) {
+    if (count_ == 0 || id < first_) return kNone;
+    // first_ <= id here, so id - first_ cannot overflow negatively; guard the positive range.
+    const std::uint64_t delta = static_cast<std::uint64_t>(id) - static_cast<std::uint64_t>(first_);
+    return delta < count_ ? static_cast<std::uint32_t>(delta) : kNone;
+  }
+  const auto it = map_.find(id);
+  return it == map_.end() ? kNone : it->second;
+}
+
+void IgnoredTally::emit(std::vector<std::string>& notices) const {
+  for (const auto& [kind, n] : counts_) {
+    notices.push_back("ignored " + std::to_string(n) + " " + kind);
+  }
+}
+
+ReadResult make_result(ErrorSink& sink, RawMesh&& mesh, std::vector<std::string>&& notices) {
+  ReadResult result;
+  if (sink.failed()) {
+    result.error = sink.error();
+  } else {
+    result.mesh = std::move(mesh);
+  }
+  result.notices = std::move(notices);
+  return result;
+}
+
+SurfaceReadResult make_surface_result(ErrorSink& sink, SurfaceMesh&& surface,
+                                      std::vector<std::string>&& notices) {
+  SurfaceReadResult result;
+  if (sink.failed()) {
+    result.error = sink.error();
+  } else {
+    result.surface = std::move(surface);
+  }
+  result.notices = std::move(notices);
+  return result;
+}
+
+void add_polygon(SurfaceMesh& surface, const std::vector<std::uint32_t>& corners,
+                 std::uint64_t& polygons_split) {
+  for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+    surface.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+  }
+  if (corners.size() > 3) ++polygons_split;
+}
+
+void polygon_notice(std::uint64_t polygons_split, std::vector<std::string>& notices) {
+  if (polygons_split > 0) {
+    notices.push_back("split " + std::to_string(polygons_split) + " polygons into triangle fans");
+  }
+}
+
+void append_double(std::string& out, double value) {
+  char buf[40];
+  const auto r = std::to_chars(buf, buf + sizeof buf, value);
+  out.append(buf, r.ptr);
+}
+
+void append_uint(std::string& out, std::uint64_t value) {
+  char buf[24];
+  const auto r = std::to_chars(buf, buf + sizeof buf, value);
+  out.append(buf, r.ptr);
+}
+
+}  // namespace tetcut::io_detail

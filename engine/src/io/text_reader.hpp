@@ -1,0 +1,165 @@
+// Shared pieces of every text reader: a line reader and a token reader that both know their
+// 1-based line number, locale-independent number parsing (std::from_chars), a node-id map for
+// formats whose ids are arbitrary, and a first-error sink. Internal to the engine (not installed).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "tetcut/io.hpp"
+
+namespace tetcut::io_detail {
+
+// Remembers the first error of a parse; every parsing step returns false once it has failed.
+class ErrorSink {
+ public:
+  explicit ErrorSink(std::string_view file) : file_(file) {}
+
+  bool fail(std::uint64_t line, std::string reason) {
+    if (!error_) error_ = ParseError{file_, line, std::move(reason)};
+    return false;
+  }
+  [[nodiscard]] bool failed() const { return error_.has_value(); }
+  [[nodiscard]] const std::optional<ParseError>& error() const { return error_; }
+  [[nodiscard]] const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+  std::optional<ParseError> error_;
+};
+
+// A token as it may appear in an error message: quoted, printable, at most 40 characters.
+std::string quote(std::string_view token);
+
+[[nodiscard]] inline bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+std::string_view trim(std::string_view s);
+// Splits `line` on ASCII whitespace into `out` (cleared first).
+void split_tokens(std::string_view line, std::vector<std::string_view>& out);
+// ASCII case-insensitive equality.
+bool iequals(std::string_view a, std::string_view b);
+
+// Whole-token parses; a leading '+' is accepted, trailing garbage is not.
+bool parse_u64(std::string_view token, std::uint64_t& value);
+bool parse_i64(std::string_view token, std::int64_t& value);
+bool parse_double(std::string_view token, double& value);
+
+// Reads line by line. CRLF and lone CR line ends are accepted ('\r' before '\n' is stripped).
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : text_(text) {}
+
+  // The next line without its end; false at the end of the text.
+  bool next(std::string_view& line);
+  // The next line that holds something other than whitespace.
+  bool next_nonblank(std::string_view& line);
+  // 1-based number of the last line returned; at the end, the number of the last line.
+  [[nodiscard]] std::uint64_t line_number() const { return line_; }
+  [[nodiscard]] std::size_t remaining_bytes() const { return text_.size() - pos_; }
+  [[nodiscard]] std::size_t offset() const { return pos_; }
+  [[nodiscard]] bool at_end() const { return pos_ >= text_.size(); }
+  // Keeps the position but reports `line` as the current line (end-of-file messages).
+  void rewind_line_count(std::uint64_t line) { line_ = line; }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::uint64_t line_ = 0;
+};
+
+// The next line with at least one token once a comment (from `comment` to the end of the line;
+// '\0' for none) is removed, split into `tokens`. False at the end of the text.
+bool next_tokens(LineReader& lines, std::vector<std::string_view>& tokens, char comment);
+
+// Reads whitespace-separated tokens across lines (free-format data: legacy VTK, OFF, ...).
+// `comment` (if not '\0') starts a comment that runs to the end of the line.
+class TokenReader {
+ public:
+  // `first_line`: the line number of text's first character (when text is a tail of a file).
+  explicit TokenReader(std::string_view text, char comment = '\0', std::uint64_t first_line = 1)
+      : text_(text), comment_(comment), line_(first_line) {}
+
+  bool next(std::string_view& token);
+  bool peek(std::string_view& token);
+  // Line of the last token returned (or of the end of text).
+  [[nodiscard]] std::uint64_t line_number() const { return line_; }
+  [[nodiscard]] std::size_t remaining_bytes() const { return text_.size() - pos_; }
+  [[nodiscard]] std::size_t offset() const { return pos_; }
+  // The rest of the current line after the last token (for headers such as titles).
+  std::string_view rest_of_line();
+  // Skips whole lines up to and including the next blank line (VTK's METADATA blocks).
+  void skip_past_blank_line();
+
+ private:
+  void skip_space();
+  std::string_view text_;
+  char comment_;
+  std::uint64_t line_ = 1;
+  std::size_t pos_ = 0;
+};
+
+// A count read from a file is trusted only as far as the bytes that remain could hold it: every
+// entry takes at least two bytes (a character and a separator). This keeps a corrupt count from
+// allocating more than a small multiple of the file size; a file merely cut short still gets the
+// more precise "expected N, got M" from its reader.
+bool check_count(ErrorSink& sink, std::uint64_t line, std::uint64_t count,
+                 std::size_t remaining_bytes);
+
+// Parses a count token (non-negative, bounded by the remaining bytes).
+bool parse_count(ErrorSink& sink, std::uint64_t line, std::string_view token,
+                 std::size_t remaining_bytes, std::uint64_t& count);
+// Parses a finite coordinate.
+bool parse_coordinate(ErrorSink& sink, std::uint64_t line, std::string_view token, double& value);
+// Parses an integer id, any sign allowed by the caller's range check.
+bool parse_id(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& value);
+
+// Maps file node ids (arbitrary, maybe sparse) to 0-based indices. Contiguous ids (the common
+// case) need no table; the first gap switches to a hash map used for lookups only, never
+// iterated, so results do not depend on its order.
+class NodeIdMap {
+ public:
+  // False if `id` was already defined.
+  bool insert(std::int64_t id, std::uint32_t index);
+  // kNone if undefined.
+  [[nodiscard]] std::uint32_t find(std::int64_t id) const;
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+ private:
+  bool contiguous_ = true;
+  std::int64_t first_ = 0;
+  std::uint32_t count_ = 0;
+  std::unordered_map<std::int64_t, std::uint32_t> map_;
+};
+
+// Counts ignored elements by kind, for one notice per kind in a stable order.
+class IgnoredTally {
+ public:
+  void add(std::string kind, std::uint64_t n = 1) { counts_[std::move(kind)] += n; }
+  // "ignored 12 elements of type 2 (triangle)" style notices, one per kind.
+  void emit(std::vector<std::string>& notices) const;
+
+ private:
+  std::map<std::string, std::uint64_t> counts_;
+};
+
+ReadResult make_result(ErrorSink& sink, RawMesh&& mesh, std::vector<std::string>&& notices);
+SurfaceReadResult make_surface_result(ErrorSink& sink, SurfaceMesh&& surface,
+                                      std::vector<std::string>&& notices);
+
+// Adds polygon `corners` (>= 3 vertex indices) as a triangle fan; counts polygons split.
+void add_polygon(SurfaceMesh& surface, const std::vector<std::uint32_t>& corners,
+                 std::uint64_t& polygons_split);
+void polygon_notice(std::uint64_t polygons_split, std::vector<std::string>& notices);
+
+// Shortest text that parses back to the same double (std::to_chars), appended to `out`.
+void append_double(std::string& out, double value);
+void append_uint(std::string& out, std::uint64_t value);
+
+}  // namespace tetcut::io_detail

@@ -1,0 +1,89 @@
+#include "vtk_cells.hpp"
+
+#include <string_view>
+
+namespace tetcut::io_detail {
+
+namespace {
+
+std::string_view vtk_type_name(std::int64_t type) {
+  switch (type) {
+    case 1: return "vertex";
+    case 2: return "poly-vertex";
+    case 3: return "line";
+    case 4: return "poly-line";
+    case 5: return "triangle";
+    case 6: return "triangle strip";
+    case 7: return "polygon";
+    case 8: return "pixel";
+    case 9: return "quad";
+    case 10: return "tetrahedron";
+    case 11: return "voxel";
+    case 12: return "hexahedron";
+    case 13: return "wedge";
+    case 14: return "pyramid";
+    case 21: return "quadratic edge";
+    case 22: return "quadratic triangle";
+    case 23: return "quadratic quad";
+    case 24: return "quadratic tetrahedron";
+    case 25: return "quadratic hexahedron";
+    default: return "";
+  }
+}
+
+}  // namespace
+
+bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
+                       std::uint64_t line, std::vector<std::array<std::uint32_t, 4>>& tets,
+                       std::vector<std::string>& notices) {
+  IgnoredTally ignored;
+  std::uint64_t second_order = 0;
+  const std::size_t n = cells.types.size();
+  if (cells.offsets.size() != n + 1) {
+    return sink.fail(line, std::to_string(cells.offsets.size() - 1) + " cells but " +
+                               std::to_string(n) + " cell types");
+  }
+  for (std::size_t c = 0; c < n; ++c) {
+    const std::uint64_t at = cells.lines.empty() ? line : cells.lines[c];
+    const std::int64_t type = cells.types[c];
+    const std::uint64_t begin = cells.offsets[c];
+    const std::uint64_t end = cells.offsets[c + 1];
+    if (end < begin || end > cells.connectivity.size()) {
+      return sink.fail(at, "cell " + std::to_string(c) + ": offsets out of range of the connectivity");
+    }
+    const std::uint64_t size = end - begin;
+    if (type != kVtkTetra && type != kVtkQuadraticTetra) {
+      std::string kind = "cells of VTK type " + std::to_string(type);
+      const std::string_view name = vtk_type_name(type);
+      if (!name.empty()) kind += " (" + std::string(name) + ")";
+      ignored.add(std::move(kind));
+      continue;
+    }
+    const std::uint64_t expected = type == kVtkTetra ? 4 : 10;
+    if (size != expected) {
+      return sink.fail(at, "expected " + std::to_string(expected) + " point ids for a " +
+                               std::string(vtk_type_name(type)) + " (cell " + std::to_string(c) +
+                               "), got " + std::to_string(size));
+    }
+    std::array<std::uint32_t, 4> tet{};
+    // VTK lists a quadratic tet's 4 corners first.
+    for (std::uint64_t k = 0; k < expected; ++k) {
+      const std::int64_t id = cells.connectivity[begin + k];
+      if (id < 0 || static_cast<std::uint64_t>(id) >= num_points) {
+        return sink.fail(at, "point id " + std::to_string(id) + " not defined (" +
+                                 std::to_string(num_points) + " points)");
+      }
+      if (k < 4) tet[k] = static_cast<std::uint32_t>(id);
+    }
+    if (type == kVtkQuadraticTetra) ++second_order;
+    tets.push_back(tet);
+  }
+  if (second_order > 0) {
+    notices.push_back("read " + std::to_string(second_order) +
+                      " quadratic tetrahedra (VTK type 24) as their 4 corner points");
+  }
+  ignored.emit(notices);
+  return true;
+}
+
+}  // namespace tetcut::io_detail

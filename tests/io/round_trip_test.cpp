@@ -1,0 +1,148 @@
+// A round trip through every format keeps every bit of the mesh, hence its canonical hash.
+#include <bit>
+#include <cmath>
+
+#include "io_test_support.hpp"
+#include "tetcut/box_mesh.hpp"
+#include "tetcut/canonical_hash.hpp"
+#include "tetcut/mesh_builder.hpp"
+#include "tetcut/random.hpp"
+
+namespace tetcut {
+namespace {
+
+using test::identical;
+
+struct FormatCase {
+  MeshFormat format;
+  const char* file;
+};
+
+constexpr FormatCase kFormats[] = {
+    {MeshFormat::kMsh22, "m22.msh"}, {MeshFormat::kMsh41, "m41.msh"}, {MeshFormat::kVtu, "m.vtu"},
+    {MeshFormat::kVtk, "m.vtk"},     {MeshFormat::kMedit, "m.mesh"},  {MeshFormat::kTetgen, "m.node"},
+};
+
+// Coordinates made of random bit patterns (every finite double is fair, denormals and -0.0
+// included): a writer that loses one bit fails.
+RawMesh random_bits_mesh(std::uint64_t seed) {
+  RawMesh mesh = make_box_mesh(2, 2, 1);
+  SplitMix64 rng(seed);
+  for (Vec3& p : mesh.positions) {
+    for (double* c : {&p.x, &p.y, &p.z}) {
+      do {
+        *c = std::bit_cast<double>(rng.next());
+      } while (!std::isfinite(*c));
+    }
+  }
+  mesh.positions[0] = {-0.0, 5e-324, 1.7976931348623157e308};
+  return mesh;
+}
+
+TEST(RoundTrip, EveryFormatKeepsBoxMeshAndHashThroughFiles) {
+  test::ScratchDir dir;
+  const RawMesh box = make_box_mesh(3, 2, 2, {-1.5, 0.25, 10}, {3, 0.1, 1e-3});
+  for (const FormatCase& f : kFormats) {
+    SCOPED_TRACE(f.file);
+    const std::string path = dir.file(f.file);
+    ASSERT_TRUE(write_mesh_as(path, box, f.format).ok);
+    const ReadResult back = read_mesh(path);
+    ASSERT_TRUE(back.mesh.has_value()) << test::describe(back);
+    EXPECT_TRUE(identical(box, *back.mesh));
+    EXPECT_EQ(canonical_hash(box), canonical_hash(*back.mesh));
+    EXPECT_TRUE(back.notices.empty());
+  }
+}
+
+TEST(RoundTrip, EveryFormatKeepsRandomBitCoordinates) {
+  test::ScratchDir dir;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const RawMesh mesh = random_bits_mesh(seed);
+    for (const FormatCase& f : kFormats) {
+      SCOPED_TRACE(std::string(f.file) + " seed " + std::to_string(seed));
+      const std::string path = dir.file(f.file);
+      ASSERT_TRUE(write_mesh_as(path, mesh, f.format).ok);
+      const ReadResult back = read_mesh(path);
+      ASSERT_TRUE(back.mesh.has_value()) << test::describe(back);
+      EXPECT_TRUE(identical(mesh, *back.mesh));
+      EXPECT_EQ(canonical_hash(mesh), canonical_hash(*back.mesh));
+    }
+  }
+}
+
+TEST(RoundTrip, InMemoryFormattersAndReadersAgree) {
+  const RawMesh mesh = random_bits_mesh(42);
+  EXPECT_TRUE(identical(mesh, *read_msh(format_msh22(mesh), "a.msh").mesh));
+  EXPECT_TRUE(identical(mesh, *read_msh(format_msh41(mesh), "a.msh").mesh));
+  EXPECT_TRUE(identical(mesh, *read_vtu(format_vtu(mesh), "a.vtu").mesh));
+  EXPECT_TRUE(identical(mesh, *read_vtk(format_vtk(mesh), "a.vtk").mesh));
+  EXPECT_TRUE(identical(mesh, *read_medit(format_medit(mesh), "a.mesh").mesh));
+  EXPECT_TRUE(identical(
+      mesh, *read_tetgen(format_tetgen_node(mesh), "a.node", format_tetgen_ele(mesh), "a.ele").mesh));
+}
+
+TEST(RoundTrip, EmptyMeshRoundTripsInEveryFormat) {
+  test::ScratchDir dir;
+  const RawMesh empty;
+  for (const FormatCase& f : kFormats) {
+    SCOPED_TRACE(f.file);
+    ASSERT_TRUE(write_mesh_as(dir.file(f.file), empty, f.format).ok);
+    const ReadResult back = read_mesh(dir.file(f.file));
+    ASSERT_TRUE(back.mesh.has_value()) << test::describe(back);
+    EXPECT_TRUE(back.mesh->positions.empty());
+    EXPECT_TRUE(back.mesh->tets.empty());
+  }
+}
+
+TEST(RoundTrip, TetMeshIsWrittenThroughItsRawForm) {
+  test::ScratchDir dir;
+  const BuildResult built = build_mesh(make_box_mesh(2, 2, 2));
+  ASSERT_TRUE(built.ok());
+  for (const char* name : {"t.msh", "t.vtu", "t.vtk", "t.mesh", "t.ele"}) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(write_mesh(dir.file(name), *built.mesh).ok);
+    const ReadResult back = read_mesh(dir.file(name));
+    ASSERT_TRUE(back.mesh.has_value()) << test::describe(back);
+    EXPECT_EQ(canonical_hash(*built.mesh), canonical_hash(*back.mesh));
+  }
+}
+
+TEST(RoundTrip, ExtensionPicksTheFormatCaseInsensitively) {
+  test::ScratchDir dir;
+  const RawMesh mesh = test::two_tets();
+  ASSERT_TRUE(write_mesh(dir.file("UPPER.VTK"), mesh).ok);
+  std::string text;
+  ASSERT_FALSE(read_file(dir.file("UPPER.VTK"), text).has_value());
+  EXPECT_EQ(text.rfind("# vtk DataFile", 0), 0u);
+  EXPECT_TRUE(identical(mesh, *read_mesh(dir.file("UPPER.VTK")).mesh));
+  // A .msh written as 4.1 is recognised by its header.
+  ASSERT_TRUE(write_mesh_as(dir.file("v41.msh"), mesh, MeshFormat::kMsh41).ok);
+  EXPECT_TRUE(identical(mesh, *read_mesh(dir.file("v41.msh")).mesh));
+  // Writing x.ele writes the pair; either name reads it back.
+  ASSERT_TRUE(write_mesh(dir.file("pair.ele"), mesh).ok);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("pair.node")));
+  EXPECT_TRUE(identical(mesh, *read_mesh(dir.file("pair.ele")).mesh));
+  EXPECT_TRUE(identical(mesh, *read_mesh(dir.file("pair.node")).mesh));
+}
+
+TEST(RoundTrip, UnknownExtensionIsAnErrorForReadAndWrite) {
+  test::ScratchDir dir;
+  const WriteResult w = write_mesh(dir.file("mesh.xyz"), test::two_tets());
+  EXPECT_FALSE(w.ok);
+  EXPECT_NE(w.error.find("unknown extension"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("mesh.xyz")));
+  const ReadResult r = read_mesh(dir.file("mesh.xyz"));
+  ASSERT_TRUE(r.error.has_value());
+  EXPECT_NE(r.error->reason.find("unknown extension"), std::string::npos);
+  EXPECT_FALSE(read_mesh(dir.file("no_extension")).mesh.has_value());
+}
+
+TEST(RoundTrip, MissingFileIsAnErrorNamingTheFile) {
+  const ReadResult r = read_mesh("/nonexistent/dir/mesh.msh");
+  ASSERT_TRUE(r.error.has_value());
+  EXPECT_EQ(r.error->file, "/nonexistent/dir/mesh.msh");
+  EXPECT_NE(r.error->message().find("cannot open"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tetcut
