@@ -1,0 +1,70 @@
+// A uniform grid over the tets, updated incrementally as tets are created and removed, so that
+// finding the tets a tool touches (paper 3.1) never scans the mesh: a query visits the cells
+// the tool's bounding box covers, and an update touches the cells of the changed tets.
+//
+// Each tet is listed in every cell its bounding box overlaps; the index remembers each tet's
+// cell range, so a tet can be erased after the mesh has already forgotten it (replace_tets()).
+// Cells live in an open-addressing table keyed by their integer coordinates; the table is
+// never iterated, and query results are sorted by tet id, so the order is deterministic.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tetcut/change_log.hpp"
+#include "tetcut/mesh.hpp"
+#include "tetcut/tool_ball.hpp"
+
+namespace tetcut {
+
+class SpatialIndex {
+ public:
+  // `cell_size` > 0: a good choice is about the mean edge length of the mesh.
+  explicit SpatialIndex(double cell_size = 1.0) : cell_size_(cell_size) {}
+
+  // Indexes every live tet: O(#T), once.
+  void build(const TetMesh& mesh);
+
+  void insert(const TetMesh& mesh, TetId t);
+  void erase(TetId t);
+  // Replays what an operation did: erases the removed tets, inserts the created ones that are
+  // still live, in the log's order.
+  void apply(const TetMesh& mesh, const ChangeLog& log, std::size_t removed_from = 0, std::size_t created_from = 0);
+
+  // The live tets that share a point with the ball (exact closest-point test), sorted by id.
+  void query(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out);
+
+  [[nodiscard]] double cell_size() const { return cell_size_; }
+  [[nodiscard]] std::size_t entries() const { return entries_; }
+
+ private:
+  struct CellRange {
+    std::array<std::int32_t, 3> lo{};
+    std::array<std::int32_t, 3> hi{};
+    bool indexed = false;
+  };
+  struct Slot {
+    std::uint64_t key = 0;
+    std::uint32_t bucket = 0;
+    bool used = false;
+  };
+
+  [[nodiscard]] std::int32_t cell_of(double x) const;
+  [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
+  [[nodiscard]] const std::vector<std::uint32_t>* find_bucket(std::uint64_t key) const;
+  std::vector<std::uint32_t>& bucket_for(std::uint64_t key);
+  void grow_table();
+
+  double cell_size_;
+  std::vector<Slot> table_;
+  std::size_t used_slots_ = 0;
+  std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<CellRange> ranges_;      // by tet id
+  std::vector<std::uint32_t> stamps_;  // by tet id: dedup during a query
+  std::uint32_t stamp_ = 0;
+  std::size_t entries_ = 0;
+};
+
+}  // namespace tetcut

@@ -1,0 +1,142 @@
+#include "tetcut/spatial_index.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tetcut/random.hpp"
+
+namespace tetcut {
+
+std::int32_t SpatialIndex::cell_of(double x) const {
+  // Clamped to 21 bits of signed range: a mesh a million cells wide is already absurd.
+  const double c = std::floor(x / cell_size_);
+  return static_cast<std::int32_t>(std::clamp(c, -1048575.0, 1048575.0));
+}
+
+std::uint64_t SpatialIndex::pack(std::int32_t i, std::int32_t j, std::int32_t k) {
+  auto bits = [](std::int32_t v) { return static_cast<std::uint64_t>(v + 1048576) & 0x1FFFFFu; };
+  return (bits(i) << 42) | (bits(j) << 21) | bits(k);
+}
+
+const std::vector<std::uint32_t>* SpatialIndex::find_bucket(std::uint64_t key) const {
+  if (table_.empty()) return nullptr;
+  const std::size_t mask = table_.size() - 1;
+  for (std::size_t s = mix64(key) & mask;; s = (s + 1) & mask) {
+    if (!table_[s].used) return nullptr;
+    if (table_[s].key == key) return &buckets_[table_[s].bucket];
+  }
+}
+
+void SpatialIndex::grow_table() {
+  std::vector<Slot> old;
+  old.swap(table_);
+  table_.assign(old.empty() ? 1024 : old.size() * 2, Slot{});
+  const std::size_t mask = table_.size() - 1;
+  for (const Slot& o : old) {
+    if (!o.used) continue;
+    std::size_t s = mix64(o.key) & mask;
+    while (table_[s].used) s = (s + 1) & mask;
+    table_[s] = o;
+  }
+}
+
+std::vector<std::uint32_t>& SpatialIndex::bucket_for(std::uint64_t key) {
+  if ((used_slots_ + 1) * 2 > table_.size()) grow_table();
+  const std::size_t mask = table_.size() - 1;
+  std::size_t s = mix64(key) & mask;
+  for (; table_[s].used; s = (s + 1) & mask)
+    if (table_[s].key == key) return buckets_[table_[s].bucket];
+  // Cells are never deleted: an emptied cell keeps its (empty) bucket for the next tets there.
+  table_[s] = {key, static_cast<std::uint32_t>(buckets_.size()), true};
+  ++used_slots_;
+  buckets_.emplace_back();
+  return buckets_.back();
+}
+
+void SpatialIndex::build(const TetMesh& mesh) {
+  table_.clear();
+  used_slots_ = 0;
+  buckets_.clear();
+  ranges_.assign(mesh.tet_capacity(), CellRange{});
+  entries_ = 0;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
+    if (mesh.is_live(TetId{t})) insert(mesh, TetId{t});
+}
+
+void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
+  if (ranges_.size() <= t.value) ranges_.resize(std::max<std::size_t>(t.value + 1, ranges_.size() * 3 / 2));
+  CellRange& r = ranges_[t.value];
+  if (r.indexed) erase(t);
+  const auto v = mesh.tet(t);
+  Vec3 lo = mesh.position(v[0]), hi = lo;
+  for (int i = 1; i < 4; ++i) {
+    const Vec3& p = mesh.position(v[i]);
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  r.lo = {cell_of(lo.x), cell_of(lo.y), cell_of(lo.z)};
+  r.hi = {cell_of(hi.x), cell_of(hi.y), cell_of(hi.z)};
+  r.indexed = true;
+  for (std::int32_t i = r.lo[0]; i <= r.hi[0]; ++i)
+    for (std::int32_t j = r.lo[1]; j <= r.hi[1]; ++j)
+      for (std::int32_t k = r.lo[2]; k <= r.hi[2]; ++k) {
+        bucket_for(pack(i, j, k)).push_back(t.value);
+        ++entries_;
+      }
+}
+
+void SpatialIndex::erase(TetId t) {
+  if (t.value >= ranges_.size() || !ranges_[t.value].indexed) return;
+  CellRange& r = ranges_[t.value];
+  for (std::int32_t i = r.lo[0]; i <= r.hi[0]; ++i)
+    for (std::int32_t j = r.lo[1]; j <= r.hi[1]; ++j)
+      for (std::int32_t k = r.lo[2]; k <= r.hi[2]; ++k) {
+        std::vector<std::uint32_t>& b = bucket_for(pack(i, j, k));
+        const auto it = std::find(b.begin(), b.end(), t.value);
+        if (it != b.end()) {
+          *it = b.back();  // order inside a cell does not matter: queries sort
+          b.pop_back();
+          --entries_;
+        }
+      }
+  r.indexed = false;
+}
+
+void SpatialIndex::apply(const TetMesh& mesh, const ChangeLog& log, std::size_t removed_from, std::size_t created_from) {
+  for (std::size_t i = removed_from; i < log.removed.size(); ++i) erase(log.removed[i]);
+  for (std::size_t i = created_from; i < log.created.size(); ++i) {
+    const TetId t = log.created[i].tet;
+    // A tet created and removed again within the log is gone; a reused id is re-indexed.
+    if (mesh.is_live(t)) insert(mesh, t);
+  }
+}
+
+void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out) {
+  out.clear();
+  if (stamps_.size() < mesh.tet_capacity()) stamps_.resize(mesh.tet_capacity(), 0);
+  if (++stamp_ == 0) {
+    std::fill(stamps_.begin(), stamps_.end(), 0);
+    stamp_ = 1;
+  }
+  const Vec3 c = ball.centre;
+  const double r = ball.radius;
+  const std::int32_t i0 = cell_of(c.x - r), i1 = cell_of(c.x + r), j0 = cell_of(c.y - r), j1 = cell_of(c.y + r),
+                     k0 = cell_of(c.z - r), k1 = cell_of(c.z + r);
+  for (std::int32_t i = i0; i <= i1; ++i)
+    for (std::int32_t j = j0; j <= j1; ++j)
+      for (std::int32_t k = k0; k <= k1; ++k) {
+        const std::vector<std::uint32_t>* b = find_bucket(pack(i, j, k));
+        if (!b) continue;
+        for (std::uint32_t t : *b) {
+          if (t >= stamps_.size() || stamps_[t] == stamp_) continue;
+          stamps_[t] = stamp_;
+          if (!mesh.is_live(TetId{t})) continue;
+          const auto v = mesh.tet(TetId{t});
+          if (intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
+            out.push_back(TetId{t});
+        }
+      }
+  std::sort(out.begin(), out.end());
+}
+
+}  // namespace tetcut

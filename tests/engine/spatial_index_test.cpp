@@ -1,0 +1,78 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "test_meshes.hpp"
+#include "tetcut/edge_split.hpp"
+#include "tetcut/local_tables.hpp"
+#include "tetcut/random.hpp"
+#include "tetcut/spatial_index.hpp"
+
+namespace tetcut {
+namespace {
+
+std::vector<TetId> brute_force(const TetMesh& mesh, const Ball& ball) {
+  std::vector<TetId> out;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    if (!mesh.is_live(TetId{t})) continue;
+    const auto v = mesh.tet(TetId{t});
+    if (intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
+      out.push_back(TetId{t});
+  }
+  return out;
+}
+
+TEST(ToolBall, DistanceToTetIsZeroInsideAndEuclideanOutside) {
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0, 0, 1};
+  EXPECT_EQ(distance_to_tet({0.1, 0.1, 0.1}, a, b, c, d), 0.0);
+  EXPECT_EQ(distance_to_tet({0.5, 0.5, 0.0}, a, b, c, d), 0.0) << "on a face";
+  EXPECT_NEAR(distance_to_tet({0.2, 0.2, -2.0}, a, b, c, d), 2.0, 1e-15) << "below a face";
+  EXPECT_NEAR(distance_to_tet({-1, -1, -1}, a, b, c, d), std::sqrt(3.0), 1e-15) << "off a corner";
+  EXPECT_NEAR(distance_to_tet({2, 0, 0}, a, b, c, d), 1.0, 1e-15) << "beyond a vertex";
+  EXPECT_NEAR(distance_to_tet({1, 1, 1}, a, b, c, d), std::sqrt(3.0) - 1.0 / std::sqrt(3.0), 1e-12) << "above the slanted face";
+}
+
+TEST(SpatialIndex, QueriesMatchAScanThroughSplitsAndRemovals) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(6, 5, 4, {0, 0, 0}, {6, 5, 4}));
+  SpatialIndex index(1.0);
+  index.build(mesh);
+  SplitMix64 rng(5);
+  EdgeSplitter splitter;
+  std::vector<TetId> got;
+  for (int round = 0; round < 40; ++round) {
+    for (int q = 0; q < 10; ++q) {
+      const Ball ball{{rng.unit() * 7 - 0.5, rng.unit() * 6 - 0.5, rng.unit() * 5 - 0.5}, rng.unit() * 1.5};
+      index.query(mesh, ball, got);
+      ASSERT_EQ(got, brute_force(mesh, ball)) << "round " << round;
+    }
+    // Change the mesh: split a few edges, or remove a tet with three boundary faces... any
+    // boundary tet will do for the index, which does not care about manifoldness.
+    ChangeLog log;
+    TetId t;
+    do t = TetId{rng.below(mesh.tet_capacity())};
+    while (!mesh.is_live(t));
+    if (round % 3 == 2) {
+      mesh.remove_tets(std::span<const TetId>(&t, 1));
+      log.removed.push_back(t);
+    } else {
+      const int e = static_cast<int>(rng.below(6));
+      const Edge edge{mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])};
+      ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates, nullptr, &log).ok());
+    }
+    index.apply(mesh, log);
+  }
+}
+
+TEST(SpatialIndex, ABallOutsideTheMeshFindsNothing) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  SpatialIndex index(0.5);
+  index.build(mesh);
+  std::vector<TetId> got;
+  index.query(mesh, {{5, 5, 5}, 1.0}, got);
+  EXPECT_TRUE(got.empty());
+  index.query(mesh, {{0.5, 0.5, 0.5}, 10.0}, got);
+  EXPECT_EQ(got.size(), mesh.num_tets()) << "a ball swallowing the mesh finds every tet";
+}
+
+}  // namespace
+}  // namespace tetcut
