@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cstring>
 
 #include "tetcut/local_tables.hpp"
 #include "tetcut/predicates.hpp"
@@ -197,6 +198,9 @@ VertId TetMesh::add_vertex(const Vec3& p) {
   VertId v;
   if (free_vert_head_.valid()) {
     v = free_vert_head_;
+    note(Array::kFreeVertNext, v.value);
+    note(Array::kPositions, v.value);
+    note(Array::kAttributes, v.value);
     free_vert_head_ = free_vert_next_[v.value];
     free_vert_next_[v.value] = kNoVert;
     positions_[v.value] = p;
@@ -216,6 +220,7 @@ VertId TetMesh::add_vertex(const Vec3& p) {
 VertId TetMesh::add_vertex_on_edge(VertId a, VertId b, double t) {
   const Vec3 p = (1.0 - t) * positions_[a.value] + t * positions_[b.value];
   const VertId v = add_vertex(p);
+  note(Array::kAttributes, v.value);
   attributes_.interpolate(v.value, a.value, b.value, t);
   return v;
 }
@@ -233,6 +238,8 @@ TetId TetMesh::allocate_tet() {
 }
 
 void TetMesh::free_tet(TetId t) {
+  note(Array::kTetVerts, t.value);
+  note(Array::kTetAdj, t.value);
   tet_verts_[t.value] = {kDeadTetMarker, free_tet_head_.value, kDeadTetMarker, kDeadTetMarker};
   tet_adj_[t.value] = {kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour};
   free_tet_head_ = t;
@@ -240,6 +247,8 @@ void TetMesh::free_tet(TetId t) {
 
 void TetMesh::free_vertex(VertId v) {
   assert(vert_boundary_faces_[v.value] == 0);
+  note(Array::kVertTet, v.value);
+  note(Array::kFreeVertNext, v.value);
   vert_tet_[v.value] = kNoTet;
   free_vert_next_[v.value] = free_vert_head_;
   free_vert_head_ = v;
@@ -267,7 +276,10 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     for (int f = 0; f < 4; ++f) {
       const std::uint32_t adj = tet_adj_[r.value][f];
       if (adj == kNoNeighbour) {
-        for (int k = 0; k < 3; ++k) --vert_boundary_faces_[verts[kFaceVerts[f][k]]];
+        for (int k = 0; k < 3; ++k) {
+          note(Array::kBoundary, verts[kFaceVerts[f][k]]);
+          --vert_boundary_faces_[verts[kFaceVerts[f][k]]];
+        }
       } else if (tet_stamp_[adj >> 2] != stamp_) {
         scratch_faces_.push_back({sorted_face_key(verts, f), adj, 1});
       }
@@ -275,6 +287,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     for (std::uint32_t v : verts) {
       const TetId seed = vert_tet_[v];
       if (seed.valid() && seed != kReseed && tet_stamp_[seed.value] == stamp_) {
+        note(Array::kVertTet, v);
         vert_tet_[v] = kReseed;
         scratch_verts_.push_back(VertId{v});
       }
@@ -286,12 +299,15 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
   const std::size_t first_created = created ? created->size() : 0;
   for (const TetVerts& tv : added) {
     const TetId t = allocate_tet();
+    note(Array::kTetVerts, t.value);
+    note(Array::kTetAdj, t.value);
     auto& verts = tet_verts_[t.value];
     for (int i = 0; i < 4; ++i) verts[i] = tv[i].value;
     tet_adj_[t.value] = {kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour};
     for (int f = 0; f < 4; ++f) scratch_faces_.push_back({sorted_face_key(verts, f), pack(t, f), 0});
     for (std::uint32_t v : verts) {
       const TetId seed = vert_tet_[v];
+      if (seed == kReseed || !seed.valid()) note(Array::kVertTet, v);
       if (seed == kReseed) {
         vert_tet_[v] = t;
       } else if (!seed.valid()) {  // a vertex made by add_vertex, used for the first time
@@ -316,14 +332,22 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     assert(j - i <= 2 && "a face would be shared by more than two tets");
     if (j - i == 2) {
       const std::uint32_t x = scratch_faces_[i].ref, y = scratch_faces_[i + 1].ref;
+      note(Array::kTetAdj, x >> 2);
+      note(Array::kTetAdj, y >> 2);
       tet_adj_[x >> 2][x & 3u] = y;
       tet_adj_[y >> 2][y & 3u] = x;
     } else {
       // Unmatched: a new boundary face (an outer face of the cavity left uncovered, or a face of
       // a new tet on the surface).
       const FaceSlot& s = scratch_faces_[i];
-      if (s.is_outer) tet_adj_[s.ref >> 2][s.ref & 3u] = kNoNeighbour;
-      for (std::uint32_t v : s.key) ++vert_boundary_faces_[v];
+      if (s.is_outer) {
+        note(Array::kTetAdj, s.ref >> 2);
+        tet_adj_[s.ref >> 2][s.ref & 3u] = kNoNeighbour;
+      }
+      for (std::uint32_t v : s.key) {
+        note(Array::kBoundary, v);
+        ++vert_boundary_faces_[v];
+      }
     }
     i = j;
   }
@@ -342,6 +366,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
       }
     }
     if (seed.valid()) {
+      note(Array::kVertTet, v.value);
       vert_tet_[v.value] = seed;
     } else {
       free_vertex(v);
@@ -353,6 +378,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
 }
 
 Renumbering TetMesh::compact() {
+  assert(!journal_.active && "compact() inside a transaction");
   Renumbering map;
   map.tet_old_to_new.assign(tet_capacity(), kNoTet);
   map.vert_old_to_new.assign(vertex_capacity(), kNoVert);
@@ -399,6 +425,83 @@ Renumbering TetMesh::compact() {
   tet_stamp_.assign(nt, 0);
   stamp_ = 0;
   return map;
+}
+
+// ---- transactions ---------------------------------------------------------------------------
+
+void TetMesh::begin_transaction() {
+  assert(!journal_.active && "transactions do not nest");
+  journal_.active = true;
+  journal_.tets = tet_capacity();
+  journal_.vertices = vertex_capacity();
+  journal_.live_tets = live_tets_;
+  journal_.live_vertices = live_vertices_;
+  journal_.free_tet_head = free_tet_head_;
+  journal_.free_vert_head = free_vert_head_;
+  journal_.entries.clear();
+  journal_.attribute_values.clear();
+}
+
+void TetMesh::commit() {
+  journal_.active = false;
+  journal_.entries.clear();
+  journal_.attribute_values.clear();
+}
+
+// Records the old value of one element before it is written. Elements appended during the
+// transaction need no record: rollback truncates the arrays to their old sizes.
+void TetMesh::note(Array array, std::uint32_t index) {
+  if (!journal_.active) return;
+  const bool is_tet = array == Array::kTetVerts || array == Array::kTetAdj;
+  if (index >= (is_tet ? journal_.tets : journal_.vertices)) return;
+  JournalEntry e{array, index, {}};
+  switch (array) {
+    case Array::kTetVerts: std::memcpy(e.old.data(), tet_verts_[index].data(), 16); break;
+    case Array::kTetAdj: std::memcpy(e.old.data(), tet_adj_[index].data(), 16); break;
+    case Array::kPositions: std::memcpy(e.old.data(), &positions_[index], sizeof(Vec3)); break;
+    case Array::kVertTet: e.old[0] = vert_tet_[index].value; break;
+    case Array::kBoundary: e.old[0] = vert_boundary_faces_[index]; break;
+    case Array::kFreeVertNext: e.old[0] = free_vert_next_[index].value; break;
+    case Array::kAttributes:
+      e.old[0] = static_cast<std::uint32_t>(journal_.attribute_values.size());
+      for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
+        for (double x : attributes_.value(c, index)) journal_.attribute_values.push_back(x);
+      break;
+  }
+  journal_.entries.push_back(e);
+}
+
+void TetMesh::rollback() {
+  assert(journal_.active);
+  for (auto it = journal_.entries.rbegin(); it != journal_.entries.rend(); ++it) {
+    const JournalEntry& e = *it;
+    switch (e.array) {
+      case Array::kTetVerts: std::memcpy(tet_verts_[e.index].data(), e.old.data(), 16); break;
+      case Array::kTetAdj: std::memcpy(tet_adj_[e.index].data(), e.old.data(), 16); break;
+      case Array::kPositions: std::memcpy(&positions_[e.index], e.old.data(), sizeof(Vec3)); break;
+      case Array::kVertTet: vert_tet_[e.index] = TetId{e.old[0]}; break;
+      case Array::kBoundary: vert_boundary_faces_[e.index] = e.old[0]; break;
+      case Array::kFreeVertNext: free_vert_next_[e.index] = VertId{e.old[0]}; break;
+      case Array::kAttributes: {
+        std::size_t k = e.old[0];
+        for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
+          for (double& x : attributes_.value(c, e.index)) x = journal_.attribute_values[k++];
+        break;
+      }
+    }
+  }
+  tet_verts_.resize(journal_.tets);
+  tet_adj_.resize(journal_.tets);
+  positions_.resize(journal_.vertices);
+  vert_tet_.resize(journal_.vertices);
+  vert_boundary_faces_.resize(journal_.vertices);
+  free_vert_next_.resize(journal_.vertices);
+  attributes_.resize(journal_.vertices);
+  live_tets_ = journal_.live_tets;
+  live_vertices_ = journal_.live_vertices;
+  free_tet_head_ = journal_.free_tet_head;
+  free_vert_head_ = journal_.free_vert_head;
+  commit();
 }
 
 RawMesh TetMesh::to_raw() const {

@@ -125,7 +125,17 @@ class TetMesh {
   void remove_tets(std::span<const TetId> removed) { replace_tets(removed, {}, nullptr); }
 
   // Renumbers live tets and vertices densely, keeping their relative order; attributes follow.
+  // Not allowed inside a transaction.
   Renumbering compact();
+
+  // ---- transactions: atomic operations (design: a cut completes or leaves no trace) --------
+  // Between begin_transaction() and commit(), every write to the mesh's arrays is journaled
+  // (old value first), so that rollback() restores the mesh bit for bit: same ids, same free
+  // lists, same capacities in use. The journal is reused: no allocation once warm.
+  void begin_transaction();
+  void commit();
+  void rollback();
+  [[nodiscard]] bool in_transaction() const { return journal_.active; }
 
   // ---- raw views, for the independent checker and writers ----------------------------------
   // #capacity by 4; a tombstone has kDeadTetMarker in its first entry.
@@ -172,6 +182,25 @@ class TetMesh {
     std::uint32_t ref;                 // packed (tet, face)
     std::uint8_t is_outer;             // a face of the untouched mesh facing the cavity
   };
+  // Transaction journal.
+  enum class Array : std::uint8_t { kTetVerts, kTetAdj, kPositions, kVertTet, kBoundary, kFreeVertNext, kAttributes };
+  struct JournalEntry {
+    Array array;
+    std::uint32_t index;
+    std::array<std::uint32_t, 6> old;  // raw bytes of the old element (attributes: offset)
+  };
+  struct Journal {
+    bool active = false;
+    std::uint32_t tets = 0, vertices = 0;  // array sizes at begin
+    std::uint32_t live_tets = 0, live_vertices = 0;
+    TetId free_tet_head;
+    VertId free_vert_head;
+    std::vector<JournalEntry> entries;
+    std::vector<double> attribute_values;
+  };
+  void note(Array array, std::uint32_t index);
+  Journal journal_;
+
   std::vector<FaceSlot> scratch_faces_;
   std::vector<VertId> scratch_verts_;
   std::vector<std::uint32_t> tet_stamp_;

@@ -1,0 +1,90 @@
+#include <gtest/gtest.h>
+
+#include "test_meshes.hpp"
+#include "tetcut/edge_split.hpp"
+#include "tetcut/local_tables.hpp"
+#include "tetcut/random.hpp"
+
+namespace tetcut {
+namespace {
+
+// Every observable piece of state, compared element by element.
+void expect_identical(const TetMesh& a, const TetMesh& b) {
+  ASSERT_EQ(a.tet_capacity(), b.tet_capacity());
+  ASSERT_EQ(a.vertex_capacity(), b.vertex_capacity());
+  EXPECT_EQ(a.num_tets(), b.num_tets());
+  EXPECT_EQ(a.num_vertices(), b.num_vertices());
+  for (std::uint32_t t = 0; t < a.tet_capacity(); ++t) {
+    ASSERT_EQ(a.raw_tets()[t], b.raw_tets()[t]) << "tet " << t;
+    if (!a.is_live(TetId{t})) continue;
+    for (int f = 0; f < 4; ++f) ASSERT_EQ(a.neighbour(TetId{t}, f), b.neighbour(TetId{t}, f));
+  }
+  for (std::uint32_t v = 0; v < a.vertex_capacity(); ++v) {
+    ASSERT_EQ(a.position(VertId{v}), b.position(VertId{v}));
+    ASSERT_EQ(a.vertex_tet(VertId{v}), b.vertex_tet(VertId{v}));
+    ASSERT_EQ(a.boundary_face_count(VertId{v}), b.boundary_face_count(VertId{v}));
+  }
+  ASSERT_EQ(a.attributes().channel_count(), b.attributes().channel_count());
+  for (std::uint32_t c = 0; c < a.attributes().channel_count(); ++c)
+    EXPECT_EQ(a.attributes().channel(c).values, b.attributes().channel(c).values);
+}
+
+void random_operation(TetMesh& mesh, SplitMix64& rng, EdgeSplitter& splitter) {
+  std::vector<Edge> edges;
+  for (int i = 0; i < 3; ++i) {
+    TetId t;
+    do t = TetId{rng.below(mesh.tet_capacity())};
+    while (!mesh.is_live(t));
+    const int e = static_cast<int>(rng.below(6));
+    edges.push_back({mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])});
+  }
+  ASSERT_TRUE(splitter.split(mesh, edges, SplitMethod::kTemplates).ok());
+  // And a removal of a tet with three boundary faces, if any (always keeps a manifold).
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
+    if (mesh.is_live(TetId{t}) && mesh.boundary_face_count(TetId{t}) >= 3) {
+      const TetId only[1] = {TetId{t}};
+      mesh.remove_tets(only);
+      break;
+    }
+}
+
+TEST(Transaction, RollbackRestoresTheMeshBitForBit) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
+  const auto tag = *mesh.attributes().add_channel("tag", 1);
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, v)[0] = v;
+  SplitMix64 rng(17);
+  EdgeSplitter splitter;
+  // Some history first, so that free lists are not empty.
+  for (int i = 0; i < 5; ++i) random_operation(mesh, rng, splitter);
+  for (int round = 0; round < 20; ++round) {
+    const TetMesh before = mesh;
+    mesh.begin_transaction();
+    for (int i = 0; i < 1 + round % 4; ++i) random_operation(mesh, rng, splitter);
+    mesh.rollback();
+    EXPECT_FALSE(mesh.in_transaction());
+    expect_identical(mesh, before);
+    if (::testing::Test::HasFatalFailure()) return;
+    // Same future: the free lists were restored too.
+    TetMesh twin = before;
+    SplitMix64 rng_a(round), rng_b(round);
+    EdgeSplitter s2;
+    random_operation(mesh, rng_a, splitter);
+    random_operation(twin, rng_b, s2);
+    expect_identical(mesh, twin);
+  }
+}
+
+TEST(Transaction, CommitKeepsTheChanges) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  SplitMix64 rng(1);
+  EdgeSplitter splitter;
+  const std::uint32_t before = mesh.num_tets();
+  mesh.begin_transaction();
+  random_operation(mesh, rng, splitter);
+  mesh.commit();
+  EXPECT_NE(mesh.num_tets(), before);
+  EXPECT_FALSE(mesh.in_transaction());
+}
+
+}  // namespace
+}  // namespace tetcut
