@@ -36,7 +36,7 @@ void BM_BuildMesh(benchmark::State& state) {
   state.counters["tets_per_second"] =
       benchmark::Counter(static_cast<double>(raw.tets.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_BuildMesh)->Arg(16000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_BuildMesh)->Arg(16000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void BM_FullCheck(benchmark::State& state) {
   const tetcut::BuildResult built = tetcut::build_mesh(cached_box(state.range(0)));
@@ -53,7 +53,7 @@ void BM_FullCheck(benchmark::State& state) {
   state.counters["tets_per_second"] = benchmark::Counter(static_cast<double>(built.mesh->num_tets()),
                                                          benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_FullCheck)->Arg(16000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_FullCheck)->Arg(16000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 // Not a timing: reports the memory the mesh holds per tet as a counter for the budget gate.
 void BM_BytesPerTet(benchmark::State& state) {

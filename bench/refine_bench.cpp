@@ -35,7 +35,7 @@ void BM_SplitUniform(benchmark::State& state) {
   state.counters["min_radius_ratio"] = worst;
 }
 BENCHMARK(BM_SplitUniform)->Arg(static_cast<int>(tetcut::SplitMethod::kTemplates))
-    ->Arg(static_cast<int>(tetcut::SplitMethod::kBisection))->Unit(benchmark::kMillisecond)->MinTime(0.5);
+    ->Arg(static_cast<int>(tetcut::SplitMethod::kBisection))->Unit(benchmark::kMillisecond);
 
 // The loop of paper 3.2 around a tool of diameter 4 (mm) at fixed spots inside the liver.
 void BM_RefineLoopOnLiver(benchmark::State& state) {
@@ -79,7 +79,7 @@ void BM_RefineLoopOnLiver(benchmark::State& state) {
   state.counters["min_radius_ratio"] = worst;
 }
 BENCHMARK(BM_RefineLoopOnLiver)->Arg(static_cast<int>(tetcut::SplitMethod::kTemplates))
-    ->Arg(static_cast<int>(tetcut::SplitMethod::kBisection))->Unit(benchmark::kMicrosecond)->MinTime(0.5);
+    ->Arg(static_cast<int>(tetcut::SplitMethod::kBisection))->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
