@@ -504,6 +504,34 @@ void TetMesh::rollback() {
   commit();
 }
 
+void TetMesh::transaction_changes(std::vector<TetId>& removed, std::vector<TetId>& created) {
+  removed.clear();
+  created.clear();
+  if (!journal_.active) return;
+  if (tet_stamp_.size() < tet_capacity()) tet_stamp_.resize(tet_capacity(), 0);
+  if (++stamp_ == 0) {
+    std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0);
+    stamp_ = 1;
+  }
+  // The first journal entry of a tet row holds its state at the start.
+  for (const JournalEntry& e : journal_.entries) {
+    if (e.array != Array::kTetVerts || tet_stamp_[e.index] == stamp_) continue;
+    tet_stamp_[e.index] = stamp_;
+    std::array<std::uint32_t, 4> old;
+    std::memcpy(old.data(), e.old.data(), 16);
+    const bool was_live = old[0] != kDeadTetMarker;
+    const bool is_live = tet_verts_[e.index][0] != kDeadTetMarker;
+    const bool same = was_live && is_live && old == tet_verts_[e.index];
+    if (same) continue;
+    if (was_live) removed.push_back(TetId{e.index});
+    if (is_live) created.push_back(TetId{e.index});
+  }
+  for (std::uint32_t t = journal_.tets; t < tet_capacity(); ++t)
+    if (tet_verts_[t][0] != kDeadTetMarker) created.push_back(TetId{t});
+  std::sort(removed.begin(), removed.end());
+  std::sort(created.begin(), created.end());
+}
+
 RawMesh TetMesh::to_raw() const {
   RawMesh raw;
   std::vector<std::uint32_t> new_id(vertex_capacity(), kDeadTetMarker);

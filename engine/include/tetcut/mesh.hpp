@@ -136,6 +136,11 @@ class TetMesh {
   void commit();
   void rollback();
   [[nodiscard]] bool in_transaction() const { return journal_.active; }
+  // The net effect of the open transaction so far, sorted by id: `removed` gets the ids live at
+  // its start that are dead now or hold another tet; `created` the ids live now that were dead
+  // or held another tet. (A tet taken out and put back unchanged is in neither.) This is what
+  // the local checker needs, whatever mix of operations ran. O(journal).
+  void transaction_changes(std::vector<TetId>& removed, std::vector<TetId>& created);
 
   // ---- raw views, for the independent checker and writers ----------------------------------
   // #capacity by 4; a tombstone has kDeadTetMarker in its first entry.

@@ -1,0 +1,178 @@
+#include "tetcut/cut.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "tetcut/local_tables.hpp"
+#include "tetcut/quality.hpp"
+
+namespace tetcut {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double micros(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::micro>(b - a).count();
+}
+
+RemovalOptions removal_options(const CutParams& p) {
+  RemovalOptions o;
+  o.strategy = p.strategy;
+  o.max_path_depth = static_cast<int>(p.search_depth);
+  return o;
+}
+
+// The grid cell: the mean edge length, so that a tet spans a few cells at most.
+double mean_edge_length(const TetMesh& mesh) {
+  double sum = 0.0;
+  std::uint64_t n = 0;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    if (!mesh.is_live(TetId{t})) continue;
+    for (int e = 0; e < 6; ++e) {
+      sum += norm(mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][1])) - mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][0])));
+      ++n;
+    }
+  }
+  return n > 0 && sum > 0 ? sum / static_cast<double>(n) : 1.0;
+}
+
+}  // namespace
+
+std::optional<std::string> validate(const CutParams& p) {
+  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  if (!positive(p.tool_diameter)) return "tool diameter must be a positive finite length";
+  if (!positive(p.d_ref_factor)) return "D_ref factor must be a positive finite number";
+  if (!std::isfinite(p.p) || p.p <= 1.0) return "p must be a finite number greater than 1";
+  if (p.search_depth == 0 || p.search_depth > 64) return "search depth must be between 1 and 64";
+  if (p.max_refine_iterations == 0 || p.max_refine_iterations > 64) return "refinement iteration bound must be between 1 and 64";
+  if (p.max_tets_created == 0) return "the per-cut tet budget must be positive";
+  return std::nullopt;
+}
+
+Cutter::Cutter(TetMesh& mesh, const CutParams& params)
+    : mesh_(mesh), params_(params), index_(mean_edge_length(mesh)), remover_(removal_options(params)) {
+  index_.build(mesh_);
+}
+
+std::optional<std::string> Cutter::set_params(const CutParams& params) {
+  if (auto invalid = validate(params)) return invalid;
+  const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth;
+  params_ = params;
+  if (removal_changed) remover_ = Remover(removal_options(params_));
+  return std::nullopt;
+}
+
+TetId Cutter::tet_containing(const Vec3& p) {
+  index_.query(mesh_, Ball{p, 0.0}, hit_);
+  return hit_.empty() ? kNoTet : hit_.front();
+}
+
+CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
+  CutReport report;
+  net_removed_.clear();
+  net_created_.clear();
+  if (auto invalid = validate(params_)) {
+    report.ok = false;
+    report.failure = *invalid;
+    return report;
+  }
+  const Clock::time_point t0 = Clock::now();
+  const Ball tool{centre, params_.tool_diameter / 2};
+  const double d_ref = params_.d_ref_factor * params_.tool_diameter;
+
+  // Locate (paper 3.1).
+  index_.query(mesh_, tool, hit_);
+  report.tets_hit = static_cast<std::uint32_t>(hit_.size());
+  const Clock::time_point t1 = Clock::now();
+  report.time.locate_us = micros(t0, t1);
+  if (hit_.empty()) {
+    report.time.total_us = report.time.locate_us;
+    return report;
+  }
+
+  log_.clear();
+  mesh_.begin_transaction();
+  auto fail = [&](std::string why) {
+    mesh_.rollback();
+    report.ok = false;
+    report.failure = std::move(why);
+    net_removed_.clear();
+    net_created_.clear();
+    report.time.total_us = micros(t0, Clock::now());
+    return report;
+  };
+
+  // Refine (paper 3.2), following the new tets that meet the tool.
+  RefineParams refine;
+  refine.d_ref = d_ref;
+  refine.p = params_.p;
+  refine.max_iterations = params_.max_refine_iterations;
+  refine.method = params_.split_method;
+  refine.focus = tool;
+  const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_, &log_);
+  if (refined.refusal != SplitRefusal::kNone)
+    return fail(std::string("refinement refused: ") + to_string(refined.refusal));
+  if (log_.created.size() > params_.max_tets_created) return fail("the refinement would exceed the per-cut tet budget");
+  report.refine_iterations = refined.iterations;
+  report.edges_split = refined.edges_split;
+  report.tets_refined = refined.tets_removed;
+  const Clock::time_point t2 = Clock::now();
+  report.time.refine_us = micros(t1, t2);
+
+  // Select T_removal (paper 3.3): inside the tool (centroid in the ball), no edge over D_ref.
+  removal_.clear();
+  for (TetId t : region_) {
+    if (!mesh_.is_live(t)) continue;
+    const auto v = mesh_.tet(t);
+    Vec3 centroid{};
+    for (VertId x : v) centroid = centroid + 0.25 * mesh_.position(x);
+    if (norm(centroid - tool.centre) > tool.radius) continue;
+    bool short_edges = true;
+    for (int e = 0; e < 6 && short_edges; ++e)
+      short_edges = norm(mesh_.position(v[kEdgeVerts[e][1]]) - mesh_.position(v[kEdgeVerts[e][0]])) <= d_ref;
+    if (short_edges) removal_.push_back(t);
+  }
+  report.requested = static_cast<std::uint32_t>(removal_.size());
+  const Clock::time_point t3 = Clock::now();
+  report.time.select_us = micros(t2, t3);
+
+  // Remove one by one (paper 3.3-3.7); a tet already taken by an earlier neighbour set is gone.
+  const RemovalReport before = remover_.report();
+  for (TetId t : removal_) {
+    if (!mesh_.is_live(t)) continue;
+    remover_.remove(mesh_, t, &log_);
+    if (log_.created.size() > params_.max_tets_created) return fail("the removal would exceed the per-cut tet budget");
+  }
+  const RemovalReport& after = remover_.report();
+  report.tets_removed = static_cast<std::uint32_t>(after.tets_removed - before.tets_removed);
+  report.direct = static_cast<std::uint32_t>(after.direct - before.direct);
+  report.vertex_singularities = static_cast<std::uint32_t>(after.vertex_singularities - before.vertex_singularities);
+  report.edge_singularities = static_cast<std::uint32_t>(after.edge_singularities - before.edge_singularities);
+  report.resolved_by_neighbours = static_cast<std::uint32_t>(after.resolved_by_neighbours - before.resolved_by_neighbours);
+  report.resolved_by_refinement = static_cast<std::uint32_t>(after.resolved_by_refinement - before.resolved_by_refinement);
+  report.unresolved = static_cast<std::uint32_t>(after.unresolved - before.unresolved);
+  const Clock::time_point t4 = Clock::now();
+  report.time.remove_us = micros(t3, t4);
+
+  mesh_.transaction_changes(net_removed_, net_created_);
+  mesh_.commit();
+  // The index follows the net changes (exact whatever each stage logged).
+  for (TetId t : net_removed_) index_.erase(t);
+  for (TetId t : net_created_) index_.insert(mesh_, t);
+  for (TetId t : net_created_) {
+    const auto v = mesh_.tet(t);
+    report.min_radius_ratio = std::min(
+        report.min_radius_ratio, radius_ratio(mesh_.position(v[0]), mesh_.position(v[1]), mesh_.position(v[2]), mesh_.position(v[3])));
+  }
+  report.tets_created = static_cast<std::uint32_t>(net_created_.size());
+  if (log) {
+    log->removed.insert(log->removed.end(), log_.removed.begin(), log_.removed.end());
+    log->created.insert(log->created.end(), log_.created.begin(), log_.created.end());
+    log->vertices.insert(log->vertices.end(), log_.vertices.begin(), log_.vertices.end());
+  }
+  report.time.total_us = micros(t0, Clock::now());
+  return report;
+}
+
+}  // namespace tetcut

@@ -1,0 +1,162 @@
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "checked.hpp"
+#include "test_meshes.hpp"
+#include "tetcut/canonical_hash.hpp"
+#include "tetcut/cut.hpp"
+#include "tetcut/io.hpp"
+
+namespace tetcut {
+namespace {
+
+TetMesh load_corpus(const std::string& name) {
+  ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/meshes/" + name);
+  if (!read.mesh) {
+    ADD_FAILURE() << "cannot read " << name;
+    return {};
+  }
+  return testing::build_or_fail(*read.mesh);
+}
+
+struct Box {
+  Vec3 lo, hi;
+};
+Box bounds(const TetMesh& mesh) {
+  Box b{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (!mesh.is_live(VertId{v})) continue;
+    const Vec3 p = mesh.position(VertId{v});
+    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
+    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
+  }
+  return b;
+}
+
+// A sweep along the longest axis of the bounding box, through its middle, as the paper's lancet.
+std::vector<Vec3> sweep(const Box& b, int cuts) {
+  std::vector<Vec3> out;
+  const Vec3 size = b.hi - b.lo;
+  const Vec3 mid = 0.5 * (b.lo + b.hi);
+  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+  for (int i = 0; i < cuts; ++i) {
+    Vec3 p = mid;
+    const double s = 0.1 + 0.8 * i / (cuts - 1);
+    (axis == 0 ? p.x : axis == 1 ? p.y : p.z) = (axis == 0 ? b.lo.x : axis == 1 ? b.lo.y : b.lo.z) +
+                                                s * (axis == 0 ? size.x : axis == 1 ? size.y : size.z);
+    out.push_back(p);
+  }
+  return out;
+}
+
+double diagonal(const Box& b) { return norm(b.hi - b.lo); }
+
+class CorpusSweep : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CorpusSweep, EveryCutKeepsTheMeshValidAndRemovesEverythingRequested) {
+  TetMesh mesh = load_corpus(GetParam());
+  const Box box = bounds(mesh);
+  Cutter cutter(mesh, {.tool_diameter = diagonal(box) / 25});
+  invariants::LocalChecker local(mesh);
+  std::uint32_t removed = 0;
+  for (const Vec3& centre : sweep(box, 12)) {
+    const CutReport r = cutter.cut(centre);
+    ASSERT_TRUE(r.ok) << r.failure;
+    EXPECT_EQ(r.unresolved, 0u) << "combined must resolve every singularity";
+    removed += r.tets_removed;
+    const invariants::CheckReport l = local.after_operation(mesh, cutter.last_removed(), cutter.last_created());
+    ASSERT_TRUE(l.ok()) << invariants::id_string(l.violations.front().id) << ": " << l.violations.front().detail;
+    ASSERT_TRUE(testing::mesh_is_valid(mesh)) << "after the cut at " << centre.x << "," << centre.y << "," << centre.z;
+  }
+  EXPECT_GT(removed, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, CorpusSweep,
+                         ::testing::Values("cylinder.msh", "sheet.msh", "liver-coarse.msh", "liver-refined.msh", "liver.msh"),
+                         [](const auto& info) {
+                           std::string n = info.param.substr(0, info.param.find('.'));
+                           for (char& c : n)
+                             if (c == '-') c = '_';
+                           return n;
+                         });
+
+TEST(Cut, AToolOutsideTheMeshChangesNothing) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(4, 4, 4));
+  const std::uint64_t hash = canonical_hash(mesh);
+  Cutter cutter(mesh, {.tool_diameter = 0.2});
+  const CutReport r = cutter.cut({3, 3, 3});
+  EXPECT_TRUE(r.ok);
+  EXPECT_EQ(r.tets_hit, 0u);
+  EXPECT_EQ(canonical_hash(mesh), hash);
+}
+
+TEST(Cut, AToolSwallowingTheMeshLeavesAValidMesh) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
+  Cutter cutter(mesh, {.tool_diameter = 10.0});
+  const CutReport r = cutter.cut({0.5, 0.5, 0.5});
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_EQ(r.unresolved, 0u);
+  EXPECT_EQ(mesh.num_tets(), 0u) << "every tet's centroid is inside the tool";
+  EXPECT_TRUE(testing::mesh_is_valid(mesh));
+}
+
+TEST(Cut, InvalidParametersAreRefusedWithAMessage) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  Cutter cutter(mesh, {});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const CutParams& bad : {CutParams{.tool_diameter = 0}, CutParams{.tool_diameter = -1}, CutParams{.tool_diameter = nan},
+                               CutParams{.d_ref_factor = 0}, CutParams{.p = 1.0}, CutParams{.p = nan},
+                               CutParams{.search_depth = 0}, CutParams{.max_refine_iterations = 0}}) {
+    const auto message = cutter.set_params(bad);
+    ASSERT_TRUE(message.has_value());
+    EXPECT_FALSE(message->empty());
+  }
+  EXPECT_EQ(cutter.params().tool_diameter, 1.0) << "a refused change keeps the old parameters";
+}
+
+TEST(Cut, AFailedCutLeavesTheMeshBitIdentical) {
+  TetMesh mesh = load_corpus("liver-coarse.msh");
+  const Box box = bounds(mesh);
+  Cutter cutter(mesh, {.tool_diameter = diagonal(box) / 30});
+  // A first cut so that the free lists are in use.
+  ASSERT_TRUE(cutter.cut(0.5 * (box.lo + box.hi)).ok);
+  const TetMesh before = mesh;
+  CutParams tight = cutter.params();
+  tight.max_tets_created = 1;  // any refinement now exceeds the budget
+  ASSERT_FALSE(cutter.set_params(tight).has_value());
+  const Vec3 elsewhere = box.lo + 0.3 * (box.hi - box.lo);
+  const CutReport r = cutter.cut(elsewhere);
+  ASSERT_FALSE(r.ok);
+  EXPECT_FALSE(r.failure.empty());
+  ASSERT_EQ(mesh.tet_capacity(), before.tet_capacity());
+  ASSERT_EQ(mesh.vertex_capacity(), before.vertex_capacity());
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    ASSERT_EQ(mesh.raw_tets()[t], before.raw_tets()[t]);
+    if (mesh.is_live(TetId{t}))
+      for (int f = 0; f < 4; ++f) ASSERT_EQ(mesh.neighbour(TetId{t}, f), before.neighbour(TetId{t}, f));
+  }
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    ASSERT_EQ(mesh.position(VertId{v}), before.position(VertId{v}));
+    ASSERT_EQ(mesh.vertex_tet(VertId{v}), before.vertex_tet(VertId{v}));
+  }
+  // And the cutter still works afterwards.
+  tight.max_tets_created = 200000;
+  ASSERT_FALSE(cutter.set_params(tight).has_value());
+  EXPECT_TRUE(cutter.cut(elsewhere).ok);
+  EXPECT_TRUE(testing::mesh_is_valid(mesh));
+}
+
+TEST(Cut, TheSameSweepGivesTheSameHash) {
+  auto run = [] {
+    TetMesh mesh = load_corpus("liver-coarse.msh");
+    const Box box = bounds(mesh);
+    Cutter cutter(mesh, {.tool_diameter = diagonal(box) / 25});
+    for (const Vec3& c : sweep(box, 8)) cutter.cut(c);
+    return canonical_hash(mesh);
+  };
+  EXPECT_EQ(run(), run());
+}
+
+}  // namespace
+}  // namespace tetcut
