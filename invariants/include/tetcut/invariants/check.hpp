@@ -1,0 +1,152 @@
+// The independent invariant checker (design: invariants I1-I9).
+//
+// It recomputes everything it verifies from the raw tet array with its own hashing; it never
+// trusts the engine's adjacency or classification, it only compares against them (I2, I8).
+// Orientation (I4) is always decided by an exact predicate.
+//
+// Levels and what they cost (#T tets, #V vertices, s = tets in a vertex shell, a few dozen):
+//   local  LocalChecker::after_operation: O(sum of s over the vertices of the removed and
+//          created tets), i.e. O(operation), plus O(1) count comparisons. Building the
+//          LocalChecker is O(#T + #V) once. Cheap enough after every operation in tests and
+//          fuzzers. On a whole mesh (check_raw / check_mesh) there is no operation, so `local`
+//          means the same as `full`.
+//   full   O(#T + #V) plus a small sort per vertex shell (O(s log s)): references, conformity,
+//          orientation (exact), vertex links, edge shells, quality, volume; for a TetMesh also
+//          the engine's adjacency and bookkeeping. About a second per million tets.
+//   exact  full + the geometric half of I3: the boundary surface does not self-intersect (CGAL
+//          box intersection with exact triangle-triangle predicates, O(#boundary log #boundary)
+//          for reasonable surfaces). Only run when the boundary is a 2-manifold.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tetcut/ids.hpp"
+#include "tetcut/mesh.hpp"
+#include "tetcut/raw_mesh.hpp"
+
+namespace tetcut::invariants {
+
+enum class Invariant : std::uint8_t {
+  kI1References = 1,  // every live tet has 4 distinct live vertices; no duplicate tets
+  kI2Adjacency,       // neighbours reciprocal and sharing exactly the face; boundary iff unshared
+  kI3Conformity,      // a face belongs to at most 2 tets; (exact) boundary does not self-intersect
+  kI4Orientation,     // every tet strictly positive (exact predicate)
+  kI5VertexShell,     // vertex shell face-connected and link a disk or a sphere
+  kI6EdgeShell,       // edge shell face-connected (boundary edge: exactly two boundary faces)
+  kI7Quality,         // radius ratio above the configured floor
+  kI8Bookkeeping,     // counts, vertex->tet references, boundary flags, attribute sizes
+  kI9Volume,          // volume as expected after an operation (relative tolerance)
+};
+inline constexpr int kInvariantCount = 9;
+
+// "I5" etc.
+const char* id_string(Invariant id);
+// A short human name: "manifold vertex shells".
+const char* description(Invariant id);
+
+enum class CheckLevel : std::uint8_t { kLocal, kFull, kExact };
+
+inline constexpr std::size_t kMaxListed = 8;
+inline constexpr std::size_t kHistogramBins = 10;
+
+struct Violation {
+  Invariant id;
+  std::uint64_t count = 0;             // how many offending elements in all
+  std::vector<std::uint32_t> tets;     // the first offending tets (at most kMaxListed)
+  std::vector<std::uint32_t> vertices; // the first offending vertices (at most kMaxListed)
+  std::string detail;                  // one line, for people: the first offence
+};
+
+struct QualityStats {
+  std::uint64_t tets = 0;
+  double min_radius_ratio = 0.0;
+  double mean_radius_ratio = 0.0;
+  double min_dihedral_deg = 0.0;
+  double mean_min_dihedral_deg = 0.0;
+  // Radius ratio histogram, bin i covers [i / 10, (i + 1) / 10); 1.0 goes in the last bin.
+  std::array<std::uint64_t, kHistogramBins> radius_ratio_histogram{};
+};
+
+struct CheckOptions {
+  CheckLevel level = CheckLevel::kFull;
+  // I7: a tet whose radius ratio is below this floor is a violation (0 disables).
+  double radius_ratio_floor = 0.0;
+  // I9: when set, the total volume must equal this to a relative tolerance.
+  std::optional<double> expected_volume;
+  double volume_rel_tolerance = 1e-9;
+  // Names the operation in the report ("remove tet 12", "cut 3"), for people triaging.
+  std::string operation;
+};
+
+struct CheckReport {
+  std::vector<Violation> violations;  // in invariant order, at most one per invariant
+  QualityStats quality;               // over the checked tets (local: the created tets)
+  // full/exact: live tets and used vertices; local: tets in the touched shells (a tet counted
+  // once per touched vertex of it) and touched vertices.
+  std::uint64_t tets_checked = 0;
+  std::uint64_t vertices_checked = 0;
+  // full/exact: the total signed volume; local: the operation's volume change (created volume
+  // - removed volume).
+  double volume = 0.0;
+  std::string operation;              // copied from CheckOptions::operation
+  std::vector<std::string> notes;     // what was not checked and why (e.g. skipped geometry)
+
+  [[nodiscard]] bool ok() const { return violations.empty(); }
+  [[nodiscard]] const Violation* find(Invariant id) const;
+};
+
+// Several lines for people: one per violation, "I5 manifold vertex shells: 3 ...: detail".
+std::string to_string(const CheckReport& report);
+
+// Full or exact check of a mesh given only as raw arrays (a file as read): I1, I3-I7, I9.
+CheckReport check_raw(const RawMesh& mesh, const CheckOptions& options = {});
+
+// Full or exact check of an engine mesh: everything check_raw does on its live tets, plus I2 and
+// I8 by comparing the engine's adjacency, boundary counts and vertex->tet references with the
+// checker's own recomputation.
+CheckReport check_mesh(const TetMesh& mesh, const CheckOptions& options = {});
+
+// The local level. Holds its own vertex->tets index, built once from the raw tets and then
+// updated from what each operation says it removed and created (read back from the raw tets),
+// so it never consults the engine's adjacency. After an operation it checks, for every vertex of
+// a removed or created tet, I1-I3, I5, I6 and I8 on that vertex's shell and on the edges and
+// faces through it (I2: the engine's neighbours across those faces), I1, I4 and I7 on the
+// created tets, the engine's counts (I8), and I9 when an expected volume change is given.
+// It assumes the mesh was valid before the operation: it reports what the operation broke.
+// compact() renumbers everything: build a new LocalChecker after it.
+class LocalChecker {
+ public:
+  explicit LocalChecker(const TetMesh& mesh);
+  ~LocalChecker();
+  LocalChecker(LocalChecker&&) noexcept;
+  LocalChecker& operator=(LocalChecker&&) noexcept;
+
+  // `removed`: ids the operation killed (their old vertices are remembered from the index);
+  // `created`: ids it made live (may reuse removed ids). I9 is checked when an expected volume
+  // change of the region (created volume - removed volume) is given. options.level is ignored
+  // (the region is always checked combinatorially and with exact orientation).
+  CheckReport after_operation(const TetMesh& mesh, std::span<const TetId> removed,
+                              std::span<const TetId> created, const CheckOptions& options = {},
+                              std::optional<double> expected_volume_change = std::nullopt);
+
+ private:
+  struct Scratch;  // per-operation scratch (vertex link workspace), reused: no steady allocation
+
+  std::vector<std::array<std::uint32_t, 4>> known_tets_;       // the checker's copy of each tet
+  std::vector<double> known_volume_;                          // its signed volume when created
+  std::vector<std::vector<std::uint32_t>> vertex_to_tets_;     // its own incidence
+  std::vector<std::uint8_t> excluded_;                         // per tet, during one check
+  std::vector<std::uint32_t> touched_stamp_;                   // per vertex
+  std::uint32_t stamp_ = 0;
+  std::uint64_t live_tets_ = 0;
+  std::uint64_t live_vertices_ = 0;
+  std::unique_ptr<Scratch> scratch_;
+};
+
+}  // namespace tetcut::invariants

@@ -1,0 +1,224 @@
+// The local level: the checker's own incidence, kept up to date from what each operation says
+// it removed and created, and the same per-vertex link analysis as the full level run on the
+// vertices of those tets only.
+//
+// Why the vertices of the removed and created tets are enough: a face or edge whose star changed
+// belongs to a removed or created tet, so all its vertices are touched; an untouched vertex has
+// exactly the star it had before the operation, and the mesh was valid then.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "report_builder.hpp"
+#include "tet_checks.hpp"
+#include "tetcut/invariants/check.hpp"
+#include "vertex_link.hpp"
+
+namespace tetcut::invariants {
+
+using detail::RawTet;
+using detail::ReportBuilder;
+
+namespace {
+constexpr RawTet kDeadTet{kDeadTetMarker, kDeadTetMarker, kDeadTetMarker, kDeadTetMarker};
+std::string str(std::uint64_t x) { return std::to_string(x); }
+
+bool references_in_range(const RawTet& q, std::size_t vertex_count) {
+  return q[0] < vertex_count && q[1] < vertex_count && q[2] < vertex_count && q[3] < vertex_count;
+}
+}  // namespace
+
+struct LocalChecker::Scratch {
+  detail::VertexLinkChecker link;
+  std::vector<std::uint32_t> touched;
+};
+
+LocalChecker::~LocalChecker() = default;
+LocalChecker::LocalChecker(LocalChecker&&) noexcept = default;
+LocalChecker& LocalChecker::operator=(LocalChecker&&) noexcept = default;
+
+LocalChecker::LocalChecker(const TetMesh& mesh) : scratch_(std::make_unique<Scratch>()) {
+  const auto raw = mesh.raw_tets();
+  const auto positions = mesh.positions();
+  known_tets_.assign(raw.begin(), raw.end());
+  known_volume_.assign(raw.size(), 0.0);
+  excluded_.assign(raw.size(), 0);
+  vertex_to_tets_.resize(positions.size());
+  touched_stamp_.assign(positions.size(), 0);
+  for (std::uint32_t t = 0; t < raw.size(); ++t) {
+    const RawTet& q = raw[t];
+    if (q[0] == kDeadTetMarker) continue;
+    ++live_tets_;
+    if (!references_in_range(q, positions.size())) continue;  // the full check reports it
+    known_volume_[t] = detail::tet_volume(q, positions);
+    for (std::uint32_t v : q) vertex_to_tets_[v].push_back(t);
+  }
+  for (const auto& list : vertex_to_tets_)
+    if (!list.empty()) ++live_vertices_;
+}
+
+CheckReport LocalChecker::after_operation(const TetMesh& mesh, std::span<const TetId> removed,
+                                          std::span<const TetId> created, const CheckOptions& options,
+                                          std::optional<double> expected_volume_change) {
+  CheckReport out;
+  out.operation = options.operation;
+  ReportBuilder report;
+  const auto raw = mesh.raw_tets();
+  const auto positions = mesh.positions();
+  if (known_tets_.size() < raw.size()) {
+    known_tets_.resize(raw.size(), kDeadTet);
+    known_volume_.resize(raw.size(), 0.0);
+    excluded_.resize(raw.size(), 0);
+  }
+  if (vertex_to_tets_.size() < positions.size()) {
+    vertex_to_tets_.resize(positions.size());
+    touched_stamp_.resize(positions.size(), 0);
+  }
+  if (++stamp_ == 0) {  // wrapped: forget every old stamp
+    std::fill(touched_stamp_.begin(), touched_stamp_.end(), 0);
+    stamp_ = 1;
+  }
+  std::vector<std::uint32_t>& touched = scratch_->touched;
+  touched.clear();
+  auto touch = [&](std::uint32_t v) {
+    if (v < touched_stamp_.size() && touched_stamp_[v] != stamp_) {
+      touched_stamp_[v] = stamp_;
+      touched.push_back(v);
+    }
+  };
+
+  // Removed tets leave the index; their old vertices are remembered from it, not from the mesh.
+  detail::VolumeSum removed_volume;
+  double removed_abs = 0.0;
+  for (TetId r : removed) {
+    const std::uint32_t t = r.value;
+    if (t >= known_tets_.size() || known_tets_[t][0] == kDeadTetMarker) {
+      report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
+        return "the operation reports removing tet " + str(t) + ", which was not live";
+      });
+      continue;
+    }
+    for (std::uint32_t v : known_tets_[t]) {
+      if (v >= vertex_to_tets_.size()) continue;
+      auto& list = vertex_to_tets_[v];
+      const auto it = std::find(list.begin(), list.end(), t);
+      if (it == list.end()) continue;
+      *it = list.back();
+      list.pop_back();
+      if (list.empty()) --live_vertices_;
+      touch(v);
+    }
+    removed_volume.add(known_volume_[t]);
+    removed_abs += std::abs(known_volume_[t]);
+    known_tets_[t] = kDeadTet;
+    --live_tets_;
+  }
+
+  // Created tets enter the index as the mesh now has them; I1 (references), I4, I7 on each.
+  detail::TetGeometryChecker geometry(options.radius_ratio_floor, report);
+  detail::VolumeSum created_volume;
+  double created_abs = 0.0;
+  for (TetId c : created) {
+    const std::uint32_t t = c.value;
+    if (t >= raw.size() || raw[t][0] == kDeadTetMarker) {
+      report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
+        return "the operation reports creating tet " + str(t) + ", which is not live in the mesh";
+      });
+      continue;
+    }
+    if (known_tets_[t][0] != kDeadTetMarker) {
+      report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
+        return "the operation reports creating tet " + str(t) + ", which was already live and not removed";
+      });
+      continue;
+    }
+    const RawTet& q = raw[t];
+    known_tets_[t] = q;
+    ++live_tets_;
+    if (!detail::check_references(t, q, positions, report)) continue;  // kept out of the index
+    for (std::uint32_t v : q) {
+      auto& list = vertex_to_tets_[v];
+      if (list.empty()) ++live_vertices_;
+      list.push_back(t);
+      touch(v);
+    }
+    geometry.check(t, q, positions);
+    known_volume_[t] = detail::tet_volume(q, positions);
+    created_volume.add(known_volume_[t]);
+    created_abs += std::abs(known_volume_[t]);
+  }
+  for (TetId r : removed) {
+    const std::uint32_t t = r.value;
+    if (t < raw.size() && raw[t][0] != kDeadTetMarker && known_tets_[t][0] == kDeadTetMarker) {
+      report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
+        return "the operation reports removing tet " + str(t) + ", but it is still live in the mesh";
+      });
+    }
+  }
+
+  // The shells of the touched vertices, in vertex order (the full level's order restricted).
+  std::sort(touched.begin(), touched.end());
+  detail::LinkContext ctx;
+  ctx.tets = known_tets_;
+  ctx.excluded = excluded_;
+  ctx.touched_stamp = touched_stamp_.data();
+  ctx.stamp = stamp_;
+  ctx.engine = &mesh;
+  ctx.report = &report;
+  std::uint64_t shell_tets = 0;
+  for (std::uint32_t v : touched) {
+    const auto& shell = vertex_to_tets_[v];
+    shell_tets += shell.size();
+    for (std::uint32_t t : shell) {
+      // The engine must not have changed a tet the operation did not report (checked once per
+      // tet, at its smallest touched vertex).
+      const RawTet& q = known_tets_[t];
+      bool first = true;
+      for (std::uint32_t x : q)
+        if (x < v && touched_stamp_[x] == stamp_) first = false;
+      if (first && (t >= raw.size() || raw[t] != q)) {
+        report.add(Invariant::kI8Bookkeeping, {t}, {v}, [&] {
+          return "tet " + str(t) + " changed in the mesh without the operation reporting it";
+        });
+      }
+    }
+    if (!shell.empty()) {
+      scratch_->link.check(ctx, v, shell);
+      continue;
+    }
+    if (mesh.vertex_tet(VertId(v)).valid() || mesh.boundary_face_count(VertId(v)) != 0) {
+      report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
+        return "vertex " + str(v) + " lost its last tet, but the engine keeps it live";
+      });
+    }
+  }
+  for (std::uint32_t v : touched)
+    for (std::uint32_t t : vertex_to_tets_[v]) excluded_[t] = 0;
+
+  // I8: counts, kept by the checker from the operations alone.
+  auto compare = [&](const char* what, std::uint64_t claimed, std::uint64_t actual) {
+    if (claimed == actual) return;
+    report.add(Invariant::kI8Bookkeeping, {}, {}, [&] {
+      return std::string("the engine's ") + what + " is " + str(claimed) + ", the checker's index gives " +
+             str(actual);
+    });
+  };
+  compare("tet count", mesh.num_tets(), live_tets_);
+  compare("vertex count", mesh.num_vertices(), live_vertices_);
+  compare("attribute array size", mesh.attributes().size(), positions.size());
+
+  const double change = created_volume.value() - removed_volume.value();
+  if (expected_volume_change) {
+    detail::check_volume(change, *expected_volume_change, std::max(removed_abs, created_abs),
+                         options.volume_rel_tolerance, "the volume change of the operation", report);
+  }
+
+  geometry.finish(out);
+  out.volume = change;
+  out.tets_checked = shell_tets;
+  out.vertices_checked = touched.size();
+  report.finish(out);
+  return out;
+}
+
+}  // namespace tetcut::invariants
