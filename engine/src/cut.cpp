@@ -138,26 +138,67 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
   report.time.select_us = micros(t2, t3);
 
   // Remove one by one (paper 3.3-3.7); a tet already taken by an earlier neighbour set is gone.
+  remove_selected(report);
+  if (!report.ok) return fail(report.failure);
+  const Clock::time_point t4 = Clock::now();
+  report.time.remove_us = micros(t3, t4);
+  finish(report, log);
+  report.time.total_us = micros(t0, Clock::now());
+  return report;
+}
+
+CutReport Cutter::remove(TetId t, ChangeLog* log) {
+  CutReport report;
+  net_removed_.clear();
+  net_created_.clear();
+  if (!mesh_.is_live(t)) {
+    report.ok = false;
+    report.failure = "tet " + std::to_string(t.value) + " is not live";
+    return report;
+  }
+  const Clock::time_point t0 = Clock::now();
+  log_.clear();
+  mesh_.begin_transaction();
+  removal_.assign(1, t);
+  report.requested = 1;
+  remove_selected(report);
+  if (!report.ok) {
+    mesh_.rollback();
+    return report;
+  }
+  report.time.remove_us = micros(t0, Clock::now());
+  finish(report, log);
+  report.time.total_us = report.time.remove_us;
+  return report;
+}
+
+void Cutter::remove_selected(CutReport& report) {
   const RemovalReport before = remover_.report();
   for (TetId t : removal_) {
     if (!mesh_.is_live(t)) continue;
     remover_.remove(mesh_, t, &log_);
-    if (log_.created.size() > params_.max_tets_created) return fail("the removal would exceed the per-cut tet budget");
+    if (log_.created.size() > params_.max_tets_created) {
+      report.ok = false;
+      report.failure = "the removal would exceed the per-cut tet budget";
+      return;
+    }
   }
   const RemovalReport& after = remover_.report();
-  report.tets_removed = static_cast<std::uint32_t>(after.tets_removed - before.tets_removed);
-  report.direct = static_cast<std::uint32_t>(after.direct - before.direct);
-  report.vertex_singularities = static_cast<std::uint32_t>(after.vertex_singularities - before.vertex_singularities);
-  report.edge_singularities = static_cast<std::uint32_t>(after.edge_singularities - before.edge_singularities);
-  report.resolved_by_neighbours = static_cast<std::uint32_t>(after.resolved_by_neighbours - before.resolved_by_neighbours);
-  report.resolved_by_refinement = static_cast<std::uint32_t>(after.resolved_by_refinement - before.resolved_by_refinement);
-  report.unresolved = static_cast<std::uint32_t>(after.unresolved - before.unresolved);
-  const Clock::time_point t4 = Clock::now();
-  report.time.remove_us = micros(t3, t4);
+  auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<std::uint32_t>(a - b); };
+  report.tets_removed = delta(after.tets_removed, before.tets_removed);
+  report.direct = delta(after.direct, before.direct);
+  report.vertex_singularities = delta(after.vertex_singularities, before.vertex_singularities);
+  report.edge_singularities = delta(after.edge_singularities, before.edge_singularities);
+  report.resolved_by_neighbours = delta(after.resolved_by_neighbours, before.resolved_by_neighbours);
+  report.resolved_by_refinement = delta(after.resolved_by_refinement, before.resolved_by_refinement);
+  report.unresolved = delta(after.unresolved, before.unresolved);
+}
 
+// Commits the transaction, brings the index up to date with the net changes, and reports the
+// worst new tet.
+void Cutter::finish(CutReport& report, ChangeLog* log) {
   mesh_.transaction_changes(net_removed_, net_created_);
   mesh_.commit();
-  // The index follows the net changes (exact whatever each stage logged).
   for (TetId t : net_removed_) index_.erase(t);
   for (TetId t : net_created_) index_.insert(mesh_, t);
   for (TetId t : net_created_) {
@@ -171,8 +212,6 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
     log->created.insert(log->created.end(), log_.created.begin(), log_.created.end());
     log->vertices.insert(log->vertices.end(), log_.vertices.begin(), log_.vertices.end());
   }
-  report.time.total_us = micros(t0, Clock::now());
-  return report;
 }
 
 }  // namespace tetcut

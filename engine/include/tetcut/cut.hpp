@@ -79,6 +79,10 @@ class Cutter {
   // One cut with the tool centred at `centre`. Appends the net changes to `log` when given.
   CutReport cut(const Vec3& centre, ChangeLog* log = nullptr);
 
+  // One removal request outside the cut pipeline (tetcut remove, scenarios): tet t with the
+  // strategy, atomically, the index kept up to date. Reported like a cut with one request.
+  CutReport remove(TetId t, ChangeLog* log = nullptr);
+
   // The live tet containing p (lowest id when several share it), or kNoTet: for scenarios that
   // address tets geometrically.
   TetId tet_containing(const Vec3& p);
@@ -90,6 +94,10 @@ class Cutter {
   [[nodiscard]] const std::vector<TetId>& last_created() const { return net_created_; }
 
  private:
+  // Removes the tets of removal_ in order, then commits and fills the report's counts.
+  void remove_selected(CutReport& report);
+  void finish(CutReport& report, ChangeLog* log);
+
   TetMesh& mesh_;
   CutParams params_;
   SpatialIndex index_;

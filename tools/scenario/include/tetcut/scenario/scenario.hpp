@@ -1,0 +1,90 @@
+// Scenarios: readable, replayable sequences of operations on a mesh (design: scenario files).
+//
+// One operation a line, `#` starts a comment. Tets and tools are addressed geometrically, so a
+// scenario survives any change of internal ids:
+//
+//   mesh PATH                     load a mesh (relative paths: to the scenario's folder)
+//   diameter D                    tool diameter           (also: dref_factor F, p P, depth N,
+//   strategy basic|neighbours|combined                     iterations N, split templates|bisection)
+//   cut X,Y,Z                     one cut with the tool centred there
+//   sweep X,Y,Z X,Y,Z STEP        one cut every STEP along the segment (both ends included)
+//   remove X,Y,Z                  remove the tet containing the point with the strategy
+//   compact                       renumber densely
+//   check [local|full|exact]      the independent checker; the scenario fails when it objects
+//   expect hash HEX               canonical hash of the current mesh
+//   expect tets N                 live tets
+//   expect unresolved N           tets left unresolved so far
+//   expect components N           face-connected pieces of the mesh (a resection separates one)
+//
+// Running one: every operation is followed by the local check (or the full check, or none, as
+// asked); the first failed check or expectation stops the run and names its line.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tetcut/cut.hpp"
+#include "tetcut/vec3.hpp"
+
+namespace tetcut::scenario {
+
+enum class OpKind : std::uint8_t {
+  kMesh, kParam, kCut, kSweep, kRemove, kCompact, kCheck, kExpectHash, kExpectTets, kExpectUnresolved,
+  kExpectComponents
+};
+
+struct Op {
+  OpKind kind;
+  std::uint32_t line = 0;  // 1-based, in the scenario text
+  std::string text;        // mesh path, parameter name, check level, expected hash
+  std::string value;       // parameter value as written
+  Vec3 a{}, b{};
+  double step = 0.0;
+  std::uint64_t count = 0;
+};
+
+struct Scenario {
+  std::string name;        // the file, for messages
+  std::string base_dir;    // relative mesh paths resolve against it
+  std::vector<Op> ops;
+};
+
+struct ParseResult {
+  std::optional<Scenario> scenario;
+  std::string error;       // "FILE:LINE: reason"
+};
+
+ParseResult parse(const std::string& text, const std::string& name, const std::string& base_dir);
+ParseResult parse_file(const std::string& path);
+
+enum class CheckMode : std::uint8_t { kEvery, kEnd, kNone };
+
+struct CutRecord {
+  std::uint32_t line = 0;  // the scenario line that made the cut
+  Vec3 centre;
+  CutReport report;
+};
+
+struct RunResult {
+  bool ok = true;
+  int exit_code = 0;       // 0 passed, 1 a check or expectation failed, 2 unusable input
+  std::string error;       // "FILE:LINE: what failed"
+  std::uint32_t failed_line = 0;
+  std::vector<CutRecord> cuts;
+  std::uint64_t removals = 0;
+  std::uint64_t unresolved = 0;
+  std::string hash;        // of the final mesh
+  std::uint32_t tets = 0;
+};
+
+struct RunOptions {
+  CheckMode check = CheckMode::kEvery;
+  std::optional<CutParams> initial_params;  // before the scenario's own settings
+};
+
+// Runs the scenario; the final mesh is left in `mesh_out` when given.
+RunResult run(const Scenario& scenario, const RunOptions& options = {}, TetMesh* mesh_out = nullptr);
+
+}  // namespace tetcut::scenario

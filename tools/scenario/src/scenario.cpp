@@ -1,0 +1,338 @@
+#include "tetcut/scenario/scenario.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "tetcut/canonical_hash.hpp"
+#include "tetcut/invariants/check.hpp"
+#include "tetcut/io.hpp"
+#include "tetcut/mesh_builder.hpp"
+
+namespace tetcut::scenario {
+namespace {
+
+std::vector<std::string> tokens_of(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line.substr(0, line.find('#')));
+  for (std::string t; in >> t;) out.push_back(t);
+  return out;
+}
+
+std::optional<double> number(const std::string& s) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc{} || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::optional<std::uint64_t> count(const std::string& s) {
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc{} || end != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+std::optional<Vec3> point(const std::string& s) {
+  const auto c1 = s.find(','), c2 = c1 == std::string::npos ? c1 : s.find(',', c1 + 1);
+  if (c2 == std::string::npos) return std::nullopt;
+  const auto x = number(s.substr(0, c1)), y = number(s.substr(c1 + 1, c2 - c1 - 1)), z = number(s.substr(c2 + 1));
+  if (!x || !y || !z) return std::nullopt;
+  return Vec3{*x, *y, *z};
+}
+
+bool is_param(const std::string& w) {
+  return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
+         w == "split";
+}
+
+// Applies a parameter line to `params`; a message when the value is not acceptable.
+std::optional<std::string> set_param(CutParams& params, const std::string& name, const std::string& value) {
+  CutParams next = params;
+  if (name == "strategy") {
+    const auto s = parse_removal_strategy(value);
+    if (!s) return "strategy must be basic, neighbours or combined";
+    next.strategy = *s;
+  } else if (name == "split") {
+    if (value == "templates") next.split_method = SplitMethod::kTemplates;
+    else if (value == "bisection") next.split_method = SplitMethod::kBisection;
+    else return "split must be templates or bisection";
+  } else if (name == "depth" || name == "iterations") {
+    const auto n = count(value);
+    if (!n || *n > 64) return name + " must be an integer between 1 and 64";
+    (name == "depth" ? next.search_depth : next.max_refine_iterations) = static_cast<std::uint32_t>(*n);
+  } else {
+    const auto v = number(value);
+    if (!v) return name + " must be a finite number";
+    (name == "diameter" ? next.tool_diameter : name == "dref_factor" ? next.d_ref_factor : next.p) = *v;
+  }
+  if (auto invalid = validate(next)) return invalid;
+  params = next;
+  return std::nullopt;
+}
+
+// Face-connected pieces of the mesh: O(#T), for an expectation, never on the cut path.
+std::uint64_t components(const TetMesh& mesh) {
+  std::vector<std::uint8_t> seen(mesh.tet_capacity(), 0);
+  std::vector<TetId> stack;
+  std::uint64_t pieces = 0;
+  for (std::uint32_t s = 0; s < mesh.tet_capacity(); ++s) {
+    if (!mesh.is_live(TetId{s}) || seen[s]) continue;
+    ++pieces;
+    seen[s] = 1;
+    stack.assign(1, TetId{s});
+    while (!stack.empty()) {
+      const TetId t = stack.back();
+      stack.pop_back();
+      for (int f = 0; f < 4; ++f) {
+        const FaceRef n = mesh.neighbour(t, f);
+        if (n.valid() && !seen[n.tet.value]) {
+          seen[n.tet.value] = 1;
+          stack.push_back(n.tet);
+        }
+      }
+    }
+  }
+  return pieces;
+}
+
+}  // namespace
+
+ParseResult parse(const std::string& text, const std::string& name, const std::string& base_dir) {
+  ParseResult result;
+  Scenario s{name, base_dir, {}};
+  std::istringstream in(text);
+  std::string line;
+  std::uint32_t n = 0;
+  auto fail = [&](const std::string& why) {
+    result.error = name + ":" + std::to_string(n) + ": " + why;
+    return result;
+  };
+  CutParams probe;  // parameters are validated while parsing, so a bad value is a parse error
+  while (std::getline(in, line)) {
+    ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::vector<std::string> t = tokens_of(line);
+    if (t.empty()) continue;
+    Op op{OpKind::kCut, n, {}, {}, {}, {}, 0.0, 0};
+    const std::string& w = t[0];
+    if (w == "mesh") {
+      if (t.size() != 2) return fail("expected: mesh PATH");
+      op.kind = OpKind::kMesh;
+      op.text = t[1];
+    } else if (is_param(w)) {
+      if (t.size() != 2) return fail("expected: " + w + " VALUE");
+      if (auto bad = set_param(probe, w, t[1])) return fail(*bad);
+      op.kind = OpKind::kParam;
+      op.text = w;
+      op.value = t[1];
+    } else if (w == "cut" || w == "remove") {
+      const auto p = t.size() == 2 ? point(t[1]) : std::nullopt;
+      if (!p) return fail("expected: " + w + " X,Y,Z with finite numbers");
+      op.kind = w == "cut" ? OpKind::kCut : OpKind::kRemove;
+      op.a = *p;
+    } else if (w == "sweep") {
+      const auto a = t.size() == 4 ? point(t[1]) : std::nullopt;
+      const auto b = t.size() == 4 ? point(t[2]) : std::nullopt;
+      const auto step = t.size() == 4 ? number(t[3]) : std::nullopt;
+      if (!a || !b || !step || *step <= 0) return fail("expected: sweep X,Y,Z X,Y,Z STEP with STEP > 0");
+      if (norm(*b - *a) / *step > 100000) return fail("sweep of more than 100000 cuts");
+      op.kind = OpKind::kSweep;
+      op.a = *a;
+      op.b = *b;
+      op.step = *step;
+    } else if (w == "compact") {
+      if (t.size() != 1) return fail("expected: compact");
+      op.kind = OpKind::kCompact;
+    } else if (w == "check") {
+      if (t.size() > 2) return fail("expected: check [local|full|exact]");
+      op.kind = OpKind::kCheck;
+      op.text = t.size() == 2 ? t[1] : "full";
+      if (op.text != "local" && op.text != "full" && op.text != "exact") return fail("check level must be local, full or exact");
+    } else if (w == "expect") {
+      if (t.size() != 3) return fail("expected: expect hash HEX | tets N | unresolved N | components N");
+      if (t[1] == "hash") {
+        if (t[2].size() != 16 || t[2].find_first_not_of("0123456789abcdef") != std::string::npos)
+          return fail("a hash is 16 lowercase hex digits");
+        op.kind = OpKind::kExpectHash;
+        op.text = t[2];
+      } else if (t[1] == "tets" || t[1] == "unresolved" || t[1] == "components") {
+        const auto c = count(t[2]);
+        if (!c) return fail("expected a non-negative integer");
+        op.kind = t[1] == "tets" ? OpKind::kExpectTets : t[1] == "unresolved" ? OpKind::kExpectUnresolved : OpKind::kExpectComponents;
+        op.count = *c;
+      } else {
+        return fail("unknown expectation '" + t[1] + "'");
+      }
+    } else {
+      return fail("unknown operation '" + w + "'");
+    }
+    s.ops.push_back(std::move(op));
+  }
+  result.scenario = std::move(s);
+  return result;
+}
+
+ParseResult parse_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {std::nullopt, path + ":0: cannot open the scenario"};
+  std::ostringstream text;
+  text << in.rdbuf();
+  const auto slash = path.find_last_of('/');
+  return parse(text.str(), path, slash == std::string::npos ? "." : path.substr(0, slash));
+}
+
+RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh_out) {
+  RunResult result;
+  TetMesh mesh;
+  std::optional<Cutter> cutter;
+  std::optional<invariants::LocalChecker> local;
+  CutParams params = options.initial_params.value_or(CutParams{});
+  auto stop = [&](const Op& op, int code, const std::string& why) {
+    result.ok = false;
+    result.exit_code = code;
+    result.failed_line = op.line;
+    result.error = scenario.name + ":" + std::to_string(op.line) + ": " + why;
+  };
+  auto violations = [](const invariants::CheckReport& r) {
+    std::string s;
+    for (const invariants::Violation& v : r.violations)
+      s += std::string(s.empty() ? "" : "; ") + invariants::id_string(v.id) + " " + invariants::description(v.id) + ": " + v.detail;
+    return s;
+  };
+  // After every mutating operation: the local check (default), or the full one.
+  auto after = [&](const Op& op) {
+    if (options.check == CheckMode::kNone || !cutter) return true;
+    if (options.check == CheckMode::kEvery) {
+      const invariants::CheckReport r = local->after_operation(mesh, cutter->last_removed(), cutter->last_created());
+      if (!r.ok()) {
+        stop(op, 1, "invariant violated: " + violations(r));
+        return false;
+      }
+    }
+    return true;
+  };
+
+  for (const Op& op : scenario.ops) {
+    if (op.kind != OpKind::kMesh && op.kind != OpKind::kParam && !cutter) {
+      stop(op, 2, "no mesh loaded yet (use: mesh PATH)");
+      return result;
+    }
+    switch (op.kind) {
+      case OpKind::kMesh: {
+        const std::string path = op.text.front() == '/' ? op.text : scenario.base_dir + "/" + op.text;
+        ReadResult read = read_mesh(path);
+        if (!read.mesh) {
+          stop(op, 2, read.error ? read.error->message() : "cannot read " + path);
+          return result;
+        }
+        BuildResult built = build_mesh(*read.mesh);
+        if (!built.ok()) {
+          stop(op, 2, path + ": not a valid manifold mesh: " + built.problems.front().message);
+          return result;
+        }
+        cutter.reset();
+        mesh = std::move(*built.mesh);
+        cutter.emplace(mesh, params);
+        local.emplace(mesh);
+        break;
+      }
+      case OpKind::kParam:
+        if (auto bad = set_param(params, op.text, op.value)) {
+          stop(op, 2, *bad);
+          return result;
+        }
+        if (cutter) cutter->set_params(params);
+        break;
+      case OpKind::kCut:
+      case OpKind::kSweep: {
+        const double length = op.kind == OpKind::kSweep ? norm(op.b - op.a) : 0.0;
+        const auto steps = op.kind == OpKind::kSweep ? static_cast<std::uint64_t>(std::floor(length / op.step)) : 0;
+        for (std::uint64_t k = 0; k <= steps; ++k) {
+          const Vec3 centre = steps == 0 ? op.a : op.a + (static_cast<double>(k) * op.step / length) * (op.b - op.a);
+          const CutReport r = cutter->cut(centre);
+          result.cuts.push_back({op.line, centre, r});
+          result.removals += r.tets_removed;
+          result.unresolved += r.unresolved;
+          if (!r.ok) {
+            stop(op, 1, "cut failed: " + r.failure);
+            return result;
+          }
+          if (!after(op)) return result;
+        }
+        break;
+      }
+      case OpKind::kRemove: {
+        const TetId t = cutter->tet_containing(op.a);
+        if (!t.valid()) break;  // nothing there any more: a no-op, as a cautery in the air
+        const CutReport r = cutter->remove(t);
+        result.removals += r.tets_removed;
+        result.unresolved += r.unresolved;
+        if (!r.ok) {
+          stop(op, 1, "removal failed: " + r.failure);
+          return result;
+        }
+        if (!after(op)) return result;
+        break;
+      }
+      case OpKind::kCompact:
+        mesh.compact();
+        cutter.emplace(mesh, params);
+        local.emplace(mesh);
+        break;
+      case OpKind::kCheck: {
+        invariants::CheckOptions o;
+        o.level = op.text == "exact" ? invariants::CheckLevel::kExact : invariants::CheckLevel::kFull;
+        const invariants::CheckReport r = invariants::check_mesh(mesh, o);
+        if (!r.ok()) {
+          stop(op, 1, "check failed: " + violations(r));
+          return result;
+        }
+        break;
+      }
+      case OpKind::kExpectHash: {
+        const std::string h = hash_to_hex(canonical_hash(mesh));
+        if (h != op.text) {
+          stop(op, 1, "expected hash " + op.text + ", got " + h);
+          return result;
+        }
+        break;
+      }
+      case OpKind::kExpectTets:
+        if (mesh.num_tets() != op.count) {
+          stop(op, 1, "expected " + std::to_string(op.count) + " tets, got " + std::to_string(mesh.num_tets()));
+          return result;
+        }
+        break;
+      case OpKind::kExpectComponents: {
+        const std::uint64_t pieces = components(mesh);
+        if (pieces != op.count) {
+          stop(op, 1, "expected " + std::to_string(op.count) + " connected pieces, got " + std::to_string(pieces));
+          return result;
+        }
+        break;
+      }
+      case OpKind::kExpectUnresolved:
+        if (result.unresolved != op.count) {
+          stop(op, 1, "expected " + std::to_string(op.count) + " unresolved, got " + std::to_string(result.unresolved));
+          return result;
+        }
+        break;
+    }
+  }
+  if (options.check == CheckMode::kEnd && cutter) {
+    const invariants::CheckReport r = invariants::check_mesh(mesh);
+    if (!r.ok()) {
+      result.ok = false;
+      result.exit_code = 1;
+      result.error = scenario.name + ": invariant violated at the end: " + violations(r);
+    }
+  }
+  result.hash = hash_to_hex(canonical_hash(mesh));
+  result.tets = mesh.num_tets();
+  if (mesh_out) *mesh_out = std::move(mesh);
+  return result;
+}
+
+}  // namespace tetcut::scenario
