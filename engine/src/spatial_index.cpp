@@ -131,12 +131,15 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
           if (t >= stamps_.size() || stamps_[t] == stamp_) continue;
           stamps_[t] = stamp_;
           if (!mesh.is_live(TetId{t})) continue;
-          const auto v = mesh.tet(TetId{t});
-          if (intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
-            out.push_back(TetId{t});
+          if (meets(mesh, TetId{t}, ball)) out.push_back(TetId{t});
         }
       }
   std::sort(out.begin(), out.end());
+}
+
+bool SpatialIndex::meets(const TetMesh& mesh, TetId t, const Ball& ball) {
+  const auto v = mesh.tet(t);
+  return intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
 }
 
 }  // namespace tetcut

@@ -45,4 +45,21 @@ double distance_to_tet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& 
   return best;
 }
 
+bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 p[4] = {a, b, c, d};
+  const double r2 = ball.radius * ball.radius;
+  auto axis_gap = [&](double centre, double p0, double p1, double p2, double p3) {
+    const double lo = std::min(std::min(p0, p1), std::min(p2, p3)), hi = std::max(std::max(p0, p1), std::max(p2, p3));
+    return centre < lo ? lo - centre : centre > hi ? centre - hi : 0.0;
+  };
+  const double gx = axis_gap(ball.centre.x, a.x, b.x, c.x, d.x), gy = axis_gap(ball.centre.y, a.y, b.y, c.y, d.y),
+               gz = axis_gap(ball.centre.z, a.z, b.z, c.z, d.z);
+  if (gx * gx + gy * gy + gz * gz > r2) return false;
+  for (const Vec3& q : p) {
+    const Vec3 delta = q - ball.centre;
+    if (dot(delta, delta) <= r2) return true;
+  }
+  return distance_to_tet(ball.centre, a, b, c, d) <= ball.radius;
+}
+
 }  // namespace tetcut

@@ -51,6 +51,7 @@ class SpatialIndex {
     bool used = false;
   };
 
+  [[nodiscard]] static bool meets(const TetMesh& mesh, TetId t, const Ball& ball);
   [[nodiscard]] std::int32_t cell_of(double x) const;
   [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
   [[nodiscard]] const std::vector<std::uint32_t>* find_bucket(std::uint64_t key) const;

@@ -14,9 +14,9 @@ struct Ball {
 // closest point on its boundary (closest point on each face triangle, Ericson's method).
 double distance_to_tet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
-// Whether the ball and the closed tetrahedron share a point.
-inline bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return distance_to_tet(ball.centre, a, b, c, d) <= ball.radius;
-}
+// Whether the ball and the closed tetrahedron share a point. The exact closest-point test runs
+// behind two cheap ones: most candidates are rejected by their bounding box, and a tet with a
+// vertex in the ball is accepted at once.
+bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 }  // namespace tetcut
