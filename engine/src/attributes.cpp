@@ -36,6 +36,10 @@ void VertexAttributes::resize(std::uint32_t vertex_count) {
   size_ = vertex_count;
 }
 
+void VertexAttributes::reserve(std::uint32_t vertex_count) {
+  for (Channel& ch : channels_) ch.values.reserve(std::size_t{vertex_count} * ch.width);
+}
+
 void VertexAttributes::interpolate(std::uint32_t dst, std::uint32_t a, std::uint32_t b, double t) {
   for (Channel& ch : channels_) {
     const std::size_t w = ch.width;

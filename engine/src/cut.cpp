@@ -52,6 +52,10 @@ std::optional<std::string> validate(const CutParams& p) {
 
 Cutter::Cutter(TetMesh& mesh, const CutParams& params)
     : mesh_(mesh), params_(params), index_(mean_edge_length(mesh)), remover_(removal_options(params)) {
+  // Headroom of half the mesh again: cuts grow it (refinement creates more than removal takes)
+  // and a reallocation of a million-tet array in the middle of a cut is a latency spike.
+  mesh_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096,
+                mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024);
   index_.build(mesh_);
 }
 

@@ -377,6 +377,17 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
   live_tets_ = live_tets_ - static_cast<std::uint32_t>(removed.size()) + static_cast<std::uint32_t>(added.size());
 }
 
+void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
+  tet_verts_.reserve(tets);
+  tet_adj_.reserve(tets);
+  tet_stamp_.reserve(tets);
+  positions_.reserve(vertices);
+  vert_tet_.reserve(vertices);
+  vert_boundary_faces_.reserve(vertices);
+  free_vert_next_.reserve(vertices);
+  attributes_.reserve(vertices);
+}
+
 Renumbering TetMesh::compact() {
   assert(!journal_.active && "compact() inside a transaction");
   Renumbering map;

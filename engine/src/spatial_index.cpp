@@ -18,12 +18,12 @@ std::uint64_t SpatialIndex::pack(std::int32_t i, std::int32_t j, std::int32_t k)
   return (bits(i) << 42) | (bits(j) << 21) | bits(k);
 }
 
-const std::vector<std::uint32_t>* SpatialIndex::find_bucket(std::uint64_t key) const {
+const SpatialIndex::Slot* SpatialIndex::find_cell(std::uint64_t key) const {
   if (table_.empty()) return nullptr;
   const std::size_t mask = table_.size() - 1;
   for (std::size_t s = mix64(key) & mask;; s = (s + 1) & mask) {
     if (!table_[s].used) return nullptr;
-    if (table_[s].key == key) return &buckets_[table_[s].bucket];
+    if (table_[s].key == key) return &table_[s];
   }
 }
 
@@ -40,27 +40,32 @@ void SpatialIndex::grow_table() {
   }
 }
 
-std::vector<std::uint32_t>& SpatialIndex::bucket_for(std::uint64_t key) {
+SpatialIndex::Slot& SpatialIndex::cell_for(std::uint64_t key) {
   if ((used_slots_ + 1) * 2 > table_.size()) grow_table();
   const std::size_t mask = table_.size() - 1;
   std::size_t s = mix64(key) & mask;
   for (; table_[s].used; s = (s + 1) & mask)
-    if (table_[s].key == key) return buckets_[table_[s].bucket];
-  // Cells are never deleted: an emptied cell keeps its (empty) bucket for the next tets there.
-  table_[s] = {key, static_cast<std::uint32_t>(buckets_.size()), true};
+    if (table_[s].key == key) return table_[s];
+  // Cells are never deleted: an emptied cell keeps its slot for the next tets there.
+  table_[s] = {key, kNone, true};
   ++used_slots_;
-  buckets_.emplace_back();
-  return buckets_.back();
+  return table_[s];
 }
 
 void SpatialIndex::build(const TetMesh& mesh) {
   table_.clear();
   used_slots_ = 0;
-  buckets_.clear();
+  nodes_.clear();
+  free_node_ = kNone;
   ranges_.assign(mesh.tet_capacity(), CellRange{});
   entries_ = 0;
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
     if (mesh.is_live(TetId{t})) insert(mesh, TetId{t});
+  // Headroom, so that the cuts that follow find nodes and slots without growing anything.
+  nodes_.reserve(nodes_.size() + nodes_.size() / 2 + 1024);
+  ranges_.reserve(ranges_.size() + ranges_.size() / 2 + 1024);
+  stamps_.reserve(ranges_.capacity());
+  while ((used_slots_ + used_slots_ / 2 + 1) * 2 > table_.size()) grow_table();
 }
 
 void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
@@ -80,7 +85,16 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   for (std::int32_t i = r.lo[0]; i <= r.hi[0]; ++i)
     for (std::int32_t j = r.lo[1]; j <= r.hi[1]; ++j)
       for (std::int32_t k = r.lo[2]; k <= r.hi[2]; ++k) {
-        bucket_for(pack(i, j, k)).push_back(t.value);
+        std::uint32_t n = free_node_;
+        if (n != kNone) {
+          free_node_ = nodes_[n].next;
+        } else {
+          n = static_cast<std::uint32_t>(nodes_.size());
+          nodes_.push_back({});
+        }
+        Slot& cell = cell_for(pack(i, j, k));
+        nodes_[n] = {t.value, cell.head};
+        cell.head = n;
         ++entries_;
       }
 }
@@ -91,12 +105,15 @@ void SpatialIndex::erase(TetId t) {
   for (std::int32_t i = r.lo[0]; i <= r.hi[0]; ++i)
     for (std::int32_t j = r.lo[1]; j <= r.hi[1]; ++j)
       for (std::int32_t k = r.lo[2]; k <= r.hi[2]; ++k) {
-        std::vector<std::uint32_t>& b = bucket_for(pack(i, j, k));
-        const auto it = std::find(b.begin(), b.end(), t.value);
-        if (it != b.end()) {
-          *it = b.back();  // order inside a cell does not matter: queries sort
-          b.pop_back();
+        Slot& cell = cell_for(pack(i, j, k));
+        for (std::uint32_t* link = &cell.head; *link != kNone; link = &nodes_[*link].next) {
+          const std::uint32_t n = *link;
+          if (nodes_[n].tet != t.value) continue;
+          *link = nodes_[n].next;
+          nodes_[n].next = free_node_;
+          free_node_ = n;
           --entries_;
+          break;
         }
       }
   r.indexed = false;
@@ -125,9 +142,10 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
   for (std::int32_t i = i0; i <= i1; ++i)
     for (std::int32_t j = j0; j <= j1; ++j)
       for (std::int32_t k = k0; k <= k1; ++k) {
-        const std::vector<std::uint32_t>* b = find_bucket(pack(i, j, k));
-        if (!b) continue;
-        for (std::uint32_t t : *b) {
+        const Slot* cell = find_cell(pack(i, j, k));
+        if (!cell) continue;
+        for (std::uint32_t n = cell->head; n != kNone; n = nodes_[n].next) {
+          const std::uint32_t t = nodes_[n].tet;
           if (t >= stamps_.size() || stamps_[t] == stamp_) continue;
           stamps_[t] = stamp_;
           if (!mesh.is_live(TetId{t})) continue;

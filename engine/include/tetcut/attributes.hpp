@@ -39,6 +39,7 @@ class VertexAttributes {
   // Number of vertices every channel is sized for.
   [[nodiscard]] std::uint32_t size() const { return size_; }
   void resize(std::uint32_t vertex_count);
+  void reserve(std::uint32_t vertex_count);
 
   // dst := (1 - t) * a + t * b on every channel.
   void interpolate(std::uint32_t dst, std::uint32_t a, std::uint32_t b, double t);

@@ -69,7 +69,8 @@ struct CutReport {
 
 class Cutter {
  public:
-  // Indexes the mesh once (O(#T)); the grid's cell is the mesh's mean edge length.
+  // Indexes the mesh once (O(#T)); the grid's cell is the mesh's mean edge length. Reserves
+  // room in the mesh for half as many tets again, so cuts do not reallocate its arrays.
   Cutter(TetMesh& mesh, const CutParams& params);
 
   // Fails (returns the message, keeps the old parameters) when validate() does.

@@ -124,6 +124,10 @@ class TetMesh {
                     std::vector<TetId>* created = nullptr);
   void remove_tets(std::span<const TetId> removed) { replace_tets(removed, {}, nullptr); }
 
+  // Reserves room for this many tet and vertex ids (scratch included), so that operations
+  // growing the mesh up to there never reallocate: the way to no allocation per cut.
+  void reserve(std::uint32_t tets, std::uint32_t vertices);
+
   // Renumbers live tets and vertices densely, keeping their relative order; attributes follow.
   // Not allowed inside a transaction.
   Renumbering compact();

@@ -47,21 +47,29 @@ class SpatialIndex {
   };
   struct Slot {
     std::uint64_t key = 0;
-    std::uint32_t bucket = 0;
+    std::uint32_t head = kNone;  // first node of the cell's list
     bool used = false;
   };
+  // Cell lists are singly linked through one node pool with a free list, so that inserting
+  // and erasing never allocate once the pool has grown (vectors per cell would).
+  struct Node {
+    std::uint32_t tet;
+    std::uint32_t next;
+  };
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
   [[nodiscard]] static bool meets(const TetMesh& mesh, TetId t, const Ball& ball);
   [[nodiscard]] std::int32_t cell_of(double x) const;
   [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
-  [[nodiscard]] const std::vector<std::uint32_t>* find_bucket(std::uint64_t key) const;
-  std::vector<std::uint32_t>& bucket_for(std::uint64_t key);
+  [[nodiscard]] const Slot* find_cell(std::uint64_t key) const;
+  Slot& cell_for(std::uint64_t key);
   void grow_table();
 
   double cell_size_;
   std::vector<Slot> table_;
   std::size_t used_slots_ = 0;
-  std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<Node> nodes_;
+  std::uint32_t free_node_ = kNone;
   std::vector<CellRange> ranges_;      // by tet id
   std::vector<std::uint32_t> stamps_;  // by tet id: dedup during a query
   std::uint32_t stamp_ = 0;

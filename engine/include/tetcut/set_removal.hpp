@@ -1,0 +1,97 @@
+// Can a *set* of tetrahedra be removed at once without making the mesh non-manifold?
+// (paper 3.5: the neighbour strategy removes T together with some of its neighbours, and the
+// set has to be tested as a whole; the one-tet cases of removability.hpp do not compose.)
+//
+// After the set goes, every vertex it touches must keep either no tet at all, or one
+// face-connected shell whose link is a disk; every edge it touches must keep either no tet or
+// one contiguous run of tets around it. The disk test is by Euler characteristic: the
+// remaining link is a subcomplex of a disk or a sphere, so, when it is face-connected, it is a
+// disk iff V - E + F == 1 (V: edges from the vertex, E: faces through it, F: tets). A pinch
+// or a hole makes it 0 or less. The edge test is implied by the vertex test at its two ends,
+// but it runs first because it names the edge, which is what the neighbour strategy needs.
+//
+// Everything is local: O(sum of the touched shells), no scan of the mesh, no allocation once
+// the workspace has grown to the mesh's capacity (stamps, never cleared arrays).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tetcut/edge_key_set.hpp"
+#include "tetcut/edge_split.hpp"
+#include "tetcut/ids.hpp"
+#include "tetcut/mesh.hpp"
+#include "tetcut/removability.hpp"
+
+namespace tetcut {
+
+struct SetRemovalCheck {
+  bool ok = true;
+  SingularityKind kind = SingularityKind::kNone;
+  VertId vertex;  // kVertex: the first offending vertex
+  Edge edge{};    // kEdge: the first offending edge
+  // A tet of the set containing the offending vertex or edge (and its local edge for kEdge):
+  // where a search that wants to repair the offence starts.
+  TetId tet;
+  std::uint8_t local_edge = 0;
+};
+
+// Caller-owned scratch for set_removable() and for the searches of the removal strategies,
+// which ask questions about "the mesh once the marked set is gone". Reuse one per thread.
+class SetRemovalWorkspace {
+ public:
+  // Stamps `set` as the tets about to go (a tet listed twice counts once). Every query below
+  // is about the mesh without the marked tets, until the next mark().
+  void mark(const TetMesh& mesh, std::span<const TetId> set);
+  [[nodiscard]] bool marked(TetId t) const { return t.value < set_stamp_.size() && set_stamp_[t.value] == set_gen_; }
+
+  // The test on `set` (marks it first). Edges are tested before vertices.
+  SetRemovalCheck check(const TetMesh& mesh, std::span<const TetId> set);
+
+  // The unmarked tets around v, split into face-connected components (connected through faces
+  // containing v): appended to `tets` component after component, each size appended to
+  // `sizes`. `seed` is any tet containing v (marked or not).
+  void remaining_components(const TetMesh& mesh, VertId v, TetId seed, std::vector<TetId>& tets,
+                            std::vector<std::uint32_t>& sizes);
+
+  // Paper 3.5, figure 4: breadth-first from the marked tets around v, through unmarked tets
+  // around v, to the nearest unmarked tet with a boundary face containing v (the shell's
+  // border). Appends that path (without the marked start) to `out`, nearest-to-the-set first.
+  // False when no path of at most `max_depth` tets exists; true with nothing appended when a
+  // marked tet already has a boundary face through v.
+  bool path_to_border(const TetMesh& mesh, VertId v, TetId seed, int max_depth, std::vector<TetId>& out);
+
+  // The unmarked tets around the edge (seed, local_edge) in rotation order, split into maximal
+  // runs of consecutive tets: appended to `tets` run after run, sizes to `sizes`.
+  void remaining_runs(const TetMesh& mesh, TetId seed, int local_edge, std::vector<TetId>& tets,
+                      std::vector<std::uint32_t>& sizes);
+
+ private:
+  void grow(const TetMesh& mesh);
+  // The whole shell of v into shell_, stamped with shell_gen_.
+  void collect_shell(const TetMesh& mesh, VertId v, TetId seed);
+  bool vertex_ok(const TetMesh& mesh, VertId v, TetId seed);
+  bool edge_ok(const TetMesh& mesh, TetId t, int local_edge);
+
+  std::vector<std::uint32_t> set_stamp_;    // per tet: == set_gen_ when marked
+  std::vector<std::uint32_t> shell_stamp_;  // per tet: == shell_gen_ when in shell_
+  std::vector<std::uint32_t> visit_stamp_;  // per tet: BFS visits
+  std::vector<std::uint32_t> parent_;       // per tet: BFS parent (valid where visited)
+  std::vector<std::uint32_t> vert_stamp_;   // per vertex: touched by the checked set
+  std::vector<std::uint32_t> link_stamp_;   // per vertex: counted in the current link
+  std::uint32_t set_gen_ = 0, shell_gen_ = 0, visit_gen_ = 0, vert_gen_ = 0, link_gen_ = 0;
+
+  std::vector<TetId> shell_;
+  std::vector<TetId> queue_;
+  std::vector<std::uint8_t> depth_;
+  std::vector<TetId> ring_;
+  EdgeKeySet edges_seen_;
+};
+
+// Convenience: the test with a given workspace.
+inline SetRemovalCheck set_removable(const TetMesh& mesh, std::span<const TetId> set, SetRemovalWorkspace& ws) {
+  return ws.check(mesh, set);
+}
+
+}  // namespace tetcut

@@ -1,0 +1,65 @@
+#include "tetcut/removability.hpp"
+
+#include <cassert>
+
+#include "tetcut/local_tables.hpp"
+
+namespace tetcut {
+
+const char* to_string(SingularityKind kind) {
+  switch (kind) {
+    case SingularityKind::kNone: return "none";
+    case SingularityKind::kVertex: return "vertex";
+    case SingularityKind::kEdge: return "edge";
+  }
+  return "?";
+}
+
+Removability removability(const TetMesh& mesh, TetId t) {
+  assert(mesh.is_live(t));
+  int faces[4];
+  int n = 0;
+  for (int f = 0; f < 4; ++f)
+    if (mesh.is_boundary_face(t, f)) faces[n++] = f;
+
+  Removability r;
+  r.paper_case = static_cast<std::uint8_t>(n >= 3 ? 4 : n + 1);
+  switch (n) {
+    case 0:
+      for (int i = 0; i < 4; ++i) {
+        const VertId v = mesh.vertex(t, i);
+        if (mesh.is_boundary_vertex(v)) {
+          r.kind = SingularityKind::kVertex;
+          r.vertex = v;
+          return r;
+        }
+      }
+      break;
+    case 1: {
+      const VertId v = mesh.vertex(t, faces[0]);  // face i is opposite vertex i
+      if (mesh.is_boundary_vertex(v)) {
+        r.kind = SingularityKind::kVertex;
+        r.vertex = v;
+        return r;
+      }
+      break;
+    }
+    case 2: {
+      // Faces f1 and f2 omit vertices f1 and f2 respectively: the edge joining those two is
+      // contained in neither face.
+      const int e = kEdgeIndex[faces[0]][faces[1]];
+      if (mesh.is_boundary_edge(t, e)) {
+        r.kind = SingularityKind::kEdge;
+        r.edge = {mesh.vertex(t, faces[0]), mesh.vertex(t, faces[1])};
+        return r;
+      }
+      break;
+    }
+    default:
+      break;
+  }
+  r.removable = true;
+  return r;
+}
+
+}  // namespace tetcut
