@@ -1,0 +1,153 @@
+// The table of `tetcut` subcommands and their help texts.
+#include <array>
+#include <ostream>
+
+#include "command.hpp"
+
+namespace tetcut::cli {
+
+namespace {
+
+constexpr std::string_view kCheckHelp =
+    "Runs the independent invariant checker (I1-I9) on a mesh file and names every violated\n"
+    "invariant with its count, its first offending tets and vertices, and a detail line.\n"
+    "\n"
+    "The file is checked from its raw arrays, so a non-manifold or inverted mesh is diagnosed\n"
+    "rather than refused. If the engine can also build its mesh from the file, that mesh is\n"
+    "checked too (adjacency I2 and bookkeeping I8), and a refusal by the engine is reported.\n"
+    "\n"
+    "  --level full    (default) every invariant, O(n)\n"
+    "  --level exact   full, plus the geometric tests (boundary self-intersection, exact)\n"
+    "  --level local   builds the engine mesh and runs the local checker as if one operation\n"
+    "                  had just replaced every tet by itself, so that the code path run after\n"
+    "                  each cut is exercised on the whole file; if the engine cannot build the\n"
+    "                  mesh, falls back to the full check of the raw arrays (with a note)\n"
+    "  --min-radius-ratio R   I7: a tet with radius ratio below R (0..1) is a violation\n"
+    "  --json          the report as JSON on stdout\n"
+    "\n"
+    "exit: 0 valid, 1 an invariant is violated, 2 unreadable input or bad usage\n";
+
+constexpr std::string_view kInfoHelp =
+    "Prints counts, boundary, volume, quality statistics (radius ratio min/mean/histogram,\n"
+    "minimum dihedral angle), bounding box, manifold status and the canonical hash of a mesh.\n"
+    "\n"
+    "  --json   as JSON (quality values are null when there are no tets): keys vertices,\n"
+    "           tets, boundary_faces, volume, min_radius_ratio,\n"
+    "           mean_radius_ratio, min_dihedral_deg, mean_min_dihedral_deg,\n"
+    "           radius_ratio_histogram, bounding_box, manifold, oriented, hash, ...\n"
+    "\n"
+    "`manifold` is true when the full checker finds no violation of I1, I3, I5 or I6;\n"
+    "`oriented` when it finds none of I4.\n"
+    "\n"
+    "exit: 0, 2 unreadable input or bad usage\n";
+
+constexpr std::string_view kConvertHelp =
+    "Converts a mesh between the supported formats, chosen by file extension, and prints the\n"
+    "canonical hash of the mesh (identical for IN and OUT when the round trip is faithful).\n"
+    "The output is written to a temporary file and renamed: a failure leaves no partial file.\n"
+    "\n"
+    "  --format F   the output format, for when the extension is not enough: msh22 (the\n"
+    "               default for .msh) or msh41; also vtu, vtk, medit, tetgen\n"
+    "\n"
+    "exit: 0, 2 unreadable input, unwritable output or bad usage\n";
+
+constexpr std::string_view kGenHelp =
+    "Generates a mesh: cylinder, sheet, box (TetGen), surface FILE (any closed .off/.stl/.obj\n"
+    "surface through TetGen), liver (CGAL Mesh_3). Prints the canonical hash.\n"
+    "\n"
+    "exit: 0, 2 bad parameters or unwritable output\n";
+
+constexpr std::string_view kRepairHelp =
+    "Makes a non-manifold or inverted mesh manifold and positively oriented with the smallest\n"
+    "change it can, and reports what it changed.\n"
+    "\n"
+    "exit: 0, 1 the mesh could not be repaired, 2 unreadable input or bad usage\n";
+
+constexpr std::string_view kRefineHelp =
+    "Refines a mesh locally by edge splitting (paper 3.2) and checks the result.\n"
+    "\n"
+    "  --uniform                 split every edge once (8 times the tets)\n"
+    "  --random-edges N --seed S split N edges picked at random\n"
+    "  --ball X,Y,Z,R            the paper's loop around a tool of radius R:\n"
+    "      --dref D              split edges longer than D (default 1.5 x tool diameter)\n"
+    "      --p P                 also split shell edges longer than P x |e| (default 1.5)\n"
+    "      --max-iterations N    bound on the loop (default 8)\n"
+    "  --strategy templates|bisection   the 10 split configurations, or sequential bisection\n"
+    "  --report R.json           summary: iterations, edges_split, tets_created,\n"
+    "                            min_radius_ratio, hash\n"
+    "\n"
+    "exit: 0, 1 the result violates an invariant or a split was refused, 2 bad input or usage\n";
+
+constexpr std::string_view kCutHelp =
+    "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
+    "each cut refined then removed without breaking the manifold (paper 3.1-3.7).\n"
+    "\n"
+    "  --strategy basic|neighbours|combined   removal strategy (default combined)\n"
+    "  --split templates|bisection            refinement (default templates)\n"
+    "  --dref-factor F --p P --depth N        the paper's parameters (1.5, 1.5, 10)\n"
+    "  --check every|end|none   local check after every cut (default), full check at the end\n"
+    "  --out M                  the final mesh\n"
+    "  --report R.json          `cuts` (time in microseconds and counts per cut) and `summary`\n"
+    "                           (cuts, p50_us, p90_us, p99_us, max_us, tets_removed,\n"
+    "                           tets_created, unresolved, min_radius_ratio, hash)\n"
+    "  --frames DIR             a .vtu snapshot after every cut, for ParaView\n"
+    "\n"
+    "exit: 0, 1 an invariant broke, 2 bad input or usage\n";
+
+constexpr std::string_view kRunHelp =
+    "Runs a scenario file: one operation a line (mesh, diameter, strategy, cut, sweep, remove,\n"
+    "compact, check, expect hash|tets|unresolved|components), tets and tools addressed by points\n"
+    "so that scenarios survive changes of internal ids. See corpus/scenarios/ and\n"
+    "tools/scenario/include/tetcut/scenario/scenario.hpp.\n"
+    "\n"
+    "  --check every|end|none   local check after every operation (default)\n"
+    "  --out M  --report R.json as for tetcut cut\n"
+    "\n"
+    "exit: 0 passed, 1 a check or expectation failed (its line is named), 2 unusable input\n";
+
+constexpr std::array kCommands = {
+    CommandInfo{"info", "tetcut info MESH [--json]",
+                "counts, boundary, quality statistics, manifold status, hash", kInfoHelp,
+                &cmd_info},
+    CommandInfo{"check",
+                "tetcut check MESH [--level local|full|exact] [--min-radius-ratio R] [--json]",
+                "runs the invariant checker, names each violated invariant", kCheckHelp,
+                &cmd_check},
+    CommandInfo{"convert", "tetcut convert IN OUT [--format F]", "converts between the supported formats",
+                kConvertHelp, &cmd_convert},
+    CommandInfo{"gen", "tetcut gen KIND [OPTIONS] -o OUT",
+                "generates a mesh (cylinder, sheet, box, surface, liver)", kGenHelp, &cmd_gen},
+    CommandInfo{"repair", "tetcut repair IN -o OUT",
+                "makes a mesh manifold and positively oriented", kRepairHelp, &cmd_repair},
+    CommandInfo{"refine",
+                "tetcut refine MESH (--uniform | --random-edges N --seed S | --ball X,Y,Z,R [--dref D] [--p P]) "
+                "[--strategy templates|bisection] -o OUT [--report R.json]",
+                "refines by edge splitting (10 configurations or bisection)", kRefineHelp, &cmd_refine},
+    CommandInfo{"cut",
+                "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] "
+                "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
+                "a cautery sweep, one cut per step", kCutHelp, &cmd_cut},
+    CommandInfo{"run", "tetcut run SCENARIO [--check every|end|none] [--out M] [--report R.json]",
+                "runs a scenario file", kRunHelp, &cmd_run},
+};
+
+}  // namespace
+
+std::span<const CommandInfo> commands() { return kCommands; }
+
+const CommandInfo* find_command(std::string_view name) {
+  for (const CommandInfo& c : kCommands) {
+    if (c.name == name) return &c;
+  }
+  return nullptr;
+}
+
+int usage_error(std::string_view command, std::string_view message, std::ostream& err) {
+  err << "tetcut: " << command << ": " << message << '\n';
+  if (const CommandInfo* info = find_command(command)) {
+    err << "usage: " << info->synopsis << '\n';
+  }
+  return kExitBadInput;
+}
+
+}  // namespace tetcut::cli

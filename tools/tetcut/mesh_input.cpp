@@ -1,0 +1,55 @@
+#include "mesh_input.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <ostream>
+#include <system_error>
+#include <string_view>
+
+#include "tetcut/io.hpp"
+
+namespace tetcut::cli {
+
+namespace {
+
+// Messages stay on one line whatever a reason or a file name holds.
+std::string one_line(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err) {
+  ReadResult result = read_mesh(path);
+  for (const std::string& notice : result.notices) {
+    err << "tetcut: " << one_line(path) << ": note: " << one_line(notice) << '\n';
+  }
+  if (result.error || !result.mesh) {
+    if (result.error) {
+      const ParseError& e = *result.error;
+      // Formatted here rather than with ParseError::message() so that the CLI's promise,
+      // "FILE:LINE: reason", does not depend on how each reader fills the fields.
+      // An empty file has one place where it went wrong, its first line; some readers say 0
+      // ("not tied to a line") there, and the user's editor wants a line number.
+      std::uint64_t line = e.line;
+      std::error_code ec;
+      if (line == 0 && std::filesystem::is_regular_file(path, ec) &&
+          std::filesystem::file_size(path, ec) == 0 && !ec) {
+        line = 1;
+      }
+      err << "tetcut: " << one_line(e.file.empty() ? path : e.file);
+      if (line > 0) err << ':' << line;
+      err << ": " << one_line(e.reason.empty() ? "unreadable mesh" : e.reason) << '\n';
+    } else {
+      err << "tetcut: " << one_line(path) << ": unreadable mesh\n";
+    }
+    return std::nullopt;
+  }
+  return std::move(*result.mesh);
+}
+
+}  // namespace tetcut::cli
