@@ -75,8 +75,8 @@ TEST(Malformed, ValidBasesAreAccepted) {
 TEST(Malformed, Msh22) {
   check_cases([](const std::string& t) { return read_msh(t, "m.msh"); }, "m.msh",
               {
-                  {"empty file", "", 0, "empty file"},
-                  {"blank file", "\n\n  \n", 0, "empty file"},
+                  {"empty file", "", 1, "empty file"},
+                  {"blank file", "\n\n  \n", 1, "empty file"},
                   {"garbage", "hello world\n\x01\x02", 1, "expected $MeshFormat"},
                   {"truncated in header", "$MeshFormat\n", 1, "end of file in $MeshFormat"},
                   {"truncated in nodes", first_lines(kMsh22, 8), 8, "end of file in $Nodes"},

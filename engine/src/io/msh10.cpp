@@ -1,5 +1,6 @@
 // Gmsh MSH 1.0 (read only): "$NOD" count, "id x y z" lines, "$ENDNOD"; "$ELM" count,
 // "id type reg-phys reg-elem num-nodes node..." lines, "$ENDELM".
+#include <algorithm>
 #include <string>
 
 #include "gmsh_common.hpp"
@@ -166,7 +167,7 @@ ReadResult read_msh(std::string_view text, std::string_view name) {
   }
   ReadResult r;
   if (!other_header) {
-    r.error = ParseError{std::string(name), lines.line_number(), "empty file: no $MeshFormat section"};
+    r.error = ParseError{std::string(name), std::max<std::uint64_t>(1, lines.line_number()), "empty file: no $MeshFormat section"};
   } else {
     r.error = ParseError{std::string(name), lines.line_number(),
                          "expected $MeshFormat (or $NOD for MSH 1.0), got " + io_detail::quote(trim(line))};

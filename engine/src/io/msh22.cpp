@@ -2,6 +2,7 @@
 // count, "id type ntags tag... node..." lines, "$EndElements". Node ids are arbitrary (mapped);
 // tags (physical, elementary, partitions) are skipped; unknown sections ($Comments,
 // $PhysicalNames, $NodeData, ...) are skipped to their $End marker.
+#include <algorithm>
 #include <string>
 
 #include "gmsh_common.hpp"
@@ -51,7 +52,7 @@ class Msh22Reader {
       }
     }
     if (!sink_.failed()) {
-      if (!have_format) sink_.fail(lines_.line_number(), "empty file: no $MeshFormat section");
+      if (!have_format) sink_.fail(std::max<std::uint64_t>(1, lines_.line_number()), "empty file: no $MeshFormat section");
       else if (!have_nodes) sink_.fail(lines_.line_number(), "missing $Nodes section");
       else if (!have_elements) sink_.fail(lines_.line_number(), "missing $Elements section");
     }

@@ -54,7 +54,7 @@ class Msh41Reader {
       }
     }
     if (!sink_.failed()) {
-      if (!have_format) sink_.fail(lines_.line_number(), "empty file: no $MeshFormat section");
+      if (!have_format) sink_.fail(std::max<std::uint64_t>(1, lines_.line_number()), "empty file: no $MeshFormat section");
       else if (!have_nodes) sink_.fail(lines_.line_number(), "missing $Nodes section");
       else if (!have_elements) sink_.fail(lines_.line_number(), "missing $Elements section");
     }
