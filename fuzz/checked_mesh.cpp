@@ -1,0 +1,95 @@
+#include "checked_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <utility>
+
+#include "fuzz_failure.hpp"
+
+namespace tetcut::fuzz {
+
+namespace inv = tetcut::invariants;
+
+CheckedMesh::CheckedMesh(TetMesh mesh) : mesh_(std::move(mesh)), expected_volume_(mesh_.total_volume()) {
+  local_.emplace(mesh_);
+  const char* env = std::getenv("TETCUT_FUZZ_TRACE");
+  tracing_ = env != nullptr && *env != '\0' && *env != '0';
+  if (tracing_) trace(0, 0);
+}
+
+void CheckedMesh::begin(std::string name) {
+  ++index_;
+  name_ = std::move(name);
+  arguments_.clear();
+  live_before_.assign(mesh_.tet_capacity(), 0);
+  for (std::uint32_t t = 0; t < mesh_.tet_capacity(); ++t) live_before_[t] = mesh_.is_live(TetId{t}) ? 1 : 0;
+}
+
+void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change) {
+  removed_.clear();
+  created_.clear();
+  for (TetId t : log.removed)
+    if (t.value < live_before_.size() && live_before_[t.value]) removed_.push_back(t);
+  for (const CreatedTet& c : log.created)
+    if (mesh_.is_live(c.tet)) created_.push_back(c.tet);
+  // A reused id may appear several times in the log; the checker wants each once.
+  for (std::vector<TetId>* ids : {&removed_, &created_}) {
+    std::sort(ids->begin(), ids->end());
+    ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
+  }
+  end(removed_, created_, volume_change);
+}
+
+void CheckedMesh::end(std::span<const TetId> removed, std::span<const TetId> created,
+                      std::optional<double> volume_change) {
+  if (volume_change) expected_volume_ += *volume_change;
+  inv::CheckOptions options;
+  options.level = inv::CheckLevel::kLocal;
+  options.operation = name_;
+  if (tracing_) trace(removed.size(), created.size());
+  report(local_->after_operation(mesh_, removed, created, options, volume_change), "local");
+}
+
+void CheckedMesh::describe(const std::string& arguments) {
+  if (!arguments_.empty()) arguments_ += ' ';
+  arguments_ += arguments;
+}
+
+void CheckedMesh::trace(std::size_t removed, std::size_t created) const {
+  std::fprintf(stderr, "tetcut-fuzz: operation %zu (%s%s%s): -%zu +%zu tets -> %u tets, %u vertices\n", index_,
+               name_.c_str(), arguments_.empty() ? "" : " ", arguments_.c_str(), removed, created, mesh_.num_tets(),
+               mesh_.num_vertices());
+}
+
+void CheckedMesh::end_renumbered() {
+  if (tracing_) trace(0, 0);
+  local_.emplace(mesh_);
+  full_check();
+}
+
+void CheckedMesh::full_check() {
+  inv::CheckOptions options;
+  options.level = inv::CheckLevel::kFull;
+  options.operation = name_;
+  // An empty mesh has nothing to compare a relative tolerance with.
+  if (mesh_.num_tets() > 0) options.expected_volume = expected_volume_;
+  report(inv::check_mesh(mesh_, options), "full");
+}
+
+void CheckedMesh::require(bool condition, std::string_view property, const std::string& detail) const {
+  if (!condition) fail(property, index_, name_, detail);
+}
+
+void CheckedMesh::report(const inv::CheckReport& report, std::string_view level) const {
+  if (report.ok()) return;
+  const inv::Violation& first = report.violations.front();
+  std::string detail(level);
+  detail += " check: ";
+  detail += inv::to_string(report);
+  while (!detail.empty() && detail.back() == '\n') detail.pop_back();
+  fail(inv::id_string(first.id), index_, name_, detail);
+}
+
+}  // namespace tetcut::fuzz

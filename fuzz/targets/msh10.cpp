@@ -1,0 +1,15 @@
+// Fuzz target msh10: Gmsh MSH 1.0 reader (read only: what it reads must survive a round trip through MSH 2.2).
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "reader_contract.hpp"
+#include "tetcut/io.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  // The input is the file itself (no version byte): seeds stay real files, and the dictionary's
+  // keywords apply directly.
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  tetcut::fuzz::fuzz_tet_reader("read_msh10", &tetcut::read_msh10, text, &tetcut::format_msh22, &tetcut::read_msh22);
+  return 0;
+}
