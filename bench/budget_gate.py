@@ -33,8 +33,13 @@ def measured_value(results, figure):
 
 
 def main(argv):
+    skip = set()
+    if "--skip-missing" in argv:
+        i = argv.index("--skip-missing")
+        skip = set(argv[i + 1].split(","))
+        argv = argv[:i] + argv[i + 2:]
     if len(argv) != 3:
-        print("usage: budget_gate.py RESULTS.json BUDGETS.json", file=sys.stderr)
+        print("usage: budget_gate.py RESULTS.json BUDGETS.json [--skip-missing BENCH,...]", file=sys.stderr)
         return 2
     results = load(argv[1], "results")
     budgets = load(argv[2], "budgets")
@@ -45,6 +50,9 @@ def main(argv):
             bound, ok_cmp, sign = float(figure["max"]), (lambda v, b: v <= b), "<="
         else:
             bound, ok_cmp, sign = float(figure["min"]), (lambda v, b: v >= b), ">="
+        if value is None and figure["benchmark"] in skip:
+            rows.append((figure["name"], "not run", f"{sign} {bound:g}", "", "skipped"))
+            continue
         if value is None:
             missing += 1
             rows.append((figure["name"], "missing", f"{sign} {bound:g}", "", "MISSING"))
@@ -58,7 +66,8 @@ def main(argv):
     widths = [max(len(str(r[i])) for r in rows + [header]) for i in range(5)]
     for r in [header] + rows:
         print("  ".join(str(c).ljust(w) for c, w in zip(r, widths)))
-    print(f"budget gate: {len(rows) - failed - missing} within budget, {failed} over, {missing} missing")
+    skipped = sum(1 for r in rows if r[4] == "skipped")
+    print(f"budget gate: {len(rows) - failed - missing - skipped} within budget, {failed} over, {missing} missing, {skipped} skipped")
     if missing:
         return 2
     return 1 if failed else 0

@@ -6,7 +6,7 @@
 // allocations per cut after warm-up (counted by a global operator new).
 //
 // Levels: 0 = the bundled liver (~16k tets), 1 = its uniform refinement (~126k), 2 = twice
-// refined (~1M). The tool diameter shrinks with the edge length (8, 4, 2 mm) so that every cut
+// refined (~1M). BM_CutScalingSameWork compares the liver with 64 copies of itself instead. The tool diameter shrinks with the edge length (8, 4, 2 mm) so that every cut
 // does the same local work: with one tool, the twice-refined liver holds 64 times more tets in
 // the same ball and no algorithm could cut it at the same cost. What the ratio of medians then
 // measures is what the issue asks: whether the cost grows with the size of the mesh.
@@ -63,6 +63,24 @@ const tetcut::TetMesh& liver_at(int level) {
   return cache.emplace(level, std::move(mesh)).first->second;
 }
 
+// 64 disjoint copies of the bundled liver side by side (~1M tets): copy 0 is the original, so a
+// sweep over it does exactly the work it does on the lone liver, and only the size of the mesh
+// around it differs.
+const tetcut::TetMesh& replicated_liver() {
+  static const tetcut::TetMesh mesh = [] {
+    const tetcut::RawMesh one = tetcut::bench::corpus_mesh("liver.msh").to_raw();
+    tetcut::RawMesh all;
+    for (int copy = 0; copy < 64; ++copy) {
+      const tetcut::Vec3 shift{250.0 * (copy % 8), 250.0 * (copy / 8), 0.0};
+      const auto base = static_cast<std::uint32_t>(all.positions.size());
+      for (const tetcut::Vec3& p : one.positions) all.positions.push_back(p + shift);
+      for (const auto& t : one.tets) all.tets.push_back({t[0] + base, t[1] + base, t[2] + base, t[3] + base});
+    }
+    return std::move(*tetcut::build_mesh(all).mesh);
+  }();
+  return mesh;
+}
+
 // Tool centres: passes across the organ in the plane x = 95 mm, every 4 mm, at 7 heights.
 std::vector<tetcut::Vec3> sweep_centres() {
   std::vector<tetcut::Vec3> c;
@@ -77,48 +95,92 @@ double percentile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, rank == 0 ? 0 : rank - 1)];
 }
 
+struct SweepResult {
+  std::vector<double> samples_us;  // every cut
+  std::uint64_t removed = 0, created = 0, unresolved = 0, allocations = 0, counted_cuts = 0;
+};
+
+// One sweep on a fresh copy of the liver at `level`; the first half of the cuts is the warm-up
+// of the allocation count (it grows the scratch buffers and the free lists).
+void run_sweep(int level, SweepResult& out) {
+  const tetcut::TetMesh& base = level >= 0 ? liver_at(level) : replicated_liver();
+  level = std::max(level, 0);
+  static const std::vector<tetcut::Vec3> centres = sweep_centres();
+  tetcut::TetMesh mesh = base;
+  tetcut::Cutter cutter(mesh, {.tool_diameter = 8.0 / (1 << level)});
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const std::uint64_t before = g_allocations.load(std::memory_order_relaxed);
+    const auto t0 = std::chrono::steady_clock::now();
+    const tetcut::CutReport r = cutter.cut(centres[i]);
+    const auto t1 = std::chrono::steady_clock::now();
+    out.samples_us.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
+    if (i >= centres.size() / 2) {
+      out.allocations += g_allocations.load(std::memory_order_relaxed) - before;
+      ++out.counted_cuts;
+    }
+    out.removed += r.tets_removed;
+    out.created += r.tets_created;
+    out.unresolved += r.unresolved;
+  }
+}
+
 void BM_CutSweep(benchmark::State& state) {
   const int level = static_cast<int>(state.range(0));
-  const tetcut::TetMesh& base = liver_at(level);
-  const std::vector<tetcut::Vec3> centres = sweep_centres();
-  const double diameter = 8.0 / (1 << level);
-  std::vector<double> samples;
-  std::uint64_t removed = 0, created = 0, unresolved = 0, cuts = 0, allocations = 0, counted_cuts = 0;
+  SweepResult sweep;
   for (auto _ : state) {
     state.PauseTiming();
-    tetcut::TetMesh mesh = base;
-    tetcut::Cutter cutter(mesh, {.tool_diameter = diameter});
+    liver_at(level);  // built outside the timing
     state.ResumeTiming();
-    for (std::size_t i = 0; i < centres.size(); ++i) {
-      const std::uint64_t before = g_allocations.load(std::memory_order_relaxed);
-      const auto t0 = std::chrono::steady_clock::now();
-      const tetcut::CutReport r = cutter.cut(centres[i]);
-      const auto t1 = std::chrono::steady_clock::now();
-      samples.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
-      // Warm-up: the first half of the sweep grows the scratch buffers and the free lists.
-      if (i >= centres.size() / 2) {
-        allocations += g_allocations.load(std::memory_order_relaxed) - before;
-        ++counted_cuts;
-      }
-      removed += r.tets_removed;
-      created += r.tets_created;
-      unresolved += r.unresolved;
-      ++cuts;
-    }
+    run_sweep(level, sweep);
   }
-  state.counters["tets"] = static_cast<double>(base.num_tets());
-  state.counters["cuts"] = static_cast<double>(cuts);
-  state.counters["p50_us"] = percentile(samples, 0.50);
-  state.counters["p90_us"] = percentile(samples, 0.90);
-  state.counters["p99_us"] = percentile(samples, 0.99);
-  state.counters["max_us"] = percentile(samples, 1.0);
-  state.counters["cuts_per_second"] = benchmark::Counter(static_cast<double>(cuts), benchmark::Counter::kIsRate);
-  state.counters["tets_removed_per_cut"] = static_cast<double>(removed) / static_cast<double>(cuts);
-  state.counters["tets_created_per_cut"] = static_cast<double>(created) / static_cast<double>(cuts);
-  state.counters["unresolved"] = static_cast<double>(unresolved);
-  state.counters["allocations_per_cut"] = static_cast<double>(allocations) / static_cast<double>(std::max<std::uint64_t>(1, counted_cuts));
+  const auto cuts = static_cast<double>(sweep.samples_us.size());
+  state.counters["tets"] = static_cast<double>(liver_at(level).num_tets());
+  state.counters["cuts"] = cuts;
+  state.counters["p50_us"] = percentile(sweep.samples_us, 0.50);
+  state.counters["p90_us"] = percentile(sweep.samples_us, 0.90);
+  state.counters["p99_us"] = percentile(sweep.samples_us, 0.99);
+  state.counters["max_us"] = percentile(sweep.samples_us, 1.0);
+  state.counters["cuts_per_second"] = benchmark::Counter(cuts, benchmark::Counter::kIsRate);
+  state.counters["tets_removed_per_cut"] = static_cast<double>(sweep.removed) / cuts;
+  state.counters["tets_created_per_cut"] = static_cast<double>(sweep.created) / cuts;
+  state.counters["unresolved"] = static_cast<double>(sweep.unresolved);
+  state.counters["allocations_per_cut"] =
+      static_cast<double>(sweep.allocations) / static_cast<double>(std::max<std::uint64_t>(1, sweep.counted_cuts));
 }
 BENCHMARK(BM_CutSweep)->DenseRange(0, 2)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// The scaling figure of its own: median (and p99) per-cut time on the ~1M-tet liver over the
+// ~16k one, the two sweeps interleaved cut-set by cut-set so that machine noise hits both.
+void BM_CutScaling(benchmark::State& state) {
+  liver_at(0);
+  liver_at(2);
+  SweepResult small, large;
+  for (auto _ : state) {
+    run_sweep(0, small);
+    run_sweep(2, large);
+  }
+  state.counters["p50_ratio_1M_over_16k"] = percentile(large.samples_us, 0.5) / percentile(small.samples_us, 0.5);
+  state.counters["p99_ratio_1M_over_16k"] = percentile(large.samples_us, 0.99) / percentile(small.samples_us, 0.99);
+}
+BENCHMARK(BM_CutScaling)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// The same figure with the local work held identical: the lone liver against 64 copies of it
+// (~1M tets), the sweep on copy 0 in both. This isolates what the mesh's size alone costs.
+void BM_CutScalingSameWork(benchmark::State& state) {
+  liver_at(0);
+  replicated_liver();
+  SweepResult small, large;
+  for (auto _ : state) {
+    run_sweep(0, small);
+    run_sweep(-1, large);
+  }
+  state.counters["tets_large"] = static_cast<double>(replicated_liver().num_tets());
+  state.counters["p50_ratio_1M_over_16k"] = percentile(large.samples_us, 0.5) / percentile(small.samples_us, 0.5);
+  state.counters["p99_ratio_1M_over_16k"] = percentile(large.samples_us, 0.99) / percentile(small.samples_us, 0.99);
+}
+BENCHMARK(BM_CutScalingSameWork)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+
 
 }  // namespace
 

@@ -57,6 +57,7 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
   mesh_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096,
                 mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024);
   index_.build(mesh_);
+  refiner_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096);
 }
 
 std::optional<std::string> Cutter::set_params(const CutParams& params) {

@@ -1,6 +1,7 @@
 #include "tetcut/mesh.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cstring>
 
@@ -469,7 +470,7 @@ void TetMesh::note(Array array, std::uint32_t index) {
   switch (array) {
     case Array::kTetVerts: std::memcpy(e.old.data(), tet_verts_[index].data(), 16); break;
     case Array::kTetAdj: std::memcpy(e.old.data(), tet_adj_[index].data(), 16); break;
-    case Array::kPositions: std::memcpy(e.old.data(), &positions_[index], sizeof(Vec3)); break;
+    case Array::kPositions: e.old = std::bit_cast<std::array<std::uint32_t, 6>>(positions_[index]); break;
     case Array::kVertTet: e.old[0] = vert_tet_[index].value; break;
     case Array::kBoundary: e.old[0] = vert_boundary_faces_[index]; break;
     case Array::kFreeVertNext: e.old[0] = free_vert_next_[index].value; break;
@@ -489,7 +490,7 @@ void TetMesh::rollback() {
     switch (e.array) {
       case Array::kTetVerts: std::memcpy(tet_verts_[e.index].data(), e.old.data(), 16); break;
       case Array::kTetAdj: std::memcpy(tet_adj_[e.index].data(), e.old.data(), 16); break;
-      case Array::kPositions: std::memcpy(&positions_[e.index], e.old.data(), sizeof(Vec3)); break;
+      case Array::kPositions: positions_[e.index] = std::bit_cast<Vec3>(e.old); break;
       case Array::kVertTet: vert_tet_[e.index] = TetId{e.old[0]}; break;
       case Array::kBoundary: vert_boundary_faces_[e.index] = e.old[0]; break;
       case Array::kFreeVertNext: free_vert_next_[e.index] = VertId{e.old[0]}; break;

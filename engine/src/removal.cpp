@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cassert>
-#include <cstdio>
-#include <cstdlib>
 
 #include "tetcut/local_tables.hpp"
 
@@ -13,6 +11,10 @@ namespace {
 // Two candidate sets of one round are kept for the next one: enough for the paper's "path
 // extended by each of the two components", small enough to bound the work.
 constexpr std::size_t kFrontierWidth = 4;
+
+// Splits in one refinement attempt: the first around the singularity, then one per vertex the
+// search still stumbles on (a tet has four vertices).
+constexpr int kMaxRefinementLevels = 5;
 
 int local_edge_of(const TetMesh& mesh, TetId t, VertId a, VertId b) {
   const int la = mesh.local_index(t, a), lb = mesh.local_index(t, b);
@@ -24,6 +26,12 @@ bool contains_all(const TetMesh& mesh, TetId t, std::span<const VertId> verts) {
   for (VertId v : verts)
     if (mesh.local_index(t, v) < 0) return false;
   return true;
+}
+
+bool contains_any(const TetMesh& mesh, TetId t, std::span<const VertId> verts) {
+  for (VertId v : verts)
+    if (mesh.local_index(t, v) >= 0) return true;
+  return false;
 }
 
 }  // namespace
@@ -69,6 +77,8 @@ void Remover::grow_tet_arrays(const TetMesh& mesh) {
   met_unresolved_.resize(n, 0);
   created_stamp_.resize(n, 0);
   removed_stamp_.resize(n, 0);
+  attempt_stamp_.resize(n, 0);
+  aux_stamp_.resize(n, 0);
 }
 
 void Remover::note_removed(std::span<const TetId> ids) {
@@ -267,91 +277,204 @@ bool Remover::refine_edge(TetMesh& mesh, TetId& t, Edge e, int side, RemovalResu
   return true;
 }
 
-bool Remover::split_and_remove(TetMesh& mesh, TetId& t, std::span<const VertId> keep, RemovalResult& result) {
-  // The tets the split will replace, with their vertices, so that it can be undone.
-  grow_tet_arrays(mesh);
-  if (++stamp_ > 0xFFFFFFF0u) {
+std::uint32_t Remover::fresh_stamp() {
+  if (++stamp_ == 0) {
     std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0u);
+    std::fill(aux_stamp_.begin(), aux_stamp_.end(), 0u);
     stamp_ = 1;
   }
-  const std::uint32_t in_region = stamp_;
-  const std::uint32_t is_seed = ++stamp_;
+  return stamp_;
+}
+
+bool Remover::split_edges(TetMesh& mesh, RemovalResult& result) {
+  grow_tet_arrays(mesh);
+  // The tets the split will replace; those that existed before the attempt are saved.
+  const std::uint32_t in_region = fresh_stamp();
   region_.clear();
-  saved_verts_.clear();
   for (const EdgeRef& ref : edge_refs_) {
     mesh.edge_shell(ref.tet, ref.edge, ring_);
     for (TetId u : ring_) {
-      if (tet_stamp_[u.value] == in_region) continue;
-      tet_stamp_[u.value] = in_region;
+      if (aux_stamp_[u.value] == in_region) continue;
+      aux_stamp_[u.value] = in_region;
       region_.push_back(u);
-      saved_verts_.push_back(mesh.tet(u));
     }
   }
-  for (TetId u : seed_parents_) tet_stamp_[u.value] = is_seed;  // seed parents are in the region
-  const auto t_at = std::find(region_.begin(), region_.end(), t);
-  if (t_at == region_.end()) return false;  // T has no edge to split: nothing to gain
-  const std::size_t t_index = static_cast<std::size_t>(t_at - region_.begin());
+  const std::size_t saved_before = original_ids_.size();
+  for (TetId u : region_)
+    if (attempt_stamp_[u.value] != attempt_) {
+      original_ids_.push_back(u);
+      original_verts_.push_back(mesh.tet(u));
+    }
 
   split_log_.clear();
   const SplitResult split = splitter_.split(mesh, edges_, SplitMethod::kTemplates, nullptr, &split_log_);
-  if (!split.ok()) return false;  // refused before touching the mesh
+  if (!split.ok()) {
+    original_ids_.resize(saved_before);
+    original_verts_.resize(saved_before);
+    return false;
+  }
   assert(split_log_.removed.size() == region_.size());
   grow_tet_arrays(mesh);
   note_removed(split_log_.removed);
   children_.clear();
-  for (const CreatedTet& c : split_log_.created) children_.push_back(c.tet);
+  for (const CreatedTet& c : split_log_.created) {
+    children_.push_back(c.tet);
+    attempt_stamp_[c.tet.value] = attempt_;
+    attempt_created_.push_back(c.tet);
+  }
   note_created(children_);
   if (log_) {
     log_->removed.insert(log_->removed.end(), split_log_.removed.begin(), split_log_.removed.end());
     log_->created.insert(log_->created.end(), split_log_.created.begin(), split_log_.created.end());
     log_->vertices.insert(log_->vertices.end(), split_log_.vertices.begin(), split_log_.vertices.end());
   }
+  for (const CreatedVertex& cv : split_log_.vertices) {
+    if (vert_attempt_stamp_.size() <= cv.vertex.value)
+      vert_attempt_stamp_.resize(cv.vertex.value + cv.vertex.value / 4 + 16, 0);
+    vert_attempt_stamp_[cv.vertex.value] = attempt_;
+  }
+  result.tets_created += split.tets_created;
+  result.edges_split += split.edges_split;
+  return true;
+}
 
-  // The small tets at the singularity on the chosen tets, with all of T's children.
-  found_.clear();
-  bool t_split = false;
-  for (const CreatedTet& c : split_log_.created) {
-    if (c.parent == t) {
-      t_split = true;
-      found_.push_back(c.tet);
-    } else if (tet_stamp_[c.parent.value] == is_seed && contains_all(mesh, c.tet, keep)) {
-      found_.push_back(c.tet);
-    }
+TetId Remover::undo_attempt(TetMesh& mesh, std::size_t t_index) {
+  // Every live tet the attempt made (an id seen twice was reused by a later split: once).
+  const std::uint32_t seen = fresh_stamp();
+  children_.clear();
+  for (TetId c : attempt_created_) {
+    if (!mesh.is_live(c) || attempt_stamp_[c.value] != attempt_ || aux_stamp_[c.value] == seen) continue;
+    aux_stamp_[c.value] = seen;
+    children_.push_back(c);
   }
-  if (!t_split) found_.push_back(t);
-
-  SetRemovalCheck check = ws_.check(mesh, found_);
-  bool ok = check.ok;
-  if (!ok) {
-    restored_.assign(found_.begin(), found_.end());  // search() overwrites found_ only on success
-    ok = search(mesh, restored_, check, found_);
-  }
-  if (ok) {
-    result.tets_removed = static_cast<std::uint32_t>(found_.size());
-    result.tets_created = split.tets_created;
-    result.edges_split = split.edges_split;
-    apply_removal(mesh, found_);
-    return true;
-  }
-
-  if (std::getenv("TETCUT_RM_DEBUG")) {
-    std::fprintf(stderr, "undo: X=%zu first offence %s v=%u e=%u-%u; t verts %u %u %u %u; keep %u; edges %zu\n", restored_.size(),
-                 to_string(check.kind), check.vertex.value, check.edge.a.value, check.edge.b.value,
-                 saved_verts_[t_index][0].value, saved_verts_[t_index][1].value, saved_verts_[t_index][2].value,
-                 saved_verts_[t_index][3].value, keep[0].value, edges_.size());
-  }
-  // Undo: put the original tets back over the children (same outer faces, so they glue back;
-  // the midpoints lose their last tet and go).
+  // They fill exactly the region of the tets they replaced, with the same outer faces: the
+  // original tets glue back, and the midpoints lose their last tet and go.
   restored_.clear();
   if (log_) log_->removed.insert(log_->removed.end(), children_.begin(), children_.end());
   note_removed(children_);
-  mesh.replace_tets(children_, saved_verts_, &restored_);
+  mesh.replace_tets(children_, original_verts_, &restored_);
   grow_tet_arrays(mesh);
   note_created(restored_);
   if (log_)
     for (TetId r : restored_) log_->created.push_back({r, kNoTet});
-  t = restored_[t_index];
   ++report_.refinements_undone;
+  return restored_[t_index];
+}
+
+bool Remover::refine_tet_corners(TetMesh& mesh, TetId& t, RemovalResult& result) {
+  VertId corners[4];
+  std::size_t n = 0;
+  for (VertId p : mesh.tet(t))
+    if (mesh.is_boundary_vertex(p)) corners[n++] = p;
+  if (n == 0) return false;
+  seed_parents_.clear();
+  edges_.clear();
+  edge_refs_.clear();
+  edge_set_.clear();
+  const std::uint32_t seen = fresh_stamp();
+  for (std::size_t k = 0; k < n; ++k) {
+    mesh.vertex_shell(corners[k], shell_);
+    for (TetId u : shell_) {
+      if (aux_stamp_[u.value] != seen) {
+        aux_stamp_[u.value] = seen;
+        seed_parents_.push_back(u);
+      }
+      for (int i = 0; i < 4; ++i) {
+        const VertId w = mesh.vertex(u, i);
+        if (w == corners[k] || !edge_set_.insert(corners[k], w)) continue;
+        edges_.push_back({corners[k], w});
+        edge_refs_.push_back({u, static_cast<std::uint8_t>(local_edge_of(mesh, u, corners[k], w))});
+      }
+    }
+  }
+  return split_and_remove(mesh, t, std::span<const VertId>(corners, n), result, true);
+}
+
+bool Remover::split_and_remove(TetMesh& mesh, TetId& t, std::span<const VertId> keep, RemovalResult& result,
+                               bool keep_any) {
+  grow_tet_arrays(mesh);
+  if (++attempt_ == 0) {
+    std::fill(attempt_stamp_.begin(), attempt_stamp_.end(), 0u);
+    std::fill(vert_attempt_stamp_.begin(), vert_attempt_stamp_.end(), 0u);
+    attempt_ = 1;
+  }
+  attempt_created_.clear();
+  original_ids_.clear();
+  original_verts_.clear();
+  const RemovalResult before = result;
+
+  const std::uint32_t is_seed = fresh_stamp();
+  for (TetId u : seed_parents_) tet_stamp_[u.value] = is_seed;
+  if (!split_edges(mesh, result)) return false;  // refused before touching the mesh
+  const auto t_at = std::find(original_ids_.begin(), original_ids_.end(), t);
+  assert(t_at != original_ids_.end());
+  const std::size_t t_index = static_cast<std::size_t>(t_at - original_ids_.begin());
+
+  // The small tets at the singularity on the chosen tets, with all of T's children.
+  x_.clear();
+  bool t_split = false;
+  for (const CreatedTet& c : split_log_.created) {
+    if (c.parent == t) {
+      t_split = true;
+      x_.push_back(c.tet);
+    } else if (tet_stamp_[c.parent.value] == is_seed &&
+               (keep_any ? contains_any(mesh, c.tet, keep) : contains_all(mesh, c.tet, keep))) {
+      x_.push_back(c.tet);
+    }
+  }
+  if (!t_split) x_.push_back(t);
+
+  for (int level = 0;; ++level) {
+    const SetRemovalCheck check = ws_.check(mesh, x_);
+    bool ok = check.ok;
+    if (ok) {
+      found_.assign(x_.begin(), x_.end());
+    } else {
+      restored_.assign(x_.begin(), x_.end());  // search() overwrites found_ only on success
+      ok = search(mesh, restored_, check, found_);
+    }
+    if (ok) {
+      result.tets_removed = static_cast<std::uint32_t>(found_.size());
+      apply_removal(mesh, found_);
+      return true;
+    }
+    if (level + 1 >= kMaxRefinementLevels) break;
+
+    // Escalate at the offending vertex: an original vertex rather than a midpoint of this
+    // attempt (a midpoint's trouble comes from the vertex at the other end of its edge).
+    VertId a = check.vertex;
+    if (check.kind == SingularityKind::kEdge) {
+      const VertId ea = check.edge.a;
+      const bool ea_is_new = ea.value < vert_attempt_stamp_.size() && vert_attempt_stamp_[ea.value] == attempt_;
+      a = ea_is_new ? check.edge.b : ea;
+    }
+    const std::uint32_t in_x = fresh_stamp();
+    for (TetId u : x_) tet_stamp_[u.value] = in_x;
+    mesh.vertex_shell(a, shell_);
+    edges_.clear();
+    edge_refs_.clear();
+    edge_set_.clear();
+    for (TetId u : shell_)
+      for (int i = 0; i < 4; ++i) {
+        const VertId w = mesh.vertex(u, i);
+        if (w == a || !edge_set_.insert(a, w)) continue;
+        edges_.push_back({a, w});
+        edge_refs_.push_back({u, static_cast<std::uint8_t>(local_edge_of(mesh, u, a, w))});
+      }
+    if (!split_edges(mesh, result)) break;
+    // The set follows the split (children of its tets), plus every small tet now at a.
+    const std::uint32_t gone = fresh_stamp();
+    for (TetId r : split_log_.removed) aux_stamp_[r.value] = gone;
+    x_next_.clear();
+    for (TetId u : x_)
+      if (aux_stamp_[u.value] != gone) x_next_.push_back(u);
+    for (const CreatedTet& c : split_log_.created)
+      if (tet_stamp_[c.parent.value] == in_x || mesh.local_index(c.tet, a) >= 0) x_next_.push_back(c.tet);
+    x_.swap(x_next_);
+  }
+
+  t = undo_attempt(mesh, t_index);
+  result = before;
   return false;
 }
 
@@ -373,7 +496,6 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log) {
   RemovalResult result;
   result.first = removability(mesh, t);
   const bool repeat = met_unresolved_[t.value] != 0;
-  const TetId requested = t;
 
   SetRemovalCheck offence;
   if (result.first.removable) {
@@ -421,6 +543,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log) {
   if (!done && options_.strategy != RemovalStrategy::kNeighbours) {
     done = kind == SingularityKind::kVertex ? refine_vertex(mesh, t, offence.vertex, false, result)
                                             : refine_edge(mesh, t, offence.edge, -1, result);
+    if (!done) done = refine_tet_corners(mesh, t, result);
     if (done) result.outcome = RemovalOutcome::kRefinement;
   }
 
@@ -465,7 +588,6 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log) {
       met_unresolved_[t.value] = 1;
       break;
   }
-  (void)requested;
 
   for (TetId c : net_created_)
     if (mesh.is_live(c) && mesh.boundary_face_count(c) > 0) exposed_.push_back(c);

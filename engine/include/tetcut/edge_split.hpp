@@ -51,6 +51,10 @@ class EdgeSplitter {
   SplitResult split(TetMesh& mesh, std::span<const Edge> edges, SplitMethod method,
                     std::vector<TetId>* created = nullptr, ChangeLog* log = nullptr);
 
+  // Room for per-tet scratch up to this many tet ids (no reallocation of a mesh-sized array in
+  // the middle of an operation).
+  void reserve(std::uint32_t tets) { affected_slot_.reserve(tets); }
+
  private:
   struct PlannedEdge {
     std::uint32_t lo, hi;  // sorted vertex ids: the global order of the paper's rule

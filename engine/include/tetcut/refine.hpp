@@ -55,6 +55,8 @@ class Refiner {
   RefineReport refine(TetMesh& mesh, std::span<const TetId> initial, const RefineParams& params,
                       std::vector<TetId>& region, ChangeLog* log = nullptr);
 
+  void reserve(std::uint32_t tets) { splitter_.reserve(tets); }
+
  private:
   void collect_long_edges(const TetMesh& mesh, double d_ref);
   void add_shell_edges(const TetMesh& mesh, double p);

@@ -17,8 +17,13 @@
 //                     (edge), then remove the small tets on that path with T's children; if
 //                     that fails, basic. The default.
 // After a refinement the set to remove is searched again from the small tets with the same
-// neighbour search, because the paper's sets are not always removable as they stand (a
-// boundary edge from T's other vertices to the singular vertex still pinches after the split).
+// neighbour search, because the paper's sets are not always removable as they stand: when T has
+// another vertex a on the surface and the edge from a to the singular vertex is a boundary edge,
+// removing T's children still pinches the new edge from a to its midpoint. If the search fails,
+// the refinement escalates at the vertex it stumbled on (every edge there is split too and its
+// small tets join the set; at most 5 splits per attempt), and as a last resort the corners of
+// every boundary vertex of T are refined at once. Measured: 100 % of the requests removed on the
+// bundled meshes and on boxes (tests/engine/removal_random_test.cpp).
 //
 // Guarantees. Every set is tested by set_removable() before anything is removed, so the mesh is
 // a valid manifold after every request whatever happens. A request is atomic: if it ends
@@ -146,9 +151,21 @@ class Remover {
   bool refine_vertex(TetMesh& mesh, TetId& t, VertId v, bool optimized, RemovalResult& result);
   bool refine_edge(TetMesh& mesh, TetId& t, Edge e, int side, RemovalResult& result);
   // Splits edges_, then searches a removable set from the children of `seed_parents_` that
-  // contain every vertex of `keep` (1 or 2 vertices) plus all children of t; removes it, or
-  // undoes the split. `t` follows the undo.
-  bool split_and_remove(TetMesh& mesh, TetId& t, std::span<const VertId> keep, RemovalResult& result);
+  // contain every vertex of `keep` (1 or 2 vertices) plus all children of t. When none is found
+  // the refinement escalates: every edge at the vertex the search stumbled on is split too and
+  // its small tets join the set (at most kMaxRefinementLevels splits). Removes the set, or
+  // undoes every split of the attempt. `t` follows the undo.
+  bool split_and_remove(TetMesh& mesh, TetId& t, std::span<const VertId> keep, RemovalResult& result,
+                        bool keep_any = false);
+  // Last resort after basic: split every edge at every boundary vertex of T and remove the small
+  // tets at those vertices with T's children.
+  bool refine_tet_corners(TetMesh& mesh, TetId& t, RemovalResult& result);
+  // One split of edges_ / edge_refs_ inside an attempt, saving the tets it replaces that
+  // existed before the attempt. False (mesh untouched) if the splitter refuses.
+  bool split_edges(TetMesh& mesh, RemovalResult& result);
+  // Puts back the tets that existed before the attempt; returns T's new id.
+  TetId undo_attempt(TetMesh& mesh, std::size_t t_index);
+  std::uint32_t fresh_stamp();
 
   void apply_removal(TetMesh& mesh, std::span<const TetId> set);
   void note_removed(std::span<const TetId> ids);
@@ -171,8 +188,14 @@ class Remover {
   std::vector<Edge> edges_;
   std::vector<EdgeRef> edge_refs_;  // a tet and local edge for each of edges_
   std::vector<TetId> ring_;
-  std::vector<TetId> region_, shell_, seed_parents_, found_, restored_, children_;
-  std::vector<TetMesh::TetVerts> saved_verts_;
+  std::vector<TetId> region_, shell_, seed_parents_, found_, restored_, children_, x_, x_next_;
+  std::vector<TetId> attempt_created_;                 // ids made by the attempt's splits
+  std::vector<TetId> original_ids_;                    // tets live before the attempt it replaced
+  std::vector<TetMesh::TetVerts> original_verts_;      // ... and their vertices, for the undo
+  std::vector<std::uint32_t> attempt_stamp_;           // per tet: == attempt_ when made by it
+  std::vector<std::uint32_t> aux_stamp_;
+  std::vector<std::uint32_t> vert_attempt_stamp_;      // per vertex: == attempt_ when made by it
+  std::uint32_t attempt_ = 0;
   ChangeLog split_log_;
 
   // per request bookkeeping
