@@ -24,6 +24,7 @@ int cmd_gen(Args args, std::ostream& out, std::ostream& err);
 int cmd_repair(Args args, std::ostream& out, std::ostream& err);
 int cmd_refine(Args args, std::ostream& out, std::ostream& err);
 int cmd_cut(Args args, std::ostream& out, std::ostream& err);
+int cmd_remove(Args args, std::ostream& out, std::ostream& err);
 int cmd_run(Args args, std::ostream& out, std::ostream& err);
 
 inline constexpr int kExitOk = 0;

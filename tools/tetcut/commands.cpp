@@ -78,6 +78,18 @@ constexpr std::string_view kRefineHelp =
     "\n"
     "exit: 0, 1 the result violates an invariant or a split was refused, 2 bad input or usage\n";
 
+constexpr std::string_view kRemoveHelp =
+    "Removes tetrahedra without breaking the manifold (paper 3.3-3.7) and prints the paper's\n"
+    "statistics (Tables 1 and 2). --at X,Y,Z (several separated by ';' or as further arguments)\n"
+    "removes the tet containing each point in turn; --random N|all --seed S requests tets on the\n"
+    "current boundary one at a time, as a cautery meets them. --check every: local checker after\n"
+    "every request and full check at the end; end (default): full check at the end; none.\n"
+    "The report's summary: requested, removed, unresolved, direct, vertex_singularities,\n"
+    "edge_singularities, resolved_by_neighbours, resolved_by_refinement, mean_cardinality,\n"
+    "tets_left, hash.\n"
+    "\n"
+    "exit: 0, 1 an invariant broke, 2 unreadable input or bad usage\n";
+
 constexpr std::string_view kCutHelp =
     "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
     "each cut refined then removed without breaking the manifold (paper 3.1-3.7).\n"
@@ -123,6 +135,10 @@ constexpr std::array kCommands = {
                 "tetcut refine MESH (--uniform | --random-edges N --seed S | --ball X,Y,Z,R [--dref D] [--p P]) "
                 "[--strategy templates|bisection] -o OUT [--report R.json]",
                 "refines by edge splitting (10 configurations or bisection)", kRefineHelp, &cmd_refine},
+    CommandInfo{"remove",
+                "tetcut remove MESH (--at X,Y,Z ... | --random N|all --seed S) [--strategy basic|neighbours|combined] "
+                "[--check every|end|none] -o OUT [--report R.json]",
+                "removes tetrahedra without breaking the manifold (paper 3.3-3.7)", kRemoveHelp, &cmd_remove},
     CommandInfo{"cut",
                 "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] "
                 "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",

@@ -1,0 +1,174 @@
+// Paper 3.3: the O(1) removability test, and the local test for sets, agree with what the
+// independent checker finds after actually removing the tets.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <set>
+#include <utility>
+
+#include "removal_test_support.hpp"
+#include "tetcut/local_tables.hpp"
+#include "tetcut/random.hpp"
+#include "tetcut/set_removal.hpp"
+
+namespace tetcut::testing {
+namespace {
+
+// (case, removable) pairs met while checking a mesh tet by tet.
+using Seen = std::set<std::pair<int, bool>>;
+
+// For every live tet: removability()'s verdict == the checker's verdict on the mesh without it,
+// and set_removable({t}) says the same; the singular vertex or edge named belongs to the tet.
+void expect_single_removals_agree(const TetMesh& mesh, Seen* seen) {
+  SetRemovalWorkspace ws;
+  for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
+    const TetId t{i};
+    if (!mesh.is_live(t)) continue;
+    const Removability r = removability(mesh, t);
+    const TetId one[1] = {t};
+    const bool valid_after = still_valid_without(mesh, one);
+    EXPECT_EQ(r.removable, valid_after) << "tet " << i << " case " << int(r.paper_case);
+    EXPECT_EQ(ws.check(mesh, one).ok, valid_after) << "tet " << i;
+    EXPECT_EQ(r.paper_case, std::min(mesh.boundary_face_count(t), 3) + 1);
+    if (r.kind == SingularityKind::kVertex) {
+      EXPECT_GE(mesh.local_index(t, r.vertex), 0);
+      EXPECT_TRUE(mesh.is_boundary_vertex(r.vertex));
+    }
+    if (r.kind == SingularityKind::kEdge) {
+      EXPECT_EQ(r.paper_case, 3);
+      EXPECT_GE(mesh.local_index(t, r.edge.a), 0);
+      EXPECT_GE(mesh.local_index(t, r.edge.b), 0);
+    }
+    EXPECT_EQ(r.removable, r.kind == SingularityKind::kNone);
+    if (seen) seen->insert({r.paper_case, r.removable});
+  }
+}
+
+TEST(Removability, Case4ASingleTetAndTwoTetsAreAlwaysRemovable) {
+  TetMesh one = build_or_fail(single_tet());
+  const Removability r = removability(one, TetId{0});
+  EXPECT_TRUE(r.removable);
+  EXPECT_EQ(r.paper_case, 4);
+
+  RawMesh two = single_tet();
+  two.positions.push_back({1, 1, 1});
+  two.tets.push_back({1, 2, 3, 4});  // shares face (1, 2, 3) with the first tet
+  TetMesh mesh = build_or_fail(two);
+  Seen seen;
+  expect_single_removals_agree(mesh, &seen);
+  EXPECT_EQ(seen, (Seen{{4, true}}));
+}
+
+TEST(Removability, Case3RemovableAroundAnInteriorEdgeAndNotAroundABoundaryOne) {
+  // One cube, six tets around its interior diagonal: two faces each on the cube's surface, the
+  // edge opposite both is the diagonal, interior: removable.
+  TetMesh mesh = box(1, 1, 1);
+  for (std::uint32_t i = 0; i < 6; ++i) {
+    const Removability r = removability(mesh, TetId{i});
+    EXPECT_EQ(r.paper_case, 3);
+    EXPECT_TRUE(r.removable);
+  }
+  // Once one goes the diagonal is on the surface: the tets not adjacent to the gap are case 3
+  // with their opposite edge on the boundary, an edge singularity at the diagonal.
+  const TetId first[1] = {TetId{0}};
+  mesh.remove_tets(first);
+  Seen seen;
+  expect_single_removals_agree(mesh, &seen);
+  EXPECT_TRUE(seen.count({3, false}));
+  EXPECT_TRUE(seen.count({4, true}));
+  int edge_singular = 0;
+  for (std::uint32_t i = 1; i < 6; ++i) {
+    const Removability r = removability(mesh, TetId{i});
+    if (r.kind != SingularityKind::kEdge) continue;
+    ++edge_singular;
+    // The diagonal (0,0,0)-(1,1,1).
+    const Vec3 a = mesh.position(r.edge.a), b = mesh.position(r.edge.b);
+    EXPECT_DOUBLE_EQ(std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z), 3.0);
+  }
+  EXPECT_EQ(edge_singular, 3);
+}
+
+TEST(Removability, Cases1And2BothOutcomesInABox) {
+  // A 3x3x3 box has interior vertices (case 1 and 2 removable), tets with no boundary face
+  // touching the surface at a vertex (case 1 not removable) and tets with one boundary face
+  // whose opposite vertex is on the surface too (case 2 not removable).
+  TetMesh mesh = box(3, 3, 3);
+  Seen seen;
+  expect_single_removals_agree(mesh, &seen);
+  EXPECT_TRUE(seen.count({1, true}));
+  EXPECT_TRUE(seen.count({1, false}));
+  EXPECT_TRUE(seen.count({2, true}));
+  EXPECT_TRUE(seen.count({2, false}));
+  EXPECT_TRUE(seen.count({3, true}));
+}
+
+TEST(Removability, AgreesWithTheCheckerOnThinAndDentedBoxes) {
+  // A one-layer slab (every vertex on the surface) and a box with a few tets already gone.
+  Seen seen;
+  expect_single_removals_agree(box(3, 2, 1), &seen);
+  TetMesh dented = box(2, 2, 2);
+  Remover remover;
+  for (std::uint32_t i : {0u, 7u, 20u, 33u, 41u}) {
+    if (dented.is_live(TetId{i})) remover.remove(dented, TetId{i});
+    ASSERT_TRUE(mesh_is_valid(dented));
+    expect_single_removals_agree(dented, &seen);
+  }
+  for (int c = 1; c <= 3; ++c) EXPECT_TRUE(seen.count({c, false})) << "case " << c;
+}
+
+TEST(SetRemoval, AgreesWithTheCheckerOnRandomConnectedSets) {
+  // Random face-connected sets of 2..8 tets grown from random tets, near the surface and deep
+  // inside: the local test says "removable" exactly when the checker finds the mesh without
+  // them valid, and names a vertex or edge of the set when it does not.
+  TetMesh mesh = box(3, 3, 3);
+  SetRemovalWorkspace ws;
+  SplitMix64 rng(7);
+  int removable = 0, not_removable = 0;
+  std::vector<TetId> set;
+  for (int trial = 0; trial < 400; ++trial) {
+    set.assign(1, TetId{rng.below(mesh.tet_capacity())});
+    const std::uint32_t want = 2 + rng.below(7);
+    for (int grow = 0; grow < 40 && set.size() < want; ++grow) {
+      const TetId from = set[rng.below(static_cast<std::uint32_t>(set.size()))];
+      const FaceRef n = mesh.neighbour(from, static_cast<int>(rng.below(4)));
+      if (n.valid() && std::find(set.begin(), set.end(), n.tet) == set.end()) set.push_back(n.tet);
+    }
+    const SetRemovalCheck check = ws.check(mesh, set);
+    EXPECT_EQ(check.ok, still_valid_without(mesh, set)) << "trial " << trial;
+    if (check.ok) {
+      ++removable;
+    } else {
+      ++not_removable;
+      EXPECT_TRUE(std::find(set.begin(), set.end(), check.tet) != set.end());
+      if (check.kind == SingularityKind::kVertex) {
+        EXPECT_GE(mesh.local_index(check.tet, check.vertex), 0);
+      }
+      if (check.kind == SingularityKind::kEdge) {
+        EXPECT_EQ(mesh.vertex(check.tet, kEdgeVerts[check.local_edge][0]), check.edge.a);
+        EXPECT_EQ(mesh.vertex(check.tet, kEdgeVerts[check.local_edge][1]), check.edge.b);
+      }
+    }
+  }
+  EXPECT_GT(removable, 20);
+  EXPECT_GT(not_removable, 20);
+}
+
+TEST(SetRemoval, APathThatPinchesAVertexIsRefusedByTheEulerTest) {
+  // Any two of the six tets around the cube's diagonal: two opposite ones leave the diagonal
+  // with two separate runs of tets (a singular edge), which the checker names; the local test
+  // must refuse exactly those pairs.
+  TetMesh mesh = box(1, 1, 1);
+  SetRemovalWorkspace ws;
+  int refused = 0;
+  for (std::uint32_t a = 0; a < 6; ++a)
+    for (std::uint32_t b = a + 1; b < 6; ++b) {
+      const TetId pair[2] = {TetId{a}, TetId{b}};
+      const bool valid_after = still_valid_without(mesh, pair);
+      EXPECT_EQ(ws.check(mesh, pair).ok, valid_after) << a << "," << b;
+      refused += !valid_after;
+    }
+  EXPECT_GT(refused, 0);
+}
+
+}  // namespace
+}  // namespace tetcut::testing
