@@ -54,17 +54,23 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
     : mesh_(mesh), params_(params), index_(mean_edge_length(mesh)), remover_(removal_options(params)) {
   // Headroom of half the mesh again: cuts grow it (refinement creates more than removal takes)
   // and a reallocation of a million-tet array in the middle of a cut is a latency spike.
-  mesh_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096,
-                mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024);
+  const std::uint32_t tets = mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096;
+  const std::uint32_t vertices = mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024;
+  mesh_.reserve(tets, vertices);
   index_.build(mesh_);
-  refiner_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096);
+  refiner_.reserve(tets);
+  remover_.reserve(tets, vertices);
 }
 
 std::optional<std::string> Cutter::set_params(const CutParams& params) {
   if (auto invalid = validate(params)) return invalid;
   const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth;
   params_ = params;
-  if (removal_changed) remover_ = Remover(removal_options(params_));
+  if (removal_changed) {
+    remover_ = Remover(removal_options(params_));
+    remover_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096,
+                     mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024);
+  }
   return std::nullopt;
 }
 

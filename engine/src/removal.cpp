@@ -70,6 +70,19 @@ double RemovalReport::mean_cardinality() const {
 
 Remover::Remover(RemovalOptions options) : options_(options) {}
 
+void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
+  if (tet_stamp_.size() < tets) {
+    tet_stamp_.resize(tets, 0);
+    met_unresolved_.resize(tets, 0);
+    created_stamp_.resize(tets, 0);
+    removed_stamp_.resize(tets, 0);
+    attempt_stamp_.resize(tets, 0);
+    aux_stamp_.resize(tets, 0);
+  }
+  ws_.reserve(tets, vertices);
+  splitter_.reserve(tets);
+}
+
 void Remover::grow_tet_arrays(const TetMesh& mesh) {
   if (tet_stamp_.size() >= mesh.tet_capacity()) return;
   const std::size_t n = mesh.tet_capacity() + mesh.tet_capacity() / 4 + 16;

@@ -35,6 +35,19 @@ void SetRemovalWorkspace::grow(const TetMesh& mesh) {
   }
 }
 
+void SetRemovalWorkspace::reserve(std::uint32_t tets, std::uint32_t vertices) {
+  if (set_stamp_.size() < tets) {
+    set_stamp_.resize(tets, 0);
+    shell_stamp_.resize(tets, 0);
+    visit_stamp_.resize(tets, 0);
+    parent_.resize(tets, 0);
+  }
+  if (vert_stamp_.size() < vertices) {
+    vert_stamp_.resize(vertices, 0);
+    link_stamp_.resize(vertices, 0);
+  }
+}
+
 void SetRemovalWorkspace::mark(const TetMesh& mesh, std::span<const TetId> set) {
   grow(mesh);
   const std::uint32_t g = next_gen(set_stamp_, set_gen_);

@@ -126,6 +126,8 @@ class Remover {
   RemovalResult remove(TetMesh& mesh, TetId t, ChangeLog* log = nullptr);
 
   [[nodiscard]] const RemovalReport& report() const { return report_; }
+  // Sizes all per-tet and per-vertex scratch for meshes up to these capacities (see Cutter).
+  void reserve(std::uint32_t tets, std::uint32_t vertices);
   void reset_report() { report_ = {}; }
   [[nodiscard]] const RemovalOptions& options() const { return options_; }
 

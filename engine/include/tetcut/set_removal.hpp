@@ -67,6 +67,10 @@ class SetRemovalWorkspace {
   void remaining_runs(const TetMesh& mesh, TetId seed, int local_edge, std::vector<TetId>& tets,
                       std::vector<std::uint32_t>& sizes);
 
+  // Sizes the per-tet and per-vertex scratch for meshes up to these capacities now, rather than
+  // in the middle of the first operation that needs them.
+  void reserve(std::uint32_t tets, std::uint32_t vertices);
+
  private:
   void grow(const TetMesh& mesh);
   // The whole shell of v into shell_, stamped with shell_gen_.
