@@ -67,13 +67,17 @@ int EdgeSplitter::find_edge(std::uint32_t lo, std::uint32_t hi) const {
 
 // Adds the tets around edge e to affected_, with the edge's bit in their mask.
 bool EdgeSplitter::collect_shell(const TetMesh& mesh, const PlannedEdge& e) {
-  mesh.vertex_shell(VertId{e.lo}, shell_);
   TetId start = kNoTet;
-  for (TetId t : shell_)
-    if (mesh.local_index(t, VertId{e.hi}) >= 0) {
-      start = t;
-      break;
-    }
+  if (mesh.is_live(e.hint) && mesh.local_index(e.hint, VertId{e.lo}) >= 0 && mesh.local_index(e.hint, VertId{e.hi}) >= 0) {
+    start = e.hint;
+  } else {
+    mesh.vertex_shell(VertId{e.lo}, shell_);
+    for (TetId t : shell_)
+      if (mesh.local_index(t, VertId{e.hi}) >= 0) {
+        start = t;
+        break;
+      }
+  }
   if (!start.valid()) return false;
   const int la = mesh.local_index(start, VertId{e.lo}), lb = mesh.local_index(start, VertId{e.hi});
   mesh.edge_shell(start, kEdgeIndex[la][lb], shell_);
@@ -99,7 +103,7 @@ SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, Spli
       result.offending = e;
       return result;
     }
-    edges_.push_back({std::min(e.a.value, e.b.value), std::max(e.a.value, e.b.value), kNoVert});
+    edges_.push_back({std::min(e.a.value, e.b.value), std::max(e.a.value, e.b.value), kNoVert, e.hint});
   }
   std::sort(edges_.begin(), edges_.end(),
             [](const PlannedEdge& x, const PlannedEdge& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); });

@@ -30,7 +30,7 @@ void Refiner::collect_long_edges(const TetMesh& mesh, double d_ref) {
   for (TetId t : current_) {
     if (!mesh.is_live(t)) continue;
     for (int e = 0; e < 6; ++e) {
-      const Edge edge{mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])};
+      const Edge edge{mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1]), t};
       if (length(mesh, edge.a, edge.b) > d_ref && seen_.insert(edge.a, edge.b)) edges_.push_back(edge);
     }
   }
@@ -43,19 +43,22 @@ void Refiner::add_shell_edges(const TetMesh& mesh, double p) {
   for (std::size_t i = 0; i < edges_.size(); ++i) {
     const Edge e = edges_[i];
     const double threshold = p * length(mesh, e.a, e.b);
-    mesh.vertex_shell(e.a, shell_);
-    TetId start = kNoTet;
-    for (TetId t : shell_)
-      if (mesh.local_index(t, e.b) >= 0) {
-        start = t;
-        break;
-      }
+    TetId start = e.hint;  // every edge here was found in a tet
+    if (!mesh.is_live(start) || mesh.local_index(start, e.a) < 0 || mesh.local_index(start, e.b) < 0) {
+      start = kNoTet;
+      mesh.vertex_shell(e.a, shell_);
+      for (TetId t : shell_)
+        if (mesh.local_index(t, e.b) >= 0) {
+          start = t;
+          break;
+        }
+    }
     if (!start.valid()) continue;
     mesh.edge_shell(start, kEdgeIndex[mesh.local_index(start, e.a)][mesh.local_index(start, e.b)], shell_);
     for (TetId t : shell_) {
       const int le = kEdgeIndex[mesh.local_index(t, e.a)][mesh.local_index(t, e.b)];
       const int lo = opposite_edge(static_cast<std::uint8_t>(le));
-      const Edge opposite{mesh.vertex(t, kEdgeVerts[lo][0]), mesh.vertex(t, kEdgeVerts[lo][1])};
+      const Edge opposite{mesh.vertex(t, kEdgeVerts[lo][0]), mesh.vertex(t, kEdgeVerts[lo][1]), t};
       if (length(mesh, opposite.a, opposite.b) > threshold && seen_.insert(opposite.a, opposite.b))
         edges_.push_back(opposite);
     }

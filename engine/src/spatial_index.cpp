@@ -47,9 +47,21 @@ SpatialIndex::Slot& SpatialIndex::cell_for(std::uint64_t key) {
   for (; table_[s].used; s = (s + 1) & mask)
     if (table_[s].key == key) return table_[s];
   // Cells are never deleted: an emptied cell keeps its slot for the next tets there.
-  table_[s] = {key, kNone, true};
+  const std::uint32_t sentinel = new_node();  // may grow nodes_, not table_
+  nodes_[sentinel] = {kNone, sentinel, sentinel, kNone};
+  table_[s] = {key, sentinel, true};
   ++used_slots_;
   return table_[s];
+}
+
+std::uint32_t SpatialIndex::new_node() {
+  if (free_node_ != kNone) {
+    const std::uint32_t n = free_node_;
+    free_node_ = nodes_[n].next;
+    return n;
+  }
+  nodes_.push_back({});
+  return static_cast<std::uint32_t>(nodes_.size() - 1);
 }
 
 void SpatialIndex::build(const TetMesh& mesh) {
@@ -70,8 +82,7 @@ void SpatialIndex::build(const TetMesh& mesh) {
 
 void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   if (ranges_.size() <= t.value) ranges_.resize(std::max<std::size_t>(t.value + 1, ranges_.size() * 3 / 2));
-  CellRange& r = ranges_[t.value];
-  if (r.indexed) erase(t);
+  if (ranges_[t.value].first_node != kNone) erase(t);
   const auto v = mesh.tet(t);
   Vec3 lo = mesh.position(v[0]), hi = lo;
   for (int i = 1; i < 4; ++i) {
@@ -79,44 +90,37 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
-  r.lo = {cell_of(lo.x), cell_of(lo.y), cell_of(lo.z)};
-  r.hi = {cell_of(hi.x), cell_of(hi.y), cell_of(hi.z)};
-  r.indexed = true;
-  for (std::int32_t i = r.lo[0]; i <= r.hi[0]; ++i)
-    for (std::int32_t j = r.lo[1]; j <= r.hi[1]; ++j)
-      for (std::int32_t k = r.lo[2]; k <= r.hi[2]; ++k) {
-        std::uint32_t n = free_node_;
-        if (n != kNone) {
-          free_node_ = nodes_[n].next;
-        } else {
-          n = static_cast<std::uint32_t>(nodes_.size());
-          nodes_.push_back({});
-        }
-        Slot& cell = cell_for(pack(i, j, k));
-        nodes_[n] = {t.value, cell.head};
-        cell.head = n;
+  const std::int32_t i0 = cell_of(lo.x), i1 = cell_of(hi.x), j0 = cell_of(lo.y), j1 = cell_of(hi.y), k0 = cell_of(lo.z),
+                     k1 = cell_of(hi.z);
+  std::uint32_t first = kNone;
+  for (std::int32_t i = i0; i <= i1; ++i)
+    for (std::int32_t j = j0; j <= j1; ++j)
+      for (std::int32_t k = k0; k <= k1; ++k) {
+        const std::uint32_t sentinel = cell_for(pack(i, j, k)).sentinel;
+        const std::uint32_t n = new_node();
+        const std::uint32_t after = nodes_[sentinel].next;
+        nodes_[n] = {t.value, after, sentinel, first};
+        nodes_[after].prev = n;
+        nodes_[sentinel].next = n;
+        first = n;
         ++entries_;
       }
+  ranges_[t.value].first_node = first;
 }
 
 void SpatialIndex::erase(TetId t) {
-  if (t.value >= ranges_.size() || !ranges_[t.value].indexed) return;
-  CellRange& r = ranges_[t.value];
-  for (std::int32_t i = r.lo[0]; i <= r.hi[0]; ++i)
-    for (std::int32_t j = r.lo[1]; j <= r.hi[1]; ++j)
-      for (std::int32_t k = r.lo[2]; k <= r.hi[2]; ++k) {
-        Slot& cell = cell_for(pack(i, j, k));
-        for (std::uint32_t* link = &cell.head; *link != kNone; link = &nodes_[*link].next) {
-          const std::uint32_t n = *link;
-          if (nodes_[n].tet != t.value) continue;
-          *link = nodes_[n].next;
-          nodes_[n].next = free_node_;
-          free_node_ = n;
-          --entries_;
-          break;
-        }
-      }
-  r.indexed = false;
+  if (t.value >= ranges_.size()) return;
+  for (std::uint32_t n = ranges_[t.value].first_node; n != kNone;) {
+    Node& node = nodes_[n];
+    nodes_[node.prev].next = node.next;
+    nodes_[node.next].prev = node.prev;
+    const std::uint32_t next = node.next_of_tet;
+    node.next = free_node_;
+    free_node_ = n;
+    --entries_;
+    n = next;
+  }
+  ranges_[t.value].first_node = kNone;
 }
 
 void SpatialIndex::apply(const TetMesh& mesh, const ChangeLog& log, std::size_t removed_from, std::size_t created_from) {
@@ -144,7 +148,7 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
       for (std::int32_t k = k0; k <= k1; ++k) {
         const Slot* cell = find_cell(pack(i, j, k));
         if (!cell) continue;
-        for (std::uint32_t n = cell->head; n != kNone; n = nodes_[n].next) {
+        for (std::uint32_t n = nodes_[cell->sentinel].next; n != cell->sentinel; n = nodes_[n].next) {
           const std::uint32_t t = nodes_[n].tet;
           if (t >= stamps_.size() || stamps_[t] == stamp_) continue;
           stamps_[t] = stamp_;

@@ -20,6 +20,7 @@ namespace tetcut {
 
 struct Edge {
   VertId a, b;
+  TetId hint = kNoTet;  // a tet known to contain the edge, if any: saves searching a shell
 };
 
 enum class SplitRefusal : std::uint8_t {
@@ -59,6 +60,7 @@ class EdgeSplitter {
   struct PlannedEdge {
     std::uint32_t lo, hi;  // sorted vertex ids: the global order of the paper's rule
     VertId midpoint;
+    TetId hint;
   };
   struct AffectedTet {
     TetId tet;

@@ -41,20 +41,20 @@ class SpatialIndex {
 
  private:
   struct CellRange {
-    std::array<std::int32_t, 3> lo{};
-    std::array<std::int32_t, 3> hi{};
-    bool indexed = false;
+    std::uint32_t first_node = kNone;  // kNone: not indexed
   };
   struct Slot {
     std::uint64_t key = 0;
-    std::uint32_t head = kNone;  // first node of the cell's list
+    std::uint32_t sentinel = kNone;  // the cell's list head node
     bool used = false;
   };
-  // Cell lists are singly linked through one node pool with a free list, so that inserting
-  // and erasing never allocate once the pool has grown (vectors per cell would).
+  // Cell lists are doubly linked through one node pool with a free list, each starting at a
+  // sentinel node, and a tet's own nodes are chained too: erasing a tet unlinks its nodes in
+  // O(1) each, and inserting or erasing never allocates once the pool has grown.
   struct Node {
     std::uint32_t tet;
-    std::uint32_t next;
+    std::uint32_t next, prev;  // in the cell's list
+    std::uint32_t next_of_tet;
   };
   static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
@@ -63,6 +63,7 @@ class SpatialIndex {
   [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
   [[nodiscard]] const Slot* find_cell(std::uint64_t key) const;
   Slot& cell_for(std::uint64_t key);
+  std::uint32_t new_node();
   void grow_table();
 
   double cell_size_;
