@@ -121,6 +121,7 @@ GenResult generate_liver(const LiverOptions& options, RepairReport* repair) {
   RawMesh raw = complex_to_raw(c3t3);
   if (raw.tets.empty()) return GenResult::failure("liver: Mesh_3 produced no tetrahedra");
 
+  if (!options.repair) return GenResult::success(std::move(raw));
   RepairResult repaired = repair_mesh(raw);
   if (repair != nullptr) *repair = repaired.report;
   if (!repaired.ok()) return GenResult::failure("liver: " + repaired.error);

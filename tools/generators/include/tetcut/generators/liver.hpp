@@ -24,6 +24,9 @@ struct LiverOptions {
   // directory with tar.
   std::string image_path;
   std::uint32_t seed = 0;
+  // false: return Mesh_3's complex as it comes, singularities and all (tests use it as a real
+  // non-manifold mesh from another tool).
+  bool repair = true;
 };
 
 // The cell size that yields about `target_tets` tets (calibrated on the Debian image; see
