@@ -199,11 +199,7 @@ std::string format_medit(const RawMesh& mesh) {
   append_uint(out, mesh.positions.size());
   out += '\n';
   for (const Vec3& p : mesh.positions) {
-    append_double(out, p.x);
-    out += ' ';
-    append_double(out, p.y);
-    out += ' ';
-    append_double(out, p.z);
+    append_point(out, p);
     out += " 0\n";
   }
   out += "\nTetrahedra\n";

@@ -198,11 +198,7 @@ std::string format_msh22(const RawMesh& mesh) {
     const Vec3& p = mesh.positions[i];
     append_uint(out, i + 1);
     out += ' ';
-    append_double(out, p.x);
-    out += ' ';
-    append_double(out, p.y);
-    out += ' ';
-    append_double(out, p.z);
+    append_point(out, p);
     out += '\n';
   }
   out += "$EndNodes\n$Elements\n";

@@ -259,11 +259,7 @@ std::string format_msh41(const RawMesh& mesh) {
       out += '\n';
     }
     for (const Vec3& p : mesh.positions) {
-      append_double(out, p.x);
-      out += ' ';
-      append_double(out, p.y);
-      out += ' ';
-      append_double(out, p.z);
+      append_point(out, p);
       out += '\n';
     }
   }

@@ -151,11 +151,7 @@ std::string format_tetgen_node(const RawMesh& mesh) {
     const Vec3& p = mesh.positions[i];
     append_uint(out, i + 1);
     out += ' ';
-    append_double(out, p.x);
-    out += ' ';
-    append_double(out, p.y);
-    out += ' ';
-    append_double(out, p.z);
+    append_point(out, p);
     out += '\n';
   }
   out += "# written by tetcut\n";

@@ -324,6 +324,14 @@ void append_double(std::string& out, double value) {
   out.append(buf, r.ptr);
 }
 
+void append_point(std::string& out, const Vec3& p) {
+  append_double(out, p.x);
+  out += ' ';
+  append_double(out, p.y);
+  out += ' ';
+  append_double(out, p.z);
+}
+
 void append_uint(std::string& out, std::uint64_t value) {
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, value);

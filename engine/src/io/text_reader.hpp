@@ -8,6 +8,8 @@
 #include <map>
 #include <optional>
 #include <string>
+
+#include "tetcut/vec3.hpp"
 #include <string_view>
 #include <unordered_map>
 #include <vector>
@@ -160,6 +162,8 @@ void polygon_notice(std::uint64_t polygons_split, std::vector<std::string>& noti
 
 // Shortest text that parses back to the same double (std::to_chars), appended to `out`.
 void append_double(std::string& out, double value);
+// "x y z", each coordinate as append_double writes it.
+void append_point(std::string& out, const Vec3& p);
 void append_uint(std::string& out, std::uint64_t value);
 
 }  // namespace tetcut::io_detail

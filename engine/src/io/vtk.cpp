@@ -282,11 +282,7 @@ std::string format_vtk(const RawMesh& mesh) {
   append_uint(out, mesh.positions.size());
   out += " double\n";
   for (const Vec3& p : mesh.positions) {
-    append_double(out, p.x);
-    out += ' ';
-    append_double(out, p.y);
-    out += ' ';
-    append_double(out, p.z);
+    append_point(out, p);
     out += '\n';
   }
   out += "CELLS ";

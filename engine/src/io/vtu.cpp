@@ -562,11 +562,7 @@ std::string format_vtu(const RawMesh& mesh) {
   out += "\">\n      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (const Vec3& p : mesh.positions) {
     out += "          ";
-    append_double(out, p.x);
-    out += ' ';
-    append_double(out, p.y);
-    out += ' ';
-    append_double(out, p.z);
+    append_point(out, p);
     out += '\n';
   }
   out += "        </DataArray>\n      </Points>\n      <Cells>\n"
