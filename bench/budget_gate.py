@@ -59,8 +59,12 @@ def main(argv):
             continue
         ok = ok_cmp(value, bound)
         failed += not ok
-        margin = (bound - value) / bound * 100 if "max" in figure else (value - bound) / bound * 100
-        rows.append((figure["name"], f"{value:.4g}", f"{sign} {bound:g}", f"{margin:+.0f}%", "ok" if ok else "OVER BUDGET"))
+        if bound == 0:
+            margin_text = "exact"
+        else:
+            margin = (bound - value) / bound * 100 if "max" in figure else (value - bound) / bound * 100
+            margin_text = f"{margin:+.0f}%"
+        rows.append((figure["name"], f"{value:.4g}", f"{sign} {bound:g}", margin_text, "ok" if ok else "OVER BUDGET"))
 
     header = ("figure", "measured", "budget", "margin", "status")
     widths = [max(len(str(r[i])) for r in rows + [header]) for i in range(5)]
