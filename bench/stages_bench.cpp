@@ -71,7 +71,8 @@ void BM_CutSweepCorpus(benchmark::State& state) {
   const double diameter = norm(b.hi - b.lo) / 25;
   const std::vector<Vec3> centres = corpus_sweep(b, diameter / 2);
   std::vector<double> samples;
-  std::uint64_t removed = 0, unresolved = 0;
+  std::uint64_t removed = 0, created = 0, unresolved = 0;
+  double cutting_us = 0.0;
   for (auto _ : state) {
     tetcut::TetMesh mesh = base;
     tetcut::Cutter cutter(mesh, {.tool_diameter = diameter});
@@ -79,7 +80,9 @@ void BM_CutSweepCorpus(benchmark::State& state) {
       const auto t0 = Clock::now();
       const tetcut::CutReport r = cutter.cut(c);
       samples.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
+      cutting_us += samples.back();
       removed += r.tets_removed;
+      created += r.tets_created;
       unresolved += r.unresolved;
     }
   }
@@ -89,7 +92,9 @@ void BM_CutSweepCorpus(benchmark::State& state) {
   state.counters["p90_us"] = percentile(samples, 0.9);
   state.counters["p99_us"] = percentile(samples, 0.99);
   state.counters["max_us"] = percentile(samples, 1.0);
+  state.counters["cuts_per_second"] = static_cast<double>(samples.size()) / (cutting_us * 1e-6);
   state.counters["tets_removed_per_cut"] = static_cast<double>(removed) / static_cast<double>(samples.size());
+  state.counters["tets_created_per_cut"] = static_cast<double>(created) / static_cast<double>(samples.size());
   state.counters["unresolved"] = static_cast<double>(unresolved);
 }
 BENCHMARK(BM_CutSweepCorpus)->DenseRange(0, 4)->Iterations(1)->Unit(benchmark::kMillisecond);
