@@ -22,7 +22,7 @@ src=$(cd "$here/.." && pwd)
 CXXFLAGS=${CXXFLAGS:-}
 work=${WORK:-$(mktemp -d)}
 build=$work/tetcut-fuzz-build
-default_targets="msh22 msh41 msh10 vtu vtk medit tetgen off stl obj mixed_ops checker_differential"
+default_targets="msh22 msh41 msh10 vtu vtk medit tetgen off stl obj mixed_ops checker_differential removal_sequence cut_sequence"
 read -r -a targets <<<"${TETCUT_FUZZ_TARGETS:-$default_targets}"
 
 # Limits per kind of input: a file, or an operation sequence (mesh_edits.hpp).
@@ -49,6 +49,10 @@ cmake -S "$src" -B "$build" "${generator[@]}" \
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]/#/tetcut_fuzz_}"
 
 mkdir -p "$OUT/lib"
+# The sequence targets start from bundled meshes, looked up next to the fuzzer when the source
+# tree is not there (fuzz/sequence_support.cpp).
+mkdir -p "$OUT/tetcut_meshes"
+cp "$src"/corpus/meshes/{cylinder,sheet,liver-coarse}.msh "$OUT/tetcut_meshes/"
 for t in "${targets[@]}"; do
   cp "$build/fuzz/$t" "$OUT/$t"
   # Libraries from outside the base image travel with the fuzzers.

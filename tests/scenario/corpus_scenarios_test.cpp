@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "tetcut/scenario/scenario.hpp"
@@ -10,10 +11,14 @@
 namespace tetcut::scenario {
 namespace {
 
+// corpus/scenarios/*.scn and the minimized regressions, corpus/regressions/<target>/*.scn.
 std::vector<std::string> scenario_files() {
   std::vector<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator(TETCUT_CORPUS_DIR "/scenarios"))
-    if (e.path().extension() == ".scn") out.push_back(e.path().filename().string());
+  const std::filesystem::path corpus = TETCUT_CORPUS_DIR;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(corpus / "scenarios"))
+    if (e.path().extension() == ".scn") out.push_back(std::filesystem::relative(e.path(), corpus).string());
+  for (const auto& e : std::filesystem::recursive_directory_iterator(corpus / "regressions"))
+    if (e.path().extension() == ".scn") out.push_back(std::filesystem::relative(e.path(), corpus).string());
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -21,7 +26,7 @@ std::vector<std::string> scenario_files() {
 class CorpusScenario : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CorpusScenario, RunsWithEveryCheckAndExpectation) {
-  const ParseResult p = parse_file(TETCUT_CORPUS_DIR "/scenarios/" + GetParam());
+  const ParseResult p = parse_file(std::string(TETCUT_CORPUS_DIR) + "/" + GetParam());
   ASSERT_TRUE(p.scenario) << p.error;
   const RunResult r = run(*p.scenario);
   EXPECT_TRUE(r.ok) << r.error;
@@ -29,9 +34,9 @@ TEST_P(CorpusScenario, RunsWithEveryCheckAndExpectation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusScenario, ::testing::ValuesIn(scenario_files()), [](const auto& info) {
-  std::string n = info.param.substr(0, info.param.find('.'));
+  std::string n = info.param.substr(0, info.param.rfind('.'));
   for (char& c : n)
-    if (c == '-') c = '_';
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return n;
 });
 

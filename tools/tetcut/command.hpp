@@ -26,6 +26,8 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err);
 int cmd_cut(Args args, std::ostream& out, std::ostream& err);
 int cmd_remove(Args args, std::ostream& out, std::ostream& err);
 int cmd_run(Args args, std::ostream& out, std::ostream& err);
+int cmd_replay(Args args, std::ostream& out, std::ostream& err);
+int cmd_minimize(Args args, std::ostream& out, std::ostream& err);
 
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitViolated = 1;

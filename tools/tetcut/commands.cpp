@@ -117,6 +117,32 @@ constexpr std::string_view kRunHelp =
     "\n"
     "exit: 0 passed, 1 a check or expectation failed (its line is named), 2 unusable input\n";
 
+constexpr std::string_view kReplayHelp =
+    "Decodes an input of a sequence fuzz target (removal_sequence, cut_sequence) into a scenario,\n"
+    "prints it, and runs it through the target's own entry point with every check the target\n"
+    "makes (local check after every operation, full checks, every request resolved under the\n"
+    "combined strategy, rolled back cuts leaving the mesh as it was). Names the first failing\n"
+    "operation and its scenario line, then says whether the scenario alone reproduces it under\n"
+    "`tetcut run` (the input of `tetcut minimize`).\n"
+    "\n"
+    "  --target NAME         removal_sequence or cut_sequence\n"
+    "  --scenario-out FILE   also write the scenario (mesh paths relative to FILE's folder)\n"
+    "\n"
+    "exit: 0 the input passes, 1 an operation fails, 2 unreadable input, not the target's\n"
+    "input version, or bad usage\n";
+
+constexpr std::string_view kMinimizeHelp =
+    "Shrinks a failing scenario (one `tetcut run` exits 1 on) while it keeps failing with the\n"
+    "same kind of error (an invariant by its id, an expectation by its kind, a failed cut):\n"
+    "deletes operations (ddmin: chunks, then single lines), turns sweeps into single cuts and\n"
+    "rounds coordinates. Every candidate is a full run. Writes OUT atomically.\n"
+    "\n"
+    "  -o OUT           the minimized scenario (mesh paths relative to its folder)\n"
+    "  --max-runs N     stop after N runs of candidates (default 2000)\n"
+    "\n"
+    "exit: 0 written, 2 the scenario does not fail (or does not parse), unwritable OUT, or bad\n"
+    "usage\n";
+
 constexpr std::array kCommands = {
     CommandInfo{"info", "tetcut info MESH [--json]",
                 "counts, boundary, quality statistics, manifold status, hash", kInfoHelp,
@@ -145,6 +171,10 @@ constexpr std::array kCommands = {
                 "a cautery sweep, one cut per step", kCutHelp, &cmd_cut},
     CommandInfo{"run", "tetcut run SCENARIO [--check every|end|none] [--out M] [--report R.json]",
                 "runs a scenario file", kRunHelp, &cmd_run},
+    CommandInfo{"replay", "tetcut replay INPUT --target NAME [--scenario-out FILE]",
+                "decodes a fuzz input into a scenario and runs it", kReplayHelp, &cmd_replay},
+    CommandInfo{"minimize", "tetcut minimize SCENARIO -o OUT [--max-runs N]",
+                "shrinks a failing scenario while it still fails", kMinimizeHelp, &cmd_minimize},
 };
 
 }  // namespace

@@ -162,6 +162,9 @@ class Remover {
   // Last resort after basic: split every edge at every boundary vertex of T and remove the small
   // tets at those vertices with T's children.
   bool refine_tet_corners(TetMesh& mesh, TetId& t, RemovalResult& result);
+  // The last resort, which cannot fail: grows the set by the whole remaining shell of whatever
+  // it would leave singular until it is removable (at worst the connected piece of the mesh).
+  bool flood(TetMesh& mesh, TetId t, RemovalResult& result);
   // One split of edges_ / edge_refs_ inside an attempt, saving the tets it replaces that
   // existed before the attempt. False (mesh untouched) if the splitter refuses.
   bool split_edges(TetMesh& mesh, RemovalResult& result);
@@ -190,6 +193,7 @@ class Remover {
   std::vector<Edge> edges_;
   std::vector<EdgeRef> edge_refs_;  // a tet and local edge for each of edges_
   std::vector<TetId> ring_;
+  std::vector<TetId> flood_;
   std::vector<TetId> region_, shell_, seed_parents_, found_, restored_, children_, x_, x_next_;
   std::vector<TetId> attempt_created_;                 // ids made by the attempt's splits
   std::vector<TetId> original_ids_;                    // tets live before the attempt it replaced

@@ -194,6 +194,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     result.exit_code = code;
     result.failed_line = op.line;
     result.error = scenario.name + ":" + std::to_string(op.line) + ": " + why;
+    result.tets = mesh.num_tets();
   };
   auto violations = [](const invariants::CheckReport& r) {
     std::string s;

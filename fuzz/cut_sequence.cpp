@@ -1,0 +1,185 @@
+#include "cut_sequence.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "sequence_session.hpp"
+#include "tetcut/removal.hpp"
+
+namespace tetcut::fuzz::cut_sequence {
+namespace {
+
+enum class Op : std::uint8_t { kParam, kCutPoint, kCutSurface, kSweep, kLast = kSweep };
+
+struct Context {
+  const BundledMesh& bundled;
+  CutParams params;
+  double quantum;  // of coordinates
+};
+
+Vec3 rounded(const Vec3& p, double quantum) {
+  return {round_to(p.x, quantum), round_to(p.y, quantum), round_to(p.z, quantum)};
+}
+
+// Two significant digits.
+double round_significant(double x) { return round_to(x, coordinate_quantum(x, 1)); }
+
+void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
+  CutParams& p = ctx.params;
+  std::string name, value;
+  switch (input.ConsumeIntegralInRange<int>(0, 6)) {
+    case 0:
+      p.tool_diameter = round_significant(ctx.bundled.mean_edge * consume_in(input, 0.5, 2.0));
+      name = "diameter", value = format_number(p.tool_diameter);
+      break;
+    case 1:
+      p.d_ref_factor = round_to(consume_in(input, 1.0, 3.0), 0.01);
+      name = "dref_factor", value = format_number(p.d_ref_factor);
+      break;
+    case 2:
+      p.p = round_to(consume_in(input, 1.1, 3.0), 0.01);
+      name = "p", value = format_number(p.p);
+      break;
+    case 3:
+      p.search_depth = input.ConsumeIntegralInRange<std::uint32_t>(1, 16);
+      name = "depth", value = std::to_string(p.search_depth);
+      break;
+    case 4:
+      p.max_refine_iterations = input.ConsumeIntegralInRange<std::uint32_t>(1, 8);
+      name = "iterations", value = std::to_string(p.max_refine_iterations);
+      break;
+    case 5:
+      p.strategy = static_cast<RemovalStrategy>(input.ConsumeIntegralInRange<std::uint8_t>(0, 2));
+      name = "strategy", value = to_string(p.strategy);
+      break;
+    default:
+      p.split_method = input.ConsumeBool() ? SplitMethod::kBisection : SplitMethod::kTemplates;
+      name = "split", value = p.split_method == SplitMethod::kBisection ? "bisection" : "templates";
+      break;
+  }
+  session.set_param(name, value, p);
+}
+
+Vec3 point_in_box(const Context& ctx, FuzzedDataProvider& input) {
+  const Box& box = ctx.bundled.box;
+  const Vec3 margin = 0.1 * (box.hi - box.lo);
+  const Vec3 lo = box.lo - margin, span = (box.hi + margin) - lo;
+  return rounded({lo.x + span.x * consume_unit(input), lo.y + span.y * consume_unit(input),
+                  lo.z + span.z * consume_unit(input)},
+                 ctx.quantum);
+}
+
+// Where a tool meets the surface: a boundary tet's centroid, moved by up to a tool radius.
+Vec3 point_near_surface(SequenceSession& session, const Context& ctx, FuzzedDataProvider& input) {
+  const TetMesh& mesh = session.mesh();
+  const TetId t = consume_live_tet_where(mesh, input, [&](TetId c) { return mesh.boundary_face_count(c) > 0; });
+  if (!t.valid()) return point_in_box(ctx, input);
+  const auto v = mesh.tet(t);
+  const Vec3 c = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
+  const double r = 0.5 * ctx.params.tool_diameter;
+  return rounded(c + Vec3{consume_in(input, -r, r), consume_in(input, -r, r), consume_in(input, -r, r)}, ctx.quantum);
+}
+
+void cut(SequenceSession& session, const Vec3& c, const std::string& name) {
+  const std::string text = "cut " + format_point(c);
+  const std::uint32_t line = session.recorder().add(text);
+  const OperationOutcome outcome = session.cut_at(c, name, line);
+  if (outcome.rolled_back)
+    session.recorder().replace(line, "# " + text + "   rolled back (" + outcome.reason + "): the mesh is as before");
+}
+
+// A sweep, cut by cut exactly as the scenario runner spaces them. If one of its cuts is rolled
+// back the sweep line cannot stand in the scenario (`tetcut run` stops at a failed cut), so it
+// is rewritten as its single cuts with the rolled back one commented out.
+void sweep(SequenceSession& session, const Context& ctx, FuzzedDataProvider& input) {
+  const Vec3 a = point_near_surface(session, ctx, input);
+  Vec3 dir{consume_in(input, -1, 1), consume_in(input, -1, 1), consume_in(input, -1, 1)};
+  if (norm(dir) < 1e-3) dir = {1, 0, 0};
+  const double length = consume_in(input, 0.5, 4.0) * ctx.params.tool_diameter;
+  const Vec3 b = rounded(a + (length / norm(dir)) * dir, ctx.quantum);
+  const std::uint32_t pieces = input.ConsumeIntegralInRange<std::uint32_t>(1, kMaxSweepSteps);
+  const double actual = norm(b - a);
+  double step = round_to(actual / pieces, ctx.quantum);
+  if (!(step > 0)) step = ctx.quantum;
+  while (actual > 0 && std::floor(actual / step) > static_cast<double>(kMaxSweepSteps)) step *= 2;
+  const std::string text = "sweep " + format_point(a) + " " + format_point(b) + " " + format_number(step);
+  ScenarioRecorder& recorder = session.recorder();
+  const std::uint32_t line = recorder.add(text);
+  const auto steps = actual > 0 ? static_cast<std::uint64_t>(std::floor(actual / step)) : 0;
+  std::vector<std::size_t> done;  // operation indices of the cuts so far
+  std::vector<Vec3> centres;
+  bool expanded = false;
+  for (std::uint64_t k = 0; k <= steps; ++k) {
+    const Vec3 c = steps == 0 ? a : a + (static_cast<double>(k) * step / actual) * (b - a);
+    const std::string name = "sweep " + std::to_string(k + 1) + "/" + std::to_string(steps + 1);
+    const std::uint32_t cut_line = expanded ? recorder.add("cut " + format_point(c)) : line;
+    const OperationOutcome outcome = session.cut_at(c, name, cut_line);
+    if (outcome.rolled_back) {
+      if (!expanded) {
+        recorder.replace(line, "# " + text + "   (as single cuts: cut " + std::to_string(k + 1) + " rolled back)");
+        for (std::size_t j = 0; j < done.size(); ++j)
+          recorder.map_operation(done[j], recorder.add("cut " + format_point(centres[j])));
+        recorder.add("# cut " + format_point(c) + "   rolled back (" + outcome.reason + "): the mesh is as before");
+        expanded = true;
+      } else {
+        recorder.replace(cut_line, "# cut " + format_point(c) + "   rolled back (" + outcome.reason +
+                                       "): the mesh is as before");
+      }
+    }
+    done.push_back(outcome.index);
+    centres.push_back(c);
+  }
+}
+
+void body(const std::uint8_t* data, std::size_t size, FuzzedDataProvider& input, ScenarioRecorder& recorder,
+          RunControl& control) {
+  const BundledMesh& bundled = bundled_mesh(input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshes.size() - 1));
+  recorder.add("# tetcut replay --target cut_sequence (input version " + std::to_string(kInputVersion) + ")");
+  recorder.add("mesh " + bundled.path);
+  auto hash_before = [data, size](std::size_t index) {
+    RunControl stop;
+    stop.stop_before = index;
+    run_sequence(data, size, SequenceOptions{}, stop, [&](FuzzedDataProvider& in, ScenarioRecorder& r, RunControl& c) {
+      body(data, size, in, r, c);
+    });
+    return stop.hash_at_stop;
+  };
+  SequenceSession session(bundled, recorder, control, hash_before);
+  Context ctx{bundled, session.cutter().params(), coordinate_quantum(bundled.box.diagonal(), 3)};
+  std::size_t since_check = 0;
+  const std::uint32_t max_tets = kMaxTetsFactor * bundled.mesh.num_tets();
+  for (std::size_t i = 0; i < kMaxOperations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&
+                          session.mesh().num_tets() <= max_tets;
+       ++i) {
+    const Op op = static_cast<Op>(input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(Op::kLast)));
+    switch (op) {
+      case Op::kParam: param(session, ctx, input); break;
+      case Op::kCutPoint: cut(session, point_in_box(ctx, input), "cut"); break;
+      case Op::kCutSurface: cut(session, point_near_surface(session, ctx, input), "cut"); break;
+      case Op::kSweep: sweep(session, ctx, input); break;
+    }
+    if (++since_check == kFullCheckEvery) {
+      session.full_check_if_changed();
+      since_check = 0;
+    }
+  }
+  session.full_check_if_changed();
+}
+
+}  // namespace
+
+SequenceResult run(const std::uint8_t* data, std::size_t size, const SequenceOptions& options) {
+  RunControl control;
+  return run_sequence(data, size, options, control, [&](FuzzedDataProvider& in, ScenarioRecorder& r, RunControl& c) {
+    body(data, size, in, r, c);
+  });
+}
+
+std::string decode_to_scenario(const std::uint8_t* data, std::size_t size) {
+  SequenceOptions options;
+  options.record_scenario = true;
+  options.capture_failures = true;
+  return run(data, size, options).scenario;
+}
+
+}  // namespace tetcut::fuzz::cut_sequence

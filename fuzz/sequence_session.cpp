@@ -1,0 +1,145 @@
+#include "sequence_session.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <utility>
+
+#include "tetcut/canonical_hash.hpp"
+
+namespace tetcut::fuzz {
+
+SequenceSession::SequenceSession(const BundledMesh& bundled, ScenarioRecorder& recorder, RunControl& control,
+                                 std::function<std::uint64_t(std::size_t)> hash_before)
+    : recorder_(recorder),
+      control_(control),
+      hash_before_(std::move(hash_before)),
+      checked_(bundled.mesh),
+      cutter_(checked_.mesh(), params_with_budget(bundled)) {
+  // A failure on demand, to test what reports failures (tetcut replay's exit code and messages)
+  // without depending on a bug of the engine.
+  if (const char* env = std::getenv("TETCUT_FUZZ_FAIL_AT")) fail_at_ = std::strtoull(env, nullptr, 10);
+  grow_volumes();
+  for (std::uint32_t t = 0; t < mesh().tet_capacity(); ++t)
+    if (mesh().is_live(TetId{t})) volume_[t] = mesh().volume(TetId{t});
+}
+
+CutParams SequenceSession::params_with_budget(const BundledMesh& bundled) {
+  // One cut of the fuzzer once created 44 000 tets in a 3 400-tet mesh (Remover's corner
+  // refinement): seconds per input under ASan.
+  CutParams params;
+  params.max_tets_created = std::max<std::uint32_t>(bundled.mesh.num_tets(), 1);
+  return params;
+}
+
+void SequenceSession::grow_volumes() {
+  if (volume_.size() < mesh().tet_capacity()) volume_.resize(mesh().tet_capacity(), 0.0);
+}
+
+void SequenceSession::begin(const std::string& name, std::uint32_t line) {
+  if (checked_.operation_index() + 1 == control_.stop_before) {
+    control_.stopped = true;
+    control_.hash_at_stop = canonical_hash(mesh());
+    throw StopRun{};
+  }
+  checked_.begin(name);
+  recorder_.map_operation(checked_.operation_index(), line);
+  if (checked_.operation_index() == fail_at_)
+    checked_.require(false, "injected", "TETCUT_FUZZ_FAIL_AT=" + std::to_string(fail_at_) + " (a test of the harness)");
+}
+
+void SequenceSession::set_param(const std::string& name, const std::string& value, const CutParams& params) {
+  const std::uint32_t line = recorder_.add(name + " " + value);
+  begin(name, line);
+  const auto refused = cutter_.set_params(params);
+  checked_.require(!refused.has_value(), "cut-params", name + " " + value + ": clamped value refused: " + refused.value_or(""));
+  checked_.end({}, {}, 0.0);
+}
+
+OperationOutcome SequenceSession::remove_at(const Vec3& p, const std::string& name, std::uint32_t line) {
+  begin(name, line);
+  const TetId t = cutter_.tet_containing(p);
+  if (!t.valid()) {  // nothing there (any more): a no-op, as in a scenario
+    checked_.end({}, {}, 0.0);
+    return {checked_.operation_index(), false, {}};
+  }
+  if (checked_.tracing()) checked_.describe("tet " + std::to_string(t.value) + " at " + format_point(p));
+  return after(cutter_.remove(t));
+}
+
+OperationOutcome SequenceSession::cut_at(const Vec3& c, const std::string& name, std::uint32_t line) {
+  begin(name, line);
+  if (checked_.tracing()) checked_.describe("centre " + format_point(c));
+  return after(cutter_.cut(c));
+}
+
+OperationOutcome SequenceSession::after(const CutReport& report) {
+  const std::size_t index = checked_.operation_index();
+  if (!report.ok) {
+    // Atomic: the mesh must be bit-identical to before, so its canonical hash is too.
+    checked_.end({}, {}, 0.0);
+    const std::uint64_t now = canonical_hash(mesh());
+    const std::uint64_t before = hash_before_(index);
+    checked_.require(now == before, "rollback-changed-mesh",
+                     "rolled back (" + report.failure + ") but the canonical hash went from " + hash_to_hex(before) +
+                         " to " + hash_to_hex(now));
+    checked_.require(cutter_.last_removed().empty() && cutter_.last_created().empty(), "rollback-changed-mesh",
+                     "rolled back (" + report.failure + ") but reports removed or created tets");
+    return {index, true, report.failure};
+  }
+  double change = 0.0;
+  for (TetId t : cutter_.last_removed()) change -= t.value < volume_.size() ? volume_[t.value] : 0.0;
+  grow_volumes();
+  for (TetId t : cutter_.last_created()) {
+    volume_[t.value] = mesh().volume(t);
+    change += volume_[t.value];
+  }
+  checked_.end(cutter_.last_removed(), cutter_.last_created(), change);
+  if (!cutter_.last_removed().empty() || !cutter_.last_created().empty()) changed_since_full_check_ = true;
+  const std::uint64_t before = unresolved_;
+  unresolved_ += report.unresolved;
+  if (cutter_.params().strategy == RemovalStrategy::kCombined && report.unresolved > 0) {
+    // What the scenario runner sees: its count of unresolved tets moves.
+    recorder_.add("expect unresolved " + std::to_string(before));
+    checked_.require(false, "unresolved-combined",
+                     std::to_string(report.unresolved) + " of " + std::to_string(report.requested) +
+                         " requested tets left unresolved by the combined strategy (" +
+                         std::to_string(report.vertex_singularities) + " vertex, " +
+                         std::to_string(report.edge_singularities) + " edge singularities)");
+  }
+  return {index, false, {}};
+}
+
+void SequenceSession::full_check() {
+  const std::uint32_t line = recorder_.add("check full");
+  begin("check full", line);
+  checked_.end({}, {}, 0.0);
+  checked_.full_check();
+  changed_since_full_check_ = false;
+}
+
+SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,
+                            RunControl& control,
+                            const std::function<void(FuzzedDataProvider&, ScenarioRecorder&, RunControl&)>& body) {
+  SequenceResult result;
+  if (!has_version(data, size)) return result;
+  result.accepted = true;
+  FuzzedDataProvider input(data + 1, size - 1);
+  ScenarioRecorder recorder(options.record_scenario);
+  try {
+    if (options.capture_failures) {
+      const CaptureFailures capture;
+      body(input, recorder, control);
+    } else {
+      body(input, recorder, control);
+    }
+  } catch (const StopRun&) {
+  } catch (const FailureError& e) {
+    result.finding = e.finding();
+    result.finding_line = recorder.line_of(e.finding().operation_index);
+    recorder.add("# finding: " + to_string(e.finding()));
+  }
+  result.scenario = recorder.text();
+  return result;
+}
+
+}  // namespace tetcut::fuzz

@@ -1,0 +1,89 @@
+// The running half of a sequence target: a copy of a bundled mesh in a CheckedMesh, a Cutter on
+// it, the scenario being recorded, and the checks every operation gets:
+//   - the local checker on the Cutter's net change, with the volume change it implies (from a
+//     per-tet volume cache, so that a tet killed but not reported breaks I9 in the full check);
+//   - under the combined strategy every request is resolved ("unresolved-combined");
+//   - a rolled back operation leaves the canonical hash as it was ("rollback-changed-mesh"),
+//     compared with the hash of the mesh re-created by running the same input up to just
+//     before the operation (no snapshot on the common path: it costs O(#T) per operation);
+//   - the full check when asked (check lines) and at the end.
+// TETCUT_FUZZ_FAIL_AT=N in the environment makes operation N fail ("injected"): a test of what
+// reports failures, independent of any bug.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "checked_mesh.hpp"
+#include "sequence_support.hpp"
+#include "tetcut/cut.hpp"
+
+namespace tetcut::fuzz {
+
+// Thrown by SequenceSession::begin() when RunControl::stop_before is reached.
+struct StopRun {};
+
+struct OperationOutcome {
+  std::size_t index = 0;      // CheckedMesh's operation index
+  bool rolled_back = false;
+  std::string reason;         // why, when rolled back
+};
+
+class SequenceSession {
+ public:
+  // `hash_before(k)`: the canonical hash of the mesh just before operation k.
+  // The Cutter starts with the default parameters but a per-operation tet budget of the
+  // initial mesh's tets (params_with_budget): an operation over it is rolled back, and written
+  // into the scenario as a comment, so that the scenario (which cannot set the budget) stays
+  // equivalent.
+  SequenceSession(const BundledMesh& bundled, ScenarioRecorder& recorder, RunControl& control,
+                  std::function<std::uint64_t(std::size_t)> hash_before);
+  static CutParams params_with_budget(const BundledMesh& bundled);
+
+  CheckedMesh& checked() { return checked_; }
+  TetMesh& mesh() { return checked_.mesh(); }
+  Cutter& cutter() { return cutter_; }
+  ScenarioRecorder& recorder() { return recorder_; }
+  // The scenario runner's count of unresolved tets so far (of the operations that went through).
+  [[nodiscard]] std::uint64_t unresolved() const { return unresolved_; }
+
+  // A parameter line ("diameter 0.3"): recorded, then applied as the scenario runner does.
+  void set_param(const std::string& name, const std::string& value, const CutParams& params);
+  // The removal request for the tet containing p (a no-op when there is none), from line `line`.
+  OperationOutcome remove_at(const Vec3& p, const std::string& name, std::uint32_t line);
+  // One cut centred at c, from line `line`.
+  OperationOutcome cut_at(const Vec3& c, const std::string& name, std::uint32_t line);
+  // "check full" as its own operation (recorded).
+  void full_check();
+  // The full check (recorded as "check full") unless nothing changed since the last one: the
+  // periodic one and the final one. It dominates the cost of an input.
+  void full_check_if_changed() {
+    if (changed_since_full_check_) full_check();
+  }
+
+ private:
+  void begin(const std::string& name, std::uint32_t line);
+  OperationOutcome after(const CutReport& report);
+  void grow_volumes();
+
+  ScenarioRecorder& recorder_;
+  RunControl& control_;
+  std::function<std::uint64_t(std::size_t)> hash_before_;
+  CheckedMesh checked_;
+  Cutter cutter_;
+  std::vector<double> volume_;  // per tet id, of the live tets
+  std::uint64_t unresolved_ = 0;
+  std::size_t fail_at_ = 0;  // TETCUT_FUZZ_FAIL_AT; 0: never
+  bool changed_since_full_check_ = false;
+};
+
+// Runs `body` as a sequence target does: the version byte, failures captured or not, the
+// recording, StopRun. `body(input, recorder, control)` decodes and runs the operations.
+SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,
+                            RunControl& control,
+                            const std::function<void(FuzzedDataProvider&, ScenarioRecorder&, RunControl&)>& body);
+
+}  // namespace tetcut::fuzz

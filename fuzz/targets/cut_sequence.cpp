@@ -1,0 +1,12 @@
+// Fuzz target cut_sequence: what an input means and what is checked is in fuzz/cut_sequence.hpp.
+// The decoding and the checks live there, shared with `tetcut replay --target cut_sequence`, which
+// prints the same input as a scenario.
+#include <cstddef>
+#include <cstdint>
+
+#include "cut_sequence.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  tetcut::fuzz::cut_sequence::run(data, size, tetcut::fuzz::SequenceOptions{});
+  return 0;
+}

@@ -1,0 +1,12 @@
+// Fuzz target removal_sequence: what an input means and what is checked is in fuzz/removal_sequence.hpp.
+// The decoding and the checks live there, shared with `tetcut replay --target removal_sequence`, which
+// prints the same input as a scenario.
+#include <cstddef>
+#include <cstdint>
+
+#include "removal_sequence.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  tetcut::fuzz::removal_sequence::run(data, size, tetcut::fuzz::SequenceOptions{});
+  return 0;
+}
