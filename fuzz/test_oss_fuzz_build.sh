@@ -46,6 +46,9 @@ for t in msh22 mixed_ops; do
   (cd "$corpus" && unzip -q "$out/${t}_seed_corpus.zip")
   "$out/$t" -runs=0 "$corpus" || { echo "FAIL: $t did not replay its seed corpus from \$OUT"; status=1; }
 done
-ldd "$out/mixed_ops" | grep -q "$out/lib/libtet" || { echo "FAIL: mixed_ops does not load TetGen from \$OUT/lib"; status=1; }
+# (ldd's output goes to a variable first: `ldd | grep -q` can fail under pipefail when grep
+# exits at its first match and ldd dies of SIGPIPE.)
+libraries=$(ldd "$out/mixed_ops")
+grep -q "$out/lib/libtet" <<<"$libraries" || { echo "FAIL: mixed_ops does not load TetGen from \$OUT/lib"; status=1; }
 ((status == 0)) && echo "oss_fuzz_build outputs complete for: $targets"
 exit $status
