@@ -3,7 +3,6 @@
 // person runs it, with the full check of the result.
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -161,15 +160,7 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
   for (const invariants::Violation& v : verdict.violations)
     out << "violated " << invariants::id_string(v.id) << " (" << invariants::description(v.id) << "): " << v.detail << "\n";
 
-  const WriteResult written = write_mesh(*output, mesh);
-  if (!written.ok) {
-    err << "tetcut: " << written.error << "\n";
-    return 2;
-  }
-  if (const auto path = a.value("--report")) {
-    std::ostringstream json;
-    JsonWriter w(json);
-    w.begin_object();
+  const bool saved = save_mesh_and_report(*output, mesh, a.value("--report"), [&](JsonWriter& w) {
     w.key("summary");
     w.begin_object();
     w.field("iterations", report.iterations);
@@ -182,14 +173,8 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
     w.field("valid", verdict.ok());
     w.field("hash", hash);
     w.end_object();
-    w.end_object();
-    w.finish();
-    const WriteResult r = write_file_atomically(*path, json.str());
-    if (!r.ok) {
-      err << "tetcut: " << r.error << "\n";
-      return 2;
-    }
-  }
+  }, err);
+  if (!saved) return 2;
   return verdict.ok() ? 0 : 1;
 }
 

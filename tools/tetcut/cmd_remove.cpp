@@ -199,15 +199,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
   out << "hash " << hash << "\n";
   if (!valid) out << "violated: " << first_violation << "\n";
 
-  const WriteResult written = write_mesh(*output, mesh);
-  if (!written.ok) {
-    err << "tetcut: " << written.error << "\n";
-    return kExitBadInput;
-  }
-  if (const auto path = a.value("--report")) {
-    std::ostringstream json;
-    JsonWriter w(json);
-    w.begin_object();
+  const bool saved = save_mesh_and_report(*output, mesh, a.value("--report"), [&](JsonWriter& w) {
     w.key("summary");
     w.begin_object();
     w.field("requested", s.requested);
@@ -238,14 +230,8 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
     w.field("points_in_no_tet", points_outside);
     w.field("valid", valid);
     w.end_object();
-    w.end_object();
-    w.finish();
-    const WriteResult r = write_file_atomically(*path, json.str());
-    if (!r.ok) {
-      err << "tetcut: " << r.error << "\n";
-      return kExitBadInput;
-    }
-  }
+  }, err);
+  if (!saved) return kExitBadInput;
   return valid ? kExitOk : kExitViolated;
 }
 
