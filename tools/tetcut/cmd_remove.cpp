@@ -10,7 +10,6 @@
 // (default) only the full one; none skips it. Exit 0, 1 if an invariant broke, 2 bad input.
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
