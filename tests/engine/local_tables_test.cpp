@@ -8,7 +8,9 @@ namespace {
 
 const Vec3 kCorner[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 
-TEST(LocalTables, ReferenceTetIsPositive) { EXPECT_EQ(orientation(kCorner[0], kCorner[1], kCorner[2], kCorner[3]), 1); }
+TEST(LocalTables, ReferenceTetIsPositive) {
+  EXPECT_EQ(orientation(kCorner[0], kCorner[1], kCorner[2], kCorner[3]), 1);
+}
 
 TEST(LocalTables, FaceNormalsPointAwayFromTheOppositeVertex) {
   for (int f = 0; f < 4; ++f) {
