@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <string>
 
@@ -57,6 +58,12 @@ double tet_volume(const RawTet& q, std::span<const Vec3> positions) {
   return dot(positions[q[1]] - a, cross(positions[q[2]] - a, positions[q[3]] - a)) / 6.0;
 }
 
+double tet_volume_rounding_bound(const RawTet& q, std::span<const Vec3> positions) {
+  const Vec3& a = positions[q[0]];
+  const double product = norm(positions[q[1]] - a) * norm(positions[q[2]] - a) * norm(positions[q[3]] - a);
+  return 16.0 * std::numeric_limits<double>::epsilon() * product / 6.0;
+}
+
 void VolumeSum::add(double x) {
   const double t = sum_ + x;
   if (std::fabs(sum_) >= std::fabs(x)) compensation_ += (sum_ - t) + x;
@@ -110,8 +117,8 @@ void TetGeometryChecker::finish(CheckReport& report) const {
 }
 
 void check_volume(double actual, double expected, double scale, double rel_tolerance, const char* what,
-                  ReportBuilder& report) {
-  const double allowed = rel_tolerance * std::max(std::fabs(scale), 1e-300);
+                  ReportBuilder& report, double rounding_allowance) {
+  const double allowed = rel_tolerance * std::max(std::fabs(scale), 1e-300) + rounding_allowance;
   if (std::fabs(actual - expected) <= allowed) return;
   report.add(Invariant::kI9Volume, {}, {}, [&] {
     return std::string(what) + " is " + num(actual) + ", expected " + num(expected) + " (relative tolerance " +

@@ -17,6 +17,10 @@ bool check_references(std::uint32_t t, const RawTet& q, std::span<const Vec3> po
 
 // det(b - a, c - a, d - a) / 6 in plain floating point.
 double tet_volume(const RawTet& q, std::span<const Vec3> positions);
+// A bound on the rounding error of tet_volume: it is a determinant of edge vectors, so its error
+// scales with the product of their lengths, not with the volume (a sliver's volume can be all
+// rounding).
+double tet_volume_rounding_bound(const RawTet& q, std::span<const Vec3> positions);
 
 // Compensated (Neumaier) sum: a million volumes add up to the same total whichever way the
 // mesh was cut, to well within I9's relative tolerance.
@@ -53,6 +57,6 @@ class TetGeometryChecker {
 
 // |actual - expected| <= tolerance * scale, reported as I9 with `what` in the detail.
 void check_volume(double actual, double expected, double scale, double rel_tolerance, const char* what,
-                  ReportBuilder& report);
+                  ReportBuilder& report, double rounding_allowance = 0.0);
 
 }  // namespace tetcut::invariants::detail

@@ -140,6 +140,7 @@ class LocalChecker {
 
   std::vector<std::array<std::uint32_t, 4>> known_tets_;       // the checker's copy of each tet
   std::vector<double> known_volume_;                          // its signed volume when created
+  std::vector<double> known_rounding_;                        // the rounding bound of that volume
   std::vector<std::vector<std::uint32_t>> vertex_to_tets_;     // its own incidence
   std::vector<std::uint8_t> excluded_;                         // per tet, during one check
   std::vector<std::uint32_t> touched_stamp_;                   // per vertex
