@@ -73,7 +73,7 @@ TEST(Malformed, ValidBasesAreAccepted) {
 }
 
 TEST(Malformed, Msh22) {
-  check_cases([](const std::string& t) { return read_msh(t, "m.msh"); }, "m.msh",
+  ASSERT_NO_FATAL_FAILURE(check_cases([](const std::string& t) { return read_msh(t, "m.msh"); }, "m.msh",
               {
                   {"empty file", "", 1, "empty file"},
                   {"blank file", "\n\n  \n", 1, "empty file"},
@@ -108,7 +108,7 @@ TEST(Malformed, Msh22) {
                   {"second $Nodes", kMsh22 + "$Nodes\n0\n$EndNodes\n", 17, "second $Nodes"},
                   {"stray end marker", with_line(kMsh22, 12, "$EndFoo"), 12, "unexpected '$EndFoo'"},
                   {"element type garbage", with_line(kMsh22, 14, "1 tet 2 1 1 1 2 3 4"), 14, "expected an element type"},
-              });
+              }));
 }
 
 // 1 $MeshFormat 2 4.1 3 $End 4 $Nodes 5 header 6 block 7-11 tags 12-16 coords 17 $EndNodes
@@ -119,7 +119,7 @@ const std::string kMsh41 =
 
 TEST(Malformed, Msh41) {
   ASSERT_TRUE(read_msh(kMsh41, "m.msh").mesh.has_value()) << test::describe(read_msh(kMsh41, "m.msh"));
-  check_cases([](const std::string& t) { return read_msh(t, "m.msh"); }, "m.msh",
+  ASSERT_NO_FATAL_FAILURE(check_cases([](const std::string& t) { return read_msh(t, "m.msh"); }, "m.msh",
               {
                   // 5 nodes take at least 10 lines: 3 lines left cannot hold them.
                   {"truncated in tags", first_lines(kMsh41, 9), 6, "count 5 exceeds file size"},
@@ -138,7 +138,7 @@ TEST(Malformed, Msh41) {
                   {"blocks short of the total", with_line(kMsh41, 5, "1 6 1 6"), 16, "node blocks hold 5 nodes, the header declares 6"},
                   {"bad parametric flag", with_line(kMsh41, 6, "3 1 7 5"), 6, "parametric must be 0 or 1"},
                   {"binary", with_line(kMsh41, 2, "4.1 1 8"), 2, "binary MSH is not supported"},
-              });
+              }));
 }
 
 TEST(Malformed, Msh10) {
@@ -146,14 +146,14 @@ TEST(Malformed, Msh10) {
       "$NOD\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n$ENDNOD\n$ELM\n2\n1 4 1 1 4 1 2 3 4\n"
       "2 4 1 1 4 2 3 4 5\n$ENDELM\n";
   ASSERT_TRUE(read_msh(base, "m.msh").mesh.has_value());
-  check_cases([](const std::string& t) { return read_msh(t, "m.msh"); }, "m.msh",
+  ASSERT_NO_FATAL_FAILURE(check_cases([](const std::string& t) { return read_msh(t, "m.msh"); }, "m.msh",
               {
                   {"count mismatch", with_line(base, 11, "1 4 1 1 3 1 2 3 4"), 11, "declares '3' nodes but lists 4"},
                   {"tet with 3 nodes", with_line(base, 11, "1 4 1 1 3 1 2 3"), 11, "expected 4 node ids for a tetrahedron, got 3"},
                   {"undefined node", with_line(base, 12, "2 4 1 1 4 2 3 4 0"), 12, "node id 0 not defined"},
                   {"missing $ENDELM", first_lines(base, 12), 12, "missing $ENDELM"},
                   {"truncated nodes", first_lines(base, 4), 4, "unexpected end of file in $NOD"},
-              });
+              }));
 }
 
 // 1-3 header, 4 DATASET, 5 POINTS, 6-8 coords, 9 CELLS, 10-11 cells, 12 CELL_TYPES, 13-14 types
@@ -163,7 +163,7 @@ const std::string kVtk =
 
 TEST(Malformed, LegacyVtk) {
   ASSERT_TRUE(read_vtk(kVtk, "m.vtk").mesh.has_value());
-  check_cases([](const std::string& t) { return read_vtk(t, "m.vtk"); }, "m.vtk",
+  ASSERT_NO_FATAL_FAILURE(check_cases([](const std::string& t) { return read_vtk(t, "m.vtk"); }, "m.vtk",
               {
                   {"empty file", "", 1, "empty file"},
                   {"garbage", "garbage\n", 1, "not a legacy VTK file"},
@@ -182,7 +182,7 @@ TEST(Malformed, LegacyVtk) {
                   {"missing CELL_TYPES", first_lines(kVtk, 11), 11, "missing CELL_TYPES"},
                   {"type count mismatch", with_line(kVtk, 12, "CELL_TYPES 3"), 12, "CELL_TYPES declares 3 cells"},
                   {"unknown keyword", with_line(kVtk, 12, "CELL_TYPO 2"), 12, "unexpected keyword 'CELL_TYPO'"},
-              });
+              }));
 }
 
 const std::string kVtu = format_vtu(test::two_tets());
@@ -191,7 +191,7 @@ TEST(Malformed, Vtu) {
   ASSERT_TRUE(read_vtu(kVtu, "m.vtu").mesh.has_value());
   // Lines: 6 Points DataArray, 7-11 points, 15 connectivity DataArray, 16-17 connectivity,
   // 19 offsets, 23 types DataArray, 30 </VTKFile>.
-  check_cases([](const std::string& t) { return read_vtu(t, "m.vtu"); }, "m.vtu",
+  ASSERT_NO_FATAL_FAILURE(check_cases([](const std::string& t) { return read_vtu(t, "m.vtu"); }, "m.vtu",
               {
                   {"empty file", "", 1, "empty file"},
                   {"garbage", "garbage", 1, "no <VTKFile>"},
@@ -215,7 +215,7 @@ TEST(Malformed, Vtu) {
                   {"appended without data", with_line(kVtu, 19, "<DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"0\">"), 19,
                    "no <AppendedData>"},
                   {"unterminated comment", "<?xml version=\"1.0\"?>\n<!-- never closed\n", 2, "unterminated comment"},
-              });
+              }));
 }
 
 // 1 MeshVersionFormatted, 3 Dimension, 5 Vertices, 6 count, 7-11 vertices, 13 Tetrahedra,
@@ -224,7 +224,7 @@ const std::string kMedit = format_medit(test::two_tets());
 
 TEST(Malformed, Medit) {
   ASSERT_TRUE(read_medit(kMedit, "m.mesh").mesh.has_value());
-  check_cases([](const std::string& t) { return read_medit(t, "m.mesh"); }, "m.mesh",
+  ASSERT_NO_FATAL_FAILURE(check_cases([](const std::string& t) { return read_medit(t, "m.mesh"); }, "m.mesh",
               {
                   {"empty file", "", 0, "empty file"},
                   {"garbage", "garbage\n", 1, "expected MeshVersionFormatted"},
@@ -239,14 +239,14 @@ TEST(Malformed, Medit) {
                   {"missing End", first_lines(kMedit, 17), 16, "missing End"},
                   {"missing tets", first_lines(kMedit, 12), 11, "missing Tetrahedra"},
                   {"unknown keyword", with_line(kMedit, 12, "Bogus"), 13, "unknown keyword 'Bogus'"},
-              });
+              }));
 }
 
 TEST(Malformed, Tetgen) {
   const std::string node = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
   const std::string ele = "2 4 0\n1 1 2 3 4\n2 2 3 4 5\n";
   ASSERT_TRUE(read_tetgen(node, "m.node", ele, "m.ele").mesh.has_value());
-  check_cases([&](const std::string& t) { return read_tetgen(t, "m.node", ele, "m.ele"); }, "m.node",
+  ASSERT_NO_FATAL_FAILURE(check_cases([&](const std::string& t) { return read_tetgen(t, "m.node", ele, "m.ele"); }, "m.node",
               {
                   {"empty node file", "", 0, "empty file"},
                   {"duplicate id", with_line(node, 3, "1 1 0 0"), 3, "duplicate point id 1"},
@@ -255,15 +255,15 @@ TEST(Malformed, Tetgen) {
                   {"absurd count", with_line(node, 1, "99999999999 3 0 0"), 1, "exceeds file size"},
                   {"2D", with_line(node, 1, "5 2 0 0"), 1, "only 3D points"},
                   {"missing attribute", with_line(node, 1, "5 3 1 0"), 2, "expected 5 values for a point"},
-              });
-  check_cases([&](const std::string& t) { return read_tetgen(node, "m.node", t, "m.ele"); }, "m.ele",
+              }));
+  ASSERT_NO_FATAL_FAILURE(check_cases([&](const std::string& t) { return read_tetgen(node, "m.node", t, "m.ele"); }, "m.ele",
               {
                   {"undefined node", with_line(ele, 3, "2 2 3 4 6"), 3, "node id 6 not defined"},
                   {"tet with 3 nodes", with_line(ele, 3, "2 2 3 4"), 3, "expected 4 node ids for a tetrahedron"},
                   {"negative count", with_line(ele, 1, "-2 4 0"), 1, "negative count -2"},
                   {"bad nodes per tet", with_line(ele, 1, "2 5 0"), 1, "must be 4 or 10"},
                   {"truncated", first_lines(ele, 2), 2, "expected 2 tetrahedra, got 1"},
-              });
+              }));
 }
 
 }  // namespace

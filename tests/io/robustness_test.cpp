@@ -70,32 +70,32 @@ const RawMesh kBox = make_box_mesh(1, 1, 2);
 
 TEST(Robustness, MutatedMshNeverCrashes) {
   const Reader read = [](const std::string& t) { return read_msh(t, "f.msh"); };
-  fuzz(read, format_msh22(kBox), 1, kIterations);
-  fuzz(read, format_msh41(kBox), 2, kIterations);
-  fuzz(read, corpus_text("two_tets_msh22_quirks.msh"), 3, kIterations);
-  fuzz(read, corpus_text("two_tets_msh41_quirks.msh"), 4, kIterations);
-  fuzz(read, corpus_text("two_tets_msh10.msh"), 5, kIterations);
+  ASSERT_NO_FATAL_FAILURE(fuzz(read, format_msh22(kBox), 1, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(read, format_msh41(kBox), 2, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(read, corpus_text("two_tets_msh22_quirks.msh"), 3, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(read, corpus_text("two_tets_msh41_quirks.msh"), 4, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(read, corpus_text("two_tets_msh10.msh"), 5, kIterations));
 }
 
 TEST(Robustness, MutatedVtkAndVtuNeverCrash) {
   const Reader vtk = [](const std::string& t) { return read_vtk(t, "f.vtk"); };
   const Reader vtu = [](const std::string& t) { return read_vtu(t, "f.vtu"); };
-  fuzz(vtk, format_vtk(kBox), 6, kIterations);
-  fuzz(vtk, corpus_text("two_tets_v51.vtk"), 7, kIterations);
-  fuzz(vtu, format_vtu(kBox), 8, kIterations);
-  fuzz(vtu, corpus_text("two_tets_binary_uint64.vtu"), 9, kIterations);
-  fuzz(vtu, corpus_text("two_tets_appended_raw.vtu"), 10, kIterations);
-  fuzz(vtu, corpus_text("two_tets_appended_base64.vtu"), 11, kIterations);
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtk, format_vtk(kBox), 6, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtk, corpus_text("two_tets_v51.vtk"), 7, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtu, format_vtu(kBox), 8, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtu, corpus_text("two_tets_binary_uint64.vtu"), 9, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtu, corpus_text("two_tets_appended_raw.vtu"), 10, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtu, corpus_text("two_tets_appended_base64.vtu"), 11, kIterations));
 }
 
 TEST(Robustness, MutatedMeditAndTetgenNeverCrash) {
   const Reader medit = [](const std::string& t) { return read_medit(t, "f.mesh"); };
-  fuzz(medit, format_medit(kBox), 12, kIterations);
-  fuzz(medit, corpus_text("two_tets_quirks.mesh"), 13, kIterations);
+  ASSERT_NO_FATAL_FAILURE(fuzz(medit, format_medit(kBox), 12, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(medit, corpus_text("two_tets_quirks.mesh"), 13, kIterations));
   const std::string ele = format_tetgen_ele(kBox);
   const std::string node = format_tetgen_node(kBox);
-  fuzz([&](const std::string& t) { return read_tetgen(t, "f.node", ele, "f.ele"); }, node, 14, kIterations);
-  fuzz([&](const std::string& t) { return read_tetgen(node, "f.node", t, "f.ele"); }, ele, 15, kIterations);
+  ASSERT_NO_FATAL_FAILURE(fuzz([&](const std::string& t) { return read_tetgen(t, "f.node", ele, "f.ele"); }, node, 14, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz([&](const std::string& t) { return read_tetgen(node, "f.node", t, "f.ele"); }, ele, 15, kIterations));
 }
 
 TEST(Robustness, MutatedSurfacesNeverCrash) {

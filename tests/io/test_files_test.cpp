@@ -75,14 +75,14 @@ TEST(TestFiles, VtuAsciiWithPointAndCellData) {
 TEST(TestFiles, VtuInlineBinaryWithUInt32AndUInt64Headers) {
   for (const char* name : {"two_tets_binary_uint32.vtu", "two_tets_binary_uint64.vtu"}) {
     SCOPED_TRACE(name);
-    expect_two_tets(read_test_file(name));
+    ASSERT_NO_FATAL_FAILURE(expect_two_tets(read_test_file(name)));
   }
 }
 
 TEST(TestFiles, VtuAppendedRawAndBase64) {
   for (const char* name : {"two_tets_appended_raw.vtu", "two_tets_appended_base64.vtu"}) {
     SCOPED_TRACE(name);
-    expect_two_tets(read_test_file(name));
+    ASSERT_NO_FATAL_FAILURE(expect_two_tets(read_test_file(name)));
   }
 }
 
