@@ -185,9 +185,12 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
 
 void Cutter::remove_selected(CutReport& report) {
   const RemovalReport before = remover_.report();
+  // Counted per request here: the Remover's running total of unresolved tets goes down when a
+  // tet left unresolved by an earlier cut goes now, so its difference can be negative.
+  std::uint32_t unresolved = 0;
   for (TetId t : removal_) {
     if (!mesh_.is_live(t)) continue;
-    remover_.remove(mesh_, t, &log_);
+    if (remover_.remove(mesh_, t, &log_).outcome == RemovalOutcome::kUnresolved) ++unresolved;
     if (log_.created.size() > params_.max_tets_created) {
       report.ok = false;
       report.failure = "the removal would exceed the per-cut tet budget";
@@ -202,7 +205,8 @@ void Cutter::remove_selected(CutReport& report) {
   report.edge_singularities = delta(after.edge_singularities, before.edge_singularities);
   report.resolved_by_neighbours = delta(after.resolved_by_neighbours, before.resolved_by_neighbours);
   report.resolved_by_refinement = delta(after.resolved_by_refinement, before.resolved_by_refinement);
-  report.unresolved = delta(after.unresolved, before.unresolved);
+  report.resolved_by_flood = delta(after.resolved_by_flood, before.resolved_by_flood);
+  report.unresolved = unresolved;
 }
 
 // Commits the transaction, brings the index up to date with the net changes, and reports the

@@ -57,6 +57,7 @@ const char* to_string(RemovalOutcome outcome) {
     case RemovalOutcome::kDirect: return "direct";
     case RemovalOutcome::kNeighbours: return "neighbours";
     case RemovalOutcome::kRefinement: return "refinement";
+    case RemovalOutcome::kFlood: return "flood";
     case RemovalOutcome::kUnresolved: return "unresolved";
   }
   return "?";
@@ -66,6 +67,30 @@ double RemovalReport::mean_cardinality() const {
   const std::uint64_t n = direct + resolved_by_neighbours;
   if (n == 0) return 0.0;
   return static_cast<double>(direct + neighbour_set_tets) / static_cast<double>(n);
+}
+
+RemovalReport& RemovalReport::operator+=(const RemovalReport& o) {
+  requested += o.requested;
+  repeated_requests += o.repeated_requests;
+  removed += o.removed;
+  unresolved += o.unresolved;
+  direct += o.direct;
+  vertex_singularities += o.vertex_singularities;
+  edge_singularities += o.edge_singularities;
+  resolved_by_neighbours += o.resolved_by_neighbours;
+  vertex_resolved_by_neighbours += o.vertex_resolved_by_neighbours;
+  edge_resolved_by_neighbours += o.edge_resolved_by_neighbours;
+  resolved_by_refinement += o.resolved_by_refinement;
+  resolved_by_optimized_refinement += o.resolved_by_optimized_refinement;
+  resolved_by_flood += o.resolved_by_flood;
+  neighbour_set_tets += o.neighbour_set_tets;
+  vertex_neighbour_set_tets += o.vertex_neighbour_set_tets;
+  edge_neighbour_set_tets += o.edge_neighbour_set_tets;
+  tets_removed += o.tets_removed;
+  tets_created += o.tets_created;
+  edges_split += o.edges_split;
+  refinements_undone += o.refinements_undone;
+  return *this;
 }
 
 Remover::Remover(RemovalOptions options) : options_(options) {}
@@ -593,7 +618,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log) {
   // one cut on the cylinder left a tet none of the above could take).
   if (!done && options_.strategy != RemovalStrategy::kNeighbours && flood(mesh, t, result)) {
     done = true;
-    result.outcome = RemovalOutcome::kNeighbours;
+    result.outcome = RemovalOutcome::kFlood;
   }
 
   // Statistics, a tet met again after being left unresolved counting once.
@@ -630,6 +655,9 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log) {
     case RemovalOutcome::kRefinement:
       ++r.resolved_by_refinement;
       if (result.optimized_refinement) ++r.resolved_by_optimized_refinement;
+      break;
+    case RemovalOutcome::kFlood:
+      ++r.resolved_by_flood;
       break;
     case RemovalOutcome::kUnresolved:
       if (!repeat) ++r.unresolved;

@@ -67,7 +67,8 @@ void expect_everything_removed(const RunOutcome& run) {
   EXPECT_EQ(run.tets_left, 0u);
   EXPECT_EQ(run.report.unresolved, 0u);
   EXPECT_EQ(run.report.removed, run.report.requested);
-  EXPECT_EQ(run.report.direct + run.report.resolved_by_neighbours + run.report.resolved_by_refinement,
+  EXPECT_EQ(run.report.direct + run.report.resolved_by_neighbours + run.report.resolved_by_refinement +
+                run.report.resolved_by_flood,
             run.report.removed);
   EXPECT_EQ(run.report.direct + run.report.vertex_singularities + run.report.edge_singularities,
             run.report.requested);

@@ -62,7 +62,9 @@ struct CutReport {
   std::uint32_t tets_removed = 0;    // all tets removed, neighbour sets included
   std::uint32_t tets_created = 0;    // by refinement and by refinement-based removal
   std::uint32_t direct = 0, vertex_singularities = 0, edge_singularities = 0;
-  std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, unresolved = 0;
+  // unresolved: requests of this cut left in place (a tet left twice counts twice; the
+  // Remover's report counts distinct tets, as the paper's tables do).
+  std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_flood = 0, unresolved = 0;
   double min_radius_ratio = 1.0;     // worst tet created (1 when none)
   CutTimings time;
 };

@@ -21,9 +21,11 @@
 // another vertex a on the surface and the edge from a to the singular vertex is a boundary edge,
 // removing T's children still pinches the new edge from a to its midpoint. If the search fails,
 // the refinement escalates at the vertex it stumbled on (every edge there is split too and its
-// small tets join the set; at most 5 splits per attempt), and as a last resort the corners of
-// every boundary vertex of T are refined at once. Measured: 100 % of the requests removed on the
-// bundled meshes and on boxes (tests/engine/removal_random_test.cpp).
+// small tets join the set; at most 5 splits per attempt), then the corners of every boundary
+// vertex of T are refined at once, and as a last resort (basic and combined) T's set is grown by
+// the whole shell of whatever still pinches until it is removable ("flood", reported apart).
+// Measured: 100 % of the requests removed on the bundled meshes and on boxes
+// (tests/engine/removal_random_test.cpp).
 //
 // Guarantees. Every set is tested by set_removable() before anything is removed, so the mesh is
 // a valid manifold after every request whatever happens. A request is atomic: if it ends
@@ -73,6 +75,7 @@ enum class RemovalOutcome : std::uint8_t {
   kDirect,      // removable on its own (paper 3.3)
   kNeighbours,  // removed with neighbours (paper 3.5)
   kRefinement,  // removed after a local refinement (paper 3.4 / 3.7)
+  kFlood,       // removed with its neighbourhood grown until removable (our last resort)
   kUnresolved,  // left in place; the mesh is as before
 };
 
@@ -102,6 +105,7 @@ struct RemovalReport {
   std::uint64_t edge_resolved_by_neighbours = 0;
   std::uint64_t resolved_by_refinement = 0;
   std::uint64_t resolved_by_optimized_refinement = 0;
+  std::uint64_t resolved_by_flood = 0;          // the last resort, after every refinement failed
   std::uint64_t neighbour_set_tets = 0;         // sum of the sets removed by neighbours
   std::uint64_t vertex_neighbour_set_tets = 0;
   std::uint64_t edge_neighbour_set_tets = 0;
@@ -114,6 +118,8 @@ struct RemovalReport {
   // per request (1 for a direct removal). 0 when there are none.
   [[nodiscard]] double mean_cardinality() const;
   bool operator==(const RemovalReport&) const = default;
+  // Adds another run's counts (a scenario that reloads or compacts its mesh has several).
+  RemovalReport& operator+=(const RemovalReport& other);
 };
 
 // Removes requested tets with one strategy and keeps the statistics. Holds all scratch memory:
