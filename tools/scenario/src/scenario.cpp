@@ -195,6 +195,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     result.failed_line = op.line;
     result.error = scenario.name + ":" + std::to_string(op.line) + ": " + why;
     result.tets = mesh.num_tets();
+    if (cutter) result.removal += cutter->removal_report();
   };
   auto violations = [](const invariants::CheckReport& r) {
     std::string s;
@@ -233,6 +234,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
           stop(op, 2, path + ": not a valid manifold mesh: " + built.problems.front().message);
           return result;
         }
+        if (cutter) result.removal += cutter->removal_report();
         cutter.reset();
         mesh = std::move(*built.mesh);
         cutter.emplace(mesh, params);
@@ -278,6 +280,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         break;
       }
       case OpKind::kCompact:
+        result.removal += cutter->removal_report();
         mesh.compact();
         cutter.emplace(mesh, params);
         local.emplace(mesh);
@@ -330,6 +333,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
       result.error = scenario.name + ": invariant violated at the end: " + violations(r);
     }
   }
+  if (cutter) result.removal += cutter->removal_report();
   result.hash = hash_to_hex(canonical_hash(mesh));
   result.tets = mesh.num_tets();
   if (mesh_out) *mesh_out = std::move(mesh);

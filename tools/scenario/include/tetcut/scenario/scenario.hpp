@@ -77,6 +77,7 @@ struct RunResult {
   std::uint64_t unresolved = 0;
   std::string hash;        // of the final mesh
   std::uint32_t tets = 0;
+  RemovalReport removal;   // the paper's statistics over every removal request of the run
 };
 
 struct RunOptions {
