@@ -147,6 +147,10 @@ TEST_F(Cli, BadUsageExitsTwoWithTheUsage) {
       {"convert", box},
       {"convert", box, box, box},
       {"convert", box, box, "--format", "stl"},
+      {"stats", "extra"},
+      {"stats", "--mesh", "kidney"},
+      {"stats", "--check", "none"},
+      {"stats", "--json"},
   };
   for (const auto& args : bad) {
     const ProcessResult r = tetcut(args);
@@ -157,6 +161,12 @@ TEST_F(Cli, BadUsageExitsTwoWithTheUsage) {
     EXPECT_TRUE(r.err.starts_with("tetcut")) << joined << ": " << r.err;
     EXPECT_NE(r.err.find("usage: tetcut"), std::string::npos) << joined << ": " << r.err;
   }
+}
+
+TEST_F(Cli, StatsWithoutItsCorpusNamesTheMissingScenario) {
+  const ProcessResult r = tetcut({"stats", "--corpus", path("no-corpus")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no-corpus/scenarios/paper/cylinder.scn"), std::string::npos) << r.err;
 }
 
 // ---- a valid mesh ---------------------------------------------------------------------------

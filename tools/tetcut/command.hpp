@@ -26,6 +26,7 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err);
 int cmd_cut(Args args, std::ostream& out, std::ostream& err);
 int cmd_remove(Args args, std::ostream& out, std::ostream& err);
 int cmd_run(Args args, std::ostream& out, std::ostream& err);
+int cmd_stats(Args args, std::ostream& out, std::ostream& err);
 int cmd_replay(Args args, std::ostream& out, std::ostream& err);
 int cmd_minimize(Args args, std::ostream& out, std::ostream& err);
 

@@ -106,6 +106,30 @@ constexpr std::string_view kCutHelp =
     "\n"
     "exit: 0, 1 an invariant broke, 2 bad input or usage\n";
 
+constexpr std::string_view kStatsHelp =
+    "Redoes the paper's experiment (section 3.6): five meshes of its kinds (cylinder, sheet, coarse\n"
+    "liver, finer liver, locally refined liver), each cut by the cautery scenario in\n"
+    "CORPUS/scenarios/paper/ with the combined strategy, and prints Tables 1 and 2 with the paper's\n"
+    "figures and the difference beside ours. Then compares the strategies (basic, neighbours,\n"
+    "combined; templates and bisection) on one of those scenarios, and runs the liver resection\n"
+    "(CORPUS/scenarios/liver-resection.scn) for the report's plots and pictures.\n"
+    "\n"
+    "  --corpus DIR        the corpus folder (default: corpus, as from the repository's root)\n"
+    "  --mesh NAME         the strategy comparison's mesh (default liver-refined)\n"
+    "  --check every|end   the local checker after every cut (default) or the full one at the end\n"
+    "  --json FILE         everything as JSON: keys table1, table2 (one row per mesh, with paper\n"
+    "                      and diff), strategies (one row per strategy), resection\n"
+    "  --html FILE         a self-contained HTML report: tables, latency plot, quality\n"
+    "                      histograms, the liver before and after the resection as SVG\n"
+    "  --pictures DIR      the report's pictures as DIR/latency-plot.svg, quality-histogram.svg,\n"
+    "                      liver-before.svg and liver-after.svg (DIR must exist)\n"
+    "\n"
+    "Only the times (p50_us, p99_us, cut_us) vary between runs; every other figure is\n"
+    "deterministic.\n"
+    "\n"
+    "exit: 0 done, 1 a scenario failed a check or the combined strategy left a tet unresolved,\n"
+    "2 unusable corpus or bad usage\n";
+
 constexpr std::string_view kRunHelp =
     "Runs a scenario file: one operation a line (mesh, diameter, strategy, cut, sweep, remove,\n"
     "compact, check, expect hash|tets|unresolved|components), tets and tools addressed by points\n"
@@ -171,6 +195,10 @@ constexpr std::array kCommands = {
                 "a cautery sweep, one cut per step", kCutHelp, &cmd_cut},
     CommandInfo{"run", "tetcut run SCENARIO [--check every|end|none] [--out M] [--report R.json]",
                 "runs a scenario file", kRunHelp, &cmd_run},
+    CommandInfo{"stats",
+                "tetcut stats [--corpus DIR] [--mesh NAME] [--check every|end] [--json FILE] [--html FILE] "
+                "[--pictures DIR]",
+                "the paper's Tables 1 and 2, a strategy comparison and an HTML report", kStatsHelp, &cmd_stats},
     CommandInfo{"replay", "tetcut replay INPUT --target NAME [--scenario-out FILE]",
                 "decodes a fuzz input into a scenario and runs it", kReplayHelp, &cmd_replay},
     CommandInfo{"minimize", "tetcut minimize SCENARIO -o OUT [--max-runs N]",

@@ -1,0 +1,167 @@
+#!/usr/bin/env python3
+"""`tetcut stats` end to end, as a user runs it: the JSON has its tables, and the HTML report is
+self-contained, loads in headless Chromium (Debian's `chromium`) and draws its pictures.
+
+usage: report_renders_in_chromium.py TETCUT CORPUS_DIR OUT_DIR
+
+The screenshot is checked from its pixels (PNG decoded here, no imaging library needed): the
+liver's surface colour and the cut surfaces' colour must both be on the page, and so must the
+plot's line colour. Exit 0 when every check passes, 1 with the failed checks listed otherwise.
+"""
+import json
+import os
+import re
+import shutil
+import struct
+import subprocess
+import sys
+import zlib
+
+CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                  "--disable-dev-shm-usage", "--disable-extensions", "--disable-sync",
+                  "--no-first-run", "--hide-scrollbars"]
+PICTURE_IDS = ["latency-plot", "quality-histogram", "liver-before", "liver-after"]
+MESHES = ["cylinder", "sheet", "liver-coarse", "liver-refined", "liver-local"]
+
+failures = []
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+    return condition
+
+
+def decode_png(data):
+    """(width, height, rows of RGB tuples) of an 8-bit RGB or RGBA, non-interlaced PNG."""
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    width, height, depth, colour, _, _, interlace = header
+    assert depth == 8 and colour in (2, 6) and interlace == 0, "unsupported PNG layout %r" % (header,)
+    bpp = 3 if colour == 2 else 4
+    raw = zlib.decompress(idat)
+    stride = width * bpp
+    rows, prev, i = [], bytearray(stride), 0
+    for _ in range(height):
+        kind, line = raw[i], bytearray(raw[i + 1:i + 1 + stride])
+        i += 1 + stride
+        for x in range(stride):
+            a = line[x - bpp] if x >= bpp else 0
+            b = prev[x]
+            c = prev[x - bpp] if x >= bpp else 0
+            if kind == 1:
+                line[x] = (line[x] + a) & 255
+            elif kind == 2:
+                line[x] = (line[x] + b) & 255
+            elif kind == 3:
+                line[x] = (line[x] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    return width, height, rows, bpp
+
+
+def main():
+    if len(sys.argv) != 4:
+        print(__doc__)
+        return 2
+    tetcut, corpus, out = sys.argv[1:]
+    os.makedirs(out, exist_ok=True)
+    json_path, html_path = os.path.join(out, "stats.json"), os.path.join(out, "report.html")
+    for p in (json_path, html_path):
+        if os.path.exists(p):
+            os.remove(p)
+
+    run = subprocess.run([tetcut, "stats", "--corpus", corpus, "--json", json_path, "--html", html_path],
+                         capture_output=True, text=True, timeout=500)
+    if not check(run.returncode == 0, "tetcut stats exit %d: %s" % (run.returncode, run.stderr.strip())):
+        return report()
+    check("Table 1" in run.stdout and "Table 2" in run.stdout, "the text output has Tables 1 and 2")
+
+    # The JSON: one row per mesh in table1 and table2, the paper's figures beside ours.
+    stats = json.load(open(json_path))
+    for key in ("table1", "table2", "strategies"):
+        check(key in stats, "JSON key %s" % key)
+    check([r["mesh"] for r in stats.get("table1", [])] == MESHES, "table1 rows are the five meshes in order")
+    check([r["mesh"] for r in stats.get("table2", [])] == MESHES, "table2 rows are the five meshes in order")
+    for row in stats.get("table1", []):
+        check(row["operations"] > 0, "%s: removal operations" % row["mesh"])
+        total = row["removable_pct"] + row["vertex_pct"] + row["edge_pct"]
+        check(abs(total - 100) < 1e-9, "%s: removable + vertex + edge = 100 %% (got %r)" % (row["mesh"], total))
+        check(abs(row["diff"]["removable_pct"] - (row["removable_pct"] - row["paper"]["removable_pct"])) < 1e-9,
+              "%s: diff is ours minus the paper's" % row["mesh"])
+    for row in stats.get("table2", []):
+        check(row["combined_unresolved_pct"] == 0, "%s: combined leaves nothing unresolved" % row["mesh"])
+        check(row["global_cardinality"] >= 1, "%s: global cardinality >= 1" % row["mesh"])
+    names = [r["name"] for r in stats.get("strategies", [])]
+    for name in ("basic", "neighbours", "combined", "combined, bisection"):
+        check(name in names, "strategy row %s" % name)
+    combined = [r for r in stats.get("strategies", []) if r["name"] == "combined"]
+    check(combined and combined[0]["ok"] and combined[0]["unresolved"] == 0, "combined: ran to the end, 0 unresolved")
+
+    # Self-contained: no script, no external resource.
+    html = open(html_path, encoding="utf-8").read()
+    check("<script" not in html and "<link" not in html, "no script or link elements")
+    check(not re.search(r'(src|href)\s*=', html), "no src= or href= attributes")
+    check(not re.search(r'https?://(?!www\.w3\.org/2000/svg)', html), "no URL but the SVG namespace")
+
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if not check(chromium is not None, "chromium is installed (ci/deps installs it)"):
+        return report()
+    url = "file://" + os.path.abspath(html_path)
+    profile = os.path.join(os.path.abspath(out), "chromium-profile")
+    flags = CHROMIUM_FLAGS + ["--user-data-dir=" + profile]
+    dom = subprocess.run([chromium] + flags + ["--dump-dom", url], capture_output=True, text=True, timeout=120)
+    check(dom.returncode == 0, "chromium --dump-dom exit %d" % dom.returncode)
+    for pid in PICTURE_IDS:
+        check(('id="%s"' % pid) in dom.stdout, "the loaded page has the picture %s" % pid)
+    for tid in ("table1", "table2", "strategies"):
+        check(('id="%s"' % tid) in dom.stdout, "the loaded page has the table %s" % tid)
+    check(dom.stdout.count("<polygon") > 2000, "the surface pictures have their triangles")
+
+    png = os.path.join(out, "report.png")
+    if os.path.exists(png):
+        os.remove(png)
+    shot = subprocess.run([chromium] + flags + ["--window-size=1200,3400", "--screenshot=" + png, url],
+                          capture_output=True, text=True, timeout=120)
+    if not check(shot.returncode == 0 and os.path.exists(png), "chromium --screenshot wrote " + png):
+        return report()
+    width, height, rows, bpp = decode_png(open(png, "rb").read())
+    check((width, height) == (1200, 3400), "screenshot size %dx%d" % (width, height))
+    tissue = cut = plot = 0
+    for line in rows:
+        for x in range(0, len(line), bpp):
+            r, g, b = line[x], line[x + 1], line[x + 2]
+            if r > g + 40 and r > b + 40 and g < 140:
+                tissue += 1                   # the liver's shaded red-brown surface
+            elif r > 150 and g > 120 and b < 110 and r - b > 90:
+                cut += 1                      # the yellow cut surfaces
+            elif b > r + 50 and b > 120:
+                plot += 1                     # the latency line and the "before" bars
+    check(tissue > 20000, "the liver's surface is drawn (%d tissue-coloured pixels)" % tissue)
+    check(cut > 2000, "the cut surfaces are drawn (%d cut-coloured pixels)" % cut)
+    check(plot > 500, "the plot is drawn (%d plot-coloured pixels)" % plot)
+    return report()
+
+
+def report():
+    if failures:
+        print("FAILED:\n  " + "\n  ".join(failures))
+        return 1
+    print("ok: tetcut stats JSON and HTML report; Chromium loaded the page and drew its pictures")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,50 @@
+// One cautery scenario run with a chosen removal strategy and split method, and what the
+// statistics need from it: the paper's counts, per-cut times, quality before and after, and
+// (when asked) the meshes before and after for pictures.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tetcut/cut.hpp"
+#include "tetcut/invariants/check.hpp"
+#include "tetcut/mesh.hpp"
+#include "tetcut/scenario/scenario.hpp"
+
+namespace tetcut::stats {
+
+struct CauteryRun {
+  std::string scenario;                // the file
+  RemovalStrategy strategy = RemovalStrategy::kCombined;
+  SplitMethod split = SplitMethod::kTemplates;
+  scenario::RunResult result;          // ok == false: it stopped early (result.error says why)
+  std::uint32_t tets_before = 0;
+  invariants::QualityStats quality_before, quality_after;
+  std::vector<double> cut_us;          // each cut's total time, in scenario order
+  std::optional<TetMesh> mesh_before, mesh_after;  // when keep_meshes
+};
+
+struct CauteryOptions {
+  RemovalStrategy strategy = RemovalStrategy::kCombined;
+  SplitMethod split = SplitMethod::kTemplates;
+  // Run the local checker after every cut (the scenario runner's default). The statistics do
+  // not depend on it; `tetcut stats --check end` skips it for speed and checks the end only.
+  bool check_every_cut = true;
+  bool keep_meshes = false;
+};
+
+struct CauteryResult {
+  std::optional<CauteryRun> run;
+  std::string error;                   // unusable scenario or mesh: "FILE:LINE: reason"
+};
+
+// Runs the scenario file with the strategy and split method set before its own settings (so a
+// scenario that sets none is run as asked). A scenario that fails part-way still gives a run,
+// with result.ok false and the statistics up to the failure; only unusable input is an error.
+CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options);
+
+// Nearest-rank percentile (q in [0, 1]) of `values`; NaN when empty.
+double percentile(std::vector<double> values, double q);
+
+}  // namespace tetcut::stats

@@ -1,0 +1,90 @@
+// `tetcut stats`: the paper's experiment (section 3.6) redone on our meshes.
+//
+// Five meshes of the paper's kinds, each cut by a documented cautery scenario in
+// corpus/scenarios/paper/ (sweeps of the tool through the mesh, as the paper's electric lancet
+// did), run with the combined strategy (paper 3.7) and templates: Tables 1 and 2 per mesh, with
+// the paper's figures beside ours. Then the strategy comparison on one of those scenarios: basic
+// (3.4), neighbours (3.5) and combined (3.7), with templates and with sequential bisection. And,
+// for the pictures, the resection of the bundled liver (corpus/scenarios/liver-resection.scn).
+//
+// Everything but the per-cut times is deterministic: same corpus, same figures, same bits.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tetcut/stats/cautery_run.hpp"
+#include "tetcut/stats/paper_figures.hpp"
+#include "tetcut/stats/removal_tables.hpp"
+
+namespace tetcut::stats {
+
+// One of the paper's five test meshes and our scenario for it.
+struct PaperMesh {
+  int number;               // the paper's mesh number, 1..5
+  const char* name;         // our mesh: "cylinder", "sheet", "liver-coarse", ...
+  const char* description;  // the paper's words
+  const char* scenario;     // relative to the corpus folder
+};
+
+// The five, in the paper's order.
+const std::vector<PaperMesh>& paper_meshes();
+
+struct MeshStats {
+  PaperMesh mesh;
+  std::uint32_t tets_before = 0, tets_after = 0;
+  std::uint64_t cuts = 0;
+  RemovalReport removal;
+  Table1Row table1;
+  Table2Row table2;
+  double p50_us = 0, p99_us = 0;
+  bool ok = true;           // the scenario ran to its end, its checks passing
+  std::string error;
+};
+
+// One row of the strategy comparison.
+struct StrategyRow {
+  std::string name;         // "combined", "basic (bisection)", ...
+  RemovalStrategy strategy = RemovalStrategy::kCombined;
+  SplitMethod split = SplitMethod::kTemplates;
+  std::uint64_t cuts = 0;
+  std::uint64_t requests = 0;           // distinct tets requested
+  std::uint64_t tets_created = 0;       // by the refinement loop and by removal
+  std::uint64_t tets_removed = 0;
+  double removed_per_request = 0;       // tets_removed / requests
+  std::uint64_t unresolved = 0;         // distinct tets left in place at the end
+  std::uint32_t tets_after = 0;
+  double worst_radius_ratio = 0, mean_radius_ratio = 0;  // of the mesh after the scenario
+  double p50_us = 0, p99_us = 0;        // per cut
+  bool ok = true;
+  std::string error;                    // why the run stopped early
+};
+
+struct ResectionStats {
+  std::string scenario;
+  CauteryRun run;                       // with meshes before and after
+};
+
+struct StatsOptions {
+  std::string corpus_dir = "corpus";
+  std::string comparison_mesh = "liver-refined";  // which paper mesh the strategies run on
+  bool check_every_cut = true;
+  bool resection = true;                // run the liver resection (needed for the pictures)
+};
+
+struct StatsReport {
+  std::vector<MeshStats> meshes;
+  std::string comparison_mesh;
+  std::vector<StrategyRow> strategies;
+  std::optional<ResectionStats> resection;
+};
+
+struct StatsResult {
+  std::optional<StatsReport> report;
+  std::string error;                    // unusable corpus: names the file and the reason
+};
+
+StatsResult compute_stats(const StatsOptions& options);
+
+}  // namespace tetcut::stats

@@ -1,0 +1,42 @@
+// Our Tables 1 and 2 (paper 3.6), computed from a run's RemovalReport.
+//
+// Counting follows the paper: an operation is a distinct tet requested for removal (a tet met
+// again after being left unresolved counts once). Table 2 describes the neighbour strategy
+// (paper 3.5) inside the combined one (3.7): "unresolved" there means "not resolved by removing
+// neighbours", which the combined strategy then resolved by its optimized refinement; the share
+// the combined strategy itself left is reported apart and must be zero. A percentage or an
+// average over nothing (no edge singularity met, say) is NaN: printed "-", JSON null.
+#pragma once
+
+#include <cstdint>
+
+#include "tetcut/removal.hpp"
+
+namespace tetcut::stats {
+
+struct Table1Row {
+  std::uint64_t operations = 0;  // distinct tets requested
+  double removable_pct = 0;      // removable on their own (paper 3.3)
+  double vertex_pct = 0;         // removal would make a vertex singular (cases 1 and 2)
+  double edge_pct = 0;           // removal would make an edge singular (case 3)
+};
+
+struct Table2Row {
+  double vertex_unresolved_pct = 0;  // vertex singularities the neighbours did not resolve
+  double vertex_cardinality = 0;     // mean size of the removed set when they did
+  double edge_unresolved_pct = 0;
+  double edge_cardinality = 0;
+  double global_unresolved_pct = 0;  // over all operations
+  double global_cardinality = 0;     // tets removed per operation removed without refinement
+  double combined_unresolved_pct = 0;  // left in place by the whole strategy: must be 0
+};
+
+Table1Row table1_row(const RemovalReport& report);
+Table2Row table2_row(const RemovalReport& report);
+
+// part / whole x 100, NaN when whole is 0.
+double percent(std::uint64_t part, std::uint64_t whole);
+// sum / count, NaN when count is 0.
+double average(std::uint64_t sum, std::uint64_t count);
+
+}  // namespace tetcut::stats

@@ -1,0 +1,18 @@
+// The statistics as plain text tables for a terminal: Tables 1 and 2 with the paper's figures
+// and the difference beside ours, then the strategy comparison.
+#pragma once
+
+#include <string>
+
+#include "tetcut/stats/paper_stats.hpp"
+
+namespace tetcut::stats {
+
+std::string text_report(const StatsReport& report);
+
+// "12.3", or "-" for NaN; `decimals` after the point.
+std::string fixed(double value, int decimals);
+// "+1.2" / "-0.4", or "-" when either side is NaN.
+std::string difference(double ours, double paper, int decimals);
+
+}  // namespace tetcut::stats

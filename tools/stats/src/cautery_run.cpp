@@ -1,0 +1,86 @@
+#include "tetcut/stats/cautery_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tetcut/io.hpp"
+#include "tetcut/mesh_builder.hpp"
+
+namespace tetcut::stats {
+
+namespace {
+
+// The mesh the scenario starts from (its first `mesh` line), for the "before" figures.
+std::optional<TetMesh> initial_mesh(const scenario::Scenario& s, std::string& error) {
+  for (const scenario::Op& op : s.ops) {
+    if (op.kind != scenario::OpKind::kMesh) continue;
+    const std::string path = op.text.front() == '/' ? op.text : s.base_dir + "/" + op.text;
+    ReadResult read = read_mesh(path);
+    if (!read.mesh) {
+      error = read.error ? read.error->message() : "cannot read " + path;
+      return std::nullopt;
+    }
+    BuildResult built = build_mesh(*read.mesh);
+    if (!built.ok()) {
+      error = s.name + ":" + std::to_string(op.line) + ": " + path + ": not a valid manifold mesh: " +
+              built.problems.front().message;
+      return std::nullopt;
+    }
+    return std::move(*built.mesh);
+  }
+  error = s.name + ": no mesh line";
+  return std::nullopt;
+}
+
+}  // namespace
+
+double percentile(std::vector<double> values, double q) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
+  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
+}
+
+CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options) {
+  CauteryResult out;
+  const scenario::ParseResult parsed = scenario::parse_file(scenario_path);
+  if (!parsed.scenario) {
+    out.error = parsed.error;
+    return out;
+  }
+  std::optional<TetMesh> before = initial_mesh(*parsed.scenario, out.error);
+  if (!before) return out;
+
+  CauteryRun run;
+  run.scenario = scenario_path;
+  run.strategy = options.strategy;
+  run.split = options.split;
+  run.tets_before = before->num_tets();
+  run.quality_before = invariants::check_mesh(*before).quality;
+
+  CutParams params;
+  params.strategy = options.strategy;
+  params.split_method = options.split;
+  scenario::RunOptions run_options;
+  run_options.check = options.check_every_cut ? scenario::CheckMode::kEvery : scenario::CheckMode::kEnd;
+  run_options.initial_params = params;
+  TetMesh after;
+  run.result = scenario::run(*parsed.scenario, run_options, &after);
+  if (run.result.exit_code == 2) {  // unusable input, not a finding
+    out.error = run.result.error;
+    return out;
+  }
+  run.cut_us.reserve(run.result.cuts.size());
+  for (const scenario::CutRecord& c : run.result.cuts) run.cut_us.push_back(c.report.time.total_us);
+  // A run that stopped early leaves no mesh behind: its "after" is unknown.
+  if (run.result.ok) run.quality_after = invariants::check_mesh(after).quality;
+  if (options.keep_meshes) {
+    run.mesh_before = std::move(before);
+    if (run.result.ok) run.mesh_after = std::move(after);
+  }
+  out.run = std::move(run);
+  return out;
+}
+
+}  // namespace tetcut::stats

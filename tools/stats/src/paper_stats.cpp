@@ -1,0 +1,127 @@
+#include "tetcut/stats/paper_stats.hpp"
+
+namespace tetcut::stats {
+
+const std::vector<PaperMesh>& paper_meshes() {
+  static const std::vector<PaperMesh> meshes{
+      {1, "cylinder", "a simple cylinder", "scenarios/paper/cylinder.scn"},
+      {2, "sheet", "a thin sheet, two tets thick", "scenarios/paper/sheet.scn"},
+      {3, "liver-coarse", "a rough liver (paper: 3,970 tets)", "scenarios/paper/liver-coarse.scn"},
+      {4, "liver-refined", "a finer liver (paper: 8,454 tets)", "scenarios/paper/liver-refined.scn"},
+      {5, "liver-local", "a liver locally refined by edge splitting (paper: 9,933 tets)",
+       "scenarios/paper/liver-local.scn"},
+  };
+  return meshes;
+}
+
+namespace {
+
+MeshStats mesh_stats(const PaperMesh& mesh, const CauteryRun& run) {
+  MeshStats s;
+  s.mesh = mesh;
+  s.tets_before = run.tets_before;
+  s.tets_after = run.result.tets;
+  s.cuts = run.result.cuts.size();
+  s.removal = run.result.removal;
+  s.table1 = table1_row(s.removal);
+  s.table2 = table2_row(s.removal);
+  s.p50_us = percentile(run.cut_us, 0.5);
+  s.p99_us = percentile(run.cut_us, 0.99);
+  s.ok = run.result.ok;
+  s.error = run.result.error;
+  return s;
+}
+
+StrategyRow strategy_row(const std::string& name, const CauteryRun& run) {
+  StrategyRow row;
+  row.name = name;
+  row.strategy = run.strategy;
+  row.split = run.split;
+  row.cuts = run.result.cuts.size();
+  const RemovalReport& r = run.result.removal;
+  row.requests = r.requested;
+  for (const scenario::CutRecord& c : run.result.cuts) {
+    row.tets_created += c.report.tets_created;
+    row.tets_removed += c.report.tets_removed;
+  }
+  row.removed_per_request = average(row.tets_removed, row.requests);
+  row.unresolved = r.unresolved;
+  row.tets_after = run.result.tets;
+  row.worst_radius_ratio = run.quality_after.min_radius_ratio;
+  row.mean_radius_ratio = run.quality_after.mean_radius_ratio;
+  row.p50_us = percentile(run.cut_us, 0.5);
+  row.p99_us = percentile(run.cut_us, 0.99);
+  row.ok = run.result.ok;
+  row.error = run.result.error;
+  return row;
+}
+
+}  // namespace
+
+StatsResult compute_stats(const StatsOptions& options) {
+  StatsResult out;
+  StatsReport report;
+  const std::string corpus = options.corpus_dir + "/";
+  const PaperMesh* comparison = nullptr;
+  for (const PaperMesh& m : paper_meshes())
+    if (options.comparison_mesh == m.name) comparison = &m;
+  if (!comparison) {
+    out.error = "unknown comparison mesh '" + options.comparison_mesh + "' (one of cylinder, sheet, liver-coarse, "
+                "liver-refined, liver-local)";
+    return out;
+  }
+
+  CauteryOptions run_options;
+  run_options.check_every_cut = options.check_every_cut;
+  for (const PaperMesh& m : paper_meshes()) {
+    CauteryResult r = run_cautery(corpus + m.scenario, run_options);
+    if (!r.run) {
+      out.error = r.error;
+      return out;
+    }
+    report.meshes.push_back(mesh_stats(m, *r.run));
+  }
+
+  // The paper's three strategies, and our templates against sequential bisection.
+  report.comparison_mesh = comparison->name;
+  struct Variant {
+    const char* name;
+    RemovalStrategy strategy;
+    SplitMethod split;
+  };
+  constexpr Variant kVariants[] = {
+      {"basic", RemovalStrategy::kBasic, SplitMethod::kTemplates},
+      {"neighbours", RemovalStrategy::kNeighbours, SplitMethod::kTemplates},
+      {"combined", RemovalStrategy::kCombined, SplitMethod::kTemplates},
+      {"basic, bisection", RemovalStrategy::kBasic, SplitMethod::kBisection},
+      {"neighbours, bisection", RemovalStrategy::kNeighbours, SplitMethod::kBisection},
+      {"combined, bisection", RemovalStrategy::kCombined, SplitMethod::kBisection},
+  };
+  for (const Variant& v : kVariants) {
+    CauteryOptions o = run_options;
+    o.strategy = v.strategy;
+    o.split = v.split;
+    CauteryResult r = run_cautery(corpus + comparison->scenario, o);
+    if (!r.run) {
+      out.error = r.error;
+      return out;
+    }
+    report.strategies.push_back(strategy_row(v.name, *r.run));
+  }
+
+  if (options.resection) {
+    CauteryOptions o = run_options;
+    o.keep_meshes = true;
+    const std::string path = corpus + "scenarios/liver-resection.scn";
+    CauteryResult r = run_cautery(path, o);
+    if (!r.run) {
+      out.error = r.error;
+      return out;
+    }
+    report.resection = ResectionStats{path, std::move(*r.run)};
+  }
+  out.report = std::move(report);
+  return out;
+}
+
+}  // namespace tetcut::stats

@@ -1,0 +1,127 @@
+#include "tetcut/stats/text_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string_view>
+#include <vector>
+
+namespace tetcut::stats {
+
+std::string fixed(double value, int decimals) {
+  if (std::isnan(value)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+  return buf;
+}
+
+std::string difference(double ours, double paper, int decimals) {
+  if (std::isnan(ours) || std::isnan(paper)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%+.*f", decimals, ours - paper);
+  return buf;
+}
+
+namespace {
+
+// Columns padded to their widest cell; the first column left-aligned, the others right.
+class TextTable {
+ public:
+  void row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
+  std::string str() const {
+    std::vector<std::size_t> width;
+    for (const auto& r : rows_)
+      for (std::size_t i = 0; i < r.size(); ++i) {
+        if (width.size() <= i) width.push_back(0);
+        width[i] = std::max(width[i], r[i].size());
+      }
+    std::string out;
+    for (const auto& r : rows_) {
+      std::string line;
+      for (std::size_t i = 0; i < r.size(); ++i) {
+        const std::string pad(width[i] - r[i].size(), ' ');
+        line += i == 0 ? r[i] + pad : "  " + pad + r[i];
+      }
+      while (!line.empty() && line.back() == ' ') line.pop_back();
+      out += line + "\n";
+    }
+    return out;
+  }
+
+ private:
+  std::vector<std::vector<std::string>> rows_;
+};
+
+std::string mesh_label(const MeshStats& m) { return std::to_string(m.mesh.number) + " " + m.mesh.name; }
+
+}  // namespace
+
+std::string text_report(const StatsReport& report) {
+  std::string out;
+  out += "Table 1. Removing a tet on the surface: how often it is removable directly, or would make a\n"
+         "vertex or an edge singular (paper 3.6, combined strategy). ours / paper / difference\n\n";
+  TextTable t1;
+  t1.row({"mesh", "tets", "cuts", "operations", "paper", "% removable", "paper", "diff", "% vertex", "paper", "diff",
+          "% edge", "paper", "diff"});
+  for (std::size_t i = 0; i < report.meshes.size(); ++i) {
+    const MeshStats& m = report.meshes[i];
+    const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
+    t1.row({mesh_label(m), std::to_string(m.tets_before), std::to_string(m.cuts), std::to_string(m.table1.operations),
+            std::to_string(p.operations), fixed(m.table1.removable_pct, 1), fixed(p.removable_pct, 1),
+            difference(m.table1.removable_pct, p.removable_pct, 1), fixed(m.table1.vertex_pct, 1),
+            fixed(p.vertex_pct, 1), difference(m.table1.vertex_pct, p.vertex_pct, 1), fixed(m.table1.edge_pct, 1),
+            fixed(p.edge_pct, 1), difference(m.table1.edge_pct, p.edge_pct, 1)});
+  }
+  out += t1.str();
+
+  out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one: % of singularities it\n"
+         "did not resolve and the mean size of the sets it removed. ours / paper / difference; the last\n"
+         "column is what the combined strategy left in place (must be 0)\n\n";
+  TextTable t2;
+  t2.row({"mesh", "vertex % unres.", "paper", "diff", "card.", "paper", "diff", "edge % unres.", "paper", "diff",
+          "card.", "paper", "diff", "global % unres.", "paper", "diff", "card.", "paper", "diff", "combined % unres."});
+  for (const MeshStats& m : report.meshes) {
+    const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
+    const Table2Row& o = m.table2;
+    t2.row({mesh_label(m), fixed(o.vertex_unresolved_pct, 1), fixed(p.vertex_unresolved_pct, 1),
+            difference(o.vertex_unresolved_pct, p.vertex_unresolved_pct, 1), fixed(o.vertex_cardinality, 1),
+            fixed(p.vertex_cardinality, 1), difference(o.vertex_cardinality, p.vertex_cardinality, 1),
+            fixed(o.edge_unresolved_pct, 1), fixed(p.edge_unresolved_pct, 1),
+            difference(o.edge_unresolved_pct, p.edge_unresolved_pct, 1), fixed(o.edge_cardinality, 1),
+            fixed(p.edge_cardinality, 1), difference(o.edge_cardinality, p.edge_cardinality, 1),
+            fixed(o.global_unresolved_pct, 1), fixed(p.global_unresolved_pct, 1),
+            difference(o.global_unresolved_pct, p.global_unresolved_pct, 1), fixed(o.global_cardinality, 2),
+            fixed(p.global_cardinality, 1), difference(o.global_cardinality, p.global_cardinality, 2),
+            fixed(o.combined_unresolved_pct, 1)});
+  }
+  out += t2.str();
+  for (const MeshStats& m : report.meshes)
+    if (!m.ok) out += "  " + mesh_label(m) + ": the scenario stopped early: " + m.error + "\n";
+
+  out += "\nStrategies on the " + report.comparison_mesh +
+         " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";
+  TextTable s;
+  s.row({"strategy", "cuts", "requests", "tets created", "tets removed", "removed/request", "unresolved", "tets after",
+         "worst quality", "mean quality", "p50 us", "p99 us"});
+  for (const StrategyRow& r : report.strategies)
+    s.row({r.name, std::to_string(r.cuts), std::to_string(r.requests), std::to_string(r.tets_created),
+           std::to_string(r.tets_removed), fixed(r.removed_per_request, 2), std::to_string(r.unresolved),
+           r.ok ? std::to_string(r.tets_after) : "-", r.ok ? fixed(r.worst_radius_ratio, 4) : "-",
+           r.ok ? fixed(r.mean_radius_ratio, 3) : "-", fixed(r.p50_us, 1), fixed(r.p99_us, 1)});
+  out += s.str();
+  for (const StrategyRow& r : report.strategies)
+    if (!r.ok) out += "  " + r.name + ": stopped early: " + r.error + "\n";
+
+  if (report.resection) {
+    const CauteryRun& run = report.resection->run;
+    out += "\nResection of the bundled liver (" + report.resection->scenario + "): " +
+           std::to_string(run.result.cuts.size()) + " cuts, " + std::to_string(run.tets_before) + " -> " +
+           std::to_string(run.result.tets) + " tets, per cut p50 " + fixed(percentile(run.cut_us, 0.5), 1) +
+           " us, p99 " + fixed(percentile(run.cut_us, 0.99), 1) + " us, radius ratio min " +
+           fixed(run.quality_before.min_radius_ratio, 4) + " -> " + fixed(run.quality_after.min_radius_ratio, 4) +
+           ", mean " + fixed(run.quality_before.mean_radius_ratio, 3) + " -> " +
+           fixed(run.quality_after.mean_radius_ratio, 3) + "\n";
+  }
+  return out;
+}
+
+}  // namespace tetcut::stats
