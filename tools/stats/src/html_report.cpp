@@ -49,7 +49,6 @@ std::string triple(double ours, double paper, int decimals) {
          cell(difference(ours, paper, decimals), "diff");
 }
 
-std::string mesh_label(const MeshStats& m) { return std::to_string(m.mesh.number) + " " + m.mesh.name; }
 
 std::string table1_html(const StatsReport& report) {
   std::string h = "<table id=\"table1\"><tr><th rowspan=\"2\">mesh</th><th rowspan=\"2\">tets</th>"
@@ -60,7 +59,7 @@ std::string table1_html(const StatsReport& report) {
   h += "</tr>\n";
   for (const MeshStats& m : report.meshes) {
     const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
-    h += "<tr>" + cell(mesh_label(m)) + cell(std::to_string(m.tets_before)) + cell(std::to_string(m.cuts)) +
+    h += "<tr>" + cell(mesh_label(m.mesh)) + cell(std::to_string(m.tets_before)) + cell(std::to_string(m.cuts)) +
          cell(std::to_string(m.table1.operations)) + cell(std::to_string(p.operations), "paper") +
          triple(m.table1.removable_pct, p.removable_pct, 1) + triple(m.table1.vertex_pct, p.vertex_pct, 1) +
          triple(m.table1.edge_pct, p.edge_pct, 1) + "</tr>\n";
@@ -78,7 +77,7 @@ std::string table2_html(const StatsReport& report) {
   for (const MeshStats& m : report.meshes) {
     const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table2Row& o = m.table2;
-    h += "<tr>" + cell(mesh_label(m)) + triple(o.vertex_unresolved_pct, p.vertex_unresolved_pct, 1) +
+    h += "<tr>" + cell(mesh_label(m.mesh)) + triple(o.vertex_unresolved_pct, p.vertex_unresolved_pct, 1) +
          triple(o.vertex_cardinality, p.vertex_cardinality, 1) + triple(o.edge_unresolved_pct, p.edge_unresolved_pct, 1) +
          triple(o.edge_cardinality, p.edge_cardinality, 1) + triple(o.global_unresolved_pct, p.global_unresolved_pct, 1) +
          triple(o.global_cardinality, p.global_cardinality, 2) + cell(fixed(o.combined_unresolved_pct, 1)) + "</tr>\n";
@@ -86,7 +85,7 @@ std::string table2_html(const StatsReport& report) {
   h += "</table>\n";
   for (const MeshStats& m : report.meshes)
     if (!m.ok)
-      h += "<p class=\"warning\">" + html_escape(mesh_label(m) + ": the scenario stopped early: " + m.error) + "</p>\n";
+      h += "<p class=\"warning\">" + html_escape(mesh_label(m.mesh) + ": the scenario stopped early: " + m.error) + "</p>\n";
   return h;
 }
 

@@ -14,6 +14,8 @@ const std::vector<PaperMesh>& paper_meshes() {
   return meshes;
 }
 
+std::string mesh_label(const PaperMesh& mesh) { return std::to_string(mesh.number) + " " + mesh.name; }
+
 namespace {
 
 MeshStats mesh_stats(const PaperMesh& mesh, const CauteryRun& run) {

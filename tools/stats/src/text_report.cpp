@@ -51,7 +51,6 @@ class TextTable {
   std::vector<std::vector<std::string>> rows_;
 };
 
-std::string mesh_label(const MeshStats& m) { return std::to_string(m.mesh.number) + " " + m.mesh.name; }
 
 }  // namespace
 
@@ -65,7 +64,7 @@ std::string text_report(const StatsReport& report) {
   for (std::size_t i = 0; i < report.meshes.size(); ++i) {
     const MeshStats& m = report.meshes[i];
     const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
-    t1.row({mesh_label(m), std::to_string(m.tets_before), std::to_string(m.cuts), std::to_string(m.table1.operations),
+    t1.row({mesh_label(m.mesh), std::to_string(m.tets_before), std::to_string(m.cuts), std::to_string(m.table1.operations),
             std::to_string(p.operations), fixed(m.table1.removable_pct, 1), fixed(p.removable_pct, 1),
             difference(m.table1.removable_pct, p.removable_pct, 1), fixed(m.table1.vertex_pct, 1),
             fixed(p.vertex_pct, 1), difference(m.table1.vertex_pct, p.vertex_pct, 1), fixed(m.table1.edge_pct, 1),
@@ -82,7 +81,7 @@ std::string text_report(const StatsReport& report) {
   for (const MeshStats& m : report.meshes) {
     const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table2Row& o = m.table2;
-    t2.row({mesh_label(m), fixed(o.vertex_unresolved_pct, 1), fixed(p.vertex_unresolved_pct, 1),
+    t2.row({mesh_label(m.mesh), fixed(o.vertex_unresolved_pct, 1), fixed(p.vertex_unresolved_pct, 1),
             difference(o.vertex_unresolved_pct, p.vertex_unresolved_pct, 1), fixed(o.vertex_cardinality, 1),
             fixed(p.vertex_cardinality, 1), difference(o.vertex_cardinality, p.vertex_cardinality, 1),
             fixed(o.edge_unresolved_pct, 1), fixed(p.edge_unresolved_pct, 1),
@@ -95,7 +94,7 @@ std::string text_report(const StatsReport& report) {
   }
   out += t2.str();
   for (const MeshStats& m : report.meshes)
-    if (!m.ok) out += "  " + mesh_label(m) + ": the scenario stopped early: " + m.error + "\n";
+    if (!m.ok) out += "  " + mesh_label(m.mesh) + ": the scenario stopped early: " + m.error + "\n";
 
   out += "\nStrategies on the " + report.comparison_mesh +
          " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";

@@ -31,6 +31,9 @@ struct PaperMesh {
 // The five, in the paper's order.
 const std::vector<PaperMesh>& paper_meshes();
 
+// "3 liver-coarse": the paper's number and our name, as the tables print a row.
+std::string mesh_label(const PaperMesh& mesh);
+
 struct MeshStats {
   PaperMesh mesh;
   std::uint32_t tets_before = 0, tets_after = 0;
