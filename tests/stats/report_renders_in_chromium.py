@@ -32,6 +32,15 @@ def check(condition, what):
     return condition
 
 
+def without_times(value):
+    """The report with its per-cut times (the only figures that vary between runs) left out."""
+    if isinstance(value, dict):
+        return {k: without_times(v) for k, v in value.items() if k not in ("p50_us", "p99_us", "cut_us")}
+    if isinstance(value, list):
+        return [without_times(v) for v in value]
+    return value
+
+
 def decode_png(data):
     """(width, height, rows of RGB tuples) of an 8-bit RGB or RGBA, non-interlaced PNG."""
     assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
@@ -109,6 +118,14 @@ def main():
         check(name in names, "strategy row %s" % name)
     combined = [r for r in stats.get("strategies", []) if r["name"] == "combined"]
     check(combined and combined[0]["ok"] and combined[0]["unresolved"] == 0, "combined: ran to the end, 0 unresolved")
+
+    # Deterministic: a second run (checking only at the end) gives the same figures, times aside.
+    again_path = os.path.join(out, "stats-again.json")
+    again = subprocess.run([tetcut, "stats", "--corpus", corpus, "--check", "end", "--json", again_path],
+                           capture_output=True, text=True, timeout=500)
+    if check(again.returncode == 0, "second tetcut stats exit %d" % again.returncode):
+        check(without_times(json.load(open(again_path))) == without_times(stats),
+              "a second run gives the same figures (times aside)")
 
     # Self-contained: no script, no external resource.
     html = open(html_path, encoding="utf-8").read()
