@@ -13,6 +13,7 @@ enum class Op : std::uint8_t { kParam, kCutPoint, kCutSurface, kSweep, kLast = k
 
 struct Context {
   const BundledMesh& bundled;
+  const Limits& limits;
   CutParams params;
   double quantum;  // of coordinates
 };
@@ -45,7 +46,7 @@ void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
       name = "depth", value = std::to_string(p.search_depth);
       break;
     case 4:
-      p.max_refine_iterations = input.ConsumeIntegralInRange<std::uint32_t>(1, 8);
+      p.max_refine_iterations = input.ConsumeIntegralInRange<std::uint32_t>(1, kSweepPieces);
       name = "iterations", value = std::to_string(p.max_refine_iterations);
       break;
     case 5:
@@ -97,11 +98,11 @@ void sweep(SequenceSession& session, const Context& ctx, FuzzedDataProvider& inp
   if (norm(dir) < 1e-3) dir = {1, 0, 0};
   const double length = consume_in(input, 0.5, 4.0) * ctx.params.tool_diameter;
   const Vec3 b = rounded(a + (length / norm(dir)) * dir, ctx.quantum);
-  const std::uint32_t pieces = input.ConsumeIntegralInRange<std::uint32_t>(1, kMaxSweepSteps);
+  const std::uint32_t pieces = input.ConsumeIntegralInRange<std::uint32_t>(1, kSweepPieces);
   const double actual = norm(b - a);
   double step = round_to(actual / pieces, ctx.quantum);
   if (!(step > 0)) step = ctx.quantum;
-  while (actual > 0 && std::floor(actual / step) > static_cast<double>(kMaxSweepSteps)) step *= 2;
+  while (actual > 0 && std::floor(actual / step) > static_cast<double>(ctx.limits.max_sweep_steps)) step *= 2;
   const std::string text = "sweep " + format_point(a) + " " + format_point(b) + " " + format_number(step);
   ScenarioRecorder& recorder = session.recorder();
   const std::uint32_t line = recorder.add(text);
@@ -131,24 +132,16 @@ void sweep(SequenceSession& session, const Context& ctx, FuzzedDataProvider& inp
   }
 }
 
-void body(const std::uint8_t* data, std::size_t size, FuzzedDataProvider& input, ScenarioRecorder& recorder,
-          RunControl& control) {
-  const BundledMesh& bundled = bundled_mesh(input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshes.size() - 1));
-  recorder.add("# tetcut replay --target cut_sequence (input version " + std::to_string(kInputVersion) + ")");
+void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& recorder) {
+  const Limits& limits = version == kSequenceVersionBundled ? kLimitsV1 : kLimitsV2;
+  const BundledMesh& bundled = sequence_mesh(version, input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshCount - 1));
+  recorder.add("# tetcut replay --target cut_sequence (input version " + std::to_string(version) + ")");
   recorder.add("mesh " + bundled.path);
-  auto hash_before = [data, size](std::size_t index) {
-    RunControl stop;
-    stop.stop_before = index;
-    run_sequence(data, size, SequenceOptions{}, stop, [&](FuzzedDataProvider& in, ScenarioRecorder& r, RunControl& c) {
-      body(data, size, in, r, c);
-    });
-    return stop.hash_at_stop;
-  };
-  SequenceSession session(bundled, recorder, control, hash_before);
-  Context ctx{bundled, session.cutter().params(), coordinate_quantum(bundled.box.diagonal(), 3)};
+  SequenceSession session(bundled, recorder);
+  Context ctx{bundled, limits, session.cutter().params(), coordinate_quantum(bundled.box.diagonal(), 3)};
   std::size_t since_check = 0;
   const std::uint32_t max_tets = kMaxTetsFactor * bundled.mesh.num_tets();
-  for (std::size_t i = 0; i < kMaxOperations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&
+  for (std::size_t i = 0; i < limits.max_operations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&
                           session.mesh().num_tets() <= max_tets;
        ++i) {
     const Op op = static_cast<Op>(input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(Op::kLast)));
@@ -158,7 +151,7 @@ void body(const std::uint8_t* data, std::size_t size, FuzzedDataProvider& input,
       case Op::kCutSurface: cut(session, point_near_surface(session, ctx, input), "cut"); break;
       case Op::kSweep: sweep(session, ctx, input); break;
     }
-    if (++since_check == kFullCheckEvery) {
+    if (++since_check == limits.full_check_every) {
       session.full_check_if_changed();
       since_check = 0;
     }
@@ -169,10 +162,7 @@ void body(const std::uint8_t* data, std::size_t size, FuzzedDataProvider& input,
 }  // namespace
 
 SequenceResult run(const std::uint8_t* data, std::size_t size, const SequenceOptions& options) {
-  RunControl control;
-  return run_sequence(data, size, options, control, [&](FuzzedDataProvider& in, ScenarioRecorder& r, RunControl& c) {
-    body(data, size, in, r, c);
-  });
+  return run_sequence(data, size, options, body);
 }
 
 std::string decode_to_scenario(const std::uint8_t* data, std::size_t size) {

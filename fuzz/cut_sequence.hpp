@@ -1,17 +1,19 @@
 // The cut_sequence target's decoder and runner (fuzz/targets/cut_sequence.cpp is its libFuzzer
 // entry point; `tetcut replay --target cut_sequence` calls the same run()).
 //
-// Input: version byte, then (FuzzedDataProvider) the bundled mesh (cylinder, sheet, liver-coarse),
-// then up to kMaxOperations operations, each an opcode and its arguments:
+// Input: version byte (1 or 2, sequence_support.hpp), then (FuzzedDataProvider) the mesh (version
+// 1: the bundled cylinder, sheet, liver-coarse; version 2: their small fuzz versions), then up to
+// Limits::max_operations operations, each an opcode and its arguments:
 //   param       one of diameter (0.5..2 mean edge lengths), dref_factor (1..3), p (1.1..3),
 //               depth (1..16), iterations (1..8), strategy, split; rounded so scenarios read well
 //   cut point   a point of the bounding box grown by 10 %
 //   cut surface a boundary tet's centroid moved by up to a tool radius on each axis
-//   sweep       from such a point along a direction, 0.5..4 diameters long, 1..8 steps
+//   sweep       from such a point along a direction, 0.5..4 diameters long, 1..8 steps (at
+//               most Limits::max_sweep_steps + 1 cuts)
 // Every cut goes through Cutter::cut, followed by the local check; under combined every tet it
 // selects is resolved; a rolled back cut leaves the canonical hash as it was (and is written
 // into the scenario as a comment, since the mesh is as if it had not happened). The full check
-// every kFullCheckEvery operations and at the end.
+// every Limits::full_check_every operations and at the end.
 #pragma once
 
 #include <cstddef>
@@ -22,13 +24,22 @@
 
 namespace tetcut::fuzz::cut_sequence {
 
-inline constexpr std::size_t kMaxOperations = 24;
-inline constexpr std::size_t kFullCheckEvery = 16;
+struct Limits {
+  std::size_t max_operations;
+  std::size_t full_check_every;
+  std::uint64_t max_sweep_steps;
+};
+// Version 1 as it was found; version 2 bounds an input's cost (executions per second are what
+// find bugs).
+inline constexpr Limits kLimitsV1{24, 16, 8};
+inline constexpr Limits kLimitsV2{8, 8, 4};
 // The sequence ends once the mesh has grown beyond this many times its initial tets: repeated
 // refinement around small tools multiplies the tets (a cut on 45 000 tets took 50 s in Release),
 // and executions per second are what finds bugs. It ends the input as the scenario ends.
 inline constexpr std::uint32_t kMaxTetsFactor = 3;
-inline constexpr std::uint64_t kMaxSweepSteps = 8;
+// A sweep is cut into 1..kSweepPieces pieces (then steps are doubled until there are at most
+// Limits::max_sweep_steps).
+inline constexpr std::uint32_t kSweepPieces = 8;
 
 SequenceResult run(const std::uint8_t* data, std::size_t size, const SequenceOptions& options);
 // The input as a scenario (up to and including the operation that fails, if one does).

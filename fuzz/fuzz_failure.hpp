@@ -5,9 +5,9 @@
 //
 // The first word after "tetcut-fuzz:" is the property's id (an invariant I1-I9 of the design, or
 // one of the harness's own: reader-contract, round-trip, interpolation, checker-differential,
-// refused-split, unresolved-combined, rollback-changed-mesh); ci/fuzz-nightly deduplicates
-// crashes by it and by the top stack frames, and reads the operation's index and name from the
-// same line.
+// refused-split, unresolved-combined, rollback-changed-mesh, mesh-queries); ci/fuzz-nightly
+// deduplicates crashes by it and by the top stack frames, and reads the operation's index and
+// name from the same line.
 //
 // `tetcut replay` runs the same targets in-process and wants the finding as a value instead:
 // while a CaptureFailures object lives on the thread, fail() throws FailureError (no line, no

@@ -32,10 +32,10 @@ void request(SequenceSession& session, const Vec3& p, const std::string& name) {
 // a cautery would meet at once. Their centroids are taken before the first request, as a
 // simulator's selection would be; a later request whose tet went with an earlier one's set
 // finds another tet there, or none.
-void request_set(SequenceSession& session, FuzzedDataProvider& input) {
+void request_set(SequenceSession& session, FuzzedDataProvider& input, std::uint32_t max_size) {
   const TetMesh& mesh = session.mesh();
   const TetId seed = consume_boundary_tet(mesh, input);
-  const std::uint32_t size = input.ConsumeIntegralInRange<std::uint32_t>(2, kMaxSetSize);
+  const std::uint32_t size = input.ConsumeIntegralInRange<std::uint32_t>(2, max_size);
   std::vector<TetId> set;
   if (seed.valid()) set.push_back(seed);
   for (std::size_t i = 0; i < set.size() && set.size() < size; ++i)
@@ -49,26 +49,18 @@ void request_set(SequenceSession& session, FuzzedDataProvider& input) {
     request(session, points[i], "remove set " + std::to_string(i + 1) + "/" + std::to_string(points.size()));
 }
 
-void body(const std::uint8_t* data, std::size_t size, FuzzedDataProvider& input, ScenarioRecorder& recorder,
-          RunControl& control) {
-  const BundledMesh& bundled = bundled_mesh(input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshes.size() - 1));
-  recorder.add("# tetcut replay --target removal_sequence (input version " + std::to_string(kInputVersion) + ")");
+void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& recorder) {
+  const Limits& limits = version == kSequenceVersionBundled ? kLimitsV1 : kLimitsV2;
+  const BundledMesh& bundled = sequence_mesh(version, input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshCount - 1));
+  recorder.add("# tetcut replay --target removal_sequence (input version " + std::to_string(version) + ")");
   recorder.add("mesh " + bundled.path);
-  auto hash_before = [data, size](std::size_t index) {
-    RunControl stop;
-    stop.stop_before = index;
-    run_sequence(data, size, SequenceOptions{}, stop, [&](FuzzedDataProvider& in, ScenarioRecorder& r, RunControl& c) {
-      body(data, size, in, r, c);
-    });
-    return stop.hash_at_stop;
-  };
-  SequenceSession session(bundled, recorder, control, hash_before);
+  SequenceSession session(bundled, recorder);
   CutParams params = session.cutter().params();
   const double quantum = coordinate_quantum(bundled.box.diagonal(), 3);
   const Vec3 margin = 0.1 * (bundled.box.hi - bundled.box.lo);
   std::size_t since_check = 0;
   const std::uint32_t max_tets = kMaxTetsFactor * bundled.mesh.num_tets();
-  for (std::size_t i = 0; i < kMaxOperations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&
+  for (std::size_t i = 0; i < limits.max_operations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&
                           session.mesh().num_tets() <= max_tets;
        ++i) {
     const Op op = static_cast<Op>(input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(Op::kLast)));
@@ -92,9 +84,9 @@ void body(const std::uint8_t* data, std::size_t size, FuzzedDataProvider& input,
         request(session, p, "remove point");
         break;
       }
-      case Op::kRemoveSet: request_set(session, input); break;
+      case Op::kRemoveSet: request_set(session, input, limits.max_set_size); break;
     }
-    if (++since_check == kFullCheckEvery) {
+    if (++since_check == limits.full_check_every) {
       session.full_check_if_changed();
       since_check = 0;
     }
@@ -105,10 +97,7 @@ void body(const std::uint8_t* data, std::size_t size, FuzzedDataProvider& input,
 }  // namespace
 
 SequenceResult run(const std::uint8_t* data, std::size_t size, const SequenceOptions& options) {
-  RunControl control;
-  return run_sequence(data, size, options, control, [&](FuzzedDataProvider& in, ScenarioRecorder& r, RunControl& c) {
-    body(data, size, in, r, c);
-  });
+  return run_sequence(data, size, options, body);
 }
 
 std::string decode_to_scenario(const std::uint8_t* data, std::size_t size) {

@@ -2,17 +2,13 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <utility>
 
 #include "tetcut/canonical_hash.hpp"
 
 namespace tetcut::fuzz {
 
-SequenceSession::SequenceSession(const BundledMesh& bundled, ScenarioRecorder& recorder, RunControl& control,
-                                 std::function<std::uint64_t(std::size_t)> hash_before)
+SequenceSession::SequenceSession(const BundledMesh& bundled, ScenarioRecorder& recorder)
     : recorder_(recorder),
-      control_(control),
-      hash_before_(std::move(hash_before)),
       checked_(bundled.mesh),
       cutter_(checked_.mesh(), params_with_budget(bundled)) {
   // A failure on demand, to test what reports failures (tetcut replay's exit code and messages)
@@ -36,11 +32,6 @@ void SequenceSession::grow_volumes() {
 }
 
 void SequenceSession::begin(const std::string& name, std::uint32_t line) {
-  if (checked_.operation_index() + 1 == control_.stop_before) {
-    control_.stopped = true;
-    control_.hash_at_stop = canonical_hash(mesh());
-    throw StopRun{};
-  }
   checked_.begin(name);
   recorder_.map_operation(checked_.operation_index(), line);
   if (checked_.operation_index() == fail_at_)
@@ -63,12 +54,14 @@ OperationOutcome SequenceSession::remove_at(const Vec3& p, const std::string& na
     return {checked_.operation_index(), false, {}};
   }
   if (checked_.tracing()) checked_.describe("tet " + std::to_string(t.value) + " at " + format_point(p));
+  before_ = mesh();
   return after(cutter_.remove(t));
 }
 
 OperationOutcome SequenceSession::cut_at(const Vec3& c, const std::string& name, std::uint32_t line) {
   begin(name, line);
   if (checked_.tracing()) checked_.describe("centre " + format_point(c));
+  before_ = mesh();
   return after(cutter_.cut(c));
 }
 
@@ -78,7 +71,7 @@ OperationOutcome SequenceSession::after(const CutReport& report) {
     // Atomic: the mesh must be bit-identical to before, so its canonical hash is too.
     checked_.end({}, {}, 0.0);
     const std::uint64_t now = canonical_hash(mesh());
-    const std::uint64_t before = hash_before_(index);
+    const std::uint64_t before = canonical_hash(before_);
     checked_.require(now == before, "rollback-changed-mesh",
                      "rolled back (" + report.failure + ") but the canonical hash went from " + hash_to_hex(before) +
                          " to " + hash_to_hex(now));
@@ -118,21 +111,20 @@ void SequenceSession::full_check() {
 }
 
 SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,
-                            RunControl& control,
-                            const std::function<void(FuzzedDataProvider&, ScenarioRecorder&, RunControl&)>& body) {
+                            const std::function<void(std::uint8_t, FuzzedDataProvider&, ScenarioRecorder&)>& body) {
   SequenceResult result;
-  if (!has_version(data, size)) return result;
+  if (size == 0 || !(options.legacy_versions ? is_sequence_version(data[0]) : data[0] == kSequenceVersion)) return result;
   result.accepted = true;
+  result.version = data[0];
   FuzzedDataProvider input(data + 1, size - 1);
   ScenarioRecorder recorder(options.record_scenario);
   try {
     if (options.capture_failures) {
       const CaptureFailures capture;
-      body(input, recorder, control);
+      body(result.version, input, recorder);
     } else {
-      body(input, recorder, control);
+      body(result.version, input, recorder);
     }
-  } catch (const StopRun&) {
   } catch (const FailureError& e) {
     result.finding = e.finding();
     result.finding_line = recorder.line_of(e.finding().operation_index);

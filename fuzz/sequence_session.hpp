@@ -4,8 +4,9 @@
 //     per-tet volume cache, so that a tet killed but not reported breaks I9 in the full check);
 //   - under the combined strategy every request is resolved ("unresolved-combined");
 //   - a rolled back operation leaves the canonical hash as it was ("rollback-changed-mesh"),
-//     compared with the hash of the mesh re-created by running the same input up to just
-//     before the operation (no snapshot on the common path: it costs O(#T) per operation);
+//     compared with a copy of the mesh taken before the operation (a copy-assignment into the
+//     same buffers: O(#T) memcpy, less than the operation itself; re-running the input up to
+//     the operation instead made every rollback cost the whole prefix again);
 //   - the full check when asked (check lines) and at the end.
 // TETCUT_FUZZ_FAIL_AT=N in the environment makes operation N fail ("injected"): a test of what
 // reports failures, independent of any bug.
@@ -23,9 +24,6 @@
 
 namespace tetcut::fuzz {
 
-// Thrown by SequenceSession::begin() when RunControl::stop_before is reached.
-struct StopRun {};
-
 struct OperationOutcome {
   std::size_t index = 0;      // CheckedMesh's operation index
   bool rolled_back = false;
@@ -34,13 +32,11 @@ struct OperationOutcome {
 
 class SequenceSession {
  public:
-  // `hash_before(k)`: the canonical hash of the mesh just before operation k.
   // The Cutter starts with the default parameters but a per-operation tet budget of the
   // initial mesh's tets (params_with_budget): an operation over it is rolled back, and written
   // into the scenario as a comment, so that the scenario (which cannot set the budget) stays
   // equivalent.
-  SequenceSession(const BundledMesh& bundled, ScenarioRecorder& recorder, RunControl& control,
-                  std::function<std::uint64_t(std::size_t)> hash_before);
+  SequenceSession(const BundledMesh& bundled, ScenarioRecorder& recorder);
   static CutParams params_with_budget(const BundledMesh& bundled);
 
   CheckedMesh& checked() { return checked_; }
@@ -70,9 +66,8 @@ class SequenceSession {
   void grow_volumes();
 
   ScenarioRecorder& recorder_;
-  RunControl& control_;
-  std::function<std::uint64_t(std::size_t)> hash_before_;
   CheckedMesh checked_;
+  TetMesh before_;  // the mesh before the current Cutter operation, for the rollback check
   Cutter cutter_;
   std::vector<double> volume_;  // per tet id, of the live tets
   std::uint64_t unresolved_ = 0;
@@ -80,10 +75,10 @@ class SequenceSession {
   bool changed_since_full_check_ = false;
 };
 
-// Runs `body` as a sequence target does: the version byte, failures captured or not, the
-// recording, StopRun. `body(input, recorder, control)` decodes and runs the operations.
+// Runs `body` as a sequence target does: the version byte (is_sequence_version), failures
+// captured or not, the recording. `body(version, input, recorder)` decodes and runs the
+// operations.
 SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,
-                            RunControl& control,
-                            const std::function<void(FuzzedDataProvider&, ScenarioRecorder&, RunControl&)>& body);
+                            const std::function<void(std::uint8_t, FuzzedDataProvider&, ScenarioRecorder&)>& body);
 
 }  // namespace tetcut::fuzz

@@ -14,20 +14,31 @@
 #ifndef TETCUT_FUZZ_MESH_DIR
 #define TETCUT_FUZZ_MESH_DIR "corpus/meshes"
 #endif
+#ifndef TETCUT_FUZZ_SMALL_MESH_DIR
+#define TETCUT_FUZZ_SMALL_MESH_DIR "corpus/fuzz/meshes"
+#endif
 
 namespace tetcut::fuzz {
 
-std::string sequence_mesh_dir() {
-  const char* env = std::getenv("TETCUT_MESH_DIR");
+namespace {
+
+// $env when set, else `built_in` when it is a folder, else tetcut_meshes/ next to the executable:
+// OSS-Fuzz runs the fuzzers away from the source tree, and fuzz/oss_fuzz_build.sh puts every
+// mesh there.
+std::string mesh_dir(const char* env_name, const char* built_in) {
+  const char* env = std::getenv(env_name);
   if (env != nullptr && *env != '\0') return env;
   std::error_code ec;
-  if (std::filesystem::is_directory(TETCUT_FUZZ_MESH_DIR, ec)) return TETCUT_FUZZ_MESH_DIR;
-  // OSS-Fuzz runs the fuzzers away from the source tree: fuzz/oss_fuzz_build.sh puts the meshes
-  // next to them.
+  if (std::filesystem::is_directory(built_in, ec)) return built_in;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) return (exe.parent_path() / "tetcut_meshes").string();
-  return TETCUT_FUZZ_MESH_DIR;
+  return built_in;
 }
+
+}  // namespace
+
+std::string sequence_mesh_dir() { return mesh_dir("TETCUT_MESH_DIR", TETCUT_FUZZ_MESH_DIR); }
+std::string fuzz_mesh_dir() { return mesh_dir("TETCUT_FUZZ_MESH_DIR", TETCUT_FUZZ_SMALL_MESH_DIR); }
 
 namespace {
 
@@ -45,13 +56,16 @@ double mean_edge_length(const TetMesh& mesh) {
   return n > 0 ? sum / static_cast<double>(n) : 1.0;
 }
 
-std::unique_ptr<BundledMesh> load(std::size_t index) {
+std::unique_ptr<BundledMesh> load(std::uint8_t version, std::size_t index) {
   auto out = std::make_unique<BundledMesh>();
-  out->path = sequence_mesh_dir() + "/" + std::string(kSequenceMeshes[index]);
+  const bool bundled = version == kSequenceVersionBundled;
+  out->path = (bundled ? sequence_mesh_dir() : fuzz_mesh_dir()) + "/" +
+              std::string(bundled ? kBundledMeshes[index] : kFuzzMeshes[index]);
   ReadResult read = read_mesh(out->path);
   if (!read.mesh)
     fail("bundled-mesh", 0, "load", out->path + ": " + (read.error ? read.error->message() : "unreadable") +
-                                        " (set TETCUT_MESH_DIR to the folder of the bundled meshes)");
+                                        (bundled ? " (set TETCUT_MESH_DIR to the folder of the bundled meshes)"
+                                                  : " (set TETCUT_FUZZ_MESH_DIR to the folder of the fuzz meshes)"));
   BuildResult built = build_mesh(*read.mesh);
   if (!built.ok()) fail("bundled-mesh", 0, "load", out->path + ": not a valid mesh: " + built.problems.front().message);
   out->mesh = std::move(*built.mesh);
@@ -62,13 +76,19 @@ std::unique_ptr<BundledMesh> load(std::size_t index) {
 
 }  // namespace
 
-const BundledMesh& bundled_mesh(std::size_t index) {
-  static std::unique_ptr<BundledMesh> cache[kSequenceMeshes.size()];
+const BundledMesh& sequence_mesh(std::uint8_t version, std::size_t index) {
+  static std::unique_ptr<BundledMesh> cache[2][kSequenceMeshCount];
   static std::mutex mutex;
   const std::lock_guard<std::mutex> lock(mutex);
-  index %= kSequenceMeshes.size();
-  if (!cache[index]) cache[index] = load(index);
-  return *cache[index];
+  index %= kSequenceMeshCount;
+  std::unique_ptr<BundledMesh>& slot = cache[version == kSequenceVersionBundled ? 0 : 1][index];
+  if (!slot) slot = load(version, index);
+  return *slot;
+}
+
+bool legacy_versions_from_env() {
+  const char* env = std::getenv("TETCUT_FUZZ_CURRENT_VERSION_ONLY");
+  return env == nullptr || *env == '\0' || std::string_view(env) == "0";
 }
 
 std::string format_number(double x) {

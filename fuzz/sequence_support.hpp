@@ -13,7 +13,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -27,8 +26,22 @@
 
 namespace tetcut::fuzz {
 
-// The bundled meshes (corpus/meshes/), chosen by one value of the input.
-inline constexpr std::array<std::string_view, 3> kSequenceMeshes = {"cylinder.msh", "sheet.msh", "liver-coarse.msh"};
+// The sequence targets' input versions (the first byte; mixed_ops and checker_differential keep
+// kInputVersion). What a version means never changes, so that every stored input replays as it
+// was found:
+//   1  the bundled meshes of corpus/meshes (3,350-4,100 tets), up to 24 operations;
+//   2  the small fuzz meshes of corpus/fuzz/meshes (238-395 tets, made by the same generators),
+//      fewer operations: what the fuzzers run now. On a bundled mesh the O(#T) parts of an input
+//      (copying the mesh, the Cutter's index, the full check) were nine tenths of its time.
+inline constexpr std::uint8_t kSequenceVersionBundled = 1;
+inline constexpr std::uint8_t kSequenceVersion = 2;
+inline bool is_sequence_version(std::uint8_t v) { return v == kSequenceVersionBundled || v == kSequenceVersion; }
+
+// The meshes an input chooses from with one value, per version.
+inline constexpr std::array<std::string_view, 3> kBundledMeshes = {"cylinder.msh", "sheet.msh", "liver-coarse.msh"};
+inline constexpr std::array<std::string_view, 3> kFuzzMeshes = {"cylinder-small.msh", "sheet-small.msh",
+                                                                "liver-small.msh"};
+inline constexpr std::size_t kSequenceMeshCount = 3;
 
 struct BundledMesh {
   std::string path;        // absolute
@@ -40,9 +53,13 @@ struct BundledMesh {
 // The folder of the bundled meshes: $TETCUT_MESH_DIR when set, else corpus/meshes of the source
 // tree the harness was built from, else tetcut_meshes/ next to the executable (OSS-Fuzz).
 std::string sequence_mesh_dir();
-// kSequenceMeshes[index], read and built once per process (then copied per input). An unreadable
-// or invalid mesh is a harness failure ("bundled-mesh").
-const BundledMesh& bundled_mesh(std::size_t index);
+// The folder of the small fuzz meshes: $TETCUT_FUZZ_MESH_DIR when set, else corpus/fuzz/meshes
+// of the source tree, else tetcut_meshes/ next to the executable (OSS-Fuzz).
+std::string fuzz_mesh_dir();
+// Mesh `index` (mod kSequenceMeshCount) of input version `version`, read and built once per
+// process, then copied per input. An unreadable or invalid mesh is a harness failure
+// ("bundled-mesh").
+const BundledMesh& sequence_mesh(std::uint8_t version, std::size_t index);
 
 // Shortest text that reads back as the same double ("0.1", "2.5e-05"); "X,Y,Z" for points.
 std::string format_number(double x);
@@ -76,21 +93,23 @@ class ScenarioRecorder {
 struct SequenceOptions {
   bool record_scenario = false;   // fill SequenceResult::scenario
   bool capture_failures = false;  // a finding becomes SequenceResult::finding instead of abort()
+  // false: only kSequenceVersion is accepted. ci/fuzz-nightly fuzzes so (legacy_versions_from_env):
+  // a version 1 input is an order of magnitude slower (its mesh is ten times larger), and
+  // libFuzzer gave most of its time to the version 1 seeds and their mutants; ctest and
+  // `tetcut replay` still run every version.
+  bool legacy_versions = true;
 };
 
+// SequenceOptions::legacy_versions for the fuzz targets: false when
+// TETCUT_FUZZ_CURRENT_VERSION_ONLY is set to anything but "" or "0".
+bool legacy_versions_from_env();
+
 struct SequenceResult {
-  bool accepted = false;          // false: not this target's version byte (nothing ran)
+  bool accepted = false;          // false: not one of this target's version bytes (nothing ran)
+  std::uint8_t version = 0;       // the input's version byte, when accepted
   std::string scenario;           // when recorded: up to the failing operation when there is one
   std::optional<Finding> finding; // when captured
   std::uint32_t finding_line = 0; // the scenario line of the failing operation (0: none)
-};
-
-// Internal to the targets: how far to run, to re-create the mesh as it was before a rolled back
-// operation (sequence_session.hpp).
-struct RunControl {
-  std::size_t stop_before = std::numeric_limits<std::size_t>::max();  // operation index
-  bool stopped = false;
-  std::uint64_t hash_at_stop = 0;
 };
 
 // One sequence target, for the command line and the tests.
@@ -98,6 +117,7 @@ struct SequenceTarget {
   std::string_view name;
   SequenceResult (*run)(const std::uint8_t* data, std::size_t size, const SequenceOptions& options);
   std::string (*decode_to_scenario)(const std::uint8_t* data, std::size_t size);
+  std::string_view versions;  // the first bytes it accepts, for messages: "1 or 2"
 };
 
 std::span<const SequenceTarget> sequence_targets();

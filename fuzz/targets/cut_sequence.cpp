@@ -7,6 +7,7 @@
 #include "cut_sequence.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  tetcut::fuzz::cut_sequence::run(data, size, tetcut::fuzz::SequenceOptions{});
+  static const tetcut::fuzz::SequenceOptions options{.legacy_versions = tetcut::fuzz::legacy_versions_from_env()};
+  tetcut::fuzz::cut_sequence::run(data, size, options);
   return 0;
 }

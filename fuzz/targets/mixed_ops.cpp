@@ -1,10 +1,12 @@
 // Fuzz target mixed_ops: a small box mesh, then a sequence of operations chosen by the input —
 // edge splits (templates or bisection), refinement around a ball, removals the paper's rule says
 // are safe, compaction, attribute channels — with the local checker after every operation and
-// the full check every few. Any violated invariant aborts, naming it and the operation.
+// the full check every few (with the whole-mesh queries: boundary faces, vertex neighbours,
+// boundary normals, to_raw). Any violated invariant aborts, naming it and the operation.
 //
 // Input: version byte, box (3 cell counts, 3 side lengths), then per operation an opcode and its
 // arguments, decoded and clamped by mesh_edits.hpp. The sequence ends with the input.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -17,6 +19,7 @@
 #include "fuzz_failure.hpp"
 #include "mesh_edits.hpp"
 #include "tetcut/attributes.hpp"
+#include "tetcut/canonical_hash.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/edge_split.hpp"
 #include "tetcut/mesh_builder.hpp"
@@ -210,6 +213,61 @@ void add_channel(CheckedMesh& checked, FuzzedDataProvider& input) {
   checked.end({}, {}, 0.0);
 }
 
+// The whole-mesh queries no operation above relies on, against the raw tets, with the full
+// check: boundary_faces() lists exactly the faces the per-tet counts call boundary,
+// vertex_neighbours() the vertices sharing an edge with v, boundary_normal() is zero exactly at
+// interior vertices and finite, and to_raw() builds back into the same mesh (canonical hash).
+void full_check(CheckedMesh& checked) {
+  checked.full_check();
+  const TetMesh& mesh = checked.mesh();
+  std::vector<FaceRef> faces;
+  mesh.boundary_faces(faces);
+  std::uint64_t counted = 0;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
+    if (mesh.is_live(TetId{t})) counted += static_cast<std::uint64_t>(mesh.boundary_face_count(TetId{t}));
+  checked.require(faces.size() == counted, "mesh-queries",
+                  "boundary_faces() lists " + std::to_string(faces.size()) + " faces, the tets count " + std::to_string(counted));
+  for (const FaceRef& f : faces)
+    checked.require(mesh.is_live(f.tet) && mesh.is_boundary_face(f.tet, f.face), "mesh-queries",
+                    "boundary_faces() lists face " + std::to_string(f.face) + " of tet " + std::to_string(f.tet.value) +
+                        ", which is not a live boundary face");
+
+  std::vector<std::vector<VertId>> expected(mesh.vertex_capacity());
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    if (!mesh.is_live(TetId{t})) continue;
+    const auto v = mesh.tet(TetId{t});
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        if (a != b) expected[v[a].value].push_back(v[b]);
+  }
+  std::vector<VertId> got;
+  std::vector<TetId> scratch;
+  for (std::uint32_t i = 0; i < mesh.vertex_capacity(); ++i) {
+    const VertId v{i};
+    if (!mesh.is_live(v)) continue;
+    std::vector<VertId>& want = expected[i];
+    std::sort(want.begin(), want.end());
+    want.erase(std::unique(want.begin(), want.end()), want.end());
+    mesh.vertex_neighbours(v, got, scratch);
+    std::sort(got.begin(), got.end());
+    checked.require(got == want, "mesh-queries",
+                    "vertex_neighbours(" + std::to_string(i) + ") gives " + std::to_string(got.size()) +
+                        " vertices, the tets around it have " + std::to_string(want.size()));
+    const Vec3 n = mesh.boundary_normal(v, scratch);
+    checked.require(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z), "mesh-queries",
+                    "boundary_normal(" + std::to_string(i) + ") is not finite");
+    if (!mesh.is_boundary_vertex(v))
+      checked.require(n.x == 0.0 && n.y == 0.0 && n.z == 0.0, "mesh-queries",
+                      "boundary_normal(" + std::to_string(i) + ") of an interior vertex is not zero");
+  }
+
+  BuildResult rebuilt = build_mesh(mesh.to_raw());
+  checked.require(rebuilt.ok(), "mesh-queries",
+                  "to_raw() does not build: " + (rebuilt.problems.empty() ? std::string("?") : rebuilt.problems.front().message));
+  checked.require(canonical_hash(*rebuilt.mesh) == canonical_hash(mesh), "mesh-queries",
+                  "to_raw() builds a different mesh (canonical hash)");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -229,10 +287,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case Op::kRemove: remove(checked, input); break;
       case Op::kCompact: compact(checked); break;
       case Op::kAddChannel: add_channel(checked, input); break;
-      case Op::kFullCheck: checked.end({}, {}, 0.0); checked.full_check(); break;
+      case Op::kFullCheck: checked.end({}, {}, 0.0); full_check(checked); break;
     }
-    if (checked.operation_index() % kFullCheckEvery == 0) checked.full_check();
+    if (checked.operation_index() % kFullCheckEvery == 0) full_check(checked);
   }
-  checked.full_check();
+  full_check(checked);
   return 0;
 }

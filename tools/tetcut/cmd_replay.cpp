@@ -82,7 +82,7 @@ int cmd_replay(Args args, std::ostream& out, std::ostream& err) {
   }
   if (!result.accepted) {
     err << "tetcut: " << input_path << ":1: not a " << target->name << " input (the first byte must be the input version "
-        << static_cast<int>(fuzz::kInputVersion) << ")\n";
+        << target->versions << ")\n";
     return kExitBadInput;
   }
   out << result.scenario;
