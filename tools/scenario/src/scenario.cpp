@@ -9,6 +9,7 @@
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
+#include "tetcut/pieces.hpp"
 
 namespace tetcut::scenario {
 namespace {
@@ -72,30 +73,6 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
   return std::nullopt;
 }
 
-// Face-connected pieces of the mesh: O(#T), for an expectation, never on the cut path.
-std::uint64_t components(const TetMesh& mesh) {
-  std::vector<std::uint8_t> seen(mesh.tet_capacity(), 0);
-  std::vector<TetId> stack;
-  std::uint64_t pieces = 0;
-  for (std::uint32_t s = 0; s < mesh.tet_capacity(); ++s) {
-    if (!mesh.is_live(TetId{s}) || seen[s]) continue;
-    ++pieces;
-    seen[s] = 1;
-    stack.assign(1, TetId{s});
-    while (!stack.empty()) {
-      const TetId t = stack.back();
-      stack.pop_back();
-      for (int f = 0; f < 4; ++f) {
-        const FaceRef n = mesh.neighbour(t, f);
-        if (n.valid() && !seen[n.tet.value]) {
-          seen[n.tet.value] = 1;
-          stack.push_back(n.tet);
-        }
-      }
-    }
-  }
-  return pieces;
-}
 
 }  // namespace
 
@@ -310,7 +287,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         }
         break;
       case OpKind::kExpectComponents: {
-        const std::uint64_t pieces = components(mesh);
+        const std::uint64_t pieces = face_connected_pieces(mesh).count;
         if (pieces != op.count) {
           stop(op, 1, "expected " + std::to_string(op.count) + " connected pieces, got " + std::to_string(pieces));
           return result;

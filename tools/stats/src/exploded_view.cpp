@@ -4,42 +4,14 @@
 #include <cmath>
 #include <cstdint>
 
+#include "tetcut/pieces.hpp"
+
 namespace tetcut::stats {
 
-namespace {
-
-constexpr std::uint32_t kUnlabelled = 0xFFFFFFFFu;
-
-// Face-connected pieces, labelled 0, 1, ... in order of their lowest tet id.
-std::vector<std::uint32_t> label_pieces(const TetMesh& mesh, std::uint32_t& count) {
-  std::vector<std::uint32_t> label(mesh.tet_capacity(), kUnlabelled);
-  std::vector<TetId> stack;
-  count = 0;
-  for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
-    if (!mesh.is_live(TetId{i}) || label[i] != kUnlabelled) continue;
-    label[i] = count;
-    stack.assign(1, TetId{i});
-    while (!stack.empty()) {
-      const TetId t = stack.back();
-      stack.pop_back();
-      for (int f = 0; f < 4; ++f) {
-        const FaceRef n = mesh.neighbour(t, f);
-        if (n.valid() && label[n.tet.value] == kUnlabelled) {
-          label[n.tet.value] = count;
-          stack.push_back(n.tet);
-        }
-      }
-    }
-    ++count;
-  }
-  return label;
-}
-
-}  // namespace
-
 void explode_pieces(const TetMesh& mesh, std::vector<render::SurfaceTriangle>& triangles, double gap) {
-  std::uint32_t pieces = 0;
-  const std::vector<std::uint32_t> label = label_pieces(mesh, pieces);
+  const Pieces found = face_connected_pieces(mesh);
+  const std::uint32_t pieces = found.count;
+  const std::vector<std::uint32_t>& label = found.of_tet;
   if (pieces < 2) return;
 
   // Each triangle's piece, walking the faces in boundary_surface()'s order.
