@@ -1,5 +1,6 @@
 #include "stats_json.hpp"
 
+#include <initializer_list>
 #include <sstream>
 
 #include "json_writer.hpp"
@@ -25,6 +26,33 @@ void removal_counts(JsonWriter& w, const RemovalReport& r) {
   w.field("unresolved", r.unresolved);
   w.field("tets_removed", r.tets_removed);
   w.field("tets_created", r.tets_created);
+  w.end_object();
+}
+
+// One figure of a table row: ours, the paper's, and whether the difference is meaningful.
+struct Figure {
+  const char* key;
+  double ours, paper;
+  bool diff = true;
+};
+
+// Our figures as fields, then objects "paper" (the paper's) and "diff" (ours minus the paper's).
+void ours_paper_diff(JsonWriter& w, std::initializer_list<Figure> figures) {
+  for (const Figure& f : figures) {
+    if (f.diff) w.field(f.key, f.ours);
+    else w.field(f.key, static_cast<std::uint64_t>(f.ours));
+  }
+  w.key("paper");
+  w.begin_object();
+  for (const Figure& f : figures) {
+    if (f.diff) w.field(f.key, f.paper);
+    else w.field(f.key, static_cast<std::uint64_t>(f.paper));
+  }
+  w.end_object();
+  w.key("diff");
+  w.begin_object();
+  for (const Figure& f : figures)
+    if (f.diff) w.field(f.key, f.ours - f.paper);
   w.end_object();
 }
 
@@ -58,23 +86,10 @@ std::string stats_json(const stats::StatsReport& report) {
     w.field("scenario", m.mesh.scenario);
     w.field("tets", m.tets_before);
     w.field("cuts", m.cuts);
-    w.field("operations", m.table1.operations);
-    w.field("removable_pct", m.table1.removable_pct);
-    w.field("vertex_pct", m.table1.vertex_pct);
-    w.field("edge_pct", m.table1.edge_pct);
-    w.key("paper");
-    w.begin_object();
-    w.field("operations", p.operations);
-    w.field("removable_pct", p.removable_pct);
-    w.field("vertex_pct", p.vertex_pct);
-    w.field("edge_pct", p.edge_pct);
-    w.end_object();
-    w.key("diff");
-    w.begin_object();
-    w.field("removable_pct", m.table1.removable_pct - p.removable_pct);
-    w.field("vertex_pct", m.table1.vertex_pct - p.vertex_pct);
-    w.field("edge_pct", m.table1.edge_pct - p.edge_pct);
-    w.end_object();
+    ours_paper_diff(w, {{"operations", static_cast<double>(m.table1.operations), static_cast<double>(p.operations), false},
+                        {"removable_pct", m.table1.removable_pct, p.removable_pct},
+                        {"vertex_pct", m.table1.vertex_pct, p.vertex_pct},
+                        {"edge_pct", m.table1.edge_pct, p.edge_pct}});
     w.field("ok", m.ok);
     if (!m.ok) w.field("error", m.error);
     w.end_object();
@@ -89,31 +104,13 @@ std::string stats_json(const stats::StatsReport& report) {
     w.begin_object();
     w.field("mesh", m.mesh.name);
     w.field("paper_mesh", m.mesh.number);
-    w.field("vertex_unresolved_pct", o.vertex_unresolved_pct);
-    w.field("vertex_cardinality", o.vertex_cardinality);
-    w.field("edge_unresolved_pct", o.edge_unresolved_pct);
-    w.field("edge_cardinality", o.edge_cardinality);
-    w.field("global_unresolved_pct", o.global_unresolved_pct);
-    w.field("global_cardinality", o.global_cardinality);
+    ours_paper_diff(w, {{"vertex_unresolved_pct", o.vertex_unresolved_pct, p.vertex_unresolved_pct},
+                        {"vertex_cardinality", o.vertex_cardinality, p.vertex_cardinality},
+                        {"edge_unresolved_pct", o.edge_unresolved_pct, p.edge_unresolved_pct},
+                        {"edge_cardinality", o.edge_cardinality, p.edge_cardinality},
+                        {"global_unresolved_pct", o.global_unresolved_pct, p.global_unresolved_pct},
+                        {"global_cardinality", o.global_cardinality, p.global_cardinality}});
     w.field("combined_unresolved_pct", o.combined_unresolved_pct);
-    w.key("paper");
-    w.begin_object();
-    w.field("vertex_unresolved_pct", p.vertex_unresolved_pct);
-    w.field("vertex_cardinality", p.vertex_cardinality);
-    w.field("edge_unresolved_pct", p.edge_unresolved_pct);
-    w.field("edge_cardinality", p.edge_cardinality);
-    w.field("global_unresolved_pct", p.global_unresolved_pct);
-    w.field("global_cardinality", p.global_cardinality);
-    w.end_object();
-    w.key("diff");
-    w.begin_object();
-    w.field("vertex_unresolved_pct", o.vertex_unresolved_pct - p.vertex_unresolved_pct);
-    w.field("vertex_cardinality", o.vertex_cardinality - p.vertex_cardinality);
-    w.field("edge_unresolved_pct", o.edge_unresolved_pct - p.edge_unresolved_pct);
-    w.field("edge_cardinality", o.edge_cardinality - p.edge_cardinality);
-    w.field("global_unresolved_pct", o.global_unresolved_pct - p.global_unresolved_pct);
-    w.field("global_cardinality", o.global_cardinality - p.global_cardinality);
-    w.end_object();
     removal_counts(w, m.removal);
     w.end_object();
   }

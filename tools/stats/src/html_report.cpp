@@ -2,26 +2,11 @@
 
 #include <vector>
 
+#include "tetcut/render/svg_writer.hpp"
 #include "tetcut/stats/report_pictures.hpp"
 #include "tetcut/stats/text_report.hpp"
 
 namespace tetcut::stats {
-
-std::string html_escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 namespace {
 
@@ -39,8 +24,8 @@ code { background: #f4f4f4; padding: 0.1em 0.3em; }
 )";
 
 std::string cell(const std::string& text, const char* cls = nullptr) {
-  return cls ? "<td class=\"" + std::string(cls) + "\">" + html_escape(text) + "</td>"
-             : "<td>" + html_escape(text) + "</td>";
+  return cls ? "<td class=\"" + std::string(cls) + "\">" + render::xml_escape(text) + "</td>"
+             : "<td>" + render::xml_escape(text) + "</td>";
 }
 
 // Ours, the paper's, the difference: three cells.
@@ -85,7 +70,7 @@ std::string table2_html(const StatsReport& report) {
   h += "</table>\n";
   for (const MeshStats& m : report.meshes)
     if (!m.ok)
-      h += "<p class=\"warning\">" + html_escape(mesh_label(m.mesh) + ": the scenario stopped early: " + m.error) + "</p>\n";
+      h += "<p class=\"warning\">" + render::xml_escape(mesh_label(m.mesh) + ": the scenario stopped early: " + m.error) + "</p>\n";
   return h;
 }
 
@@ -103,21 +88,21 @@ std::string strategies_html(const StatsReport& report) {
   }
   h += "</table>\n";
   for (const StrategyRow& r : report.strategies)
-    if (!r.ok) h += "<p class=\"warning\">" + html_escape(r.name + ": stopped early: " + r.error) + "</p>\n";
+    if (!r.ok) h += "<p class=\"warning\">" + render::xml_escape(r.name + ": stopped early: " + r.error) + "</p>\n";
   return h;
 }
 
 std::string resection_html(const ResectionStats& resection) {
   const CauteryRun& run = resection.run;
   std::string h = "<h2>The liver resection</h2>\n<p>" +
-                  html_escape(resection.scenario + ": " + std::to_string(run.result.cuts.size()) + " cuts, " +
+                  render::xml_escape(resection.scenario + ": " + std::to_string(run.result.cuts.size()) + " cuts, " +
                               std::to_string(run.tets_before) + " tets before, " + std::to_string(run.result.tets) +
                               " after; " + std::to_string(run.result.removal.requested) +
                               " removal operations, " + std::to_string(run.result.removal.unresolved) +
                               " unresolved.") +
                   "</p>\n<div class=\"figures\">\n";
   for (const Picture& p : resection_pictures(resection))
-    h += "<figure>" + p.svg + "<figcaption>" + html_escape(p.caption) + "</figcaption></figure>\n";
+    h += "<figure>" + p.svg + "<figcaption>" + render::xml_escape(p.caption) + "</figcaption></figure>\n";
   return h + "</div>\n";
 }
 
@@ -133,7 +118,7 @@ std::string html_report(const StatsReport& report, const std::string& command) {
        "(Table 2). Here are our figures on five meshes of the same kinds, each cut by the cautery "
        "scenario in <code>corpus/scenarios/paper/</code>, with the paper's beside them (grey) and the "
        "difference (italic). Reproduce with <code>" +
-       html_escape(command) + "</code>.</p>\n";
+       render::xml_escape(command) + "</code>.</p>\n";
   h += "<h2>Table 1. Singularities met when removing a surface tet</h2>\n" + table1_html(report);
   h += "<h2>Table 2. The neighbour strategy</h2>\n"
        "<p>% of singularities the neighbour search (paper 3.5) did not resolve, and the mean number of "
@@ -141,7 +126,7 @@ std::string html_report(const StatsReport& report, const std::string& command) {
        "the combined strategy (3.7), whose optimized refinement resolved the rest: its own unresolved share "
        "is the last column.</p>\n" +
        table2_html(report);
-  h += "<h2>Strategies on the " + html_escape(report.comparison_mesh) + " scenario</h2>\n"
+  h += "<h2>Strategies on the " + render::xml_escape(report.comparison_mesh) + " scenario</h2>\n"
        "<p>basic (3.4), neighbours (3.5), combined (3.7); the refinement loop (3.2) splitting with the "
        "ten templates or by sequential bisection. Quality: radius ratio of the mesh after the scenario.</p>\n" +
        strategies_html(report);

@@ -17,7 +17,4 @@ namespace tetcut::stats {
 // `command` is printed as the way to reproduce the page.
 std::string html_report(const StatsReport& report, const std::string& command);
 
-// Text safe inside HTML elements and attribute values.
-std::string html_escape(const std::string& text);
-
 }  // namespace tetcut::stats
