@@ -188,15 +188,29 @@ void Cutter::remove_selected(CutReport& report) {
   // Counted per request here: the Remover's running total of unresolved tets goes down when a
   // tet left unresolved by an earlier cut goes now, so its difference can be negative.
   std::uint32_t unresolved = 0;
-  for (TetId t : removal_) {
-    if (!mesh_.is_live(t)) continue;
-    if (remover_.remove(mesh_, t, &log_).outcome == RemovalOutcome::kUnresolved) ++unresolved;
-    if (log_.created.size() > params_.max_tets_created) {
-      report.ok = false;
-      report.failure = "the removal would exceed the per-cut tet budget";
-      return;
+  tried_.assign(removal_.size(), 0);
+  auto request = [&](std::size_t i) {
+    tried_[i] = 1;
+    if (remover_.remove(mesh_, removal_[i], &log_).outcome == RemovalOutcome::kUnresolved) ++unresolved;
+    if (log_.created.size() <= params_.max_tets_created) return true;
+    report.ok = false;
+    report.failure = "the removal would exceed the per-cut tet budget";
+    return false;
+  };
+  // Outside in, as the cautery burns: in rounds, every selected tet that is on the surface now,
+  // until a round finds none; then the rest (a tool inside the mesh) in id order. Taking a tet
+  // before the tets between it and the surface would open a cavity under a thin roof, and the
+  // paper's statistics are about "removing a tetrahedron on the mesh surface" (3.3, Table 1).
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (std::size_t i = 0; i < removal_.size(); ++i) {
+      if (tried_[i] || !mesh_.is_live(removal_[i]) || mesh_.boundary_face_count(removal_[i]) == 0) continue;
+      progress = true;
+      if (!request(i)) return;
     }
   }
+  for (std::size_t i = 0; i < removal_.size(); ++i)
+    if (!tried_[i] && mesh_.is_live(removal_[i]) && !request(i)) return;
   const RemovalReport& after = remover_.report();
   auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<std::uint32_t>(a - b); };
   report.tets_removed = delta(after.tets_removed, before.tets_removed);

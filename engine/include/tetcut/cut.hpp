@@ -7,7 +7,8 @@
 //            longer than D_ref (paper 3.3). "Inside" means: the tet's centroid lies in the
 //            closed ball. A tet that only grazes the ball stays; the cavity then has the
 //            tool's size to within one small tet.
-//   remove   one by one in increasing id order, with the chosen strategy (removal.hpp)
+//   remove   one by one with the chosen strategy (removal.hpp), outside in: in rounds, the
+//            selected tets on the surface now (increasing id), then any left (a tool inside)
 //
 // Atomic: the whole cut runs in a mesh transaction; if it cannot complete (a split refused
 // for degeneracy, the per-cut tet budget exceeded) it is rolled back, the mesh is bit-identical
@@ -97,7 +98,7 @@ class Cutter {
   [[nodiscard]] const std::vector<TetId>& last_created() const { return net_created_; }
 
  private:
-  // Removes the tets of removal_ in order, then commits and fills the report's counts.
+  // Removes the tets of removal_, those on the surface first (outside in), and fills the counts.
   void remove_selected(CutReport& report);
   void finish(CutReport& report, ChangeLog* log);
 
@@ -108,6 +109,7 @@ class Cutter {
   Remover remover_;
   ChangeLog log_;
   std::vector<TetId> hit_, region_, removal_, net_removed_, net_created_;
+  std::vector<std::uint8_t> tried_;  // per tet of removal_: already requested in this cut
 };
 
 }  // namespace tetcut
