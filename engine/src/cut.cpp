@@ -133,6 +133,7 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
 
   // Select T_removal (paper 3.3): inside the tool (centroid in the ball), no edge over D_ref.
   removal_.clear();
+  removal_verts_.clear();
   for (TetId t : region_) {
     if (!mesh_.is_live(t)) continue;
     const auto v = mesh_.tet(t);
@@ -142,7 +143,10 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
     bool short_edges = true;
     for (int e = 0; e < 6 && short_edges; ++e)
       short_edges = norm(mesh_.position(v[kEdgeVerts[e][1]]) - mesh_.position(v[kEdgeVerts[e][0]])) <= d_ref;
-    if (short_edges) removal_.push_back(t);
+    if (short_edges) {
+      removal_.push_back(t);
+      removal_verts_.push_back(v);
+    }
   }
   report.requested = static_cast<std::uint32_t>(removal_.size());
   const Clock::time_point t3 = Clock::now();
@@ -171,6 +175,7 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
   log_.clear();
   mesh_.begin_transaction();
   removal_.assign(1, t);
+  removal_verts_.assign(1, mesh_.tet(t));
   report.requested = 1;
   remove_selected(report);
   if (!report.ok) {
@@ -189,6 +194,10 @@ void Cutter::remove_selected(CutReport& report) {
   // tet left unresolved by an earlier cut goes now, so its difference can be negative.
   std::uint32_t unresolved = 0;
   tried_.assign(removal_.size(), 0);
+  // An id whose tet an earlier request removed may now name a tet a refinement made elsewhere.
+  auto selected = [&](std::size_t i) {
+    return mesh_.is_live(removal_[i]) && mesh_.tet(removal_[i]) == removal_verts_[i];
+  };
   auto request = [&](std::size_t i) {
     tried_[i] = 1;
     if (remover_.remove(mesh_, removal_[i], &log_).outcome == RemovalOutcome::kUnresolved) ++unresolved;
@@ -204,13 +213,13 @@ void Cutter::remove_selected(CutReport& report) {
   for (bool progress = true; progress;) {
     progress = false;
     for (std::size_t i = 0; i < removal_.size(); ++i) {
-      if (tried_[i] || !mesh_.is_live(removal_[i]) || mesh_.boundary_face_count(removal_[i]) == 0) continue;
+      if (tried_[i] || !selected(i) || mesh_.boundary_face_count(removal_[i]) == 0) continue;
       progress = true;
       if (!request(i)) return;
     }
   }
   for (std::size_t i = 0; i < removal_.size(); ++i)
-    if (!tried_[i] && mesh_.is_live(removal_[i]) && !request(i)) return;
+    if (!tried_[i] && selected(i) && !request(i)) return;
   const RemovalReport& after = remover_.report();
   auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<std::uint32_t>(a - b); };
   report.tets_removed = delta(after.tets_removed, before.tets_removed);

@@ -109,6 +109,7 @@ class Cutter {
   Remover remover_;
   ChangeLog log_;
   std::vector<TetId> hit_, region_, removal_, net_removed_, net_created_;
+  std::vector<TetMesh::TetVerts> removal_verts_;  // per tet of removal_: its vertices when selected
   std::vector<std::uint8_t> tried_;  // per tet of removal_: already requested in this cut
 };
 
