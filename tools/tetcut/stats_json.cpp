@@ -131,13 +131,10 @@ std::string stats_json(const stats::StatsReport& report) {
     w.field("removed_per_request", r.removed_per_request);
     w.field("unresolved", r.unresolved);
     w.field("ok", r.ok);
-    if (r.ok) {
-      w.field("tets_after", r.tets_after);
-      w.field("worst_radius_ratio", r.worst_radius_ratio);
-      w.field("mean_radius_ratio", r.mean_radius_ratio);
-    } else {
-      w.field("error", r.error);
-    }
+    if (!r.ok) w.field("error", r.error);
+    w.field("tets_after", r.tets_after);  // at the stop when !ok
+    w.field("worst_radius_ratio", r.worst_radius_ratio);
+    w.field("mean_radius_ratio", r.mean_radius_ratio);
     w.field("p50_us", r.p50_us);
     w.field("p99_us", r.p99_us);
     w.end_object();

@@ -173,6 +173,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     result.error = scenario.name + ":" + std::to_string(op.line) + ": " + why;
     result.tets = mesh.num_tets();
     if (cutter) result.removal += cutter->removal_report();
+    if (mesh_out) *mesh_out = std::move(mesh);  // every caller returns right after
   };
   auto violations = [](const invariants::CheckReport& r) {
     std::string s;
@@ -180,8 +181,13 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
       s += std::string(s.empty() ? "" : "; ") + invariants::id_string(v.id) + " " + invariants::description(v.id) + ": " + v.detail;
     return s;
   };
-  // After every mutating operation: the local check (default), or the full one.
+  // After every mutating operation: the growth guard, then the local check (or none).
   auto after = [&](const Op& op) {
+    if (options.max_tets != 0 && mesh.num_tets() > options.max_tets) {
+      stop(op, 1, "the mesh grew past " + std::to_string(options.max_tets) + " tets (" +
+                       std::to_string(mesh.num_tets()) + ")");
+      return false;
+    }
     if (options.check == CheckMode::kNone || !cutter) return true;
     if (options.check == CheckMode::kEvery) {
       const invariants::CheckReport r = local->after_operation(mesh, cutter->last_removed(), cutter->last_created());

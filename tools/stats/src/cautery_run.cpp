@@ -65,6 +65,7 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   scenario::RunOptions run_options;
   run_options.check = options.check_every_cut ? scenario::CheckMode::kEvery : scenario::CheckMode::kEnd;
   run_options.initial_params = params;
+  run_options.max_tets = static_cast<std::uint64_t>(options.max_growth) * run.tets_before;
   TetMesh after;
   run.result = scenario::run(*parsed.scenario, run_options, &after);
   if (run.result.exit_code == 2) {  // unusable input, not a finding
@@ -73,11 +74,11 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   }
   run.cut_us.reserve(run.result.cuts.size());
   for (const scenario::CutRecord& c : run.result.cuts) run.cut_us.push_back(c.report.time.total_us);
-  // A run that stopped early leaves no mesh behind: its "after" is unknown.
-  if (run.result.ok) run.quality_after = invariants::check_mesh(after).quality;
+  // A run that stopped early leaves its mesh as it was then: "after" is at the stop.
+  run.quality_after = invariants::check_mesh(after).quality;
   if (options.keep_meshes) {
     run.mesh_before = std::move(before);
-    if (run.result.ok) run.mesh_after = std::move(after);
+    run.mesh_after = std::move(after);
   }
   out.run = std::move(run);
   return out;

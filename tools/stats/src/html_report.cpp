@@ -82,13 +82,13 @@ std::string strategies_html(const StatsReport& report) {
     h += "<tr>" + cell(r.name) + cell(std::to_string(r.cuts)) + cell(std::to_string(r.requests)) +
          cell(std::to_string(r.tets_created)) + cell(std::to_string(r.tets_removed)) +
          cell(fixed(r.removed_per_request, 2)) + cell(std::to_string(r.unresolved)) +
-         cell(r.ok ? std::to_string(r.tets_after) : "-") + cell(r.ok ? fixed(r.worst_radius_ratio, 4) : "-") +
-         cell(r.ok ? fixed(r.mean_radius_ratio, 3) : "-") + cell(fixed(r.p50_us, 1)) + cell(fixed(r.p99_us, 1)) +
+         cell(std::to_string(r.tets_after) + (r.ok ? "" : " *")) + cell(significant(r.worst_radius_ratio, 3)) +
+         cell(fixed(r.mean_radius_ratio, 3)) + cell(fixed(r.p50_us, 1)) + cell(fixed(r.p99_us, 1)) +
          "</tr>\n";
   }
   h += "</table>\n";
   for (const StrategyRow& r : report.strategies)
-    if (!r.ok) h += "<p class=\"warning\">" + render::xml_escape(r.name + ": stopped early: " + r.error) + "</p>\n";
+    if (!r.ok) h += "<p class=\"warning\">" + render::xml_escape("* " + r.name + ": stopped early (figures at the stop): " + r.error) + "</p>\n";
   return h;
 }
 

@@ -14,6 +14,13 @@ std::string fixed(double value, int decimals) {
   return buf;
 }
 
+std::string significant(double value, int digits) {
+  if (std::isnan(value)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+  return buf;
+}
+
 std::string difference(double ours, double paper, int decimals) {
   if (std::isnan(ours) || std::isnan(paper)) return "-";
   char buf[64];
@@ -104,11 +111,11 @@ std::string text_report(const StatsReport& report) {
   for (const StrategyRow& r : report.strategies)
     s.row({r.name, std::to_string(r.cuts), std::to_string(r.requests), std::to_string(r.tets_created),
            std::to_string(r.tets_removed), fixed(r.removed_per_request, 2), std::to_string(r.unresolved),
-           r.ok ? std::to_string(r.tets_after) : "-", r.ok ? fixed(r.worst_radius_ratio, 4) : "-",
-           r.ok ? fixed(r.mean_radius_ratio, 3) : "-", fixed(r.p50_us, 1), fixed(r.p99_us, 1)});
+           std::to_string(r.tets_after) + (r.ok ? "" : " *"), significant(r.worst_radius_ratio, 3),
+           fixed(r.mean_radius_ratio, 3), fixed(r.p50_us, 1), fixed(r.p99_us, 1)});
   out += s.str();
   for (const StrategyRow& r : report.strategies)
-    if (!r.ok) out += "  " + r.name + ": stopped early: " + r.error + "\n";
+    if (!r.ok) out += "  * " + r.name + ": stopped early (figures at the stop): " + r.error + "\n";
 
   if (report.resection) {
     const CauteryRun& run = report.resection->run;

@@ -83,9 +83,13 @@ struct RunResult {
 struct RunOptions {
   CheckMode check = CheckMode::kEvery;
   std::optional<CutParams> initial_params;  // before the scenario's own settings
+  // When non-zero, the run stops (exit 1) after a cut or removal that leaves more live tets:
+  // a guard for comparisons that run a strategy known to refine without bound.
+  std::uint64_t max_tets = 0;
 };
 
-// Runs the scenario; the final mesh is left in `mesh_out` when given.
+// Runs the scenario; the final mesh is left in `mesh_out` when given (when the run stops early,
+// the mesh as it was then: after a refused cut, as before that cut).
 RunResult run(const Scenario& scenario, const RunOptions& options = {}, TetMesh* mesh_out = nullptr);
 
 }  // namespace tetcut::scenario

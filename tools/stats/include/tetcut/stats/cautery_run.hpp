@@ -20,7 +20,7 @@ struct CauteryRun {
   SplitMethod split = SplitMethod::kTemplates;
   scenario::RunResult result;          // ok == false: it stopped early (result.error says why)
   std::uint32_t tets_before = 0;
-  invariants::QualityStats quality_before, quality_after;
+  invariants::QualityStats quality_before, quality_after;  // after: at the stop if it stopped
   std::vector<double> cut_us;          // each cut's total time, in scenario order
   std::optional<TetMesh> mesh_before, mesh_after;  // when keep_meshes
 };
@@ -32,6 +32,9 @@ struct CauteryOptions {
   // not depend on it; `tetcut stats --check end` skips it for speed and checks the end only.
   bool check_every_cut = true;
   bool keep_meshes = false;
+  // When non-zero, the run stops once the mesh holds more than this many times its initial
+  // tets (the basic strategy refines without bound over a sweep).
+  std::uint32_t max_growth = 0;
 };
 
 struct CauteryResult {

@@ -12,6 +12,8 @@ std::string text_report(const StatsReport& report);
 
 // "12.3", or "-" for NaN; `decimals` after the point.
 std::string fixed(double value, int decimals);
+// `value` with `digits` significant digits ("0.0145", "3.2e-06"), or "-" for NaN.
+std::string significant(double value, int digits);
 // "+1.2" / "-0.4", or "-" when either side is NaN.
 std::string difference(double ours, double paper, int decimals);
 
