@@ -42,20 +42,6 @@ std::string fuzz_mesh_dir() { return mesh_dir("TETCUT_FUZZ_MESH_DIR", TETCUT_FUZ
 
 namespace {
 
-double mean_edge_length(const TetMesh& mesh) {
-  double sum = 0.0;
-  std::uint64_t n = 0;
-  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
-    if (!mesh.is_live(TetId{t})) continue;
-    for (int e = 0; e < 6; ++e) {
-      sum += norm(mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][1])) -
-                  mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][0])));
-      ++n;
-    }
-  }
-  return n > 0 ? sum / static_cast<double>(n) : 1.0;
-}
-
 std::unique_ptr<BundledMesh> load(std::uint8_t version, std::size_t index) {
   auto out = std::make_unique<BundledMesh>();
   const bool bundled = version == kSequenceVersionBundled;
@@ -70,7 +56,7 @@ std::unique_ptr<BundledMesh> load(std::uint8_t version, std::size_t index) {
   if (!built.ok()) fail("bundled-mesh", 0, "load", out->path + ": not a valid mesh: " + built.problems.front().message);
   out->mesh = std::move(*built.mesh);
   out->box = bounding_box(out->mesh);
-  out->mean_edge = mean_edge_length(out->mesh);
+  out->mean_edge = out->mesh.mean_edge_length();
   return out;
 }
 

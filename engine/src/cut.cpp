@@ -23,19 +23,6 @@ RemovalOptions removal_options(const CutParams& p) {
   return o;
 }
 
-// The grid cell: the mean edge length, so that a tet spans a few cells at most.
-double mean_edge_length(const TetMesh& mesh) {
-  double sum = 0.0;
-  std::uint64_t n = 0;
-  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
-    if (!mesh.is_live(TetId{t})) continue;
-    for (int e = 0; e < 6; ++e) {
-      sum += norm(mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][1])) - mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][0])));
-      ++n;
-    }
-  }
-  return n > 0 && sum > 0 ? sum / static_cast<double>(n) : 1.0;
-}
 
 }  // namespace
 
@@ -51,7 +38,8 @@ std::optional<std::string> validate(const CutParams& p) {
 }
 
 Cutter::Cutter(TetMesh& mesh, const CutParams& params)
-    : mesh_(mesh), params_(params), index_(mean_edge_length(mesh)), remover_(removal_options(params)) {
+    // The grid's cell is the mean edge length, so that a tet spans a few cells at most.
+    : mesh_(mesh), params_(params), index_(mesh.mean_edge_length()), remover_(removal_options(params)) {
   // Headroom of half the mesh again: cuts grow it (refinement creates more than removal takes)
   // and a reallocation of a million-tet array in the middle of a cut is a latency spike.
   const std::uint32_t tets = mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096;

@@ -186,6 +186,19 @@ double TetMesh::volume(TetId t) const {
   return signed_volume(positions_[v[0]], positions_[v[1]], positions_[v[2]], positions_[v[3]]);
 }
 
+double TetMesh::mean_edge_length() const {
+  double sum = 0.0;
+  std::uint64_t n = 0;
+  for (std::uint32_t t = 0; t < tet_capacity(); ++t) {
+    if (!is_live(TetId{t})) continue;
+    for (int e = 0; e < 6; ++e) {
+      sum += norm(position(vertex(TetId{t}, kEdgeVerts[e][1])) - position(vertex(TetId{t}, kEdgeVerts[e][0])));
+      ++n;
+    }
+  }
+  return n > 0 && sum > 0 ? sum / static_cast<double>(n) : 1.0;
+}
+
 double TetMesh::total_volume() const {
   double sum = 0.0;
   for (std::uint32_t t = 0; t < tet_capacity(); ++t)

@@ -97,6 +97,9 @@ class TetMesh {
 
   [[nodiscard]] double volume(TetId t) const;
   [[nodiscard]] double total_volume() const;  // O(#T)
+  // Mean length of the live tets' edges (an edge counted once per tet), 1 when there are none:
+  // a length scale, e.g. the spatial index's cell. O(#T).
+  [[nodiscard]] double mean_edge_length() const;
 
   // ---- attributes -------------------------------------------------------------------------
   VertexAttributes& attributes() { return attributes_; }
