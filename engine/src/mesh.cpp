@@ -254,18 +254,23 @@ TetId TetMesh::allocate_tet() {
 void TetMesh::free_tet(TetId t) {
   note(Array::kTetVerts, t.value);
   note(Array::kTetAdj, t.value);
-  tet_verts_[t.value] = {kDeadTetMarker, free_tet_head_.value, kDeadTetMarker, kDeadTetMarker};
+  // In a transaction the id waits on the pending list until commit(): never reused inside it.
+  TetId& head = journal_.active ? pending_tet_head_ : free_tet_head_;
+  if (journal_.active && !pending_tet_tail_.valid()) pending_tet_tail_ = t;
+  tet_verts_[t.value] = {kDeadTetMarker, head.value, kDeadTetMarker, kDeadTetMarker};
   tet_adj_[t.value] = {kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour};
-  free_tet_head_ = t;
+  head = t;
 }
 
 void TetMesh::free_vertex(VertId v) {
   assert(vert_boundary_faces_[v.value] == 0);
   note(Array::kVertTet, v.value);
   note(Array::kFreeVertNext, v.value);
+  VertId& head = journal_.active ? pending_vert_head_ : free_vert_head_;
+  if (journal_.active && !pending_vert_tail_.valid()) pending_vert_tail_ = v;
   vert_tet_[v.value] = kNoTet;
-  free_vert_next_[v.value] = free_vert_head_;
-  free_vert_head_ = v;
+  free_vert_next_[v.value] = head;
+  head = v;
 }
 
 void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVerts> added,
@@ -454,31 +459,58 @@ Renumbering TetMesh::compact() {
 
 // ---- transactions ---------------------------------------------------------------------------
 
+TetMesh::Savepoint TetMesh::savepoint() {
+  Savepoint p;
+  p.entries = static_cast<std::uint32_t>(journal_.entries.size());
+  p.attribute_values = static_cast<std::uint32_t>(journal_.attribute_values.size());
+  p.tets = tet_capacity();
+  p.vertices = vertex_capacity();
+  p.live_tets = live_tets_;
+  p.live_vertices = live_vertices_;
+  p.free_tet_head = free_tet_head_;
+  p.pending_tet_head = pending_tet_head_;
+  p.pending_tet_tail = pending_tet_tail_;
+  p.free_vert_head = free_vert_head_;
+  p.pending_vert_head = pending_vert_head_;
+  p.pending_vert_tail = pending_vert_tail_;
+  // From here on, rows appended before this point are recorded too (rollback_to(p) cannot
+  // simply truncate them).
+  journal_.recorded_tets = p.tets;
+  journal_.recorded_vertices = p.vertices;
+  return p;
+}
+
 void TetMesh::begin_transaction() {
   assert(!journal_.active && "transactions do not nest");
-  journal_.active = true;
-  journal_.tets = tet_capacity();
-  journal_.vertices = vertex_capacity();
-  journal_.live_tets = live_tets_;
-  journal_.live_vertices = live_vertices_;
-  journal_.free_tet_head = free_tet_head_;
-  journal_.free_vert_head = free_vert_head_;
   journal_.entries.clear();
   journal_.attribute_values.clear();
+  journal_.start = savepoint();
+  journal_.active = true;
 }
 
 void TetMesh::commit() {
   journal_.active = false;
   journal_.entries.clear();
   journal_.attribute_values.clear();
+  // The ids freed by the transaction become reusable now.
+  if (pending_tet_head_.valid()) {
+    tet_verts_[pending_tet_tail_.value][1] = free_tet_head_.value;
+    free_tet_head_ = pending_tet_head_;
+  }
+  if (pending_vert_head_.valid()) {
+    free_vert_next_[pending_vert_tail_.value] = free_vert_head_;
+    free_vert_head_ = pending_vert_head_;
+  }
+  pending_tet_head_ = pending_tet_tail_ = kNoTet;
+  pending_vert_head_ = pending_vert_tail_ = kNoVert;
 }
 
-// Records the old value of one element before it is written. Elements appended during the
-// transaction need no record: rollback truncates the arrays to their old sizes.
+// Records the old value of one element before it is written. Elements appended after the newest
+// savepoint need no record: a rollback truncates the arrays to their old sizes.
 void TetMesh::note(Array array, std::uint32_t index) {
   if (!journal_.active) return;
   const bool is_tet = array == Array::kTetVerts || array == Array::kTetAdj;
-  if (index >= (is_tet ? journal_.tets : journal_.vertices)) return;
+  if (index >= (is_tet ? journal_.recorded_tets : journal_.recorded_vertices)) return;
   JournalEntry e{array, index, {}};
   switch (array) {
     case Array::kTetVerts: std::memcpy(e.old.data(), tet_verts_[index].data(), 16); break;
@@ -496,10 +528,10 @@ void TetMesh::note(Array array, std::uint32_t index) {
   journal_.entries.push_back(e);
 }
 
-void TetMesh::rollback() {
-  assert(journal_.active);
-  for (auto it = journal_.entries.rbegin(); it != journal_.entries.rend(); ++it) {
-    const JournalEntry& e = *it;
+void TetMesh::rollback_to(const Savepoint& p) {
+  assert(journal_.active && p.entries <= journal_.entries.size());
+  for (std::size_t i = journal_.entries.size(); i-- > p.entries;) {
+    const JournalEntry& e = journal_.entries[i];
     switch (e.array) {
       case Array::kTetVerts: std::memcpy(tet_verts_[e.index].data(), e.old.data(), 16); break;
       case Array::kTetAdj: std::memcpy(tet_adj_[e.index].data(), e.old.data(), 16); break;
@@ -515,21 +547,34 @@ void TetMesh::rollback() {
       }
     }
   }
-  tet_verts_.resize(journal_.tets);
-  tet_adj_.resize(journal_.tets);
-  positions_.resize(journal_.vertices);
-  vert_tet_.resize(journal_.vertices);
-  vert_boundary_faces_.resize(journal_.vertices);
-  free_vert_next_.resize(journal_.vertices);
-  attributes_.resize(journal_.vertices);
-  live_tets_ = journal_.live_tets;
-  live_vertices_ = journal_.live_vertices;
-  free_tet_head_ = journal_.free_tet_head;
-  free_vert_head_ = journal_.free_vert_head;
-  commit();
+  journal_.entries.resize(p.entries);
+  journal_.attribute_values.resize(p.attribute_values);
+  tet_verts_.resize(p.tets);
+  tet_adj_.resize(p.tets);
+  positions_.resize(p.vertices);
+  vert_tet_.resize(p.vertices);
+  vert_boundary_faces_.resize(p.vertices);
+  free_vert_next_.resize(p.vertices);
+  attributes_.resize(p.vertices);
+  live_tets_ = p.live_tets;
+  live_vertices_ = p.live_vertices;
+  free_tet_head_ = p.free_tet_head;
+  pending_tet_head_ = p.pending_tet_head;
+  pending_tet_tail_ = p.pending_tet_tail;
+  free_vert_head_ = p.free_vert_head;
+  pending_vert_head_ = p.pending_vert_head;
+  pending_vert_tail_ = p.pending_vert_tail;
+  journal_.recorded_tets = p.tets;
+  journal_.recorded_vertices = p.vertices;
 }
 
-void TetMesh::transaction_changes(std::vector<TetId>& removed, std::vector<TetId>& created) {
+void TetMesh::rollback() {
+  assert(journal_.active);
+  rollback_to(journal_.start);
+  commit();  // nothing is pending any more: the start had no pending ids
+}
+
+void TetMesh::changes_since(const Savepoint& p, std::vector<TetId>& removed, std::vector<TetId>& created) {
   removed.clear();
   created.clear();
   if (!journal_.active) return;
@@ -538,9 +583,10 @@ void TetMesh::transaction_changes(std::vector<TetId>& removed, std::vector<TetId
     std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0);
     stamp_ = 1;
   }
-  // The first journal entry of a tet row holds its state at the start.
-  for (const JournalEntry& e : journal_.entries) {
-    if (e.array != Array::kTetVerts || tet_stamp_[e.index] == stamp_) continue;
+  // The first entry after p of a row that existed at p holds its state at p.
+  for (std::size_t i = p.entries; i < journal_.entries.size(); ++i) {
+    const JournalEntry& e = journal_.entries[i];
+    if (e.array != Array::kTetVerts || e.index >= p.tets || tet_stamp_[e.index] == stamp_) continue;
     tet_stamp_[e.index] = stamp_;
     std::array<std::uint32_t, 4> old;
     std::memcpy(old.data(), e.old.data(), 16);
@@ -551,7 +597,7 @@ void TetMesh::transaction_changes(std::vector<TetId>& removed, std::vector<TetId
     if (was_live) removed.push_back(TetId{e.index});
     if (is_live) created.push_back(TetId{e.index});
   }
-  for (std::uint32_t t = journal_.tets; t < tet_capacity(); ++t)
+  for (std::uint32_t t = p.tets; t < tet_capacity(); ++t)
     if (tet_verts_[t][0] != kDeadTetMarker) created.push_back(TetId{t});
   std::sort(removed.begin(), removed.end());
   std::sort(created.begin(), created.end());

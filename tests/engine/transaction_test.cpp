@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "test_meshes.hpp"
 #include "tetcut/edge_split.hpp"
 #include "tetcut/local_tables.hpp"
@@ -84,6 +86,79 @@ TEST(Transaction, CommitKeepsTheChanges) {
   mesh.commit();
   EXPECT_NE(mesh.num_tets(), before);
   EXPECT_FALSE(mesh.in_transaction());
+}
+
+TEST(Transaction, SavepointsRollBackBitForBitAndNest) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
+  const auto tag = *mesh.attributes().add_channel("tag", 1);
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, v)[0] = v;
+  SplitMix64 rng(23);
+  EdgeSplitter splitter;
+  for (int i = 0; i < 5; ++i) random_operation(mesh, rng, splitter);
+  const TetMesh start = mesh;
+  mesh.begin_transaction();
+  random_operation(mesh, rng, splitter);
+  const TetMesh::Savepoint first = mesh.savepoint();
+  const TetMesh at_first = mesh;
+  random_operation(mesh, rng, splitter);
+  const TetMesh::Savepoint second = mesh.savepoint();
+  const TetMesh at_second = mesh;
+  random_operation(mesh, rng, splitter);
+  random_operation(mesh, rng, splitter);
+  mesh.rollback_to(second);
+  expect_identical(mesh, at_second);
+  EXPECT_TRUE(mesh.in_transaction());
+  // Work again after coming back, then further back still.
+  random_operation(mesh, rng, splitter);
+  mesh.rollback_to(first);
+  expect_identical(mesh, at_first);
+  random_operation(mesh, rng, splitter);
+  mesh.rollback();
+  expect_identical(mesh, start);
+}
+
+TEST(Transaction, NoIdIsReusedInsideATransactionAndChangesAreNet) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
+  SplitMix64 rng(5);
+  EdgeSplitter splitter;
+  mesh.begin_transaction();
+  const TetMesh::Savepoint start = mesh.savepoint();
+  std::vector<std::uint8_t> was_live(mesh.tet_capacity());
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) was_live[t] = mesh.is_live(TetId{t});
+  std::vector<TetId> created;
+  for (int i = 0; i < 6; ++i) {
+    std::vector<Edge> edges;
+    TetId t;
+    do t = TetId{rng.below(mesh.tet_capacity())};
+    while (!mesh.is_live(t));
+    edges.push_back({mesh.vertex(t, 0), mesh.vertex(t, 1)});
+    std::vector<TetId> made;
+    ASSERT_TRUE(splitter.split(mesh, edges, SplitMethod::kTemplates, &made).ok());
+    for (TetId c : made) {
+      // Never an id that was live at the start or made earlier in the transaction.
+      EXPECT_FALSE(c.value < was_live.size() && was_live[c.value]) << c.value;
+      EXPECT_EQ(std::count(created.begin(), created.end(), c), 0) << c.value;
+    }
+    created.insert(created.end(), made.begin(), made.end());
+  }
+  std::vector<TetId> removed, net_created;
+  mesh.changes_since(start, removed, net_created);
+  for (TetId r : removed) EXPECT_TRUE(was_live[r.value] && !mesh.is_live(r));
+  for (TetId c : net_created) EXPECT_TRUE(mesh.is_live(c) && !(c.value < was_live.size() && was_live[c.value]));
+  std::uint32_t live_made = 0;
+  for (TetId c : created) live_made += mesh.is_live(c) ? 1u : 0u;
+  EXPECT_EQ(net_created.size(), live_made);
+  EXPECT_EQ(mesh.num_tets() + removed.size(), 162u + net_created.size());
+  // After commit the ids freed by the transaction are reused.
+  mesh.commit();
+  std::vector<Edge> edges;
+  TetId t{0};
+  while (!mesh.is_live(t)) t = TetId{t.value + 1};
+  edges.push_back({mesh.vertex(t, 0), mesh.vertex(t, 1)});
+  std::vector<TetId> made;
+  const std::uint32_t capacity = mesh.tet_capacity();
+  ASSERT_TRUE(splitter.split(mesh, edges, SplitMethod::kTemplates, &made).ok());
+  EXPECT_EQ(mesh.tet_capacity(), capacity);
 }
 
 }  // namespace

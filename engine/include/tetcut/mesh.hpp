@@ -139,15 +139,38 @@ class TetMesh {
   // Between begin_transaction() and commit(), every write to the mesh's arrays is journaled
   // (old value first), so that rollback() restores the mesh bit for bit: same ids, same free
   // lists, same capacities in use. The journal is reused: no allocation once warm.
+  //
+  // Inside a transaction no id is reused: a tet or vertex freed there joins the free lists only
+  // at commit(). So an id is created or removed at most once per transaction, and what a
+  // transaction did is a plain set difference (the net ChangeLog of a cut, the checker's region).
   void begin_transaction();
   void commit();
   void rollback();
   [[nodiscard]] bool in_transaction() const { return journal_.active; }
-  // The net effect of the open transaction so far, sorted by id: `removed` gets the ids live at
-  // its start that are dead now or hold another tet; `created` the ids live now that were dead
-  // or held another tet. (A tet taken out and put back unchanged is in neither.) This is what
-  // the local checker needs, whatever mix of operations ran. O(journal).
-  void transaction_changes(std::vector<TetId>& removed, std::vector<TetId>& created);
+
+  // A point inside the open transaction to come back to: an attempt that does not pan out is
+  // undone by rollback_to() (the removal strategies' one undo), everything done since is gone
+  // bit for bit, and the transaction stays open. Savepoints nest: rolling back to one
+  // invalidates those taken after it.
+  struct Savepoint {
+    std::uint32_t entries = 0, attribute_values = 0;
+    std::uint32_t tets = 0, vertices = 0;  // array sizes
+    std::uint32_t live_tets = 0, live_vertices = 0;
+    TetId free_tet_head, pending_tet_head, pending_tet_tail;
+    VertId free_vert_head, pending_vert_head, pending_vert_tail;
+  };
+  [[nodiscard]] Savepoint savepoint();
+  void rollback_to(const Savepoint& point);
+
+  // The net effect since `point` (a savepoint of the open transaction), sorted by id: `removed`
+  // gets the ids live then and dead now, `created` the ids live now and dead then. O(journal
+  // since the point).
+  void changes_since(const Savepoint& point, std::vector<TetId>& removed, std::vector<TetId>& created);
+  // The same since begin_transaction(): what the local checker needs, whatever mix of
+  // operations ran.
+  void transaction_changes(std::vector<TetId>& removed, std::vector<TetId>& created) {
+    changes_since(journal_.start, removed, created);
+  }
 
   // ---- raw views, for the independent checker and writers ----------------------------------
   // #capacity by 4; a tombstone has kDeadTetMarker in its first entry.
@@ -187,6 +210,10 @@ class TetMesh {
   TetId free_tet_head_ = kNoTet;
   std::vector<VertId> free_vert_next_;
   VertId free_vert_head_ = kNoVert;
+  // Ids freed inside the open transaction, threaded the same way; spliced onto the free lists
+  // by commit() (no reuse inside a transaction).
+  TetId pending_tet_head_ = kNoTet, pending_tet_tail_ = kNoTet;
+  VertId pending_vert_head_ = kNoVert, pending_vert_tail_ = kNoVert;
 
   // Scratch for replace_tets, reused so that steady-state operations do not allocate.
   struct FaceSlot {
@@ -203,10 +230,10 @@ class TetMesh {
   };
   struct Journal {
     bool active = false;
-    std::uint32_t tets = 0, vertices = 0;  // array sizes at begin
-    std::uint32_t live_tets = 0, live_vertices = 0;
-    TetId free_tet_head;
-    VertId free_vert_head;
+    Savepoint start;                       // the state at begin_transaction()
+    // Elements below these indices existed at the newest savepoint: their old values are
+    // recorded; elements appended since are simply truncated by a rollback.
+    std::uint32_t recorded_tets = 0, recorded_vertices = 0;
     std::vector<JournalEntry> entries;
     std::vector<double> attribute_values;
   };
