@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "bench_meshes.hpp"
+#include "tetcut/boundary_tet_picker.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/removal.hpp"

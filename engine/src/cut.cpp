@@ -48,6 +48,10 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
   index_.build(mesh_);
   refiner_.reserve(tets);
   remover_.reserve(tets, vertices);
+  made_.assign(tets, 0);
+  selected_.assign(tets, 0);
+  tried_.assign(tets, 0);
+  origin_.assign(tets, kNoTet);
 }
 
 std::optional<std::string> Cutter::set_params(const CutParams& params) {
@@ -65,6 +69,57 @@ std::optional<std::string> Cutter::set_params(const CutParams& params) {
 TetId Cutter::tet_containing(const Vec3& p) {
   index_.query(mesh_, Ball{p, 0.0}, hit_);
   return hit_.empty() ? kNoTet : hit_.front();
+}
+
+void Cutter::grow_marks() {
+  const std::size_t n = mesh_.tet_capacity();
+  if (made_.size() >= n) return;
+  const std::size_t m = n + n / 4 + 16;
+  made_.resize(m, 0);
+  selected_.resize(m, 0);
+  tried_.resize(m, 0);
+  origin_.resize(m, kNoTet);
+}
+
+// Paper 3.3: inside the tool (centroid in the closed ball) and no edge longer than D_ref.
+bool Cutter::selectable(TetId t) const {
+  if (!tool_) return false;
+  const auto v = mesh_.tet(t);
+  Vec3 centroid{};
+  for (VertId x : v) centroid = centroid + 0.25 * mesh_.position(x);
+  if (norm(centroid - tool_->centre) > tool_->radius) return false;
+  for (int e = 0; e < 6; ++e)
+    if (norm(mesh_.position(v[kEdgeVerts[e][1]]) - mesh_.position(v[kEdgeVerts[e][0]])) > d_ref_) return false;
+  return true;
+}
+
+bool Cutter::pending(TetId t) const {
+  return mesh_.is_live(t) && selected_[t.value] == generation_ && tried_[t.value] != generation_;
+}
+
+void Cutter::follow(const ChangeLog& step) {
+  grow_marks();
+  // No id is reused inside the cut's transaction, and the history is in order: a parent made
+  // by the cut has been seen before its children.
+  for (const CreatedTet& c : step.created) {
+    const std::uint32_t i = c.tet.value;
+    const bool parent_made = made_[c.parent.value] == generation_;
+    made_[i] = generation_;
+    origin_[i] = parent_made ? origin_[c.parent.value] : c.parent;
+    selected_[i] = 0;
+    ++net_created_count_;
+    // A tet the cut made inside the tool is tissue to remove like any other (whatever its
+    // parent was): it joins T_removal.
+    if (mesh_.is_live(c.tet) && selectable(c.tet)) {
+      selected_[i] = generation_;
+      removal_.push_back(c.tet);
+    }
+  }
+  for (TetId r : step.removed)
+    if (made_[r.value] == generation_) --net_created_count_;
+  log_.removed.insert(log_.removed.end(), step.removed.begin(), step.removed.end());
+  log_.created.insert(log_.created.end(), step.created.begin(), step.created.end());
+  log_.vertices.insert(log_.vertices.end(), step.vertices.begin(), step.vertices.end());
 }
 
 CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
@@ -92,6 +147,16 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
 
   log_.clear();
   mesh_.begin_transaction();
+  if (++generation_ == 0) {  // wrapped: clear the marks once
+    std::fill(made_.begin(), made_.end(), 0u);
+    std::fill(selected_.begin(), selected_.end(), 0u);
+    std::fill(tried_.begin(), tried_.end(), 0u);
+    generation_ = 1;
+  }
+  net_created_count_ = 0;
+  tool_ = tool;
+  d_ref_ = d_ref;
+  removal_.clear();
   auto fail = [&](std::string why) {
     mesh_.rollback();
     report.ok = false;
@@ -109,38 +174,28 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
   refine.max_iterations = params_.max_refine_iterations;
   refine.method = params_.split_method;
   refine.focus = tool;
-  const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_, &log_);
+  refine_log_.clear();
+  const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_, &refine_log_);
   if (refined.refusal != SplitRefusal::kNone)
     return fail(std::string("refinement refused: ") + to_string(refined.refusal));
-  if (log_.created.size() > params_.max_tets_created) return fail("the refinement would exceed the per-cut tet budget");
+  follow(refine_log_);
+  if (net_created_count_ > params_.max_tets_created) return fail("the refinement would exceed the per-cut tet budget");
   report.refine_iterations = refined.iterations;
   report.edges_split = refined.edges_split;
   report.tets_refined = refined.tets_removed;
   const Clock::time_point t2 = Clock::now();
   report.time.refine_us = micros(t1, t2);
 
-  // Select T_removal (paper 3.3): inside the tool (centroid in the ball), no edge over D_ref.
-  removal_.clear();
-  removal_verts_.clear();
+  // Select T_removal (paper 3.3).
   for (TetId t : region_) {
-    if (!mesh_.is_live(t)) continue;
-    const auto v = mesh_.tet(t);
-    Vec3 centroid{};
-    for (VertId x : v) centroid = centroid + 0.25 * mesh_.position(x);
-    if (norm(centroid - tool.centre) > tool.radius) continue;
-    bool short_edges = true;
-    for (int e = 0; e < 6 && short_edges; ++e)
-      short_edges = norm(mesh_.position(v[kEdgeVerts[e][1]]) - mesh_.position(v[kEdgeVerts[e][0]])) <= d_ref;
-    if (short_edges) {
-      removal_.push_back(t);
-      removal_verts_.push_back(v);
-    }
+    if (!mesh_.is_live(t) || !selectable(t)) continue;
+    selected_[t.value] = generation_;
+    removal_.push_back(t);
   }
-  report.requested = static_cast<std::uint32_t>(removal_.size());
   const Clock::time_point t3 = Clock::now();
   report.time.select_us = micros(t2, t3);
 
-  // Remove one by one (paper 3.3-3.7); a tet already taken by an earlier neighbour set is gone.
+  // Remove (paper 3.3-3.7).
   remove_selected(report);
   if (!report.ok) return fail(report.failure);
   const Clock::time_point t4 = Clock::now();
@@ -162,9 +217,12 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
   const Clock::time_point t0 = Clock::now();
   log_.clear();
   mesh_.begin_transaction();
+  if (++generation_ == 0) generation_ = 1;
+  grow_marks();
+  net_created_count_ = 0;
+  tool_.reset();  // no tool: the request alone, no children join it
   removal_.assign(1, t);
-  removal_verts_.assign(1, mesh_.tet(t));
-  report.requested = 1;
+  selected_[t.value] = generation_;
   remove_selected(report);
   if (!report.ok) {
     mesh_.rollback();
@@ -178,50 +236,72 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
 
 void Cutter::remove_selected(CutReport& report) {
   const RemovalReport before = remover_.report();
+  grow_marks();
   // Counted per request here: the Remover's running total of unresolved tets goes down when a
   // tet left unresolved by an earlier cut goes now, so its difference can be negative.
-  std::uint32_t unresolved = 0;
-  tried_.assign(removal_.size(), 0);
-  // An id whose tet an earlier request removed may now name a tet a refinement made elsewhere.
-  auto selected = [&](std::size_t i) {
-    return mesh_.is_live(removal_[i]) && mesh_.tet(removal_[i]) == removal_verts_[i];
-  };
-  auto request = [&](std::size_t i) {
-    tried_[i] = 1;
-    if (remover_.remove(mesh_, removal_[i], &log_).outcome == RemovalOutcome::kUnresolved) ++unresolved;
-    if (log_.created.size() <= params_.max_tets_created) return true;
-    report.ok = false;
-    report.failure = "the removal would exceed the per-cut tet budget";
-    return false;
-  };
-  // Outside in, as the cautery burns: in rounds, every selected tet that is on the surface now,
-  // until a round finds none; then the rest (a tool inside the mesh) in id order. Taking a tet
-  // before the tets between it and the surface would open a cavity under a thin roof, and the
-  // paper's statistics are about "removing a tetrahedron on the mesh surface" (3.3, Table 1).
-  for (bool progress = true; progress;) {
-    progress = false;
-    for (std::size_t i = 0; i < removal_.size(); ++i) {
-      if (tried_[i] || !selected(i) || mesh_.boundary_face_count(removal_[i]) == 0) continue;
-      progress = true;
-      if (!request(i)) return;
+  std::uint32_t unresolved = 0, requests = 0;
+  auto request = [&](TetId t) {
+    tried_[t.value] = generation_;
+    ++requests;
+    const Selection selection{selected_, generation_};
+    RequestLimits limits;
+    limits.max_tets_created = params_.max_tets_created > net_created_count_ ? params_.max_tets_created - net_created_count_ : 0;
+    limits.selection = &selection;
+    const RemovalResult r = remover_.remove(mesh_, t, nullptr, limits);
+    follow(remover_.last_log());
+    if (r.over_budget || net_created_count_ > params_.max_tets_created) {
+      report.ok = false;
+      report.failure = "the removal would exceed the per-cut tet budget";
+      return false;
     }
+    if (r.outcome == RemovalOutcome::kUnresolved) ++unresolved;
+    return true;
+  };
+  for (;;) {
+    // Every directly removable selected tet first, again until none is left (paper 3.3): a
+    // strategy's larger set then meets fewer singularities. removal_ grows while we go.
+    for (bool progress = true; progress;) {
+      progress = false;
+      for (std::size_t i = 0; i < removal_.size(); ++i) {
+        const TetId t = removal_[i];
+        if (!pending(t) || !removability(mesh_, t).removable) continue;
+        progress = true;
+        if (!request(t)) return;
+      }
+    }
+    // Then one stuck tet, outside in: on the surface first (the paper's statistics are about
+    // "removing a tetrahedron on the mesh surface", 3.3), else any (a tool inside the mesh).
+    TetId stuck = kNoTet;
+    for (TetId t : removal_)
+      if (pending(t) && mesh_.boundary_face_count(t) > 0) {
+        stuck = t;
+        break;
+      }
+    if (!stuck.valid())
+      for (TetId t : removal_)
+        if (pending(t)) {
+          stuck = t;
+          break;
+        }
+    if (!stuck.valid()) break;
+    if (!request(stuck)) return;
   }
-  for (std::size_t i = 0; i < removal_.size(); ++i)
-    if (!tried_[i] && selected(i) && !request(i)) return;
   const RemovalReport& after = remover_.report();
   auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<std::uint32_t>(a - b); };
+  report.requested = static_cast<std::uint32_t>(removal_.size());
+  report.requests = requests;
   report.tets_removed = delta(after.tets_removed, before.tets_removed);
   report.direct = delta(after.direct, before.direct);
   report.vertex_singularities = delta(after.vertex_singularities, before.vertex_singularities);
   report.edge_singularities = delta(after.edge_singularities, before.edge_singularities);
   report.resolved_by_neighbours = delta(after.resolved_by_neighbours, before.resolved_by_neighbours);
   report.resolved_by_refinement = delta(after.resolved_by_refinement, before.resolved_by_refinement);
-  report.resolved_by_flood = delta(after.resolved_by_flood, before.resolved_by_flood);
+  report.resolved_by_fallback = delta(after.resolved_by_fallback, before.resolved_by_fallback);
   report.unresolved = unresolved;
 }
 
-// Commits the transaction, brings the index up to date with the net changes, and reports the
-// worst new tet.
+// Commits the transaction, brings the index up to date with the net changes, hands the caller
+// the net change, and reports the worst new tet.
 void Cutter::finish(CutReport& report, ChangeLog* log) {
   mesh_.transaction_changes(net_removed_, net_created_);
   mesh_.commit();
@@ -234,9 +314,11 @@ void Cutter::finish(CutReport& report, ChangeLog* log) {
   }
   report.tets_created = static_cast<std::uint32_t>(net_created_.size());
   if (log) {
-    log->removed.insert(log->removed.end(), log_.removed.begin(), log_.removed.end());
-    log->created.insert(log->created.end(), log_.created.begin(), log_.created.end());
-    log->vertices.insert(log->vertices.end(), log_.vertices.begin(), log_.vertices.end());
+    log->removed.insert(log->removed.end(), net_removed_.begin(), net_removed_.end());
+    for (TetId t : net_created_) log->created.push_back({t, origin_[t.value]});
+    // A vertex the cut made and still uses (no vertex id is reused inside the cut either).
+    for (const CreatedVertex& v : log_.vertices)
+      if (mesh_.is_live(v.vertex)) log->vertices.push_back(v);
   }
 }
 

@@ -12,6 +12,7 @@
 #include "test_meshes.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/predicates.hpp"
+#include "tetcut/boundary_tet_picker.hpp"
 #include "tetcut/removal.hpp"
 
 namespace tetcut::testing {

@@ -27,7 +27,7 @@ constexpr OptionSpec kSpecs[] = {
 
 int usage(std::ostream& err, const std::string& message) {
   err << "tetcut cut: " << message << "\n"
-      << "usage: tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy basic|neighbours|combined]\n"
+      << "usage: tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy basic|neighbours|combined|wide]\n"
          "                      [--check every|end|none] [--out M] [--report R.json] [--frames DIR]\n";
   return 2;
 }
@@ -52,7 +52,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   params.tool_diameter = *diameter;
   if (const auto s = a.value("--strategy")) {
     const auto strategy = parse_removal_strategy(*s);
-    if (!strategy) return usage(err, "--strategy must be basic, neighbours or combined");
+    if (!strategy) return usage(err, "--strategy must be basic, neighbours, combined or wide");
     params.strategy = *strategy;
   }
   if (const auto s = a.value("--split")) {

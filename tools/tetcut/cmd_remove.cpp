@@ -1,4 +1,4 @@
-// `tetcut remove MESH (--at X,Y,Z ... | --random N|all --seed S) [--strategy basic|neighbours|combined]
+// `tetcut remove MESH (--at X,Y,Z ... | --random N|all --seed S) [--strategy basic|neighbours|combined|wide]
 //  [--check every|end|none] -o OUT [--report R.json]`: removes tetrahedra without breaking the
 // manifold (paper 3.3-3.7) and prints the paper's statistics (Tables 1 and 2).
 //
@@ -18,6 +18,7 @@
 #include "command.hpp"
 #include "json_writer.hpp"
 #include "mesh_input.hpp"
+#include "tetcut/boundary_tet_picker.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
@@ -39,7 +40,7 @@ constexpr OptionSpec kSpecs[] = {
 int remove_usage(std::ostream& err, const std::string& message) {
   err << "tetcut remove: " << message << "\n"
       << "usage: tetcut remove MESH (--at X,Y,Z ... | --random N|all --seed S)\n"
-         "                          [--strategy basic|neighbours|combined] [--check every|end|none]\n"
+         "                          [--strategy basic|neighbours|combined|wide] [--check every|end|none]\n"
          "                          -o OUT [--report R.json]\n";
   return kExitBadInput;
 }
@@ -122,7 +123,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
   RemovalOptions options;
   if (const auto s = a.value("--strategy")) {
     const auto strategy = parse_removal_strategy(*s);
-    if (!strategy) return remove_usage(err, "--strategy must be basic, neighbours or combined, not '" + *s + "'");
+    if (!strategy) return remove_usage(err, "--strategy must be basic, neighbours, combined or wide, not '" + *s + "'");
     options.strategy = *strategy;
   }
   CheckMode check_mode = CheckMode::kEnd;
@@ -222,7 +223,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
     w.field("vertex_neighbour_set_tets", s.vertex_neighbour_set_tets);
     w.field("edge_neighbour_set_tets", s.edge_neighbour_set_tets);
     w.field("resolved_by_optimized_refinement", s.resolved_by_optimized_refinement);
-    w.field("refinements_undone", s.refinements_undone);
+    w.field("attempts_undone", s.attempts_undone);
     w.field("tets_removed", s.tets_removed);
     w.field("tets_created", s.tets_created);
     w.field("edges_split", s.edges_split);

@@ -94,7 +94,7 @@ constexpr std::string_view kCutHelp =
     "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
     "each cut refined then removed without breaking the manifold (paper 3.1-3.7).\n"
     "\n"
-    "  --strategy basic|neighbours|combined   removal strategy (default combined)\n"
+    "  --strategy basic|neighbours|combined|wide   removal strategy (default combined)\n"
     "  --split templates|bisection            refinement (default templates)\n"
     "  --dref-factor F --p P --depth N        the paper's parameters (1.5, 1.5, 10)\n"
     "  --check every|end|none   local check after every cut (default), full check at the end\n"
@@ -186,7 +186,7 @@ constexpr std::array kCommands = {
                 "[--strategy templates|bisection] -o OUT [--report R.json]",
                 "refines by edge splitting (10 configurations or bisection)", kRefineHelp, &cmd_refine},
     CommandInfo{"remove",
-                "tetcut remove MESH (--at X,Y,Z ... | --random N|all --seed S) [--strategy basic|neighbours|combined] "
+                "tetcut remove MESH (--at X,Y,Z ... | --random N|all --seed S) [--strategy basic|neighbours|combined|wide] "
                 "[--check every|end|none] -o OUT [--report R.json]",
                 "removes tetrahedra without breaking the manifold (paper 3.3-3.7)", kRemoveHelp, &cmd_remove},
     CommandInfo{"cut",

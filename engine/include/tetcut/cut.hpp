@@ -7,13 +7,18 @@
 //            longer than D_ref (paper 3.3). "Inside" means: the tet's centroid lies in the
 //            closed ball. A tet that only grazes the ball stays; the cavity then has the
 //            tool's size to within one small tet.
-//   remove   one by one with the chosen strategy (removal.hpp), outside in: in rounds, the
-//            selected tets on the surface now (increasing id), then any left (a tool inside)
+//   remove   every directly removable selected tet first (3.3), again until none is left; then
+//            the strategy (removal.hpp) on one stuck tet, on the surface first (outside in),
+//            and again. When a strategy refines, the new tets that pass the same test join
+//            T_removal: every tet inside the tool is removed or counted unresolved.
 //
 // Atomic: the whole cut runs in a mesh transaction; if it cannot complete (a split refused
 // for degeneracy, the per-cut tet budget exceeded) it is rolled back, the mesh is bit-identical
 // to before, and the report says why. A tet left unresolved by the `neighbours` strategy is
 // not a failure: the mesh is valid, the report counts it.
+//
+// The budget counts net tets created: tets the cut made that are still there at its end (an
+// attempt a strategy undid, or children a later step removed, do not count).
 //
 // Cost: local to the tool. Scratch memory lives in the Cutter; nothing allocates once warm
 // (the mesh's arrays grow only when the free lists run dry).
@@ -40,7 +45,7 @@ struct CutParams {
   double p = 1.5;                    // shell edge ratio of the refinement loop (paper 3.2)
   std::uint32_t search_depth = 10;   // neighbour search depth (paper 3.5)
   std::uint32_t max_refine_iterations = 8;
-  std::uint32_t max_tets_created = 200000;  // a cut that would create more is refused
+  std::uint32_t max_tets_created = 200000;  // net; a cut that would create more is refused
   RemovalStrategy strategy = RemovalStrategy::kCombined;
   SplitMethod split_method = SplitMethod::kTemplates;
 };
@@ -59,13 +64,14 @@ struct CutReport {
   std::uint32_t refine_iterations = 0;
   std::uint32_t edges_split = 0;     // by the refinement loop
   std::uint32_t tets_refined = 0;    // parents replaced by the refinement loop
-  std::uint32_t requested = 0;       // |T_removal|
+  std::uint32_t requested = 0;       // |T_removal|, children of selected tets that joined it included
+  std::uint32_t requests = 0;        // removal requests made (a tet a set swallowed is not requested)
   std::uint32_t tets_removed = 0;    // all tets removed, neighbour sets included
-  std::uint32_t tets_created = 0;    // by refinement and by refinement-based removal
+  std::uint32_t tets_created = 0;    // net: by refinement and by removal, still there at the end
   std::uint32_t direct = 0, vertex_singularities = 0, edge_singularities = 0;
   // unresolved: requests of this cut left in place (a tet left twice counts twice; the
   // Remover's report counts distinct tets, as the paper's tables do).
-  std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_flood = 0, unresolved = 0;
+  std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_fallback = 0, unresolved = 0;
   double min_radius_ratio = 1.0;     // worst tet created (1 when none)
   CutTimings time;
 };
@@ -80,7 +86,9 @@ class Cutter {
   std::optional<std::string> set_params(const CutParams& params);
   [[nodiscard]] const CutParams& params() const { return params_; }
 
-  // One cut with the tool centred at `centre`. Appends the net changes to `log` when given.
+  // One cut with the tool centred at `centre`. Appends its net change to `log` when given: the
+  // tets live before and gone after, the tets live after and not before (each with the tet it
+  // came from, live before the cut), and the vertices made that are still used.
   CutReport cut(const Vec3& centre, ChangeLog* log = nullptr);
 
   // One removal request outside the cut pipeline (tetcut remove, scenarios): tet t with the
@@ -98,8 +106,15 @@ class Cutter {
   [[nodiscard]] const std::vector<TetId>& last_created() const { return net_created_; }
 
  private:
-  // Removes the tets of removal_, those on the surface first (outside in), and fills the counts.
+  // Removes the selected tets (removal_, growing), directly removable ones first, and fills the
+  // counts.
   void remove_selected(CutReport& report);
+  // Follows a step's history: which tets the cut made (for the budget and the net log's
+  // parents), and which of them are inside the tool and so selected in turn.
+  void follow(const ChangeLog& step);
+  [[nodiscard]] bool selectable(TetId t) const;
+  [[nodiscard]] bool pending(TetId t) const;
+  void grow_marks();
   void finish(CutReport& report, ChangeLog* log);
 
   TetMesh& mesh_;
@@ -107,10 +122,17 @@ class Cutter {
   SpatialIndex index_;
   Refiner refiner_;
   Remover remover_;
-  ChangeLog log_;
+  ChangeLog log_;                    // the cut's history: refinement, then each request
+  ChangeLog refine_log_;
   std::vector<TetId> hit_, region_, removal_, net_removed_, net_created_;
-  std::vector<TetMesh::TetVerts> removal_verts_;  // per tet of removal_: its vertices when selected
-  std::vector<std::uint8_t> tried_;  // per tet of removal_: already requested in this cut
+  // Per tet id, == generation_ when true in the current cut: made by it, selected, already
+  // requested (and left unresolved).
+  std::vector<std::uint32_t> made_, selected_, tried_;
+  std::vector<TetId> origin_;        // per tet id made by the cut: the tet it came from
+  std::uint32_t generation_ = 0;
+  std::uint32_t net_created_count_ = 0;
+  std::optional<Ball> tool_;         // the cut's ball (none for remove())
+  double d_ref_ = 0.0;
 };
 
 }  // namespace tetcut

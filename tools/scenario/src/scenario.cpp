@@ -53,7 +53,7 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
   CutParams next = params;
   if (name == "strategy") {
     const auto s = parse_removal_strategy(value);
-    if (!s) return "strategy must be basic, neighbours or combined";
+    if (!s) return "strategy must be basic, neighbours, combined or wide";
     next.strategy = *s;
   } else if (name == "split") {
     if (value == "templates") next.split_method = SplitMethod::kTemplates;

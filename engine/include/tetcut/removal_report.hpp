@@ -1,0 +1,52 @@
+// The statistics of the paper's Tables 1 and 2 (3.3, 3.6), as a Remover accumulates them.
+//
+// Counted per distinct tet: a tet requested again after being left unresolved is not counted
+// again (its final fate replaces the first one). Two denominators for the cardinality of the
+// removed sets: per request (the sets' mean size) and per selected tet (tets removed over the
+// selected tets they took, since a neighbour set often swallows selected tets that are then
+// never requested). The paper's "average number of tetrahedra removed when a single
+// tetrahedron should be removed" (3.6) is the second.
+#pragma once
+
+#include <cstdint>
+
+namespace tetcut {
+
+struct RemovalResult;
+
+struct RemovalReport {
+  std::uint64_t requested = 0;             // distinct tets requested
+  std::uint64_t repeated_requests = 0;     // requests for a tet already left unresolved
+  std::uint64_t removed = 0;               // requested tets that went (by any way)
+  std::uint64_t unresolved = 0;
+  std::uint64_t direct = 0;
+  std::uint64_t vertex_singularities = 0;
+  std::uint64_t edge_singularities = 0;
+  std::uint64_t resolved_by_neighbours = 0;
+  std::uint64_t vertex_resolved_by_neighbours = 0;
+  std::uint64_t edge_resolved_by_neighbours = 0;
+  std::uint64_t resolved_by_refinement = 0;            // 3.4 or 3.7
+  std::uint64_t resolved_by_optimized_refinement = 0;  // ... of which 3.7
+  std::uint64_t resolved_by_fallback = 0;              // the normal-surface construction
+  std::uint64_t neighbour_set_tets = 0;         // sum of the sets removed by neighbours
+  std::uint64_t vertex_neighbour_set_tets = 0;
+  std::uint64_t edge_neighbour_set_tets = 0;
+  std::uint64_t selected_in_sets = 0;           // selected tets among the direct and neighbour sets
+  std::uint64_t tets_removed = 0;               // all tets removed, refined children included
+  std::uint64_t tets_created = 0;               // by refinement
+  std::uint64_t edges_split = 0;
+  std::uint64_t attempts_undone = 0;            // 3.4 / 3.7 attempts rolled back to the fallback
+
+  // Tets removed per request over the requests removed without refinement (1 for a direct
+  // removal). 0 when there are none.
+  [[nodiscard]] double mean_cardinality() const;
+  // Tets removed per selected tet they took, over the same sets: the paper's 1.3 (3.6).
+  [[nodiscard]] double cardinality_per_selected() const;
+  // Counts one request; `repeat` when the tet was left unresolved before.
+  void add(const RemovalResult& result, bool repeat);
+  bool operator==(const RemovalReport&) const = default;
+  // Adds another run's counts (a scenario that reloads or compacts its mesh has several).
+  RemovalReport& operator+=(const RemovalReport& other);
+};
+
+}  // namespace tetcut

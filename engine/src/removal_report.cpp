@@ -1,0 +1,91 @@
+#include "tetcut/removal_report.hpp"
+
+#include "tetcut/removal.hpp"
+
+namespace tetcut {
+
+double RemovalReport::mean_cardinality() const {
+  const std::uint64_t n = direct + resolved_by_neighbours;
+  if (n == 0) return 0.0;
+  return static_cast<double>(direct + neighbour_set_tets) / static_cast<double>(n);
+}
+
+double RemovalReport::cardinality_per_selected() const {
+  if (selected_in_sets == 0) return 0.0;
+  return static_cast<double>(direct + neighbour_set_tets) / static_cast<double>(selected_in_sets);
+}
+
+void RemovalReport::add(const RemovalResult& result, bool repeat) {
+  const SingularityKind kind = result.first.kind;
+  if (repeat) {
+    ++repeated_requests;
+  } else {
+    ++requested;
+    if (kind == SingularityKind::kVertex) ++vertex_singularities;
+    if (kind == SingularityKind::kEdge) ++edge_singularities;
+  }
+  if (result.outcome != RemovalOutcome::kUnresolved) {
+    ++removed;
+    if (repeat) --unresolved;
+    tets_removed += result.tets_removed;
+    tets_created += result.tets_created;
+    edges_split += result.edges_split;
+  }
+  switch (result.outcome) {
+    case RemovalOutcome::kDirect:
+      if (!repeat) {
+        ++direct;
+        selected_in_sets += result.selected_removed;
+      }
+      break;
+    case RemovalOutcome::kNeighbours:
+      ++resolved_by_neighbours;
+      neighbour_set_tets += result.tets_removed;
+      selected_in_sets += result.selected_removed;
+      if (kind == SingularityKind::kVertex) {
+        ++vertex_resolved_by_neighbours;
+        vertex_neighbour_set_tets += result.tets_removed;
+      } else {
+        ++edge_resolved_by_neighbours;
+        edge_neighbour_set_tets += result.tets_removed;
+      }
+      break;
+    case RemovalOutcome::kRefinement:
+      ++resolved_by_refinement;
+      if (result.optimized_refinement) ++resolved_by_optimized_refinement;
+      break;
+    case RemovalOutcome::kFallback:
+      ++resolved_by_fallback;
+      break;
+    case RemovalOutcome::kUnresolved:
+      if (!repeat) ++unresolved;
+      break;
+  }
+}
+
+RemovalReport& RemovalReport::operator+=(const RemovalReport& o) {
+  requested += o.requested;
+  repeated_requests += o.repeated_requests;
+  removed += o.removed;
+  unresolved += o.unresolved;
+  direct += o.direct;
+  vertex_singularities += o.vertex_singularities;
+  edge_singularities += o.edge_singularities;
+  resolved_by_neighbours += o.resolved_by_neighbours;
+  vertex_resolved_by_neighbours += o.vertex_resolved_by_neighbours;
+  edge_resolved_by_neighbours += o.edge_resolved_by_neighbours;
+  resolved_by_refinement += o.resolved_by_refinement;
+  resolved_by_optimized_refinement += o.resolved_by_optimized_refinement;
+  resolved_by_fallback += o.resolved_by_fallback;
+  neighbour_set_tets += o.neighbour_set_tets;
+  vertex_neighbour_set_tets += o.vertex_neighbour_set_tets;
+  edge_neighbour_set_tets += o.edge_neighbour_set_tets;
+  selected_in_sets += o.selected_in_sets;
+  tets_removed += o.tets_removed;
+  tets_created += o.tets_created;
+  edges_split += o.edges_split;
+  attempts_undone += o.attempts_undone;
+  return *this;
+}
+
+}  // namespace tetcut

@@ -1,0 +1,56 @@
+// Paper 3.5, as written: remove T with the smallest set of its neighbours that suppresses the
+// singularity without creating another one.
+//
+// Vertex singularity at v (cases 1 and 2). In the shell of v, find the shortest path of tets
+// from T to the border of the shell (breadth-first, depth <= 10: figure 4). Test T plus the
+// path. If that fails, "the path often divides the adjacency of one of the tetrahedron vertices
+// into two connected components": test T plus the path extended by each component of the
+// offending vertex's remaining shell (for an offending edge, each run of tets left around it).
+// The smallest removable candidate is kept; none gives the empty set.
+//
+// Edge singularity at e (case 3). T lies inside the open ring of tets around the boundary edge
+// e: test T with the tets on its left, with those on its right (the smaller wins), then with
+// all of them. None gives the empty set.
+//
+// Cost: O(shell of v or e) plus one set test per candidate (at most 2 + components). Never
+// mutates the mesh.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tetcut/mesh.hpp"
+#include "tetcut/removability.hpp"
+#include "tetcut/set_removal.hpp"
+
+namespace tetcut::detail {
+
+class NeighbourSearch {
+ public:
+  // A removable set containing t into `out`; false (out unspecified) when the paper's
+  // candidates all fail. `first` is the O(1) test's verdict on t (not removable).
+  bool find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first, int max_depth,
+            std::uint32_t max_set_size, std::vector<TetId>& out);
+
+ private:
+  // Tests base + extra; keeps it in `out` when removable and smaller than what `out` holds.
+  void consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> base,
+                std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out);
+
+  std::vector<TetId> base_, candidate_, parts_;
+  std::vector<std::uint32_t> sizes_;
+};
+
+// The shortest path of paper 3.5 (figure 4) from t to the border of v's shell, t excluded,
+// nearest to t first: what 3.7 refines along. False when none is within max_depth.
+bool shortest_path_to_border(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, VertId v, int max_depth,
+                             std::vector<TetId>& path);
+
+// The tets around edge (a, b) other than t, split by t into the two runs of the open ring:
+// appended to `tets`, run after run, with the runs' sizes in `sizes` (paper 3.5: the leftmost
+// and rightmost tets).
+void sides_of_edge(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, VertId a, VertId b, std::vector<TetId>& tets,
+                   std::vector<std::uint32_t>& sizes);
+
+}  // namespace tetcut::detail

@@ -1,0 +1,106 @@
+#include "remove/refinement_strategies.hpp"
+
+#include <algorithm>
+
+#include "remove/neighbour_search.hpp"
+#include "tetcut/local_tables.hpp"
+
+namespace tetcut::detail {
+namespace {
+
+bool contains_all(const TetMesh& mesh, TetId t, std::span<const VertId> verts) {
+  for (VertId v : verts)
+    if (mesh.local_index(t, v) < 0) return false;
+  return true;
+}
+
+}  // namespace
+
+void RefinementStrategies::add_edges_from(const TetMesh& mesh, VertId from, std::span<const TetId> tets,
+                                          std::span<const VertId> skip) {
+  for (TetId u : tets)
+    for (int i = 0; i < 4; ++i) {
+      const VertId w = mesh.vertex(u, i);
+      if (w == from || std::find(skip.begin(), skip.end(), w) != skip.end()) continue;
+      const bool known = std::any_of(edges_.begin(), edges_.end(), [&](const Edge& e) { return e.a == from && e.b == w; });
+      if (!known) edges_.push_back({from, w, u});
+    }
+}
+
+std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId t, std::span<const VertId> at,
+                                                     const WideSearchLimits& repair) {
+  const RemovalContext::Mark before = ctx.mark();
+  std::sort(parents_.begin(), parents_.end());
+  if (!ctx.split(edges_, split_log_)) return 0;
+  set_.clear();
+  bool t_split = false;
+  for (const CreatedTet& c : split_log_.created) {
+    // No id is reused inside the transaction, so a parent id still names the tet it named.
+    if (c.parent == t) {
+      t_split = true;
+      set_.push_back(c.tet);
+    } else if (std::binary_search(parents_.begin(), parents_.end(), c.parent) && contains_all(ctx.mesh, c.tet, at)) {
+      set_.push_back(c.tet);
+    }
+  }
+  if (!t_split) set_.push_back(t);
+  const SetRemovalCheck check = ctx.ws.check(ctx.mesh, set_);
+  if (check.ok) {
+    ctx.remove_set(set_);
+    return static_cast<std::uint32_t>(set_.size());
+  }
+  if (search_.find(ctx.mesh, ctx.ws, set_, check, repair, repaired_)) {
+    ctx.remove_set(repaired_);
+    return static_cast<std::uint32_t>(repaired_.size());
+  }
+  ctx.rollback_to(before);
+  return 0;
+}
+
+std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t, const Removability& first,
+                                          const WideSearchLimits& repair) {
+  edges_.clear();
+  if (first.kind == SingularityKind::kVertex) {
+    ctx.mesh.vertex_shell(first.vertex, parents_);
+    add_edges_from(ctx.mesh, first.vertex, parents_, {});
+    const VertId at[1] = {first.vertex};
+    return split_and_remove(ctx, t, at, repair);
+  }
+  const VertId ends[2] = {first.edge.a, first.edge.b};
+  const int local_edge = kEdgeIndex[ctx.mesh.local_index(t, ends[0])][ctx.mesh.local_index(t, ends[1])];
+  ctx.mesh.edge_shell(t, local_edge, parents_);
+  for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
+  return split_and_remove(ctx, t, ends, repair);
+}
+
+std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, const Removability& first,
+                                              const WideSearchLimits& repair) {
+  if (first.kind == SingularityKind::kVertex) {
+    // Along the shortest path from T to the border of v's shell (paper 3.7, figure 4).
+    if (!shortest_path_to_border(ctx.mesh, ctx.ws, t, first.vertex, repair.max_path_depth, sides_)) return 0;
+    parents_.assign(1, t);
+    parents_.insert(parents_.end(), sides_.begin(), sides_.end());
+    edges_.clear();
+    add_edges_from(ctx.mesh, first.vertex, parents_, {});
+    const VertId at[1] = {first.vertex};
+    return split_and_remove(ctx, t, at, repair);
+  }
+  // One side of T around the edge, the smaller first (paper 3.7: "the rightmost or leftmost").
+  const VertId ends[2] = {first.edge.a, first.edge.b};
+  sides_of_edge(ctx.mesh, ctx.ws, t, ends[0], ends[1], sides_, sizes_);
+  if (sizes_.size() != 2) return 0;
+  const bool first_smaller = sizes_[0] <= sizes_[1];
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    const bool take_first = (attempt == 0) == first_smaller;
+    const auto begin = sides_.begin() + (take_first ? 0 : sizes_[0]);
+    parents_.assign(1, t);
+    parents_.insert(parents_.end(), begin, begin + (take_first ? sizes_[0] : sizes_[1]));
+    edges_.clear();
+    for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
+    if (const std::uint32_t n = split_and_remove(ctx, t, ends, repair)) return n;
+    if (ctx.over_budget) return 0;
+  }
+  return 0;
+}
+
+}  // namespace tetcut::detail

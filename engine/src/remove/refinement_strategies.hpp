@@ -1,0 +1,53 @@
+// Paper 3.4 and 3.7: resolve a singularity by refining around it, then removing the small tets
+// at the singularity together with T's children.
+//
+//   3.4 (basic)      split every edge at the singular vertex v (every edge from an end of the
+//                    singular edge e to the tets around e); the set is the children containing v
+//                    (containing e) and T's children.
+//   3.7 (optimized)  split only the edges at v of T and of the tets on the shortest path from T
+//                    to the border of v's shell (paper 3.5's path); for an edge, only those of
+//                    the tets on one side of T around e (the smaller side first, then the
+//                    other). The set is the children of those tets at v (at e) and T's children.
+//
+// The paper says of 3.4 "we can formally prove that these set of tetrahedra can always be
+// removed"; they cannot always (docs/removal-proof.md gives the configuration: a boundary edge
+// from another surface vertex of T to v). So each attempt plans its edges on the unchanged
+// mesh, splits (the splitter validates every child first) and tests the set. A set that is not
+// removable is repaired among the small tets by the wide search (wide_search.hpp: no further
+// split); if that fails too, the split is rolled back to the savepoint taken before it and the
+// caller uses the fallback. Without the repair, 3.7 failed three times in four when hollowing a
+// box at random, and each fallback creates tens of tets.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "remove/removal_context.hpp"
+#include "remove/wide_search.hpp"
+#include "tetcut/removability.hpp"
+
+namespace tetcut::detail {
+
+class RefinementStrategies {
+ public:
+  // Each returns the size of the set removed, 0 when the attempt failed (the mesh as before).
+  std::uint32_t basic(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair);
+  std::uint32_t optimized(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair);
+
+ private:
+  // Edges from `from` to the other vertices of `tets` (one hint each), into edges_.
+  void add_edges_from(const TetMesh& mesh, VertId from, std::span<const TetId> tets, std::span<const VertId> skip);
+  // Splits edges_, then removes T's children and the children of parents_ containing every
+  // vertex of `at`, if removable; otherwise rolls back.
+  std::uint32_t split_and_remove(RemovalContext& ctx, TetId t, std::span<const VertId> at,
+                                 const WideSearchLimits& repair);
+
+  WideSearch search_;
+  std::vector<Edge> edges_;
+  std::vector<TetId> parents_, sides_, set_, repaired_;
+  std::vector<std::uint32_t> sizes_;
+  ChangeLog split_log_;
+};
+
+}  // namespace tetcut::detail
