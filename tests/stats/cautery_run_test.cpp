@@ -28,7 +28,7 @@ TEST(CauteryRun, CombinedRemovesEveryRequestedTetAndTheCountsAddUp) {
   EXPECT_GT(r.requested, 100u);
   EXPECT_EQ(r.unresolved, 0u);
   EXPECT_EQ(r.direct + r.vertex_singularities + r.edge_singularities, r.requested);
-  EXPECT_EQ(r.direct + r.resolved_by_neighbours + r.resolved_by_refinement + r.resolved_by_flood, r.removed);
+  EXPECT_EQ(r.direct + r.resolved_by_neighbours + r.resolved_by_refinement + r.resolved_by_fallback, r.removed);
   EXPECT_LE(r.vertex_resolved_by_neighbours, r.vertex_singularities);
   EXPECT_LE(r.edge_resolved_by_neighbours, r.edge_singularities);
   EXPECT_EQ(c.cut_us.size(), c.result.cuts.size());
@@ -51,12 +51,15 @@ TEST(CauteryRun, TheStrategyChosenIsTheOneRun) {
   CauteryOptions o;
   o.strategy = RemovalStrategy::kNeighbours;
   const CauteryResult neighbours = run_cautery(one_cut, o);
-  ASSERT_TRUE(neighbours.run && neighbours.run->result.ok);
+  // The scenario expects nothing unresolved, which holds for combined (its strategy), not
+  // necessarily for the paper's search alone: a run that stops, stops on that line only.
+  ASSERT_TRUE(neighbours.run);
+  if (!neighbours.run->result.ok) EXPECT_NE(neighbours.run->result.error.find("unresolved"), std::string::npos);
   // The neighbour strategy never refines to remove (paper 3.5): what it cannot take stays.
   const RemovalReport& n = neighbours.run->result.removal;
   EXPECT_GT(n.resolved_by_neighbours, 0u);
   EXPECT_EQ(n.resolved_by_refinement, 0u);
-  EXPECT_EQ(n.resolved_by_flood, 0u);
+  EXPECT_EQ(n.resolved_by_fallback, 0u);
   EXPECT_EQ(n.unresolved, n.requested - n.removed);
   // The basic one (3.4) always refines.
   o.strategy = RemovalStrategy::kBasic;

@@ -112,7 +112,10 @@ def main():
               "%s: diff is ours minus the paper's" % row["mesh"])
     for row in stats.get("table2", []):
         check(row["combined_unresolved_pct"] == 0, "%s: combined leaves nothing unresolved" % row["mesh"])
-        check(row["global_cardinality"] >= 1, "%s: global cardinality >= 1" % row["mesh"])
+        check(row["global_cardinality_per_selected"] >= 1, "%s: global cardinality >= 1" % row["mesh"])
+        check(row["global_cardinality_per_request"] >= row["global_cardinality_per_selected"],
+              "%s: per request >= per selected" % row["mesh"])
+        check("resolved_by_flood" not in row["counts"], "%s: no flood any more" % row["mesh"])
     names = [r["name"] for r in stats.get("strategies", [])]
     for name in ("basic", "neighbours", "combined", "combined, bisection"):
         check(name in names, "strategy row %s" % name)

@@ -58,7 +58,7 @@ std::string cut_report_json(const std::vector<scenario::CutRecord>& cuts, const 
     w.field("edge_singularities", r.edge_singularities);
     w.field("resolved_by_neighbours", r.resolved_by_neighbours);
     w.field("resolved_by_refinement", r.resolved_by_refinement);
-    w.field("resolved_by_flood", r.resolved_by_flood);
+    w.field("resolved_by_fallback", r.resolved_by_fallback);
     w.field("unresolved", r.unresolved);
     w.field("min_radius_ratio", r.min_radius_ratio);
     w.end_object();

@@ -22,7 +22,9 @@ void removal_counts(JsonWriter& w, const RemovalReport& r) {
   w.field("edge_neighbour_set_tets", r.edge_neighbour_set_tets);
   w.field("resolved_by_refinement", r.resolved_by_refinement);
   w.field("resolved_by_optimized_refinement", r.resolved_by_optimized_refinement);
-  w.field("resolved_by_flood", r.resolved_by_flood);
+  w.field("resolved_by_fallback", r.resolved_by_fallback);
+  w.field("selected_in_sets", r.selected_in_sets);
+  w.field("attempts_undone", r.attempts_undone);
   w.field("unresolved", r.unresolved);
   w.field("tets_removed", r.tets_removed);
   w.field("tets_created", r.tets_created);
@@ -109,7 +111,11 @@ std::string stats_json(const stats::StatsReport& report) {
                         {"edge_unresolved_pct", o.edge_unresolved_pct, p.edge_unresolved_pct},
                         {"edge_cardinality", o.edge_cardinality, p.edge_cardinality},
                         {"global_unresolved_pct", o.global_unresolved_pct, p.global_unresolved_pct},
-                        {"global_cardinality", o.global_cardinality, p.global_cardinality}});
+                        {"global_cardinality_per_selected", o.global_cardinality, p.global_cardinality}});
+    // The paper's global cardinality is per selected tet (3.6: "removed when a single
+    // tetrahedron should be removed"); per request is ours, for comparison.
+    w.field("global_cardinality_per_request", o.global_cardinality_per_request);
+    w.field("paper_global_cardinality_is", "per_selected");
     w.field("combined_unresolved_pct", o.combined_unresolved_pct);
     removal_counts(w, m.removal);
     w.end_object();
@@ -134,6 +140,7 @@ std::string stats_json(const stats::StatsReport& report) {
     if (!r.ok) w.field("error", r.error);
     w.field("tets_after", r.tets_after);  // at the stop when !ok
     w.field("worst_radius_ratio", r.worst_radius_ratio);
+    w.field("worst_created_radius_ratio", r.worst_created_radius_ratio);
     w.field("mean_radius_ratio", r.mean_radius_ratio);
     w.field("p50_us", r.p50_us);
     w.field("p99_us", r.p99_us);

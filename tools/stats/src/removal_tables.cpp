@@ -31,7 +31,8 @@ Table2Row table2_row(const RemovalReport& r) {
   row.edge_cardinality = average(r.edge_neighbour_set_tets, r.edge_resolved_by_neighbours);
   const std::uint64_t by_neighbours_or_direct = r.direct + r.resolved_by_neighbours;
   row.global_unresolved_pct = percent(r.requested - by_neighbours_or_direct, r.requested);
-  row.global_cardinality = average(r.direct + r.neighbour_set_tets, by_neighbours_or_direct);
+  row.global_cardinality = average(r.direct + r.neighbour_set_tets, r.selected_in_sets);
+  row.global_cardinality_per_request = average(r.direct + r.neighbour_set_tets, by_neighbours_or_direct);
   row.combined_unresolved_pct = percent(r.unresolved, r.requested);
   return row;
 }

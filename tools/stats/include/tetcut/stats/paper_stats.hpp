@@ -59,6 +59,7 @@ struct StrategyRow {
   std::uint64_t unresolved = 0;         // distinct tets left in place at the end
   std::uint32_t tets_after = 0;         // these three: at the stop when !ok
   double worst_radius_ratio = 0, mean_radius_ratio = 0;  // of the mesh after the scenario
+  double worst_created_radius_ratio = 1;                 // of the tets the cuts created
   double p50_us = 0, p99_us = 0;        // per cut
   bool ok = true;
   std::string error;                    // why the run stopped early

@@ -27,7 +27,11 @@ struct Table2Row {
   double edge_unresolved_pct = 0;
   double edge_cardinality = 0;
   double global_unresolved_pct = 0;  // over all operations
-  double global_cardinality = 0;     // tets removed per operation removed without refinement
+  // Tets removed by direct and neighbour removals, per selected tet they took: the paper's
+  // "average number of tetrahedra removed when a single tetrahedron should be removed" (3.6).
+  double global_cardinality = 0;
+  // The same tets per request (a set that swallows selected tets counts once): always larger.
+  double global_cardinality_per_request = 0;
   double combined_unresolved_pct = 0;  // left in place by the whole strategy: must be 0
 };
 
