@@ -87,7 +87,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const Requ
   const TetMesh::Savepoint start = mesh.savepoint();
   w.log.clear();
   w.exposed.clear();
-  detail::RemovalContext ctx{mesh, w.set_test, w.splitter, w.log, w.exposed, limits.max_tets_created};
+  detail::RemovalContext ctx{mesh, w.set_test, w.splitter, w.log, w.exposed, limits.max_tets_created, limits.selection};
 
   RemovalResult result;
   result.first = removability(mesh, t);

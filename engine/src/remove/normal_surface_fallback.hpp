@@ -31,7 +31,7 @@ class NormalSurfaceFallback {
 
  private:
   std::vector<Edge> edges_;
-  std::vector<TetId> shell_, set_;
+  std::vector<TetId> shell_, set_, larger_;
   std::vector<std::uint32_t> midpoints_;  // sorted: the vertices with f = 1/2
   ChangeLog split_log_;
 };

@@ -44,6 +44,10 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
     }
   }
   if (!t_split) set_.push_back(t);
+  if (ctx.with_selected_children(set_, split_log_, repaired_) && ctx.ws.check(ctx.mesh, repaired_).ok) {
+    ctx.remove_set(repaired_);
+    return static_cast<std::uint32_t>(repaired_.size());
+  }
   const SetRemovalCheck check = ctx.ws.check(ctx.mesh, set_);
   if (check.ok) {
     ctx.remove_set(set_);

@@ -40,4 +40,14 @@ void RemovalContext::remove_set(std::span<const TetId> set) {
   mesh.remove_tets(set);
 }
 
+bool RemovalContext::with_selected_children(std::span<const TetId> set, const ChangeLog& split_log,
+                                            std::vector<TetId>& out) {
+  if (!selection) return false;
+  out.assign(set.begin(), set.end());
+  ws.mark(mesh, set);
+  for (const CreatedTet& c : split_log.created)
+    if (selection->contains(c.parent) && mesh.is_live(c.tet) && !ws.marked(c.tet)) out.push_back(c.tet);
+  return out.size() > set.size();
+}
+
 }  // namespace tetcut::detail

@@ -11,6 +11,7 @@
 #include "tetcut/change_log.hpp"
 #include "tetcut/edge_split.hpp"
 #include "tetcut/mesh.hpp"
+#include "tetcut/removal.hpp"
 #include "tetcut/set_removal.hpp"
 
 namespace tetcut::detail {
@@ -22,6 +23,7 @@ struct RemovalContext {
   ChangeLog& log;                   // the request's history (what survives of it)
   std::vector<TetId>& exposed;      // live tets that came to the surface
   std::uint32_t budget;             // tets the request may still create
+  const Selection* selection = nullptr;  // the caller's selected tets, if any
   bool over_budget = false;         // a split was refused for the budget
   std::uint32_t tets_created = 0;   // by the splits that survive
   std::uint32_t edges_split = 0;
@@ -41,6 +43,12 @@ struct RemovalContext {
   bool split(std::span<const Edge> edges, ChangeLog& split_log);
   // Removes a set that set_removable() accepted, recording it and the tets it exposes.
   void remove_set(std::span<const TetId> set);
+
+  // After a split: `set` plus every child of a selected parent not in it yet, into `out`; false
+  // when there is none to add. A selected parent was to go whole, so its children, all of them,
+  // are the same tissue: taking them in the same request spares the cut as many requests, each
+  // of which would refine again (3.4's cascade of ever smaller tets).
+  bool with_selected_children(std::span<const TetId> set, const ChangeLog& split_log, std::vector<TetId>& out);
 };
 
 }  // namespace tetcut::detail
