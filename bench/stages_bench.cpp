@@ -153,7 +153,7 @@ void BM_RemovalByStrategy(benchmark::State& state) {
 }
 BENCHMARK(BM_RemovalByStrategy)
     ->ArgsProduct({{static_cast<int>(tetcut::RemovalStrategy::kBasic), static_cast<int>(tetcut::RemovalStrategy::kNeighbours),
-                    static_cast<int>(tetcut::RemovalStrategy::kCombined)},
+                    static_cast<int>(tetcut::RemovalStrategy::kCombined), static_cast<int>(tetcut::RemovalStrategy::kWide)},
                    {0, 1}})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
