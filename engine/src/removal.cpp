@@ -12,6 +12,7 @@
 #include "tetcut/edge_split.hpp"
 #include "tetcut/local_tables.hpp"
 #include "tetcut/set_removal.hpp"
+#include "tetcut/split_templates.hpp"
 
 namespace tetcut {
 
@@ -62,7 +63,11 @@ const char* to_string(RemovalOutcome outcome) {
   return "?";
 }
 
-Remover::Remover(RemovalOptions options) : options_(options), ws_(std::make_unique<Workspace>()) {}
+Remover::Remover(RemovalOptions options) : options_(options), ws_(std::make_unique<Workspace>()) {
+  // The split templates are a table built on first use (about 15 million instructions): pay it
+  // here, not inside the first request that refines.
+  (void)split_template(1, 0);
+}
 Remover::~Remover() = default;
 Remover::Remover(Remover&&) noexcept = default;
 Remover& Remover::operator=(Remover&&) noexcept = default;
