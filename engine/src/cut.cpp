@@ -188,7 +188,8 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
 
   // Select T_removal (paper 3.3).
   for (TetId t : region_) {
-    if (!mesh_.is_live(t) || !selectable(t)) continue;
+    // The refinement's own tets inside the tool were selected as they were made (follow()).
+    if (!mesh_.is_live(t) || selected_[t.value] == generation_ || !selectable(t)) continue;
     selected_[t.value] = generation_;
     removal_.push_back(t);
   }

@@ -51,6 +51,7 @@ std::string cut_report_json(const std::vector<scenario::CutRecord>& cuts, const 
     w.field("refine_iterations", r.refine_iterations);
     w.field("edges_split", r.edges_split);
     w.field("requested", r.requested);
+    w.field("requests", r.requests);
     w.field("tets_removed", r.tets_removed);
     w.field("tets_created", r.tets_created);
     w.field("direct", r.direct);
