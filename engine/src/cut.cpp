@@ -71,6 +71,17 @@ TetId Cutter::tet_containing(const Vec3& p) {
   return hit_.empty() ? kNoTet : hit_.front();
 }
 
+void Cutter::next_generation() {
+  grow_marks();
+  net_created_count_ = 0;
+  if (++generation_ != 0) return;
+  // Wrapped around: clear the marks once.
+  std::fill(made_.begin(), made_.end(), 0u);
+  std::fill(selected_.begin(), selected_.end(), 0u);
+  std::fill(tried_.begin(), tried_.end(), 0u);
+  generation_ = 1;
+}
+
 void Cutter::grow_marks() {
   const std::size_t n = mesh_.tet_capacity();
   if (made_.size() >= n) return;
@@ -147,13 +158,7 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
 
   log_.clear();
   mesh_.begin_transaction();
-  if (++generation_ == 0) {  // wrapped: clear the marks once
-    std::fill(made_.begin(), made_.end(), 0u);
-    std::fill(selected_.begin(), selected_.end(), 0u);
-    std::fill(tried_.begin(), tried_.end(), 0u);
-    generation_ = 1;
-  }
-  net_created_count_ = 0;
+  next_generation();
   tool_ = tool;
   d_ref_ = d_ref;
   removal_.clear();
@@ -218,9 +223,7 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
   const Clock::time_point t0 = Clock::now();
   log_.clear();
   mesh_.begin_transaction();
-  if (++generation_ == 0) generation_ = 1;
-  grow_marks();
-  net_created_count_ = 0;
+  next_generation();
   tool_.reset();  // no tool: the request alone, no children join it
   removal_.assign(1, t);
   selected_[t.value] = generation_;

@@ -115,6 +115,7 @@ class Cutter {
   [[nodiscard]] bool selectable(TetId t) const;
   [[nodiscard]] bool pending(TetId t) const;
   void grow_marks();
+  void next_generation();  // a new cut: fresh marks
   void finish(CutReport& report, ChangeLog* log);
 
   TetMesh& mesh_;
