@@ -113,7 +113,7 @@ void SequenceSession::full_check() {
 SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,
                             const std::function<void(std::uint8_t, FuzzedDataProvider&, ScenarioRecorder&)>& body) {
   SequenceResult result;
-  if (size == 0 || !(options.legacy_versions ? is_sequence_version(data[0]) : data[0] == kSequenceVersion)) return result;
+  if (size == 0 || !(options.legacy_versions ? is_sequence_version(data[0]) : is_current_sequence_version(data[0]))) return result;
   result.accepted = true;
   result.version = data[0];
   FuzzedDataProvider input(data + 1, size - 1);
