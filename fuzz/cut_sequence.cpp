@@ -12,6 +12,7 @@ namespace {
 enum class Op : std::uint8_t { kParam, kCutPoint, kCutSurface, kSweep, kLast = kSweep };
 
 struct Context {
+  std::uint8_t version;
   const BundledMesh& bundled;
   const Limits& limits;
   CutParams params;
@@ -25,20 +26,29 @@ Vec3 rounded(const Vec3& p, double quantum) {
 // Two significant digits.
 double round_significant(double x) { return round_to(x, coordinate_quantum(x, 1)); }
 
+// 10^u, u uniform in [lo, hi]: every order of magnitude as likely as the next.
+double consume_log_uniform(FuzzedDataProvider& input, double lo_exponent, double hi_exponent) {
+  return std::pow(10.0, consume_in(input, lo_exponent, hi_exponent));
+}
+
 void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
   CutParams& p = ctx.params;
   std::string name, value;
+  // Version 3: the ranges a user reaches by mistake (a tool in micrometres, a factor off by a
+  // hundred, p a hair above 1); up to 10^4 mean edges is a thousand times a fuzz mesh's size.
+  const bool wide = ctx.version >= kSequenceVersion;
   switch (input.ConsumeIntegralInRange<int>(0, 6)) {
     case 0:
-      p.tool_diameter = round_significant(ctx.bundled.mean_edge * consume_in(input, 0.5, 2.0));
+      p.tool_diameter = round_significant(ctx.bundled.mean_edge * (wide ? consume_log_uniform(input, -2.0, 4.0)
+                                                                         : consume_in(input, 0.5, 2.0)));
       name = "diameter", value = format_number(p.tool_diameter);
       break;
     case 1:
-      p.d_ref_factor = round_to(consume_in(input, 1.0, 3.0), 0.01);
+      p.d_ref_factor = wide ? round_significant(consume_log_uniform(input, -2.5, 1.0)) : round_to(consume_in(input, 1.0, 3.0), 0.01);
       name = "dref_factor", value = format_number(p.d_ref_factor);
       break;
     case 2:
-      p.p = round_to(consume_in(input, 1.1, 3.0), 0.01);
+      p.p = wide ? 1.0 + round_significant(consume_log_uniform(input, -3.0, 1.0)) : round_to(consume_in(input, 1.1, 3.0), 0.01);
       name = "p", value = format_number(p.p);
       break;
     case 3:
@@ -138,7 +148,7 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
   recorder.add("# tetcut replay --target cut_sequence (input version " + std::to_string(version) + ")");
   recorder.add("mesh " + bundled.path);
   SequenceSession session(bundled, recorder);
-  Context ctx{bundled, limits, session.cutter().params(), coordinate_quantum(bundled.box.diagonal(), 3)};
+  Context ctx{version, bundled, limits, session.cutter().params(), coordinate_quantum(bundled.box.diagonal(), 3)};
   std::size_t since_check = 0;
   const std::uint32_t max_tets = kMaxTetsFactor * bundled.mesh.num_tets();
   for (std::size_t i = 0; i < limits.max_operations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&

@@ -1,8 +1,8 @@
 // The removal_sequence target's decoder and runner (fuzz/targets/removal_sequence.cpp is its
 // libFuzzer entry point; `tetcut replay --target removal_sequence` calls the same run()).
 //
-// Input: version byte (1 or 2, sequence_support.hpp), then (FuzzedDataProvider) the mesh (version
-// 1: the bundled cylinder, sheet, liver-coarse; version 2: their small fuzz versions), then up to
+// Input: version byte (1, 2 or 3, sequence_support.hpp), then (FuzzedDataProvider) the mesh (version
+// 1: the bundled cylinder, sheet, liver-coarse; versions 2 and 3 (read as 2): their small fuzz versions), then up to
 // Limits::max_operations operations, each an opcode and its arguments:
 //   strategy S          basic | neighbours | combined (the initial strategy is combined)
 //   remove boundary     the first live tet with a boundary face at or after a chosen id

@@ -1,7 +1,9 @@
 #include "sequence_session.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 #include "tetcut/canonical_hash.hpp"
 
@@ -14,6 +16,9 @@ SequenceSession::SequenceSession(const BundledMesh& bundled, ScenarioRecorder& r
   // A failure on demand, to test what reports failures (tetcut replay's exit code and messages)
   // without depending on a bug of the engine.
   if (const char* env = std::getenv("TETCUT_FUZZ_FAIL_AT")) fail_at_ = std::strtoull(env, nullptr, 10);
+  // The same for slowness (issue 16): operation N sleeps 30 s, so that ci/fuzz-nightly's
+  // timeout handling can be tried without a slow engine.
+  if (const char* env = std::getenv("TETCUT_FUZZ_SLOW_AT")) slow_at_ = std::strtoull(env, nullptr, 10);
   grow_volumes();
   for (std::uint32_t t = 0; t < mesh().tet_capacity(); ++t)
     if (mesh().is_live(TetId{t})) volume_[t] = mesh().volume(TetId{t});
@@ -34,6 +39,7 @@ void SequenceSession::grow_volumes() {
 void SequenceSession::begin(const std::string& name, std::uint32_t line) {
   checked_.begin(name);
   recorder_.map_operation(checked_.operation_index(), line);
+  if (checked_.operation_index() == slow_at_) std::this_thread::sleep_for(std::chrono::seconds(30));
   if (checked_.operation_index() == fail_at_)
     checked_.require(false, "injected", "TETCUT_FUZZ_FAIL_AT=" + std::to_string(fail_at_) + " (a test of the harness)");
 }
@@ -113,7 +119,7 @@ void SequenceSession::full_check() {
 SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,
                             const std::function<void(std::uint8_t, FuzzedDataProvider&, ScenarioRecorder&)>& body) {
   SequenceResult result;
-  if (size == 0 || !(options.legacy_versions ? is_sequence_version(data[0]) : data[0] == kSequenceVersion)) return result;
+  if (size == 0 || !(options.legacy_versions ? is_sequence_version(data[0]) : is_current_sequence_version(data[0]))) return result;
   result.accepted = true;
   result.version = data[0];
   FuzzedDataProvider input(data + 1, size - 1);

@@ -9,7 +9,8 @@
 //     the operation instead made every rollback cost the whole prefix again);
 //   - the full check when asked (check lines) and at the end.
 // TETCUT_FUZZ_FAIL_AT=N in the environment makes operation N fail ("injected"): a test of what
-// reports failures, independent of any bug.
+// reports failures, independent of any bug. TETCUT_FUZZ_SLOW_AT=N makes operation N take 30 s:
+// the same for what reports slowness (ci/fuzz-nightly's timeouts).
 #pragma once
 
 #include <cstddef>
@@ -72,6 +73,7 @@ class SequenceSession {
   std::vector<double> volume_;  // per tet id, of the live tets
   std::uint64_t unresolved_ = 0;
   std::size_t fail_at_ = 0;  // TETCUT_FUZZ_FAIL_AT; 0: never
+  std::size_t slow_at_ = 0;  // TETCUT_FUZZ_SLOW_AT; 0: never
   bool changed_since_full_check_ = false;
 };
 

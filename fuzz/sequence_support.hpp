@@ -31,11 +31,18 @@ namespace tetcut::fuzz {
 // was found:
 //   1  the bundled meshes of corpus/meshes (3,350-4,100 tets), up to 24 operations;
 //   2  the small fuzz meshes of corpus/fuzz/meshes (238-395 tets, made by the same generators),
-//      fewer operations: what the fuzzers run now. On a bundled mesh the O(#T) parts of an input
-//      (copying the mesh, the Cutter's index, the full check) were nine tenths of its time.
+//      fewer operations. On a bundled mesh the O(#T) parts of an input (copying the mesh, the
+//      Cutter's index, the full check) were nine tenths of its time.
+//   3  as 2, but cut_sequence draws the tool diameter, the D_ref factor and p from wide
+//      log-uniform ranges, as users mistype them (issue 16: a 1e6 tool or a D_ref factor of 0.01
+//      hung a cut, and the narrow ranges of version 2 never tried them). removal_sequence,
+//      which sets none of them, reads 3 as 2.
+// The fuzzers run versions 2 and 3 (is_current_sequence_version); 1 only replays.
 inline constexpr std::uint8_t kSequenceVersionBundled = 1;
-inline constexpr std::uint8_t kSequenceVersion = 2;
-inline bool is_sequence_version(std::uint8_t v) { return v == kSequenceVersionBundled || v == kSequenceVersion; }
+inline constexpr std::uint8_t kSequenceVersionSmall = 2;
+inline constexpr std::uint8_t kSequenceVersion = 3;
+inline bool is_sequence_version(std::uint8_t v) { return v >= kSequenceVersionBundled && v <= kSequenceVersion; }
+inline bool is_current_sequence_version(std::uint8_t v) { return v == kSequenceVersionSmall || v == kSequenceVersion; }
 
 // The meshes an input chooses from with one value, per version.
 inline constexpr std::array<std::string_view, 3> kBundledMeshes = {"cylinder.msh", "sheet.msh", "liver-coarse.msh"};
@@ -93,7 +100,8 @@ class ScenarioRecorder {
 struct SequenceOptions {
   bool record_scenario = false;   // fill SequenceResult::scenario
   bool capture_failures = false;  // a finding becomes SequenceResult::finding instead of abort()
-  // false: only kSequenceVersion is accepted. ci/fuzz-nightly fuzzes so (legacy_versions_from_env):
+  // false: only the small-mesh versions (is_current_sequence_version) are accepted.
+  // ci/fuzz-nightly fuzzes so (legacy_versions_from_env):
   // a version 1 input is an order of magnitude slower (its mesh is ten times larger), and
   // libFuzzer gave most of its time to the version 1 seeds and their mutants; ctest and
   // `tetcut replay` still run every version.

@@ -46,6 +46,7 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
   const std::uint32_t vertices = mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024;
   mesh_.reserve(tets, vertices);
   index_.build(mesh_);
+  scale_ = measure_scale(mesh_);
   refiner_.reserve(tets);
   remover_.reserve(tets, vertices);
   made_.assign(tets, 0);
@@ -137,7 +138,9 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
   CutReport report;
   net_removed_.clear();
   net_created_.clear();
-  if (auto invalid = validate(params_)) {
+  auto invalid = validate(params_);
+  if (!invalid) invalid = check_scale(scale_, params_.tool_diameter, params_.d_ref_factor, params_.max_tets_created);
+  if (invalid) {
     report.ok = false;
     report.failure = *invalid;
     return report;
@@ -179,12 +182,12 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
   refine.max_iterations = params_.max_refine_iterations;
   refine.method = params_.split_method;
   refine.focus = tool;
+  refine.max_tets_created = params_.max_tets_created;  // checked before each round (net)
   refine_log_.clear();
   const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_, &refine_log_);
   if (refined.refusal != SplitRefusal::kNone)
     return fail(std::string("refinement refused: ") + to_string(refined.refusal));
   follow(refine_log_);
-  if (net_created_count_ > params_.max_tets_created) return fail("the refinement would exceed the per-cut tet budget");
   report.refine_iterations = refined.iterations;
   report.edges_split = refined.edges_split;
   report.tets_refined = refined.tets_removed;

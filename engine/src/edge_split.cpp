@@ -52,7 +52,7 @@ const char* to_string(SplitRefusal refusal) {
     case SplitRefusal::kNone: return "none";
     case SplitRefusal::kNotAnEdge: return "the two vertices are not joined by an edge of the mesh";
     case SplitRefusal::kDegenerateChild: return "a child tet would be inverted or flat";
-    case SplitRefusal::kOverBudget: return "it would exceed the per-cut tet budget";
+    case SplitRefusal::kOverBudget: return "it would create more tets than the per-cut budget (max_tets_created) allows";
   }
   return "unknown";
 }
@@ -95,7 +95,7 @@ bool EdgeSplitter::collect_shell(const TetMesh& mesh, const PlannedEdge& e) {
 }
 
 SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, SplitMethod method,
-                                std::vector<TetId>* created, ChangeLog* log, std::uint32_t max_tets_created) {
+                                std::vector<TetId>* created, ChangeLog* log, std::uint64_t max_created) {
   SplitResult result;
   edges_.clear();
   for (const Edge& e : edges) {
@@ -122,7 +122,7 @@ SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, Spli
       all_edges = false;
       break;
     }
-  if (all_edges) result = plan_and_apply(mesh, method, created, log, max_tets_created);
+  if (all_edges) result = plan_and_apply(mesh, method, created, log, max_created);
   for (const AffectedTet& a : affected_) affected_slot_[a.tet.value] = 0;  // leave the scratch clean
   return result;
 }
@@ -131,7 +131,7 @@ SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, Spli
 // them with the exact predicate, and only then mutates: midpoints first, then one
 // replace_tets() for all parents.
 SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std::vector<TetId>* created,
-                                         ChangeLog* log, std::uint32_t max_tets_created) {
+                                         ChangeLog* log, std::uint64_t max_created) {
   SplitResult result;
   all_labels_.clear();
   children_per_parent_.clear();
@@ -170,11 +170,10 @@ SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std:
       all_labels_.push_back(c);
     }
     children_per_parent_.push_back(static_cast<std::uint8_t>(labels_.size()));
-  }
-
-  if (all_labels_.size() > max_tets_created) {
-    result.refusal = SplitRefusal::kOverBudget;
-    return result;
+    if (all_labels_.size() > max_created) {  // stop planning: the rest would be thrown away
+      result.refusal = SplitRefusal::kOverBudget;
+      return result;
+    }
   }
 
   // Apply. Midpoints in global edge order, so their ids do not depend on the input order.

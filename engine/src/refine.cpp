@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
 
 #include "tetcut/local_tables.hpp"
 
@@ -21,7 +24,67 @@ std::optional<std::string> validate(const RefineParams& params) {
   if (!std::isfinite(params.d_ref) || params.d_ref <= 0.0) return "D_ref must be a positive finite length";
   if (!std::isfinite(params.p) || params.p <= 1.0) return "p must be a finite number greater than 1";
   if (params.max_iterations == 0) return "the iteration bound must be at least 1";
+  if (params.max_tets_created == 0) return "the tet budget (max_tets_created) must be positive";
   return std::nullopt;
+}
+
+MeshScale measure_scale(const TetMesh& mesh) {
+  MeshScale scale;
+  double shortest2 = std::numeric_limits<double>::infinity();
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    if (!mesh.is_live(TetId{t})) continue;
+    for (int e = 0; e < 6; ++e) {
+      const Vec3 d = mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][1])) - mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][0]));
+      shortest2 = std::min(shortest2, dot(d, d));
+    }
+  }
+  scale.shortest_edge = std::isfinite(shortest2) ? std::sqrt(shortest2) : 0.0;
+  scale.volume = mesh.total_volume();
+  return scale;
+}
+
+namespace {
+
+// Volume of the largest tet whose edges are all at most `edge`: the regular one.
+double regular_tet_volume(double edge) { return edge * edge * edge / (6.0 * std::numbers::sqrt2); }
+
+double ball_volume(double diameter) { return std::numbers::pi / 6.0 * diameter * diameter * diameter; }
+
+std::string short_number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", x);
+  return buffer;
+}
+
+// x rounded up to three significant digits: a suggested minimum must not round below it.
+double round_up_3(double x) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 2);
+  return std::ceil(x * (1 + 1e-9) / unit) * unit;
+}
+
+}  // namespace
+
+double min_tets_to_refine(const MeshScale& scale, double tool_diameter, double d_ref) {
+  if (!(d_ref > 0.0) || !(d_ref < scale.shortest_edge)) return 0.0;
+  return std::min(ball_volume(tool_diameter), scale.volume) / regular_tet_volume(d_ref);
+}
+
+std::optional<std::string> check_scale(const MeshScale& scale, double tool_diameter, double d_ref_factor,
+                                       std::uint32_t max_tets_created) {
+  const double d_ref = d_ref_factor * tool_diameter;
+  if (!std::isfinite(d_ref) || !(d_ref > 0.0)) return std::nullopt;
+  const double needed = min_tets_to_refine(scale, tool_diameter, d_ref);
+  if (needed <= max_tets_created) return std::nullopt;
+  // The smallest factor that fits: the D_ref at which the bound meets the budget, or the
+  // shortest edge, where the bound stops applying.
+  const double fits = std::cbrt(std::min(ball_volume(tool_diameter), scale.volume) * 6.0 * std::numbers::sqrt2 /
+                                static_cast<double>(max_tets_created));
+  const double factor = std::min(fits, scale.shortest_edge) / tool_diameter;
+  return "d_ref_factor " + short_number(d_ref_factor) + " is too small for this mesh and tool: D_ref = " +
+         short_number(d_ref) + " is below the mesh's shortest edge (" + short_number(scale.shortest_edge) +
+         "), so every tet the tool meets must be split down to it, at least " + (needed < 1e15 ? std::to_string(static_cast<long long>(std::ceil(needed))) : short_number(needed)) +
+         " new tets per cut, more than the per-cut budget (max_tets_created " + std::to_string(max_tets_created) +
+         "); a d_ref_factor of " + short_number(round_up_3(factor)) + " or more fits";
 }
 
 void Refiner::collect_long_edges(const TetMesh& mesh, double d_ref) {
@@ -39,7 +102,8 @@ void Refiner::collect_long_edges(const TetMesh& mesh, double d_ref) {
 // Paper 3.2: limit the ratio of edge lengths among the children by also splitting the long
 // edges opposite each split edge. Edges added here are scanned too; each is more than p times
 // longer than the edge that brought it in, so the closure is small.
-void Refiner::add_shell_edges(const TetMesh& mesh, double p) {
+std::uint32_t Refiner::add_shell_edges(const TetMesh& mesh, double p) {
+  std::uint32_t born_parents = 0;
   for (std::size_t i = 0; i < edges_.size(); ++i) {
     const Edge e = edges_[i];
     const double threshold = p * length(mesh, e.a, e.b);
@@ -56,6 +120,11 @@ void Refiner::add_shell_edges(const TetMesh& mesh, double p) {
     if (!start.valid()) continue;
     mesh.edge_shell(start, kEdgeIndex[mesh.local_index(start, e.a)][mesh.local_index(start, e.b)], shell_);
     for (TetId t : shell_) {
+      // The shells of the round's edges are exactly the tets the split will replace.
+      if (t.value < born_.size() && born_[t.value] == stamp_) {
+        born_[t.value] = 0;
+        ++born_parents;
+      }
       const int le = kEdgeIndex[mesh.local_index(t, e.a)][mesh.local_index(t, e.b)];
       const int lo = opposite_edge(static_cast<std::uint8_t>(le));
       const Edge opposite{mesh.vertex(t, kEdgeVerts[lo][0]), mesh.vertex(t, kEdgeVerts[lo][1]), t};
@@ -63,6 +132,7 @@ void Refiner::add_shell_edges(const TetMesh& mesh, double p) {
         edges_.push_back(opposite);
     }
   }
+  return born_parents;
 }
 
 RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, const RefineParams& params,
@@ -70,6 +140,11 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
   RefineReport report;
   region.assign(initial.begin(), initial.end());
   current_.assign(initial.begin(), initial.end());
+  if (++stamp_ == 0) {
+    std::fill(born_.begin(), born_.end(), 0);
+    stamp_ = 1;
+  }
+  std::uint64_t net = 0;  // live tets made by this call
   for (;;) {
     collect_long_edges(mesh, params.d_ref);
     if (edges_.empty()) break;
@@ -77,13 +152,19 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
       report.converged = false;
       break;
     }
-    add_shell_edges(mesh, params.p);
+    const std::uint32_t born_parents = add_shell_edges(mesh, params.p);
     created_.clear();
-    const SplitResult split = splitter_.split(mesh, edges_, params.method, &created_, log);
+    // After the round: net + children - born_parents, which must stay within the budget.
+    const std::uint64_t allowed = params.max_tets_created - std::min<std::uint64_t>(net, params.max_tets_created) + born_parents;
+    const SplitResult split = splitter_.split(mesh, edges_, params.method, &created_, log, allowed);
     if (!split.ok()) {
       report.refusal = split.refusal;
       break;
     }
+    if (born_.size() < mesh.tet_capacity()) born_.resize(mesh.tet_capacity(), 0);
+    for (TetId t : created_) born_[t.value] = stamp_;
+    net = net + split.tets_created - born_parents;
+    report.net_tets_created = static_cast<std::uint32_t>(net);
     ++report.iterations;
     report.edges_split += split.edges_split;
     report.tets_created += split.tets_created;

@@ -18,6 +18,11 @@ std::uint64_t SpatialIndex::pack(std::int32_t i, std::int32_t j, std::int32_t k)
   return (bits(i) << 42) | (bits(j) << 21) | bits(k);
 }
 
+std::array<std::int32_t, 3> SpatialIndex::unpack(std::uint64_t key) {
+  auto value = [](std::uint64_t b) { return static_cast<std::int32_t>(b & 0x1FFFFFu) - 1048576; };
+  return {value(key >> 42), value(key >> 21), value(key)};
+}
+
 const SpatialIndex::Slot* SpatialIndex::find_cell(std::uint64_t key) const {
   if (table_.empty()) return nullptr;
   const std::size_t mask = table_.size() - 1;
@@ -71,6 +76,8 @@ void SpatialIndex::build(const TetMesh& mesh) {
   free_node_ = kNone;
   ranges_.assign(mesh.tet_capacity(), CellRange{});
   entries_ = 0;
+  occupied_lo_ = {1, 1, 1};
+  occupied_hi_ = {0, 0, 0};
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
     if (mesh.is_live(TetId{t})) insert(mesh, TetId{t});
   // Headroom, so that the cuts that follow find nodes and slots without growing anything.
@@ -92,6 +99,13 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   }
   const std::int32_t i0 = cell_of(lo.x), i1 = cell_of(hi.x), j0 = cell_of(lo.y), j1 = cell_of(hi.y), k0 = cell_of(lo.z),
                      k1 = cell_of(hi.z);
+  if (occupied_lo_[0] > occupied_hi_[0]) {
+    occupied_lo_ = {i0, j0, k0};
+    occupied_hi_ = {i1, j1, k1};
+  } else {
+    occupied_lo_ = {std::min(occupied_lo_[0], i0), std::min(occupied_lo_[1], j0), std::min(occupied_lo_[2], k0)};
+    occupied_hi_ = {std::max(occupied_hi_[0], i1), std::max(occupied_hi_[1], j1), std::max(occupied_hi_[2], k1)};
+  }
   std::uint32_t first = kNone;
   for (std::int32_t i = i0; i <= i1; ++i)
     for (std::int32_t j = j0; j <= j1; ++j)
@@ -139,24 +153,49 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
     std::fill(stamps_.begin(), stamps_.end(), 0);
     stamp_ = 1;
   }
+  if (occupied_lo_[0] > occupied_hi_[0]) return;  // nothing was ever indexed
   const Vec3 c = ball.centre;
   const double r = ball.radius;
-  const std::int32_t i0 = cell_of(c.x - r), i1 = cell_of(c.x + r), j0 = cell_of(c.y - r), j1 = cell_of(c.y + r),
-                     k0 = cell_of(c.z - r), k1 = cell_of(c.z + r);
-  for (std::int32_t i = i0; i <= i1; ++i)
-    for (std::int32_t j = j0; j <= j1; ++j)
-      for (std::int32_t k = k0; k <= k1; ++k) {
-        const Slot* cell = find_cell(pack(i, j, k));
-        if (!cell) continue;
-        for (std::uint32_t n = nodes_[cell->sentinel].next; n != cell->sentinel; n = nodes_[n].next) {
-          const std::uint32_t t = nodes_[n].tet;
-          if (t >= stamps_.size() || stamps_[t] == stamp_) continue;
-          stamps_[t] = stamp_;
-          if (!mesh.is_live(TetId{t})) continue;
-          if (meets(mesh, TetId{t}, ball)) out.push_back(TetId{t});
-        }
-      }
+  // The ball's box, clamped to the occupied bounds: beyond them every cell is empty, and a
+  // tool a thousand times the mesh's size must not pay for the cells around the mesh.
+  std::array<std::int32_t, 3> lo = {cell_of(c.x - r), cell_of(c.y - r), cell_of(c.z - r)};
+  std::array<std::int32_t, 3> hi = {cell_of(c.x + r), cell_of(c.y + r), cell_of(c.z + r)};
+  std::uint64_t box_cells = 1;
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::max(lo[a], occupied_lo_[a]);
+    hi[a] = std::min(hi[a], occupied_hi_[a]);
+    if (lo[a] > hi[a]) return;
+    box_cells *= static_cast<std::uint64_t>(hi[a] - lo[a] + 1);  // < 2^21 per axis: no overflow
+  }
+  if (box_cells > used_slots_) {
+    // More cells in the box than in the table (a thin or diagonal mesh leaves most of its
+    // bounds empty): walk the table once; the sort below makes the visiting order irrelevant.
+    cells_visited_ += table_.size();
+    for (const Slot& cell : table_) {
+      if (!cell.used) continue;
+      const std::array<std::int32_t, 3> ijk = unpack(cell.key);
+      if (ijk[0] < lo[0] || ijk[0] > hi[0] || ijk[1] < lo[1] || ijk[1] > hi[1] || ijk[2] < lo[2] || ijk[2] > hi[2]) continue;
+      collect(mesh, cell, ball, out);
+    }
+  } else {
+    cells_visited_ += box_cells;
+    for (std::int32_t i = lo[0]; i <= hi[0]; ++i)
+      for (std::int32_t j = lo[1]; j <= hi[1]; ++j)
+        for (std::int32_t k = lo[2]; k <= hi[2]; ++k)
+          if (const Slot* cell = find_cell(pack(i, j, k))) collect(mesh, *cell, ball, out);
+  }
   std::sort(out.begin(), out.end());
+}
+
+// Appends the live tets of one cell that meet the ball and were not seen yet in this query.
+void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out) {
+  for (std::uint32_t n = nodes_[cell.sentinel].next; n != cell.sentinel; n = nodes_[n].next) {
+    const std::uint32_t t = nodes_[n].tet;
+    if (t >= stamps_.size() || stamps_[t] == stamp_) continue;
+    stamps_[t] = stamp_;
+    if (!mesh.is_live(TetId{t})) continue;
+    if (meets(mesh, TetId{t}, ball)) out.push_back(TetId{t});
+  }
 }
 
 bool SpatialIndex::meets(const TetMesh& mesh, TetId t, const Ball& ball) {

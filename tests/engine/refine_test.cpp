@@ -5,6 +5,7 @@
 
 #include "checked.hpp"
 #include "test_meshes.hpp"
+#include "tetcut/canonical_hash.hpp"
 #include "tetcut/local_tables.hpp"
 #include "tetcut/refine.hpp"
 
@@ -107,6 +108,51 @@ TEST(Refine, SmallerPSplitsMoreEdges) {
   const RefineReport tight = run(1.05), loose = run(3.0);
   EXPECT_GT(tight.edges_split, loose.edges_split);
   EXPECT_GT(tight.tets_created, loose.tets_created);
+}
+
+// Issue 16: the budget is net. A loop needing several rounds makes children that it splits
+// again; counting them twice would refuse a loop whose result fits.
+TEST(Refine, ABudgetEqualToTheNetResultIsNeverRefusedAndOneLessIs) {
+  auto run = [](std::uint32_t budget, RefineReport& report) {
+    TetMesh mesh = testing::build_or_fail(make_box_mesh(4, 4, 4));
+    Refiner refiner;
+    std::vector<TetId> region;
+    const RefineParams params{.d_ref = 0.1, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}, .max_tets_created = budget};
+    report = refiner.refine(mesh, tets_near(mesh, {0.5, 0.5, 0.5}, 0.2), params, region);
+    return mesh;
+  };
+  RefineReport free{};
+  const TetMesh unbounded = run(UINT32_MAX, free);
+  ASSERT_EQ(free.refusal, SplitRefusal::kNone);
+  ASSERT_GE(free.iterations, 2u);
+  ASSERT_GT(free.tets_created, free.net_tets_created) << "children split again: gross exceeds net";
+
+  RefineReport exact{};
+  const TetMesh fits = run(free.net_tets_created, exact);
+  EXPECT_EQ(exact.refusal, SplitRefusal::kNone) << "a loop whose result fits its budget is not refused";
+  EXPECT_EQ(exact.net_tets_created, free.net_tets_created);
+  EXPECT_EQ(canonical_hash(fits), canonical_hash(unbounded));
+
+  RefineReport tight{};
+  const TetMesh refused = run(free.net_tets_created - 1, tight);
+  EXPECT_EQ(tight.refusal, SplitRefusal::kOverBudget);
+  EXPECT_LE(tight.net_tets_created, free.net_tets_created - 1);
+  EXPECT_LT(tight.iterations, free.iterations) << "the round that would cross the budget is not applied";
+  EXPECT_TRUE(testing::mesh_is_valid(refused)) << "stopped between rounds: a valid mesh for the caller to roll back";
+}
+
+TEST(Refine, ARefusedLoopCreatesAtMostItsBudget) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(4, 4, 4));
+  const std::uint32_t before = mesh.num_tets();
+  Refiner refiner;
+  std::vector<TetId> region;
+  // D_ref 0.002 on edges of 0.25: millions of tets without a budget.
+  const RefineParams params{.d_ref = 0.002, .max_iterations = 20, .focus = Ball{{0.5, 0.5, 0.5}, 0.3}, .max_tets_created = 300};
+  const RefineReport r = refiner.refine(mesh, tets_near(mesh, {0.5, 0.5, 0.5}, 0.3), params, region);
+  EXPECT_EQ(r.refusal, SplitRefusal::kOverBudget);
+  EXPECT_LE(r.net_tets_created, 300u);
+  EXPECT_LE(mesh.num_tets() - before, 300u);
+  EXPECT_TRUE(validate(RefineParams{.d_ref = 1, .max_tets_created = 0}).has_value()) << "a zero budget is refused";
 }
 
 }  // namespace

@@ -74,5 +74,61 @@ TEST(SpatialIndex, ABallOutsideTheMeshFindsNothing) {
   EXPECT_EQ(got.size(), mesh.num_tets()) << "a ball swallowing the mesh finds every tet";
 }
 
+// Issue 16: a ball query visited every cell of the ball's box, so a 1e6 tool on the liver ran
+// for minutes. Now a ball larger than the mesh costs the same as one just engulfing it.
+TEST(SpatialIndex, AQueryCostsWhatTheIndexHoldsNotWhatTheBallSpans) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(6, 5, 4, {0, 0, 0}, {6, 5, 4}));
+  SpatialIndex index(1.0);
+  index.build(mesh);
+  std::vector<TetId> got;
+  std::vector<std::uint64_t> cost;
+  for (double radius : {10.0, 1e3, 1e6, 1e12}) {
+    const std::uint64_t before = index.cells_visited();
+    const Ball ball{{3, 2.5, 2}, radius};
+    index.query(mesh, ball, got);
+    cost.push_back(index.cells_visited() - before);
+    ASSERT_EQ(got, brute_force(mesh, ball));
+    ASSERT_EQ(got.size(), mesh.num_tets());
+    ASSERT_TRUE(std::is_sorted(got.begin(), got.end()));
+  }
+  // 7 x 6 x 5 cells are occupied (a tet on a cell boundary also lists the next cell).
+  EXPECT_LE(cost.front(), 7u * 6u * 5u);
+  for (std::uint64_t c : cost) EXPECT_EQ(c, cost.front()) << "the cost must not grow with the ball";
+  // A ball centred far away whose box still covers the mesh, and one whose box misses it.
+  index.query(mesh, {{1e9, 1e9, 1e9}, 2e9}, got);
+  EXPECT_EQ(got.size(), mesh.num_tets());
+  const std::uint64_t before = index.cells_visited();
+  index.query(mesh, {{1e9, 1e9, 1e9}, 1e3}, got);
+  EXPECT_TRUE(got.empty());
+  EXPECT_EQ(index.cells_visited(), before) << "a box beyond the occupied bounds visits nothing";
+}
+
+// A mesh that fills little of its bounding box (a thin slab along the diagonal, here: a few
+// tets at two far corners) must not make an engulfing query pay for the empty cells between.
+TEST(SpatialIndex, ASparseIndexWalksItsCellsInsteadOfTheBox) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(16, 16, 16, {0, 0, 0}, {16, 16, 16}));
+  SpatialIndex index(0.5);
+  // Index the tets touching two opposite corners only, one at a time: the occupied bounds grow
+  // with each insert, and every query sees what was inserted so far.
+  std::vector<TetId> indexed;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    const auto v = mesh.tet(TetId{t});
+    bool near_corner = false;
+    for (VertId x : v) {
+      const Vec3 p = mesh.position(x);
+      near_corner = near_corner || (p.x <= 1 && p.y <= 1 && p.z <= 1) || (p.x >= 15 && p.y >= 15 && p.z >= 15);
+    }
+    if (!near_corner) continue;
+    index.insert(mesh, TetId{t});
+    indexed.push_back(TetId{t});
+  }
+  ASSERT_FALSE(indexed.empty());
+  std::vector<TetId> got;
+  const std::uint64_t before = index.cells_visited();
+  index.query(mesh, {{8, 8, 8}, 100}, got);
+  EXPECT_EQ(got, indexed) << "sorted by id, exactly the indexed tets";
+  EXPECT_LT(index.cells_visited() - before, 33u * 33u * 33u / 8) << "walked the table, not the 33^3 box";
+}
+
 }  // namespace
 }  // namespace tetcut

@@ -54,7 +54,9 @@ TEST(CauteryRun, TheStrategyChosenIsTheOneRun) {
   // The scenario expects nothing unresolved, which holds for combined (its strategy), not
   // necessarily for the paper's search alone: a run that stops, stops on that line only.
   ASSERT_TRUE(neighbours.run);
-  if (!neighbours.run->result.ok) EXPECT_NE(neighbours.run->result.error.find("unresolved"), std::string::npos);
+  if (!neighbours.run->result.ok) {
+    EXPECT_NE(neighbours.run->result.error.find("unresolved"), std::string::npos);
+  }
   // The neighbour strategy never refines to remove (paper 3.5): what it cannot take stays.
   const RemovalReport& n = neighbours.run->result.removal;
   EXPECT_GT(n.resolved_by_neighbours, 0u);

@@ -45,7 +45,7 @@ struct CutParams {
   double p = 1.5;                    // shell edge ratio of the refinement loop (paper 3.2)
   std::uint32_t search_depth = 10;   // neighbour search depth (paper 3.5)
   std::uint32_t max_refine_iterations = 8;
-  std::uint32_t max_tets_created = 200000;  // net; a cut that would create more is refused
+  std::uint32_t max_tets_created = 20000;  // net tets a cut may create; more is refused, in < 50 ms on the liver
   RemovalStrategy strategy = RemovalStrategy::kCombined;
   SplitMethod split_method = SplitMethod::kTemplates;
 };
@@ -120,6 +120,7 @@ class Cutter {
 
   TetMesh& mesh_;
   CutParams params_;
+  MeshScale scale_;  // what the refinement can serve (check_scale), measured once
   SpatialIndex index_;
   Refiner refiner_;
   Remover remover_;

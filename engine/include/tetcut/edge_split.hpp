@@ -27,7 +27,7 @@ enum class SplitRefusal : std::uint8_t {
   kNone,
   kNotAnEdge,        // the two vertices are not joined by an edge of the mesh
   kDegenerateChild,  // a child would be inverted or flat (floating-point degeneracy)
-  kOverBudget,       // it would create more tets than the caller allowed
+  kOverBudget,       // the plan has more children than the caller allows (issue 16)
 };
 
 const char* to_string(SplitRefusal refusal);
@@ -49,13 +49,12 @@ enum class SplitMethod : std::uint8_t { kTemplates, kBisection };
 class EdgeSplitter {
  public:
   // Splits every edge of `edges` (duplicates and either orientation allowed). Created tets are
-  // appended to `created` (if given) and recorded in `log` (if given). Refused, the mesh
-  // untouched, when it would create more than `max_tets_created` tets (known from the plan).
+  // appended to `created` (if given) and recorded in `log` (if given). A plan with more than
+  // `max_created` children is refused (kOverBudget) as soon as planning passes the bound, before
+  // the mesh changes: a caller with a budget pays for at most that many planned children.
   SplitResult split(TetMesh& mesh, std::span<const Edge> edges, SplitMethod method,
                     std::vector<TetId>* created = nullptr, ChangeLog* log = nullptr,
-                    std::uint32_t max_tets_created = kUnlimited);
-
-  static constexpr std::uint32_t kUnlimited = 0xFFFFFFFFu;
+                    std::uint64_t max_created = UINT64_MAX);
 
   // Room for per-tet scratch up to this many tet ids (no reallocation of a mesh-sized array in
   // the middle of an operation).
@@ -73,7 +72,7 @@ class EdgeSplitter {
   };
 
   SplitResult plan_and_apply(TetMesh& mesh, SplitMethod method, std::vector<TetId>* created, ChangeLog* log,
-                             std::uint32_t max_tets_created);
+                             std::uint64_t max_created);
   [[nodiscard]] int find_edge(std::uint32_t lo, std::uint32_t hi) const;
   bool collect_shell(const TetMesh& mesh, const PlannedEdge& e);
 

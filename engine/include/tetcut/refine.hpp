@@ -11,6 +11,12 @@
 // With a focus ball (the tool), T := the new tets that meet the ball: without it, the children
 // of shell edges far from the tool would keep the loop spreading through a coarse mesh (paper
 // Figure 3 refines "at the vicinity of the tool").
+//
+// A budget bounds the work, not only the result (issue 16): before each round the plan's
+// children are counted against what is left of max_tets_created, and a round that would pass it
+// is not applied, so a refused loop costs about its budget. The count is net (the tets the loop
+// made that are still live: a child split again in a later round counts only through its own
+// children), so a loop whose result fits is never refused.
 #pragma once
 
 #include <cstdint>
@@ -33,19 +39,45 @@ struct RefineParams {
   std::uint32_t max_iterations = 8;
   SplitMethod method = SplitMethod::kTemplates;
   std::optional<Ball> focus;        // when set, only new tets meeting it are refined further
+  std::uint32_t max_tets_created = UINT32_MAX;  // net tets the loop may make; must be positive
 };
 
 // A message when a parameter is not finite, not positive, or p <= 1; nullopt when valid.
 std::optional<std::string> validate(const RefineParams& params);
+
+// The mesh's length and volume scales, as the refinement loop meets them: O(#T), once (the
+// Cutter's constructor).
+struct MeshScale {
+  double shortest_edge = 0.0;  // over live tets; 0 for an empty mesh
+  double volume = 0.0;
+};
+MeshScale measure_scale(const TetMesh& mesh);
+
+// The fewest tets the loop must create to serve a tool of `tool_diameter` with this D_ref when
+// D_ref is below the mesh's shortest edge, 0 otherwise. Every tet the tool meets then has all
+// its edges longer than D_ref, so the loop ends only once the part of the ball inside the mesh
+// is covered by new tets with no edge over D_ref, none larger than the regular tet of edge
+// D_ref (volume D_ref^3 / (6 sqrt 2)): at least min(ball, mesh volume) / that. A tool reaching
+// the surface covers less of the mesh; a parameter set is judged by a tool inside it.
+double min_tets_to_refine(const MeshScale& scale, double tool_diameter, double d_ref);
+
+// A message naming the parameter (d_ref_factor) when min_tets_to_refine() exceeds the per-cut
+// budget: such a cut can only be refused, after doing a budget's worth of work. nullopt when
+// the parameters can be served (or are invalid: validate() names those).
+std::optional<std::string> check_scale(const MeshScale& scale, double tool_diameter, double d_ref_factor,
+                                       std::uint32_t max_tets_created);
 
 struct RefineReport {
   std::uint32_t iterations = 0;      // split rounds performed
   std::uint32_t edges_split = 0;
   std::uint32_t tets_created = 0;    // children made, including children later split again
   std::uint32_t tets_removed = 0;    // parents replaced
+  std::uint32_t net_tets_created = 0;  // children still live: what max_tets_created bounds
   double min_radius_ratio = 1.0;     // worst child created (1 when none)
   bool converged = true;             // false when max_iterations stopped the loop
-  SplitRefusal refusal = SplitRefusal::kNone;  // a split refused for degeneracy stops the loop
+  // A split refused for degeneracy stops the loop; so does the budget (kOverBudget: the round
+  // that would have passed it was planned, not applied).
+  SplitRefusal refusal = SplitRefusal::kNone;
 };
 
 class Refiner {
@@ -55,16 +87,24 @@ class Refiner {
   RefineReport refine(TetMesh& mesh, std::span<const TetId> initial, const RefineParams& params,
                       std::vector<TetId>& region, ChangeLog* log = nullptr);
 
-  void reserve(std::uint32_t tets) { splitter_.reserve(tets); }
+  void reserve(std::uint32_t tets) {
+    splitter_.reserve(tets);
+    born_.reserve(tets);
+  }
 
  private:
   void collect_long_edges(const TetMesh& mesh, double d_ref);
-  void add_shell_edges(const TetMesh& mesh, double p);
+  // Returns how many of the tets around the edges (the round's parents) this loop made.
+  std::uint32_t add_shell_edges(const TetMesh& mesh, double p);
 
   EdgeSplitter splitter_;
   std::vector<TetId> current_, created_, shell_;
   std::vector<Edge> edges_;
   EdgeKeySet seen_;
+  // Per tet id: the call's stamp while the tet is a live child of this call's loop. A parent
+  // found so is unstamped as it is counted, so each is counted once per round.
+  std::vector<std::uint32_t> born_;
+  std::uint32_t stamp_ = 0;
 };
 
 }  // namespace tetcut

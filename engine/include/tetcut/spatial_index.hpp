@@ -4,8 +4,13 @@
 //
 // Each tet is listed in every cell its bounding box overlaps; the index remembers each tet's
 // cell range, so a tet can be erased after the mesh has already forgotten it (replace_tets()).
-// Cells live in an open-addressing table keyed by their integer coordinates; the table is
-// never iterated, and query results are sorted by tet id, so the order is deterministic.
+// Cells live in an open-addressing table keyed by their integer coordinates; query results are
+// sorted by tet id, so the order in which cells are visited never shows.
+//
+// A query costs what the index holds, not what the ball's box spans: the box is clamped to the
+// bounds of the cells that ever held a tet (grown on insert, never shrunk: conservative), and
+// when the clamped box still has more cells than the table, the table's occupied cells are
+// walked instead. A ball engulfing the mesh costs O(#entries) once, whatever its diameter.
 #pragma once
 
 #include <array>
@@ -38,6 +43,9 @@ class SpatialIndex {
 
   [[nodiscard]] double cell_size() const { return cell_size_; }
   [[nodiscard]] std::size_t entries() const { return entries_; }
+  // Cells a query looked at (by key lookup or by walking the table), over the index's life: what
+  // a test reads to see that a query's cost does not grow with the ball.
+  [[nodiscard]] std::uint64_t cells_visited() const { return cells_visited_; }
 
  private:
   struct CellRange {
@@ -61,6 +69,8 @@ class SpatialIndex {
   [[nodiscard]] static bool meets(const TetMesh& mesh, TetId t, const Ball& ball);
   [[nodiscard]] std::int32_t cell_of(double x) const;
   [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
+  [[nodiscard]] static std::array<std::int32_t, 3> unpack(std::uint64_t key);
+  void collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out);
   [[nodiscard]] const Slot* find_cell(std::uint64_t key) const;
   Slot& cell_for(std::uint64_t key);
   std::uint32_t new_node();
@@ -75,6 +85,9 @@ class SpatialIndex {
   std::vector<std::uint32_t> stamps_;  // by tet id: dedup during a query
   std::uint32_t stamp_ = 0;
   std::size_t entries_ = 0;
+  // Bounds (inclusive) of every cell a tet was ever inserted into; empty when lo > hi.
+  std::array<std::int32_t, 3> occupied_lo_{1, 1, 1}, occupied_hi_{0, 0, 0};
+  std::uint64_t cells_visited_ = 0;
 };
 
 }  // namespace tetcut
