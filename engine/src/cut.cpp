@@ -52,6 +52,8 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
   made_.assign(tets, 0);
   selected_.assign(tets, 0);
   tried_.assign(tets, 0);
+  queued_.assign(tets, 0);
+  work_.reserve(4096);
   origin_.assign(tets, kNoTet);
 }
 
@@ -80,6 +82,7 @@ void Cutter::next_generation() {
   std::fill(made_.begin(), made_.end(), 0u);
   std::fill(selected_.begin(), selected_.end(), 0u);
   std::fill(tried_.begin(), tried_.end(), 0u);
+  std::fill(queued_.begin(), queued_.end(), 0u);
   generation_ = 1;
 }
 
@@ -90,6 +93,7 @@ void Cutter::grow_marks() {
   made_.resize(m, 0);
   selected_.resize(m, 0);
   tried_.resize(m, 0);
+  queued_.resize(m, 0);
   origin_.resize(m, kNoTet);
 }
 
@@ -247,6 +251,18 @@ void Cutter::remove_selected(CutReport& report) {
   // Counted per request here: the Remover's running total of unresolved tets goes down when a
   // tet left unresolved by an earlier cut goes now, so its difference can be negative.
   std::uint32_t unresolved = 0, requests = 0;
+  // The tets to test for a direct removal: every selected tet once, then what each request
+  // exposes or selects. Removal only turns faces, edges and vertices into boundary ones, so a tet
+  // that is not removable becomes removable only when it gains a boundary face, i.e. when a face
+  // neighbour goes, which exposes it: one pass over a worklist instead of passes over T_removal.
+  work_.clear();
+  std::size_t head = 0;
+  auto enqueue = [&](TetId t) {
+    if (!pending(t) || queued_[t.value] == generation_) return;
+    queued_[t.value] = generation_;
+    work_.push_back(t);
+  };
+  for (TetId t : removal_) enqueue(t);
   auto request = [&](TetId t) {
     tried_[t.value] = generation_;
     ++requests;
@@ -254,8 +270,12 @@ void Cutter::remove_selected(CutReport& report) {
     RequestLimits limits;
     limits.max_tets_created = params_.max_tets_created > net_created_count_ ? params_.max_tets_created - net_created_count_ : 0;
     limits.selection = &selection;
+    const std::size_t selected_before = removal_.size();
     const RemovalResult r = remover_.remove(mesh_, t, nullptr, limits);
     follow(remover_.last_log());
+    grow_marks();
+    for (std::size_t i = selected_before; i < removal_.size(); ++i) enqueue(removal_[i]);
+    for (TetId e : remover_.last_exposed()) enqueue(e);
     if (r.over_budget || net_created_count_ > params_.max_tets_created) {
       report.ok = false;
       report.failure = "the removal would exceed the per-cut tet budget";
@@ -265,16 +285,13 @@ void Cutter::remove_selected(CutReport& report) {
     return true;
   };
   for (;;) {
-    // Every directly removable selected tet first, again until none is left (paper 3.3): a
-    // strategy's larger set then meets fewer singularities. removal_ grows while we go.
-    for (bool progress = true; progress;) {
-      progress = false;
-      for (std::size_t i = 0; i < removal_.size(); ++i) {
-        const TetId t = removal_[i];
-        if (!pending(t) || !removability(mesh_, t).removable) continue;
-        progress = true;
-        if (!request(t)) return;
-      }
+    // Every directly removable selected tet first, until none is left (paper 3.3): a strategy's
+    // larger set then meets fewer singularities.
+    while (head < work_.size()) {
+      const TetId t = work_[head++];
+      queued_[t.value] = 0;
+      if (!pending(t) || !removability(mesh_, t).removable) continue;
+      if (!request(t)) return;
     }
     // Then one stuck tet, outside in: on the surface first (the paper's statistics are about
     // "removing a tetrahedron on the mesh surface", 3.3), else any (a tool inside the mesh).

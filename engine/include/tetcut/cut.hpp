@@ -128,8 +128,9 @@ class Cutter {
   ChangeLog refine_log_;
   std::vector<TetId> hit_, region_, removal_, net_removed_, net_created_;
   // Per tet id, == generation_ when true in the current cut: made by it, selected, already
-  // requested (and left unresolved).
-  std::vector<std::uint32_t> made_, selected_, tried_;
+  // requested (and left unresolved), waiting in work_.
+  std::vector<std::uint32_t> made_, selected_, tried_, queued_;
+  std::vector<TetId> work_;          // selected tets to test for a direct removal
   std::vector<TetId> origin_;        // per tet id made by the cut: the tet it came from
   std::uint32_t generation_ = 0;
   std::uint32_t net_created_count_ = 0;
