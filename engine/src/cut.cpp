@@ -53,7 +53,17 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
   selected_.assign(tets, 0);
   tried_.assign(tets, 0);
   queued_.assign(tets, 0);
-  work_.reserve(4096);
+  // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
+  // gated by ci/bench).
+  constexpr std::size_t kCutScratch = 16384;
+  work_.reserve(kCutScratch);
+  removal_.reserve(kCutScratch);
+  hit_.reserve(kCutScratch);
+  region_.reserve(kCutScratch);
+  net_removed_.reserve(kCutScratch);
+  net_created_.reserve(kCutScratch);
+  log_.reserve(kCutScratch);
+  refine_log_.reserve(kCutScratch);
   origin_.assign(tets, kNoTet);
 }
 

@@ -57,6 +57,19 @@ const char* to_string(SplitRefusal refusal) {
   return "unknown";
 }
 
+void EdgeSplitter::reserve(std::uint32_t tets) {
+  affected_slot_.reserve(tets);
+  edges_.reserve(kPlannedChildren / 4);
+  affected_.reserve(kPlannedChildren / 2);
+  shell_.reserve(256);
+  parents_.reserve(kPlannedChildren / 2);
+  labels_.reserve(64);
+  all_labels_.reserve(kPlannedChildren);
+  children_.reserve(kPlannedChildren);
+  children_per_parent_.reserve(kPlannedChildren / 2);
+  created_scratch_.reserve(kPlannedChildren);
+}
+
 int EdgeSplitter::find_edge(std::uint32_t lo, std::uint32_t hi) const {
   const auto it = std::lower_bound(edges_.begin(), edges_.end(), std::make_pair(lo, hi),
                                    [](const PlannedEdge& e, const std::pair<std::uint32_t, std::uint32_t>& k) {

@@ -4,6 +4,7 @@
 // removals and creations of each step in order, or simply take the final state of each id.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "tetcut/ids.hpp"
@@ -25,6 +26,13 @@ struct ChangeLog {
   std::vector<TetId> removed;
   std::vector<CreatedTet> created;
   std::vector<CreatedVertex> vertices;
+
+  // Room for this many entries of each kind (a caller that must not allocate per operation).
+  void reserve(std::size_t n) {
+    removed.reserve(n);
+    created.reserve(n);
+    vertices.reserve(n);
+  }
 
   void clear() {
     removed.clear();

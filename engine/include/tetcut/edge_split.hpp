@@ -58,7 +58,10 @@ class EdgeSplitter {
 
   // Room for per-tet scratch up to this many tet ids (no reallocation of a mesh-sized array in
   // the middle of an operation).
-  void reserve(std::uint32_t tets) { affected_slot_.reserve(tets); }
+  // And room for the plan of a split of up to kPlannedChildren children, the working size of a
+  // cut: a larger one grows the buffers once, then they stay.
+  void reserve(std::uint32_t tets);
+  static constexpr std::size_t kPlannedChildren = 8192;
 
  private:
   struct PlannedEdge {

@@ -90,6 +90,11 @@ class Refiner {
   void reserve(std::uint32_t tets) {
     splitter_.reserve(tets);
     born_.reserve(tets);
+    // The working size of one loop; a larger one grows these once.
+    current_.reserve(4096);
+    created_.reserve(4096);
+    shell_.reserve(256);
+    edges_.reserve(2048);
   }
 
  private:
