@@ -5,7 +5,9 @@
 // --at takes one or more points ("X,Y,Z", several separated by ';' or given as further
 // arguments after the mesh): each removes the tet containing it at the time of its turn.
 // --random requests tets on the current boundary one at a time, as a cautery meets them; `all`
-// goes on until the mesh is empty (or only unresolved tets remain, with --strategy neighbours).
+// goes on until the mesh is empty (or only unresolved tets remain, with --strategy neighbours),
+// or 20 requests per initial tet: basic and combined refine, and a cautery that keeps meeting
+// the small tets they make can keep the mesh alive (`wide` hollows a mesh out).
 // --check every runs the local checker after every request and the full one at the end; end
 // (default) only the full one; none skips it. Exit 0, 1 if an invariant broke, 2 bad input.
 #include <optional>
