@@ -258,6 +258,14 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
 void Cutter::remove_selected(CutReport& report) {
   const RemovalReport before = remover_.report();
   grow_marks();
+  if (tool_ && removal_.size() == mesh_.num_tets()) {
+    // The tool holds every tet (each selected one is live and counted once): removing the whole
+    // mesh leaves nothing that could pinch, so it goes at once, in O(#T), instead of tet by tet
+    // (issue 16: a tool larger than the mesh removes what it can, fast).
+    mesh_.remove_tets(removal_);
+    report.requested = report.tets_removed = static_cast<std::uint32_t>(removal_.size());
+    return;
+  }
   // Counted per request here: the Remover's running total of unresolved tets goes down when a
   // tet left unresolved by an earlier cut goes now, so its difference can be negative.
   std::uint32_t unresolved = 0, requests = 0;

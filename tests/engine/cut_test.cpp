@@ -98,6 +98,20 @@ TEST(Cut, AToolSwallowingTheMeshLeavesAValidMesh) {
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_EQ(r.unresolved, 0u);
   EXPECT_EQ(mesh.num_tets(), 0u) << "every tet's centroid is inside the tool";
+  EXPECT_EQ(r.tets_removed, 162u);
+  EXPECT_EQ(r.requested, 162u);
+  EXPECT_EQ(cutter.last_removed().size(), 162u);
+  EXPECT_TRUE(testing::mesh_is_valid(mesh));
+}
+
+TEST(Cut, AToolHoldingAllButOneTetRemovesThemOneByOne) {
+  // The whole-mesh shortcut applies only when every tet is selected.
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
+  Cutter cutter(mesh, {.tool_diameter = 2.6});  // radius 1.3 from a corner of the unit box: the far corner stays
+  const CutReport r = cutter.cut({0.0, 0.0, 0.0});
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_GT(mesh.num_tets(), 0u);
+  EXPECT_GT(r.requests, 0u);
   EXPECT_TRUE(testing::mesh_is_valid(mesh));
 }
 
