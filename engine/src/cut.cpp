@@ -62,7 +62,7 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
   region_.reserve(kCutScratch);
   net_removed_.reserve(kCutScratch);
   net_created_.reserve(kCutScratch);
-  log_.reserve(kCutScratch);
+  vertices_made_.reserve(kCutScratch);
   refine_log_.reserve(kCutScratch);
   origin_.assign(tets, kNoTet);
 }
@@ -143,9 +143,9 @@ void Cutter::follow(const ChangeLog& step) {
   }
   for (TetId r : step.removed)
     if (made_[r.value] == generation_) --net_created_count_;
-  log_.removed.insert(log_.removed.end(), step.removed.begin(), step.removed.end());
-  log_.created.insert(log_.created.end(), step.created.begin(), step.created.end());
-  log_.vertices.insert(log_.vertices.end(), step.vertices.begin(), step.vertices.end());
+  // The net change log needs the vertices made (the tets come from the journal), and only when
+  // the caller asked for it.
+  if (keep_vertices_) vertices_made_.insert(vertices_made_.end(), step.vertices.begin(), step.vertices.end());
 }
 
 CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
@@ -173,7 +173,8 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
     return report;
   }
 
-  log_.clear();
+  vertices_made_.clear();
+  keep_vertices_ = log != nullptr;
   mesh_.begin_transaction();
   next_generation();
   tool_ = tool;
@@ -238,7 +239,8 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
     return report;
   }
   const Clock::time_point t0 = Clock::now();
-  log_.clear();
+  vertices_made_.clear();
+  keep_vertices_ = log != nullptr;
   mesh_.begin_transaction();
   next_generation();
   tool_.reset();  // no tool: the request alone, no children join it
@@ -291,7 +293,6 @@ void Cutter::remove_selected(CutReport& report) {
     const std::size_t selected_before = removal_.size();
     const RemovalResult r = remover_.remove(mesh_, t, nullptr, limits);
     follow(remover_.last_log());
-    grow_marks();
     for (std::size_t i = selected_before; i < removal_.size(); ++i) enqueue(removal_[i]);
     for (TetId e : remover_.last_exposed()) enqueue(e);
     if (r.over_budget || net_created_count_ > params_.max_tets_created) {
@@ -359,7 +360,7 @@ void Cutter::finish(CutReport& report, ChangeLog* log) {
     log->removed.insert(log->removed.end(), net_removed_.begin(), net_removed_.end());
     for (TetId t : net_created_) log->created.push_back({t, origin_[t.value]});
     // A vertex the cut made and still uses (no vertex id is reused inside the cut either).
-    for (const CreatedVertex& v : log_.vertices)
+    for (const CreatedVertex& v : vertices_made_)
       if (mesh_.is_live(v.vertex)) log->vertices.push_back(v);
   }
 }

@@ -124,7 +124,8 @@ class Cutter {
   SpatialIndex index_;
   Refiner refiner_;
   Remover remover_;
-  ChangeLog log_;                    // the cut's history: refinement, then each request
+  std::vector<CreatedVertex> vertices_made_;  // by the cut, when the caller wants its log
+  bool keep_vertices_ = false;
   ChangeLog refine_log_;
   std::vector<TetId> hit_, region_, removal_, net_removed_, net_created_;
   // Per tet id, == generation_ when true in the current cut: made by it, selected, already
