@@ -51,6 +51,7 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
   remover_.reserve(tets, vertices);
   made_.assign(tets, 0);
   selected_.assign(tets, 0);
+  tissue_.assign(tets, 0);
   tried_.assign(tets, 0);
   queued_.assign(tets, 0);
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
@@ -91,6 +92,7 @@ void Cutter::next_generation() {
   // Wrapped around: clear the marks once.
   std::fill(made_.begin(), made_.end(), 0u);
   std::fill(selected_.begin(), selected_.end(), 0u);
+  std::fill(tissue_.begin(), tissue_.end(), 0u);
   std::fill(tried_.begin(), tried_.end(), 0u);
   std::fill(queued_.begin(), queued_.end(), 0u);
   generation_ = 1;
@@ -102,6 +104,7 @@ void Cutter::grow_marks() {
   const std::size_t m = n + n / 4 + 16;
   made_.resize(m, 0);
   selected_.resize(m, 0);
+  tissue_.resize(m, 0);
   tried_.resize(m, 0);
   queued_.resize(m, 0);
   origin_.resize(m, kNoTet);
@@ -134,9 +137,12 @@ void Cutter::follow(const ChangeLog& step) {
     origin_[i] = parent_made ? origin_[c.parent.value] : c.parent;
     selected_[i] = 0;
     ++net_created_count_;
-    // A tet the cut made inside the tool is tissue to remove like any other (whatever its
-    // parent was): it joins T_removal.
-    if (mesh_.is_live(c.tet) && selectable(c.tet)) {
+    // Selection is decided once, on the refined region (paper 3.3): a piece of a selected tet is
+    // selected tissue, a piece of a kept tet stays kept wherever its centroid falls (else every
+    // split at the ball's edge would select finer and finer pieces of kept tissue: 3.4 ran away
+    // that way). A piece of selected tissue inside the tool joins T_removal.
+    tissue_[i] = tissue_[c.parent.value] == generation_ ? generation_ : 0;
+    if (tissue_[i] == generation_ && mesh_.is_live(c.tet) && selectable(c.tet)) {
       selected_[i] = generation_;
       removal_.push_back(c.tet);
     }
@@ -213,7 +219,7 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
   for (TetId t : region_) {
     // The refinement's own tets inside the tool were selected as they were made (follow()).
     if (!mesh_.is_live(t) || selected_[t.value] == generation_ || !selectable(t)) continue;
-    selected_[t.value] = generation_;
+    selected_[t.value] = tissue_[t.value] = generation_;
     removal_.push_back(t);
   }
   const Clock::time_point t3 = Clock::now();
@@ -245,7 +251,7 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
   next_generation();
   tool_.reset();  // no tool: the request alone, no children join it
   removal_.assign(1, t);
-  selected_[t.value] = generation_;
+  selected_[t.value] = tissue_[t.value] = generation_;
   remove_selected(report);
   if (!report.ok) {
     mesh_.rollback();

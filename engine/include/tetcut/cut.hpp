@@ -9,8 +9,9 @@
 //            tool's size to within one small tet.
 //   remove   every directly removable selected tet first (3.3), again until none is left; then
 //            the strategy (removal.hpp) on one stuck tet, on the surface first (outside in),
-//            and again. When a strategy refines, the new tets that pass the same test join
-//            T_removal: every tet inside the tool is removed or counted unresolved.
+//            and again. When a strategy refines a selected tet, its pieces that pass the same
+//            test join T_removal; pieces of a kept tet stay kept (selection is decided once,
+//            on the refined region). Every selected tet is removed or counted unresolved.
 //
 // Atomic: the whole cut runs in a mesh transaction; if it cannot complete (a split refused
 // for degeneracy, the per-cut tet budget exceeded) it is rolled back, the mesh is bit-identical
@@ -128,9 +129,10 @@ class Cutter {
   bool keep_vertices_ = false;
   ChangeLog refine_log_;
   std::vector<TetId> hit_, region_, removal_, net_removed_, net_created_;
-  // Per tet id, == generation_ when true in the current cut: made by it, selected, already
-  // requested (and left unresolved), waiting in work_.
-  std::vector<std::uint32_t> made_, selected_, tried_, queued_;
+  // Per tet id, == generation_ when true in the current cut: made by it, selected, selected
+  // tissue (a selected tet or a piece of one, inside the tool or not), already requested (and
+  // left unresolved), waiting in work_.
+  std::vector<std::uint32_t> made_, selected_, tissue_, tried_, queued_;
   std::vector<TetId> work_;          // selected tets to test for a direct removal
   std::vector<TetId> origin_;        // per tet id made by the cut: the tet it came from
   std::uint32_t generation_ = 0;

@@ -44,9 +44,16 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
     }
   }
   if (!t_split) set_.push_back(t);
-  if (ctx.with_selected_children(set_, split_log_, repaired_) && ctx.ws.check(ctx.mesh, repaired_).ok) {
-    ctx.remove_set(repaired_);
-    return static_cast<std::uint32_t>(repaired_.size());
+  if (ctx.with_selected_children(set_, split_log_, larger_)) {
+    const SetRemovalCheck larger_check = ctx.ws.check(ctx.mesh, larger_);
+    if (larger_check.ok) {
+      ctx.remove_set(larger_);
+      return static_cast<std::uint32_t>(larger_.size());
+    }
+    if (search_.find(ctx.mesh, ctx.ws, larger_, larger_check, repair, repaired_)) {
+      ctx.remove_set(repaired_);
+      return static_cast<std::uint32_t>(repaired_.size());
+    }
   }
   const SetRemovalCheck check = ctx.ws.check(ctx.mesh, set_);
   if (check.ok) {

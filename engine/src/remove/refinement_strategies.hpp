@@ -45,7 +45,7 @@ class RefinementStrategies {
 
   WideSearch search_;
   std::vector<Edge> edges_;
-  std::vector<TetId> parents_, sides_, set_, repaired_;
+  std::vector<TetId> parents_, sides_, set_, larger_, repaired_;
   std::vector<std::uint32_t> sizes_;
   ChangeLog split_log_;
 };
