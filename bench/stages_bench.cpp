@@ -132,7 +132,7 @@ void BM_RemovalByStrategy(benchmark::State& state) {
     state.PauseTiming();
     tetcut::TetMesh mesh = base;
     tetcut::Remover remover({.strategy = strategy});
-    remover.reserve(mesh.tet_capacity() * 2, mesh.vertex_capacity() * 2);
+    remover.reserve(mesh.tet_capacity() * 2);
     tetcut::BoundaryTetPicker picker(mesh, 2002);
     state.ResumeTiming();
     for (int i = 0; i < 2000; ++i) {

@@ -48,7 +48,7 @@ Cutter::Cutter(TetMesh& mesh, const CutParams& params)
   index_.build(mesh_);
   scale_ = measure_scale(mesh_);
   refiner_.reserve(tets);
-  remover_.reserve(tets, vertices);
+  remover_.reserve(tets);
   made_.assign(tets, 0);
   selected_.assign(tets, 0);
   tissue_.assign(tets, 0);
@@ -74,8 +74,7 @@ std::optional<std::string> Cutter::set_params(const CutParams& params) {
   params_ = params;
   if (removal_changed) {
     remover_ = Remover(removal_options(params_));
-    remover_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096,
-                     mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024);
+    remover_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096);
   }
   return std::nullopt;
 }

@@ -25,25 +25,6 @@ bool contains(const std::vector<TetId>& tets, TetId t) {
 
 }  // namespace
 
-int TetMesh::local_index(TetId t, VertId v) const {
-  const auto& verts = tet_verts_[t.value];
-  for (int i = 0; i < 4; ++i)
-    if (verts[i] == v.value) return i;
-  return -1;
-}
-
-FaceRef TetMesh::neighbour(TetId t, int face) const {
-  const std::uint32_t adj = tet_adj_[t.value][face];
-  if (adj == kNoNeighbour) return {};
-  return {TetId{adj >> 2}, static_cast<std::uint8_t>(adj & 3u)};
-}
-
-int TetMesh::boundary_face_count(TetId t) const {
-  int n = 0;
-  for (std::uint32_t adj : tet_adj_[t.value]) n += adj == kNoNeighbour;
-  return n;
-}
-
 // Rotation about an edge (style: CGAL's next_around_edge). We enter a tet through one of the two
 // faces containing the edge; we leave through the other one.
 namespace {

@@ -72,7 +72,7 @@ Remover::~Remover() = default;
 Remover::Remover(Remover&&) noexcept = default;
 Remover& Remover::operator=(Remover&&) noexcept = default;
 
-void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
+void Remover::reserve(std::uint32_t tets) {
   if (ws_->met_unresolved.size() < tets) ws_->met_unresolved.resize(tets, 0);
   // The working size of one request's lists: a larger request grows them once.
   ws_->log.reserve(4096);
@@ -80,7 +80,7 @@ void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
   ws_->net_removed.reserve(4096);
   ws_->net_created.reserve(4096);
   ws_->exposed.reserve(4096);
-  ws_->set_test.reserve(tets, vertices);
+  ws_->set_test.reserve(tets);
   ws_->splitter.reserve(tets);
 }
 

@@ -28,23 +28,14 @@ void SetRemovalWorkspace::grow(const TetMesh& mesh) {
     visit_stamp_.resize(n, 0);
     parent_.resize(n, 0);
   }
-  if (vert_stamp_.size() < mesh.vertex_capacity()) {
-    const std::size_t n = mesh.vertex_capacity() + mesh.vertex_capacity() / 4 + 16;
-    vert_stamp_.resize(n, 0);
-    link_stamp_.resize(n, 0);
-  }
 }
 
-void SetRemovalWorkspace::reserve(std::uint32_t tets, std::uint32_t vertices) {
+void SetRemovalWorkspace::reserve(std::uint32_t tets) {
   if (set_stamp_.size() < tets) {
     set_stamp_.resize(tets, 0);
     shell_stamp_.resize(tets, 0);
     visit_stamp_.resize(tets, 0);
     parent_.resize(tets, 0);
-  }
-  if (vert_stamp_.size() < vertices) {
-    vert_stamp_.resize(vertices, 0);
-    link_stamp_.resize(vertices, 0);
   }
 }
 
@@ -73,52 +64,79 @@ void SetRemovalWorkspace::collect_shell(const TetMesh& mesh, VertId v, TetId see
   }
 }
 
-bool SetRemovalWorkspace::vertex_ok(const TetMesh& mesh, VertId v, TetId seed) {
-  collect_shell(mesh, v, seed);
-  // F: remaining tets; Eb: their faces through v with no remaining tet behind; V: link vertices.
-  std::uint32_t f_count = 0, open_faces = 0, v_count = 0;
-  TetId first{};
-  const std::uint32_t lg = next_gen(link_stamp_, link_gen_);
-  for (TetId t : shell_) {
-    if (marked(t)) continue;
-    if (!first.valid()) first = t;
-    ++f_count;
+// The link of v is a disk (v on the surface) or a sphere; the set's tets at v are triangles of
+// it. Once every edge of the set has passed edge_ok(), the kept and the removed triangles each
+// form one fan around every link vertex, so the interface between what stays and what goes
+// (the boundary faces of the mesh count as "goes": the link's own border is glued to a removed
+// cell) is a union of disjoint circles, and by Jordan's theorem what stays is a disk iff there
+// is exactly one circle, or nothing stays iff there is none. So the test follows one circle
+// and compares its length with the number of interface edges, both of which are local: the
+// faces at v of the set's tets with a kept tet behind them, and the boundary faces at v of kept
+// tets (the vertex's boundary face count minus the set's). It never walks the whole shell.
+bool SetRemovalWorkspace::vertex_ok(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v) {
+  std::uint32_t inner = 0, removed_boundary = 0;
+  TetId start{};
+  int start_face = 0;
+  for (TetId t : removed_at_v) {
     const int lv = mesh.local_index(t, v);
-    for (int i = 0; i < 4; ++i) {
-      if (i == lv) continue;
-      const VertId w = mesh.vertex(t, i);
-      if (link_stamp_[w.value] != lg) {
-        link_stamp_[w.value] = lg;
-        ++v_count;
-      }
-      const FaceRef n = mesh.neighbour(t, i);
-      if (!n.valid() || marked(n.tet)) ++open_faces;
-    }
-  }
-  if (f_count == 0) return true;  // the vertex goes with the set
-
-  // Face-connected? Breadth-first through unmarked tets only.
-  const std::uint32_t g = next_gen(visit_stamp_, visit_gen_);
-  queue_.clear();
-  queue_.push_back(first);
-  visit_stamp_[first.value] = g;
-  for (std::size_t i = 0; i < queue_.size(); ++i) {
-    const TetId cur = queue_[i];
-    const int lv = mesh.local_index(cur, v);
     for (int f = 0; f < 4; ++f) {
       if (f == lv) continue;
-      const FaceRef n = mesh.neighbour(cur, f);
-      if (!n.valid() || marked(n.tet) || visit_stamp_[n.tet.value] == g) continue;
-      visit_stamp_[n.tet.value] = g;
-      queue_.push_back(n.tet);
+      const FaceRef n = mesh.neighbour(t, f);
+      if (!n.valid()) {
+        ++removed_boundary;
+      } else if (!marked(n.tet)) {
+        if (inner++ == 0) {
+          start = n.tet;
+          start_face = n.face;
+        }
+      }
     }
   }
-  if (queue_.size() != f_count) return false;
+  const std::uint32_t kept_boundary = mesh.boundary_face_count(v) - removed_boundary;
+  // No interface inside the link: nothing stays (a kept part would border the removed one).
+  if (inner == 0) return kept_boundary == 0;
+  const std::uint32_t interface = inner + kept_boundary;
 
-  // Each remaining tet has 3 link edges; interior ones are shared by two tets.
-  const std::uint32_t e_count = (3 * f_count + open_faces) / 2;
-  const std::int64_t chi = static_cast<std::int64_t>(v_count) - e_count + f_count;
-  return chi == 1;
+  // Walk the circle through the start edge, keeping the removed side on one hand. State: kept
+  // tet u, the link edge (from, pivot) just followed; turn around the mesh edge (v, pivot)
+  // through kept tets until the next face at v has a removed tet or nothing behind it.
+  const std::array<VertId, 4> sv = mesh.tet(start);
+  VertId from{}, pivot{};
+  for (int i = 0; i < 4; ++i) {
+    if (i == start_face || sv[i] == v) continue;
+    (from.valid() ? pivot : from) = sv[i];
+  }
+  TetId u = start;
+  std::uint32_t followed = 1;
+  // A valid mesh closes the circle within a few turns per edge; the bound only guards the loop.
+  for (std::uint32_t steps = 0; steps < 64u * interface + 1024u; ++steps) {
+    const int face = mesh.local_index(u, from);  // the face of u at v and pivot, away from `from`
+    const FaceRef n = mesh.neighbour(u, face);
+    if (!n.valid() || marked(n.tet)) {
+      // An interface edge (pivot, next): follow it.
+      if (u == start && face == start_face) return followed == interface;
+      ++followed;
+      VertId next{};
+      for (int i = 0; i < 4; ++i) {
+        const VertId w = mesh.vertex(u, i);
+        if (w != v && w != pivot && w != from) next = w;
+      }
+      from = pivot;
+      pivot = next;
+      continue;
+    }
+    // Kept tet behind: turn into it around (v, pivot); the face we entered by holds `from`'s
+    // replacement, the vertex of the entry face other than v and pivot.
+    VertId entry_other{};
+    for (int i = 0; i < 4; ++i) {
+      if (i == face) continue;
+      const VertId w = mesh.vertex(u, i);
+      if (w != v && w != pivot) entry_other = w;
+    }
+    u = n.tet;
+    from = entry_other;
+  }
+  return false;
 }
 
 bool SetRemovalWorkspace::edge_ok(const TetMesh& mesh, TetId t, int local_edge) {
@@ -155,20 +173,25 @@ SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const 
     }
   }
 
-  const std::uint32_t vg = next_gen(vert_stamp_, vert_gen_);
-  for (TetId t : set) {
-    for (int i = 0; i < 4; ++i) {
-      const VertId v = mesh.vertex(t, i);
-      if (vert_stamp_[v.value] == vg) continue;
-      vert_stamp_[v.value] = vg;
-      if (!vertex_ok(mesh, v, t)) {
-        result.ok = false;
-        result.kind = SingularityKind::kVertex;
-        result.vertex = v;
-        result.tet = t;
-        return result;
-      }
+  // Vertex by vertex, with the set's tets at each (a tet listed twice counts once).
+  at_vertex_.clear();
+  for (TetId t : set)
+    for (int i = 0; i < 4; ++i) at_vertex_.push_back({mesh.vertex(t, i).value, t.value});
+  std::sort(at_vertex_.begin(), at_vertex_.end());
+  at_vertex_.erase(std::unique(at_vertex_.begin(), at_vertex_.end()), at_vertex_.end());
+  for (std::size_t i = 0; i < at_vertex_.size();) {
+    std::size_t j = i;
+    group_.clear();
+    while (j < at_vertex_.size() && at_vertex_[j].first == at_vertex_[i].first) group_.push_back(TetId{at_vertex_[j++].second});
+    const VertId v{at_vertex_[i].first};
+    if (!vertex_ok(mesh, v, group_)) {
+      result.ok = false;
+      result.kind = SingularityKind::kVertex;
+      result.vertex = v;
+      result.tet = group_.front();
+      return result;
     }
+    i = j;
   }
   return result;
 }

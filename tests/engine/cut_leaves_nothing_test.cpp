@@ -157,7 +157,9 @@ TEST_P(CutLeavesNothing, EverySelectedTetIsRemovedOrCounted) {
   // makes slivers so flat (radius ratio 0 in double) that the fallback's split is refused now
   // and then: counted above, never left silently. Neighbours may leave what 3.5 cannot take.
   const RemovalStrategy s = GetParam().strategy;
-  if (s == RemovalStrategy::kCombined || s == RemovalStrategy::kWide) EXPECT_EQ(unresolved, 0);
+  if (s == RemovalStrategy::kCombined || s == RemovalStrategy::kWide) {
+    EXPECT_EQ(unresolved, 0);
+  }
 }
 
 std::vector<SweepCase> cases() {

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "removal_test_support.hpp"
+#include "tetcut/io.hpp"
 #include "tetcut/local_tables.hpp"
 #include "tetcut/random.hpp"
 #include "tetcut/set_removal.hpp"
@@ -168,6 +169,69 @@ TEST(SetRemoval, APathThatPinchesAVertexIsRefusedByTheEulerTest) {
       refused += !valid_after;
     }
   EXPECT_GT(refused, 0);
+}
+
+TEST(SetRemoval, AgreesWithTheCheckerOnIrregularMeshesAndShells) {
+  // The vertex test follows the interface between kept and removed tets in each link instead of
+  // walking whole shells, so it is held against the checker on irregular meshes (the small fuzz
+  // meshes: surface vertices with wide fans, interior vertices with spherical links) and on the
+  // sets that make its cases: random face-connected sets, a vertex's shell with a random part
+  // kept (a disk, an annulus or pieces stay), and two separate pieces of one shell.
+  int removable = 0, vertex_refusals = 0, edge_refusals = 0;
+  for (const char* name : {"liver-small.msh", "cylinder-small.msh", "sheet-small.msh"}) {
+    ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/fuzz/meshes/" + name);
+    ASSERT_TRUE(read.mesh.has_value()) << name;
+    const TetMesh mesh = build_or_fail(*read.mesh);
+    SetRemovalWorkspace ws;
+    SplitMix64 rng(2026);
+    std::vector<TetId> set, shell;
+    auto grow_from = [&](TetId seed, std::uint32_t want, std::span<const TetId> within) {
+      if (std::find(set.begin(), set.end(), seed) != set.end()) return;  // distinct tets only
+      const std::size_t first = set.size();
+      set.push_back(seed);
+      for (int step = 0; step < 200 && set.size() - first < want; ++step) {
+        const TetId from = set[first + rng.below(static_cast<std::uint32_t>(set.size() - first))];
+        const FaceRef n = mesh.neighbour(from, static_cast<int>(rng.below(4)));
+        if (!n.valid() || std::find(set.begin(), set.end(), n.tet) != set.end()) continue;
+        if (!within.empty() && std::find(within.begin(), within.end(), n.tet) == within.end()) continue;
+        set.push_back(n.tet);
+      }
+    };
+    for (int trial = 0; trial < 600; ++trial) {
+      set.clear();
+      TetId seed{rng.below(mesh.tet_capacity())};
+      const int kind = trial % 3;
+      if (kind == 0) {
+        grow_from(seed, 1 + rng.below(24), {});
+      } else {
+        const VertId v = mesh.vertex(seed, static_cast<int>(rng.below(4)));
+        mesh.vertex_shell(v, shell);
+        if (kind == 1) {
+          // The whole shell but a random face-connected part of it.
+          std::vector<TetId> kept;
+          std::swap(set, kept);
+          grow_from(shell[rng.below(static_cast<std::uint32_t>(shell.size()))], 1 + rng.below(static_cast<std::uint32_t>(shell.size())), shell);
+          std::swap(set, kept);
+          for (TetId t : shell)
+            if (std::find(kept.begin(), kept.end(), t) == kept.end()) set.push_back(t);
+          if (set.empty()) continue;
+        } else {
+          // Two random pieces of the shell.
+          grow_from(shell[rng.below(static_cast<std::uint32_t>(shell.size()))], 1 + rng.below(4), shell);
+          grow_from(shell[rng.below(static_cast<std::uint32_t>(shell.size()))], 1 + rng.below(4), shell);
+        }
+      }
+      const SetRemovalCheck check = ws.check(mesh, set);
+      ASSERT_EQ(check.ok, still_valid_without(mesh, set)) << name << " trial " << trial << " kind " << kind;
+      removable += check.ok;
+      vertex_refusals += check.kind == SingularityKind::kVertex;
+      edge_refusals += check.kind == SingularityKind::kEdge;
+    }
+  }
+  // Every outcome occurs often enough for the agreement to mean something.
+  EXPECT_GT(removable, 100);
+  EXPECT_GT(vertex_refusals, 100);
+  EXPECT_GT(edge_refusals, 100);
 }
 
 }  // namespace

@@ -59,19 +59,32 @@ class TetMesh {
   }
   [[nodiscard]] VertId vertex(TetId t, int local) const { return VertId{tet_verts_[t.value][local]}; }
   [[nodiscard]] const Vec3& position(VertId v) const { return positions_[v.value]; }
-  // Local index (0..3) of v in t, or -1.
-  [[nodiscard]] int local_index(TetId t, VertId v) const;
+  // Local index (0..3) of v in t, or -1. Inline: every shell walk calls it per step.
+  [[nodiscard]] int local_index(TetId t, VertId v) const {
+    const auto& verts = tet_verts_[t.value];
+    for (int i = 0; i < 4; ++i)
+      if (verts[i] == v.value) return i;
+    return -1;
+  }
 
   // The neighbour across face `face` of t and the face of the neighbour we enter by; an invalid
   // FaceRef on the boundary.
-  [[nodiscard]] FaceRef neighbour(TetId t, int face) const;
+  [[nodiscard]] FaceRef neighbour(TetId t, int face) const {
+    const std::uint32_t adj = tet_adj_[t.value][face];
+    if (adj == kNoNeighbour) return {};
+    return {TetId{adj >> 2}, static_cast<std::uint8_t>(adj & 3u)};
+  }
   [[nodiscard]] TetId vertex_tet(VertId v) const { return vert_tet_[v.value]; }
 
   // ---- boundary classification (paper 3.3 needs these in O(1)) ----------------------------
   [[nodiscard]] bool is_boundary_face(TetId t, int face) const { return tet_adj_[t.value][face] == kNoNeighbour; }
   [[nodiscard]] bool is_boundary_vertex(VertId v) const { return vert_boundary_faces_[v.value] != 0; }
   [[nodiscard]] std::uint32_t boundary_face_count(VertId v) const { return vert_boundary_faces_[v.value]; }
-  [[nodiscard]] int boundary_face_count(TetId t) const;
+  [[nodiscard]] int boundary_face_count(TetId t) const {
+    int n = 0;
+    for (std::uint32_t adj : tet_adj_[t.value]) n += adj == kNoNeighbour;
+    return n;
+  }
   // O(edge shell): walks around the edge until it closes or meets the boundary.
   [[nodiscard]] bool is_boundary_edge(TetId t, int local_edge) const;
 

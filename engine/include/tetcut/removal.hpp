@@ -113,8 +113,8 @@ class Remover {
   RemovalResult remove(TetMesh& mesh, TetId t, ChangeLog* log = nullptr, const RequestLimits& limits = {});
 
   [[nodiscard]] const RemovalReport& report() const { return report_; }
-  // Sizes all per-tet and per-vertex scratch for meshes up to these capacities (see Cutter).
-  void reserve(std::uint32_t tets, std::uint32_t vertices);
+  // Sizes all per-tet scratch for meshes up to this capacity (see Cutter).
+  void reserve(std::uint32_t tets);
   void reset_report() { report_ = {}; }
   [[nodiscard]] const RemovalOptions& options() const { return options_; }
 

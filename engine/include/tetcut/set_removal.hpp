@@ -4,18 +4,19 @@
 //
 // After the set goes, every vertex it touches must keep either no tet at all, or one
 // face-connected shell whose link is a disk; every edge it touches must keep either no tet or
-// one contiguous run of tets around it. The disk test is by Euler characteristic: the
-// remaining link is a subcomplex of a disk or a sphere, so, when it is face-connected, it is a
-// disk iff V - E + F == 1 (V: edges from the vertex, E: faces through it, F: tets). A pinch
-// or a hole makes it 0 or less. The edge test is implied by the vertex test at its two ends,
-// but it runs first because it names the edge, which is what the neighbour strategy needs.
+// one contiguous run of tets around it. The edges are tested first (they name the edge, which
+// is what the neighbour strategy needs); once they pass, the vertex test needs only the
+// interface between kept and removed tets in the vertex's link, which is a union of circles:
+// what stays is a disk iff there is exactly one (set_removal.cpp says why). The test follows
+// one circle from the set's own faces, so it costs what the set touches, not whole shells.
 //
-// Everything is local: O(sum of the touched shells), no scan of the mesh, no allocation once
-// the workspace has grown to the mesh's capacity (stamps, never cleared arrays).
+// Everything is local: O(set x edge rings + the interface's turns), no scan of the mesh, no
+// allocation once the workspace has grown (stamps, never cleared arrays).
 #pragma once
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "tetcut/edge_key_set.hpp"
@@ -67,29 +68,30 @@ class SetRemovalWorkspace {
   void remaining_runs(const TetMesh& mesh, TetId seed, int local_edge, std::vector<TetId>& tets,
                       std::vector<std::uint32_t>& sizes);
 
-  // Sizes the per-tet and per-vertex scratch for meshes up to these capacities now, rather than
-  // in the middle of the first operation that needs them.
-  void reserve(std::uint32_t tets, std::uint32_t vertices);
+  // Sizes the per-tet scratch for meshes up to this capacity now, rather than in the middle of
+  // the first operation that needs it.
+  void reserve(std::uint32_t tets);
 
  private:
   void grow(const TetMesh& mesh);
   // The whole shell of v into shell_, stamped with shell_gen_.
   void collect_shell(const TetMesh& mesh, VertId v, TetId seed);
-  bool vertex_ok(const TetMesh& mesh, VertId v, TetId seed);
+  // The set's tets at v are `removed_at_v` (marked, distinct).
+  bool vertex_ok(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v);
   bool edge_ok(const TetMesh& mesh, TetId t, int local_edge);
 
   std::vector<std::uint32_t> set_stamp_;    // per tet: == set_gen_ when marked
   std::vector<std::uint32_t> shell_stamp_;  // per tet: == shell_gen_ when in shell_
   std::vector<std::uint32_t> visit_stamp_;  // per tet: BFS visits
   std::vector<std::uint32_t> parent_;       // per tet: BFS parent (valid where visited)
-  std::vector<std::uint32_t> vert_stamp_;   // per vertex: touched by the checked set
-  std::vector<std::uint32_t> link_stamp_;   // per vertex: counted in the current link
-  std::uint32_t set_gen_ = 0, shell_gen_ = 0, visit_gen_ = 0, vert_gen_ = 0, link_gen_ = 0;
+  std::uint32_t set_gen_ = 0, shell_gen_ = 0, visit_gen_ = 0;
 
   std::vector<TetId> shell_;
   std::vector<TetId> queue_;
   std::vector<std::uint8_t> depth_;
   std::vector<TetId> ring_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> at_vertex_;  // (vertex, tet) of the set
+  std::vector<TetId> group_;
   EdgeKeySet edges_seen_;
 };
 
