@@ -281,7 +281,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
           --vert_boundary_faces_[verts[kFaceVerts[f][k]]];
         }
       } else if (tet_stamp_[adj >> 2] != stamp_) {
-        scratch_faces_.push_back({sorted_face_key(verts, f), adj, 1});
+        scratch_faces_.push_back({sorted_face_key(verts, f), adj, kNoSlot, 1});
       }
     }
     for (std::uint32_t v : verts) {
@@ -304,7 +304,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     auto& verts = tet_verts_[t.value];
     for (int i = 0; i < 4; ++i) verts[i] = tv[i].value;
     tet_adj_[t.value] = {kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour};
-    for (int f = 0; f < 4; ++f) scratch_faces_.push_back({sorted_face_key(verts, f), pack(t, f), 0});
+    for (int f = 0; f < 4; ++f) scratch_faces_.push_back({sorted_face_key(verts, f), pack(t, f), kNoSlot, 0});
     for (std::uint32_t v : verts) {
       const TetId seed = vert_tet_[v];
       if (seed == kReseed || !seed.valid()) note(Array::kVertTet, v);
@@ -319,19 +319,40 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
   }
   (void)first_created;
 
-  // 3. Glue faces with equal vertex triples. Sorting (not hashing) keeps it deterministic and
-  // allocation-free once the scratch vector has grown.
-  std::sort(scratch_faces_.begin(), scratch_faces_.end(), [](const FaceSlot& x, const FaceSlot& y) {
-    if (x.key != y.key) return x.key < y.key;
-    if (x.is_outer != y.is_outer) return x.is_outer > y.is_outer;
-    return x.ref < y.ref;
-  });
-  for (std::size_t i = 0; i < scratch_faces_.size();) {
-    std::size_t j = i + 1;
-    while (j < scratch_faces_.size() && scratch_faces_[j].key == scratch_faces_[i].key) ++j;
-    assert(j - i <= 2 && "a face would be shared by more than two tets");
-    if (j - i == 2) {
-      const std::uint32_t x = scratch_faces_[i].ref, y = scratch_faces_[i + 1].ref;
+  // 3. Glue faces with equal vertex triples, matched through a small open-addressing table of
+  // slot indices (reused scratch: no allocation once grown). The pairs do not depend on the
+  // table's order, and everything below walks the slots in the order they were made, so the
+  // result is deterministic. (A sort did the same in O(n log n) and was a quarter of a split.)
+  const std::size_t n = scratch_faces_.size();
+  std::size_t size = 16;
+  while (size < 2 * n) size *= 2;
+  if (face_table_.size() < size) face_table_.resize(size);
+  std::fill(face_table_.begin(), face_table_.begin() + static_cast<std::ptrdiff_t>(size), kNoSlot);
+  const std::size_t mask = size - 1;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    FaceSlot& slot = scratch_faces_[i];
+    slot.partner = kNoSlot;
+    const auto& k = slot.key;
+    std::size_t h = (k[0] * 0x9E3779B1u ^ k[1] * 0x85EBCA77u ^ k[2] * 0xC2B2AE3Du) & mask;
+    for (;; h = (h + 1) & mask) {
+      const std::uint32_t other = face_table_[h];
+      if (other == kNoSlot) {
+        face_table_[h] = i;
+        break;
+      }
+      if (scratch_faces_[other].key == k) {
+        assert(scratch_faces_[other].partner == kNoSlot && "a face would be shared by more than two tets");
+        scratch_faces_[other].partner = i;
+        slot.partner = other;
+        break;
+      }
+    }
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const FaceSlot& s = scratch_faces_[i];
+    if (s.partner != kNoSlot) {
+      if (s.partner < i) continue;  // glued from the first of the pair
+      const std::uint32_t x = s.ref, y = scratch_faces_[s.partner].ref;
       note(Array::kTetAdj, x >> 2);
       note(Array::kTetAdj, y >> 2);
       tet_adj_[x >> 2][x & 3u] = y;
@@ -339,7 +360,6 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     } else {
       // Unmatched: a new boundary face (an outer face of the cavity left uncovered, or a face of
       // a new tet on the surface).
-      const FaceSlot& s = scratch_faces_[i];
       if (s.is_outer) {
         note(Array::kTetAdj, s.ref >> 2);
         tet_adj_[s.ref >> 2][s.ref & 3u] = kNoNeighbour;
@@ -349,7 +369,6 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
         ++vert_boundary_faces_[v];
       }
     }
-    i = j;
   }
 
   // 4. Vertices that lost their seed and got none from a new tet: any outer tet that contains

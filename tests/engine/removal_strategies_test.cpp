@@ -91,7 +91,7 @@ TEST(RemovalStrategies, EdgeSingularitiesInABoxAreResolvedWithValidMeshes) {
     invariants::LocalChecker local(mesh);
     Remover remover({.strategy = strategy});
     BoundaryTetPicker picker(mesh, 11);
-    for (int i = 0; i < 80 && remover.report().edge_singularities == 0; ++i) {
+    for (int i = 0; i < 400 && remover.report().edge_singularities == 0; ++i) {
       const TetId t = picker.pick(mesh);
       ASSERT_TRUE(t.valid());
       ASSERT_TRUE(remove_checked(remover, mesh, t, local));

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "test_meshes.hpp"
 #include "tetcut/edge_split.hpp"
@@ -30,6 +31,29 @@ TEST(ToolBall, DistanceToTetIsZeroInsideAndEuclideanOutside) {
   EXPECT_NEAR(distance_to_tet({-1, -1, -1}, a, b, c, d), std::sqrt(3.0), 1e-15) << "off a corner";
   EXPECT_NEAR(distance_to_tet({2, 0, 0}, a, b, c, d), 1.0, 1e-15) << "beyond a vertex";
   EXPECT_NEAR(distance_to_tet({1, 1, 1}, a, b, c, d), std::sqrt(3.0) - 1.0 / std::sqrt(3.0), 1e-12) << "above the slanted face";
+}
+
+TEST(ToolBall, IntersectsAgreesWithTheDistanceBeyondRounding) {
+  // intersects() decides a ball in plain floating point (face planes, then the nearest face);
+  // distance_to_tet() is the reference. On random positively oriented tets (as the mesh holds
+  // them) and balls from tiny to larger than the tet, the two agree whenever the distance is not
+  // within rounding of the radius, and a ball of radius 0 (a point) keeps the exact answer.
+  SplitMix64 rng(11);
+  auto coordinate = [&] { return 4.0 * rng.unit() - 2.0; };
+  int meets = 0, misses = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Vec3 q[4];
+    for (Vec3& x : q) x = {coordinate(), coordinate(), coordinate()};
+    if (dot(q[1] - q[0], cross(q[2] - q[0], q[3] - q[0])) < 0) std::swap(q[2], q[3]);
+    const Ball ball{{coordinate(), coordinate(), coordinate()}, trial % 10 == 0 ? 0.0 : 2.0 * rng.unit() * rng.unit()};
+    const double distance = distance_to_tet(ball.centre, q[0], q[1], q[2], q[3]);
+    if (std::abs(distance - ball.radius) <= 1e-9 * (1.0 + ball.radius)) continue;
+    const bool expected = distance <= ball.radius;
+    ASSERT_EQ(intersects(ball, q[0], q[1], q[2], q[3]), expected) << "trial " << trial;
+    (expected ? meets : misses)++;
+  }
+  EXPECT_GT(meets, 2000);
+  EXPECT_GT(misses, 2000);
 }
 
 TEST(SpatialIndex, QueriesMatchAScanThroughSplitsAndRemovals) {

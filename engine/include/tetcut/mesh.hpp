@@ -232,8 +232,10 @@ class TetMesh {
   struct FaceSlot {
     std::array<std::uint32_t, 3> key;  // sorted vertex ids
     std::uint32_t ref;                 // packed (tet, face)
+    std::uint32_t partner;             // the slot with the same key, or kNoSlot
     std::uint8_t is_outer;             // a face of the untouched mesh facing the cavity
   };
+  static constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
   // Transaction journal.
   enum class Array : std::uint8_t { kTetVerts, kTetAdj, kPositions, kVertTet, kBoundary, kFreeVertNext, kAttributes };
   struct JournalEntry {
@@ -254,6 +256,7 @@ class TetMesh {
   Journal journal_;
 
   std::vector<FaceSlot> scratch_faces_;
+  std::vector<std::uint32_t> face_table_;  // open addressing over scratch_faces_ indices
   std::vector<VertId> scratch_verts_;
   std::vector<std::uint32_t> tet_stamp_;
   std::uint32_t stamp_ = 0;
