@@ -254,18 +254,29 @@ void TetMesh::free_vertex(VertId v) {
   head = v;
 }
 
+// Journals a vertex's seed and boundary count once per replace_tets() call, however many of its
+// faces and tets the call touches (the first record is the one a rollback keeps).
+void TetMesh::touch_vertex(std::uint32_t v) {
+  if (vert_stamp_[v] == stamp_) return;
+  vert_stamp_[v] = stamp_;
+  note(Array::kVertTet, v);
+  note(Array::kBoundary, v);
+}
+
 void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVerts> added,
                            std::vector<TetId>* created) {
   // Stamp the removed tets so that "is this neighbour also going?" is O(1).
   if (tet_stamp_.size() < tet_capacity()) tet_stamp_.resize(tet_capacity(), 0);
   if (++stamp_ == 0) {
     std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0);
+    std::fill(vert_stamp_.begin(), vert_stamp_.end(), 0);
     stamp_ = 1;
   }
   for (TetId r : removed) {
     assert(is_live(r));
     tet_stamp_[r.value] = stamp_;
   }
+  if (vert_stamp_.size() < vertex_capacity()) vert_stamp_.resize(vertex_capacity(), 0);
 
   scratch_faces_.clear();
   scratch_verts_.clear();
@@ -277,7 +288,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
       const std::uint32_t adj = tet_adj_[r.value][f];
       if (adj == kNoNeighbour) {
         for (int k = 0; k < 3; ++k) {
-          note(Array::kBoundary, verts[kFaceVerts[f][k]]);
+          touch_vertex(verts[kFaceVerts[f][k]]);
           --vert_boundary_faces_[verts[kFaceVerts[f][k]]];
         }
       } else if (tet_stamp_[adj >> 2] != stamp_) {
@@ -287,7 +298,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     for (std::uint32_t v : verts) {
       const TetId seed = vert_tet_[v];
       if (seed.valid() && seed != kReseed && tet_stamp_[seed.value] == stamp_) {
-        note(Array::kVertTet, v);
+        touch_vertex(v);
         vert_tet_[v] = kReseed;
         scratch_verts_.push_back(VertId{v});
       }
@@ -307,7 +318,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     for (int f = 0; f < 4; ++f) scratch_faces_.push_back({sorted_face_key(verts, f), pack(t, f), kNoSlot, 0});
     for (std::uint32_t v : verts) {
       const TetId seed = vert_tet_[v];
-      if (seed == kReseed || !seed.valid()) note(Array::kVertTet, v);
+      if (seed == kReseed || !seed.valid()) touch_vertex(v);
       if (seed == kReseed) {
         vert_tet_[v] = t;
       } else if (!seed.valid()) {  // a vertex made by add_vertex, used for the first time
@@ -353,8 +364,9 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     if (s.partner != kNoSlot) {
       if (s.partner < i) continue;  // glued from the first of the pair
       const std::uint32_t x = s.ref, y = scratch_faces_[s.partner].ref;
-      note(Array::kTetAdj, x >> 2);
-      note(Array::kTetAdj, y >> 2);
+      // New tets were journaled when allocated; an outer tet is journaled per glued face.
+      if (s.is_outer) note(Array::kTetAdj, x >> 2);
+      if (scratch_faces_[s.partner].is_outer) note(Array::kTetAdj, y >> 2);
       tet_adj_[x >> 2][x & 3u] = y;
       tet_adj_[y >> 2][y & 3u] = x;
     } else {
@@ -365,7 +377,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
         tet_adj_[s.ref >> 2][s.ref & 3u] = kNoNeighbour;
       }
       for (std::uint32_t v : s.key) {
-        note(Array::kBoundary, v);
+        touch_vertex(v);
         ++vert_boundary_faces_[v];
       }
     }
@@ -385,8 +397,7 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
       }
     }
     if (seed.valid()) {
-      note(Array::kVertTet, v.value);
-      vert_tet_[v.value] = seed;
+      vert_tet_[v.value] = seed;  // journaled when it lost its seed
     } else {
       free_vertex(v);
       --live_vertices_;
@@ -400,6 +411,7 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
   tet_verts_.reserve(tets);
   tet_adj_.reserve(tets);
   tet_stamp_.reserve(tets);
+  vert_stamp_.reserve(vertices);
   positions_.reserve(vertices);
   vert_tet_.reserve(vertices);
   vert_boundary_faces_.reserve(vertices);
@@ -581,6 +593,7 @@ void TetMesh::changes_since(const Savepoint& p, std::vector<TetId>& removed, std
   if (tet_stamp_.size() < tet_capacity()) tet_stamp_.resize(tet_capacity(), 0);
   if (++stamp_ == 0) {
     std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0);
+    std::fill(vert_stamp_.begin(), vert_stamp_.end(), 0);
     stamp_ = 1;
   }
   // The first entry after p of a row that existed at p holds its state at p.

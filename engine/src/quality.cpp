@@ -10,22 +10,20 @@
 namespace tetcut {
 
 double radius_ratio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  // inradius r = 3V / (sum of face areas); circumradius R = |alpha| / (12 V) with the classic
-  // closed form (product of opposite edge lengths, Heron-like), so 3r/R = 36 V^2 / (A * |alpha|).
-  const double volume = std::abs(signed_volume(a, b, c, d));
-  if (volume == 0.0) return 0.0;
-  const double area = 0.5 * (norm(cross(b - a, c - a)) + norm(cross(b - a, d - a)) +
-                             norm(cross(c - a, d - a)) + norm(cross(c - b, d - b)));
-  // Products of opposite edge lengths.
-  const double p = norm(b - a) * norm(d - c);
-  const double q = norm(c - a) * norm(d - b);
-  const double s = norm(d - a) * norm(c - b);
-  const double heron = (p + q + s) * (-p + q + s) * (p - q + s) * (p + q - s);
-  if (!(heron > 0.0)) return 0.0;
-  const double six_v_r = std::sqrt(heron);  // = 24 V R
-  const double inradius = 3.0 * volume / area;
-  const double circumradius = six_v_r / (24.0 * volume);
-  return std::clamp(3.0 * inradius / circumradius, 0.0, 1.0);
+  // inradius r = 3V / A (A: the sum of the face areas); circumradius R = |o| for the
+  // circumcentre relative to a, o = (|b'|^2 c'xd' + |c'|^2 d'xb' + |d'|^2 b'xc') / (2 D) with
+  // b' = b - a, ... and D = b'.(c'xd') = 6V. So 3r/R = 3 D^2 / (A |2 D o|): five square roots
+  // (four areas and |2 D o|) where the edge-product form needed eleven. It runs for every tet a
+  // cut makes (the report's worst quality).
+  const Vec3 pb = b - a, pc = c - a, pd = d - a;
+  const Vec3 cd = cross(pc, pd), db = cross(pd, pb), bc = cross(pb, pc);
+  const double det = dot(pb, cd);
+  if (det == 0.0) return 0.0;
+  const Vec3 twice_d_o = dot(pb, pb) * cd + dot(pc, pc) * db + dot(pd, pd) * bc;
+  const double area = 0.5 * (norm(cd) + norm(db) + norm(bc) + norm(cross(c - b, d - b)));
+  const double denominator = area * norm(twice_d_o);
+  if (!(denominator > 0.0)) return 0.0;
+  return std::clamp(3.0 * det * det / denominator, 0.0, 1.0);
 }
 
 double min_dihedral_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

@@ -259,6 +259,8 @@ class TetMesh {
   std::vector<std::uint32_t> face_table_;  // open addressing over scratch_faces_ indices
   std::vector<VertId> scratch_verts_;
   std::vector<std::uint32_t> tet_stamp_;
+  std::vector<std::uint32_t> vert_stamp_;  // replace_tets(): vertex journaled in this call
+  void touch_vertex(std::uint32_t v);
   std::uint32_t stamp_ = 0;
 };
 
