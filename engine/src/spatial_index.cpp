@@ -42,99 +42,80 @@ void SpatialIndex::grow_table() {
     std::size_t s = mix64(o.key) & mask;
     while (table_[s].used) s = (s + 1) & mask;
     table_[s] = o;
+    // The cell's tets name their slot: move them along.
+    for (std::uint32_t t = o.head; t != kNone; t = entries_by_tet_[t].next) entries_by_tet_[t].slot = static_cast<std::uint32_t>(s);
   }
 }
 
-SpatialIndex::Slot& SpatialIndex::cell_for(std::uint64_t key) {
+std::uint32_t SpatialIndex::cell_for(std::uint64_t key) {
   if ((used_slots_ + 1) * 2 > table_.size()) grow_table();
   const std::size_t mask = table_.size() - 1;
   std::size_t s = mix64(key) & mask;
   for (; table_[s].used; s = (s + 1) & mask)
-    if (table_[s].key == key) return table_[s];
+    if (table_[s].key == key) return static_cast<std::uint32_t>(s);
   // Cells are never deleted: an emptied cell keeps its slot for the next tets there.
-  const std::uint32_t sentinel = new_node();  // may grow nodes_, not table_
-  nodes_[sentinel] = {kNone, sentinel, sentinel, kNone};
-  table_[s] = {key, sentinel, true};
+  table_[s] = {key, kNone, true, 0.0};
   ++used_slots_;
-  return table_[s];
-}
-
-std::uint32_t SpatialIndex::new_node() {
-  if (free_node_ != kNone) {
-    const std::uint32_t n = free_node_;
-    free_node_ = nodes_[n].next;
-    return n;
-  }
-  nodes_.push_back({});
-  return static_cast<std::uint32_t>(nodes_.size() - 1);
+  return static_cast<std::uint32_t>(s);
 }
 
 void SpatialIndex::build(const TetMesh& mesh) {
   table_.clear();
   used_slots_ = 0;
-  nodes_.clear();
-  free_node_ = kNone;
-  ranges_.assign(mesh.tet_capacity(), CellRange{});
+  entries_by_tet_.assign(mesh.tet_capacity(), Entry{});
   entries_ = 0;
+  reach_ = 0.0;
   occupied_lo_ = {1, 1, 1};
   occupied_hi_ = {0, 0, 0};
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
     if (mesh.is_live(TetId{t})) insert(mesh, TetId{t});
-  // Headroom, so that the cuts that follow find nodes and slots without growing anything.
-  nodes_.reserve(nodes_.size() + nodes_.size() / 2 + 1024);
-  ranges_.reserve(ranges_.size() + ranges_.size() / 2 + 1024);
-  stamps_.reserve(ranges_.capacity());
+  // Headroom, so that the cuts that follow find entries and slots without growing anything.
+  entries_by_tet_.reserve(entries_by_tet_.size() + entries_by_tet_.size() / 2 + 1024);
   while ((used_slots_ + used_slots_ / 2 + 1) * 2 > table_.size()) grow_table();
 }
 
 void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
-  if (ranges_.size() <= t.value) ranges_.resize(std::max<std::size_t>(t.value + 1, ranges_.size() * 3 / 2));
-  if (ranges_[t.value].first_node != kNone) erase(t);
+  if (entries_by_tet_.size() <= t.value) entries_by_tet_.resize(std::max<std::size_t>(t.value + 1, entries_by_tet_.size() * 3 / 2));
+  if (entries_by_tet_[t.value].radius >= 0.0) erase(t);
   const auto v = mesh.tet(t);
-  Vec3 lo = mesh.position(v[0]), hi = lo;
-  for (int i = 1; i < 4; ++i) {
-    const Vec3& p = mesh.position(v[i]);
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  const Vec3 c = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
+  double r2 = 0.0;
+  for (VertId x : v) {
+    const Vec3 d = mesh.position(x) - c;
+    r2 = std::max(r2, dot(d, d));
   }
-  const std::int32_t i0 = cell_of(lo.x), i1 = cell_of(hi.x), j0 = cell_of(lo.y), j1 = cell_of(hi.y), k0 = cell_of(lo.z),
-                     k1 = cell_of(hi.z);
+  // A hair larger than the rounded distance, so that the sphere surely holds the tet.
+  const double radius = std::sqrt(r2) * (1.0 + 1e-12) + 1e-300;
+  const std::int32_t i = cell_of(c.x), j = cell_of(c.y), k = cell_of(c.z);
   if (occupied_lo_[0] > occupied_hi_[0]) {
-    occupied_lo_ = {i0, j0, k0};
-    occupied_hi_ = {i1, j1, k1};
+    occupied_lo_ = occupied_hi_ = {i, j, k};
   } else {
-    occupied_lo_ = {std::min(occupied_lo_[0], i0), std::min(occupied_lo_[1], j0), std::min(occupied_lo_[2], k0)};
-    occupied_hi_ = {std::max(occupied_hi_[0], i1), std::max(occupied_hi_[1], j1), std::max(occupied_hi_[2], k1)};
+    occupied_lo_ = {std::min(occupied_lo_[0], i), std::min(occupied_lo_[1], j), std::min(occupied_lo_[2], k)};
+    occupied_hi_ = {std::max(occupied_hi_[0], i), std::max(occupied_hi_[1], j), std::max(occupied_hi_[2], k)};
   }
-  std::uint32_t first = kNone;
-  for (std::int32_t i = i0; i <= i1; ++i)
-    for (std::int32_t j = j0; j <= j1; ++j)
-      for (std::int32_t k = k0; k <= k1; ++k) {
-        const std::uint32_t sentinel = cell_for(pack(i, j, k)).sentinel;
-        const std::uint32_t n = new_node();
-        const std::uint32_t after = nodes_[sentinel].next;
-        nodes_[n] = {t.value, after, sentinel, first};
-        nodes_[after].prev = n;
-        nodes_[sentinel].next = n;
-        first = n;
-        ++entries_;
-      }
-  ranges_[t.value].first_node = first;
+  const std::uint32_t s = cell_for(pack(i, j, k));
+  Slot& cell = table_[s];
+  cell.reach = std::max(cell.reach, radius);
+  reach_ = std::max(reach_, radius);
+  Entry& e = entries_by_tet_[t.value];
+  e = {c, radius, s, cell.head, kNone};
+  if (cell.head != kNone) entries_by_tet_[cell.head].prev = t.value;
+  cell.head = t.value;
+  ++entries_;
 }
 
 void SpatialIndex::erase(TetId t) {
-  if (t.value >= ranges_.size()) return;
-  for (std::uint32_t n = ranges_[t.value].first_node; n != kNone;) {
-    Node& node = nodes_[n];
-    nodes_[node.prev].next = node.next;
-    nodes_[node.next].prev = node.prev;
-    const std::uint32_t next = node.next_of_tet;
-    node.next = free_node_;
-    free_node_ = n;
-    --entries_;
-    n = next;
+  if (t.value >= entries_by_tet_.size()) return;
+  Entry& e = entries_by_tet_[t.value];
+  if (e.radius < 0.0) return;
+  if (e.prev != kNone) {
+    entries_by_tet_[e.prev].next = e.next;
+  } else {
+    table_[e.slot].head = e.next;
   }
-  ranges_[t.value].first_node = kNone;
+  if (e.next != kNone) entries_by_tet_[e.next].prev = e.prev;
+  e = Entry{};
+  --entries_;
 }
 
 void SpatialIndex::apply(const TetMesh& mesh, const ChangeLog& log, std::size_t removed_from, std::size_t created_from) {
@@ -146,18 +127,27 @@ void SpatialIndex::apply(const TetMesh& mesh, const ChangeLog& log, std::size_t 
   }
 }
 
+// Distance from p to the box of cell `key` (0 inside it).
+double SpatialIndex::gap_to_cell(const Vec3& p, std::uint64_t key) const {
+  const std::array<std::int32_t, 3> ijk = unpack(key);
+  const double q[3] = {p.x, p.y, p.z};
+  double g2 = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double lo = ijk[a] * cell_size_, hi = lo + cell_size_;
+    const double g = q[a] < lo ? lo - q[a] : q[a] > hi ? q[a] - hi : 0.0;
+    g2 += g * g;
+  }
+  return std::sqrt(g2);
+}
+
 void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out) {
   out.clear();
-  if (stamps_.size() < mesh.tet_capacity()) stamps_.resize(mesh.tet_capacity(), 0);
-  if (++stamp_ == 0) {
-    std::fill(stamps_.begin(), stamps_.end(), 0);
-    stamp_ = 1;
-  }
   if (occupied_lo_[0] > occupied_hi_[0]) return;  // nothing was ever indexed
   const Vec3 c = ball.centre;
-  const double r = ball.radius;
-  // The ball's box, clamped to the occupied bounds: beyond them every cell is empty, and a
-  // tool a thousand times the mesh's size must not pay for the cells around the mesh.
+  // Centroids farther than r + reach from the centre belong to tets that cannot meet the ball.
+  const double r = ball.radius + reach_;
+  // The box, clamped to the occupied bounds: beyond them every cell is empty, and a tool a
+  // thousand times the mesh's size must not pay for the cells around the mesh.
   std::array<std::int32_t, 3> lo = {cell_of(c.x - r), cell_of(c.y - r), cell_of(c.z - r)};
   std::array<std::int32_t, 3> hi = {cell_of(c.x + r), cell_of(c.y + r), cell_of(c.z + r)};
   std::uint64_t box_cells = 1;
@@ -187,20 +177,20 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
   std::sort(out.begin(), out.end());
 }
 
-// Appends the live tets of one cell that meet the ball and were not seen yet in this query.
-void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out) {
-  for (std::uint32_t n = nodes_[cell.sentinel].next; n != cell.sentinel; n = nodes_[n].next) {
-    const std::uint32_t t = nodes_[n].tet;
-    if (t >= stamps_.size() || stamps_[t] == stamp_) continue;
-    stamps_[t] = stamp_;
-    if (!mesh.is_live(TetId{t})) continue;
-    if (meets(mesh, TetId{t}, ball)) out.push_back(TetId{t});
+// Appends the tets of one cell that meet the ball.
+void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out) const {
+  if (cell.head == kNone || gap_to_cell(ball.centre, cell.key) > ball.radius + cell.reach) return;
+  for (std::uint32_t t = cell.head; t != kNone;) {
+    const Entry& e = entries_by_tet_[t];
+    const Vec3 d = e.centre - ball.centre;
+    const double reach = ball.radius + e.radius;
+    if (dot(d, d) <= reach * reach && mesh.is_live(TetId{t})) {
+      const auto v = mesh.tet(TetId{t});
+      if (intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
+        out.push_back(TetId{t});
+    }
+    t = e.next;
   }
-}
-
-bool SpatialIndex::meets(const TetMesh& mesh, TetId t, const Ball& ball) {
-  const auto v = mesh.tet(t);
-  return intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
 }
 
 }  // namespace tetcut

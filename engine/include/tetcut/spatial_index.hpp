@@ -1,11 +1,16 @@
-// A uniform grid over the tets, updated incrementally as tets are created and removed, so that
-// finding the tets a tool touches (paper 3.1) never scans the mesh: a query visits the cells
-// the tool's bounding box covers, and an update touches the cells of the changed tets.
+// A loose uniform grid over the tets, updated incrementally as tets are created and removed, so
+// that finding the tets a tool touches (paper 3.1) never scans the mesh: a query visits the
+// cells near the tool, and an update touches one cell per changed tet.
 //
-// Each tet is listed in every cell its bounding box overlaps; the index remembers each tet's
-// cell range, so a tet can be erased after the mesh has already forgotten it (replace_tets()).
-// Cells live in an open-addressing table keyed by their integer coordinates; query results are
-// sorted by tet id, so the order in which cells are visited never shows.
+// Each tet is listed once, in the cell that holds its centroid, with its bounding sphere (the
+// centroid and the largest distance to a vertex). Each cell remembers the largest sphere it ever
+// held, and the index the largest of all. A query looks at the cells within the ball's radius
+// plus that largest sphere, skips a cell whose box is farther from the centre than the radius
+// plus the cell's own largest sphere, rejects a tet whose sphere misses the ball without reading
+// the mesh, and runs the exact test (tool_ball.hpp) on the rest. (A tet listed in every cell its
+// box overlaps cost a dozen candidates per tet found: each tet was met in several cells, most
+// far from the ball.) Cells live in an open-addressing table keyed by their integer coordinates;
+// query results are sorted by tet id, so the order in which cells are visited never shows.
 //
 // A query costs what the index holds, not what the ball's box spans: the box is clamped to the
 // bounds of the cells that ever held a tet (grown on insert, never shrunk: conservative), and
@@ -29,7 +34,8 @@ class SpatialIndex {
   // `cell_size` > 0: a good choice is about the mean edge length of the mesh.
   explicit SpatialIndex(double cell_size = 1.0) : cell_size_(cell_size) {}
 
-  // Indexes every live tet: O(#T), once.
+  // Indexes every live tet: O(#T), once. Leaves room for half as many tets again, so that the
+  // operations that follow do not grow the index's arrays.
   void build(const TetMesh& mesh);
 
   void insert(const TetMesh& mesh, TetId t);
@@ -48,45 +54,37 @@ class SpatialIndex {
   [[nodiscard]] std::uint64_t cells_visited() const { return cells_visited_; }
 
  private:
-  struct CellRange {
-    std::uint32_t first_node = kNone;  // kNone: not indexed
-  };
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
   struct Slot {
     std::uint64_t key = 0;
-    std::uint32_t sentinel = kNone;  // the cell's list head node
+    std::uint32_t head = kNone;  // first tet of the cell's list
     bool used = false;
+    double reach = 0.0;          // largest bounding sphere the cell ever held
   };
-  // Cell lists are doubly linked through one node pool with a free list, each starting at a
-  // sentinel node, and a tet's own nodes are chained too: erasing a tet unlinks its nodes in
-  // O(1) each, and inserting or erasing never allocates once the pool has grown.
-  struct Node {
-    std::uint32_t tet;
-    std::uint32_t next, prev;  // in the cell's list
-    std::uint32_t next_of_tet;
+  // Per tet id.
+  struct Entry {
+    Vec3 centre{};
+    double radius = -1.0;        // < 0: not indexed
+    std::uint32_t slot = kNone;  // the cell's slot in table_ (stable: the table only grows by rehash)
+    std::uint32_t next = kNone, prev = kNone;  // in the cell's list
   };
-  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
-  [[nodiscard]] static bool meets(const TetMesh& mesh, TetId t, const Ball& ball);
   [[nodiscard]] std::int32_t cell_of(double x) const;
   [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
   [[nodiscard]] static std::array<std::int32_t, 3> unpack(std::uint64_t key);
-  void collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out);
+  void collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out) const;
+  [[nodiscard]] double gap_to_cell(const Vec3& p, std::uint64_t key) const;
   [[nodiscard]] const Slot* find_cell(std::uint64_t key) const;
-  Slot& cell_for(std::uint64_t key);
-  std::uint32_t new_node();
+  std::uint32_t cell_for(std::uint64_t key);
   void grow_table();
 
   double cell_size_;
   std::vector<Slot> table_;
   std::size_t used_slots_ = 0;
-  std::vector<Node> nodes_;
-  std::uint32_t free_node_ = kNone;
-  std::vector<CellRange> ranges_;      // by tet id
-  std::vector<std::uint32_t> stamps_;  // by tet id: dedup during a query
-  std::uint32_t stamp_ = 0;
+  std::vector<Entry> entries_by_tet_;
   std::size_t entries_ = 0;
-  // Bounds (inclusive) of every cell a tet was ever inserted into; empty when lo > hi.
-  std::array<std::int32_t, 3> occupied_lo_{1, 1, 1}, occupied_hi_{0, 0, 0};
+  double reach_ = 0.0;  // largest bounding sphere ever indexed
+  std::array<std::int32_t, 3> occupied_lo_{1, 1, 1}, occupied_hi_{0, 0, 0};  // lo > hi: empty
   std::uint64_t cells_visited_ = 0;
 };
 
