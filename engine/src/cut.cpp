@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "detail/reserve_touched.hpp"
 #include "tetcut/local_tables.hpp"
 #include "tetcut/quality.hpp"
 
@@ -40,32 +41,31 @@ std::optional<std::string> validate(const CutParams& p) {
 Cutter::Cutter(TetMesh& mesh, const CutParams& params)
     // The grid's cell is the mean edge length, so that a tet spans a few cells at most.
     : mesh_(mesh), params_(params), index_(mesh.mean_edge_length()), remover_(removal_options(params)) {
+  index_.build(mesh_);
+  scale_ = measure_scale(mesh_);
+  prepare();
+}
+
+void Cutter::prepare() {
+  using detail::reserve_touched;
   // Headroom of half the mesh again: cuts grow it (refinement creates more than removal takes)
   // and a reallocation of a million-tet array in the middle of a cut is a latency spike.
   const std::uint32_t tets = mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096;
   const std::uint32_t vertices = mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024;
   mesh_.reserve(tets, vertices);
-  index_.build(mesh_);
-  scale_ = measure_scale(mesh_);
   refiner_.reserve(tets);
   remover_.reserve(tets);
-  made_.assign(tets, 0);
-  selected_.assign(tets, 0);
-  tissue_.assign(tets, 0);
-  tried_.assign(tets, 0);
-  queued_.assign(tets, 0);
+  for (auto* marks : {&made_, &selected_, &tissue_, &tried_, &queued_})
+    if (marks->size() < tets) marks->resize(tets, 0);
+  if (origin_.size() < tets) origin_.resize(tets, kNoTet);
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
   // gated by ci/bench).
   constexpr std::size_t kCutScratch = 16384;
-  work_.reserve(kCutScratch);
-  removal_.reserve(kCutScratch);
-  hit_.reserve(kCutScratch);
-  region_.reserve(kCutScratch);
-  net_removed_.reserve(kCutScratch);
-  net_created_.reserve(kCutScratch);
-  vertices_made_.reserve(kCutScratch);
-  refine_log_.reserve(kCutScratch);
-  origin_.assign(tets, kNoTet);
+  for (auto* list : {&work_, &removal_, &hit_, &region_, &net_removed_, &net_created_, &refine_log_.removed})
+    reserve_touched(*list, kCutScratch);
+  reserve_touched(vertices_made_, kCutScratch);
+  reserve_touched(refine_log_.created, kCutScratch);
+  reserve_touched(refine_log_.vertices, kCutScratch);
 }
 
 std::optional<std::string> Cutter::set_params(const CutParams& params) {

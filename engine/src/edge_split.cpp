@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <tuple>
 
+#include "detail/reserve_touched.hpp"
 #include "tetcut/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 #include "tetcut/quality.hpp"
@@ -58,16 +59,17 @@ const char* to_string(SplitRefusal refusal) {
 }
 
 void EdgeSplitter::reserve(std::uint32_t tets) {
-  affected_slot_.reserve(tets);
-  edges_.reserve(kPlannedChildren / 4);
-  affected_.reserve(kPlannedChildren / 2);
-  shell_.reserve(256);
-  parents_.reserve(kPlannedChildren / 2);
-  labels_.reserve(64);
-  all_labels_.reserve(kPlannedChildren);
-  children_.reserve(kPlannedChildren);
-  children_per_parent_.reserve(kPlannedChildren / 2);
-  created_scratch_.reserve(kPlannedChildren);
+  using detail::reserve_touched;
+  reserve_touched(affected_slot_, tets);
+  reserve_touched(edges_, kPlannedChildren / 4);
+  reserve_touched(affected_, kPlannedChildren / 2);
+  reserve_touched(shell_, 256);
+  reserve_touched(parents_, kPlannedChildren / 2);
+  reserve_touched(labels_, 64);
+  reserve_touched(all_labels_, kPlannedChildren);
+  reserve_touched(children_, kPlannedChildren);
+  reserve_touched(children_per_parent_, kPlannedChildren / 2);
+  reserve_touched(created_scratch_, kPlannedChildren);
 }
 
 int EdgeSplitter::find_edge(std::uint32_t lo, std::uint32_t hi) const {

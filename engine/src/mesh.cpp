@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cstring>
 
+#include "detail/reserve_touched.hpp"
 #include "tetcut/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
@@ -408,15 +409,22 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
 }
 
 void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
-  tet_verts_.reserve(tets);
-  tet_adj_.reserve(tets);
-  tet_stamp_.reserve(tets);
-  vert_stamp_.reserve(vertices);
-  positions_.reserve(vertices);
-  vert_tet_.reserve(vertices);
-  vert_boundary_faces_.reserve(vertices);
-  free_vert_next_.reserve(vertices);
+  using detail::reserve_touched;
+  reserve_touched(tet_verts_, tets);
+  reserve_touched(tet_adj_, tets);
+  reserve_touched(tet_stamp_, tets);
+  reserve_touched(vert_stamp_, vertices);
+  reserve_touched(positions_, vertices);
+  reserve_touched(vert_tet_, vertices);
+  reserve_touched(vert_boundary_faces_, vertices);
+  reserve_touched(free_vert_next_, vertices);
   attributes_.reserve(vertices);
+  // The working size of one operation: its journal and the faces replace_tets() glues. A larger
+  // operation grows them once.
+  reserve_touched(journal_.entries, kJournalWorkingSize);
+  reserve_touched(scratch_faces_, 4096);
+  reserve_touched(face_table_, 8192);
+  reserve_touched(scratch_verts_, 1024);
 }
 
 Renumbering TetMesh::compact() {

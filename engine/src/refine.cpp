@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "detail/reserve_touched.hpp"
 #include "tetcut/local_tables.hpp"
 
 namespace tetcut {
@@ -180,6 +181,16 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
   region.erase(std::unique(region.begin(), region.end()), region.end());
   region.erase(std::remove_if(region.begin(), region.end(), [&](TetId t) { return !mesh.is_live(t); }), region.end());
   return report;
+}
+
+void Refiner::reserve(std::uint32_t tets) {
+  using detail::reserve_touched;
+  splitter_.reserve(tets);
+  reserve_touched(born_, tets);
+  reserve_touched(current_, 4096);
+  reserve_touched(created_, 4096);
+  reserve_touched(shell_, 256);
+  reserve_touched(edges_, 2048);
 }
 
 }  // namespace tetcut

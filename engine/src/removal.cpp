@@ -4,6 +4,7 @@
 #include <cassert>
 #include <vector>
 
+#include "detail/reserve_touched.hpp"
 #include "remove/neighbour_search.hpp"
 #include "remove/normal_surface_fallback.hpp"
 #include "remove/refinement_strategies.hpp"
@@ -73,15 +74,19 @@ Remover::Remover(Remover&&) noexcept = default;
 Remover& Remover::operator=(Remover&&) noexcept = default;
 
 void Remover::reserve(std::uint32_t tets) {
-  if (ws_->met_unresolved.size() < tets) ws_->met_unresolved.resize(tets, 0);
   // The working size of one request's lists: a larger request grows them once.
-  ws_->log.reserve(4096);
-  ws_->set.reserve(1024);
-  ws_->net_removed.reserve(4096);
-  ws_->net_created.reserve(4096);
-  ws_->exposed.reserve(4096);
+  using detail::reserve_touched;
+  for (auto* v : {&ws_->log.removed, &ws_->net_removed, &ws_->net_created, &ws_->exposed}) reserve_touched(*v, 4096);
+  reserve_touched(ws_->log.created, 4096);
+  reserve_touched(ws_->log.vertices, 4096);
+  reserve_touched(ws_->set, 1024);
   ws_->set_test.reserve(tets);
   ws_->splitter.reserve(tets);
+  ws_->neighbours.reserve();
+  ws_->wide.reserve();
+  ws_->refinement.reserve();
+  ws_->fallback.reserve();
+  if (ws_->met_unresolved.size() < tets) ws_->met_unresolved.resize(tets, 0);
 }
 
 std::span<const TetId> Remover::last_removed() const { return ws_->net_removed; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 
+#include "detail/reserve_touched.hpp"
 #include "tetcut/local_tables.hpp"
 
 namespace tetcut {
@@ -37,6 +38,9 @@ void SetRemovalWorkspace::reserve(std::uint32_t tets) {
     visit_stamp_.resize(tets, 0);
     parent_.resize(tets, 0);
   }
+  for (auto* v : {&shell_, &queue_, &ring_, &group_}) detail::reserve_touched(*v, 512);
+  detail::reserve_touched(depth_, 512);
+  detail::reserve_touched(at_vertex_, 2048);
 }
 
 void SetRemovalWorkspace::mark(const TetMesh& mesh, std::span<const TetId> set) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "detail/reserve_touched.hpp"
+#include "tetcut/local_tables.hpp"
 #include "tetcut/random.hpp"
 
 namespace tetcut {
@@ -23,12 +25,12 @@ std::array<std::int32_t, 3> SpatialIndex::unpack(std::uint64_t key) {
   return {value(key >> 42), value(key >> 21), value(key)};
 }
 
-const SpatialIndex::Slot* SpatialIndex::find_cell(std::uint64_t key) const {
-  if (table_.empty()) return nullptr;
+std::size_t SpatialIndex::find_slot(std::uint64_t key) const {
+  if (table_.empty()) return kNoSlot;
   const std::size_t mask = table_.size() - 1;
   for (std::size_t s = mix64(key) & mask;; s = (s + 1) & mask) {
-    if (!table_[s].used) return nullptr;
-    if (table_[s].key == key) return &table_[s];
+    if (!table_[s].used) return kNoSlot;
+    if (table_[s].key == key) return s;
   }
 }
 
@@ -42,50 +44,74 @@ void SpatialIndex::grow_table() {
     std::size_t s = mix64(o.key) & mask;
     while (table_[s].used) s = (s + 1) & mask;
     table_[s] = o;
-    // The cell's tets name their slot: move them along.
-    for (std::uint32_t t = o.head; t != kNone; t = entries_by_tet_[t].next) entries_by_tet_[t].slot = static_cast<std::uint32_t>(s);
   }
 }
 
-std::uint32_t SpatialIndex::cell_for(std::uint64_t key) {
+SpatialIndex::Slot& SpatialIndex::cell_for(std::uint64_t key) {
   if ((used_slots_ + 1) * 2 > table_.size()) grow_table();
   const std::size_t mask = table_.size() - 1;
   std::size_t s = mix64(key) & mask;
   for (; table_[s].used; s = (s + 1) & mask)
-    if (table_[s].key == key) return static_cast<std::uint32_t>(s);
+    if (table_[s].key == key) return table_[s];
   // Cells are never deleted: an emptied cell keeps its slot for the next tets there.
-  table_[s] = {key, kNone, true, 0.0};
+  table_[s] = {key, kNone, kNone, 0.0, true};
   ++used_slots_;
-  return static_cast<std::uint32_t>(s);
+  return table_[s];
+}
+
+std::uint32_t SpatialIndex::new_block() {
+  if (free_block_ != kNone) {
+    const std::uint32_t b = free_block_;
+    free_block_ = blocks_[b].next;
+    blocks_[b] = Block{};
+    return b;
+  }
+  blocks_.emplace_back();
+  return static_cast<std::uint32_t>(blocks_.size() - 1);
 }
 
 void SpatialIndex::build(const TetMesh& mesh) {
   table_.clear();
   used_slots_ = 0;
-  entries_by_tet_.assign(mesh.tet_capacity(), Entry{});
+  blocks_.clear();
+  free_block_ = kNone;
+  where_.assign(mesh.tet_capacity(), Location{});
   entries_ = 0;
   reach_ = 0.0;
   occupied_lo_ = {1, 1, 1};
   occupied_hi_ = {0, 0, 0};
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
     if (mesh.is_live(TetId{t})) insert(mesh, TetId{t});
-  // Headroom, so that the cuts that follow find entries and slots without growing anything.
-  entries_by_tet_.reserve(entries_by_tet_.size() + entries_by_tet_.size() / 2 + 1024);
+  // Headroom, so that the cuts that follow find locations, blocks and slots without growing.
+  detail::reserve_touched(where_, where_.size() + where_.size() / 2 + 1024);
+  detail::reserve_touched(blocks_, blocks_.size() + blocks_.size() / 2 + 256);
   while ((used_slots_ + used_slots_ / 2 + 1) * 2 > table_.size()) grow_table();
 }
 
 void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
-  if (entries_by_tet_.size() <= t.value) entries_by_tet_.resize(std::max<std::size_t>(t.value + 1, entries_by_tet_.size() * 3 / 2));
-  if (entries_by_tet_[t.value].radius >= 0.0) erase(t);
+  if (where_.size() <= t.value) where_.resize(std::max<std::size_t>(t.value + 1, where_.size() * 3 / 2));
+  if (where_[t.value].block != kNone) erase(t);
   const auto v = mesh.tet(t);
-  const Vec3 c = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
+  const Vec3 p[4] = {mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])};
+  const Vec3 c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
   double r2 = 0.0;
-  for (VertId x : v) {
-    const Vec3 d = mesh.position(x) - c;
-    r2 = std::max(r2, dot(d, d));
+  for (const Vec3& q : p) r2 = std::max(r2, dot(q - c, q - c));
+  // The centroid is a quarter of each height away from every face: a ball of radius the
+  // smallest of those (3V / (4 A_f) = |D| / (8 A_f), D = 6V) about it lies in the tet.
+  const double d6v = std::abs(dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0])));
+  double largest_face2 = 0.0;  // (2 A_f)^2
+  for (int f = 0; f < 4; ++f) {
+    const Vec3 n = cross(p[kFaceVerts[f][1]] - p[kFaceVerts[f][0]], p[kFaceVerts[f][2]] - p[kFaceVerts[f][0]]);
+    largest_face2 = std::max(largest_face2, dot(n, n));
   }
-  // A hair larger than the rounded distance, so that the sphere surely holds the tet.
-  const double radius = std::sqrt(r2) * (1.0 + 1e-12) + 1e-300;
+  const double inner = largest_face2 > 0.0 ? d6v / (4.0 * std::sqrt(largest_face2)) : 0.0;
+  // Single precision: the centroid moves by at most `slack` when rounded; the outer radius grows
+  // and the inner one shrinks by that (and the radii are rounded outwards, inwards).
+  const float fx = static_cast<float>(c.x), fy = static_cast<float>(c.y), fz = static_cast<float>(c.z);
+  const double slack = 1e-6 * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z)) + 1e-30;
+  const float outer = std::nextafter(static_cast<float>(std::sqrt(r2) * (1.0 + 1e-6) + slack), INFINITY);
+  const float inner_f = inner > 2 * slack ? std::nextafter(static_cast<float>(inner * (1.0 - 1e-6) - slack), 0.0f) : 0.0f;
+  const double radius = outer;
   const std::int32_t i = cell_of(c.x), j = cell_of(c.y), k = cell_of(c.z);
   if (occupied_lo_[0] > occupied_hi_[0]) {
     occupied_lo_ = occupied_hi_ = {i, j, k};
@@ -93,29 +119,49 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
     occupied_lo_ = {std::min(occupied_lo_[0], i), std::min(occupied_lo_[1], j), std::min(occupied_lo_[2], k)};
     occupied_hi_ = {std::max(occupied_hi_[0], i), std::max(occupied_hi_[1], j), std::max(occupied_hi_[2], k)};
   }
-  const std::uint32_t s = cell_for(pack(i, j, k));
-  Slot& cell = table_[s];
+  Slot& cell = cell_for(pack(i, j, k));
   cell.reach = std::max(cell.reach, radius);
   reach_ = std::max(reach_, radius);
-  Entry& e = entries_by_tet_[t.value];
-  e = {c, radius, s, cell.head, kNone};
-  if (cell.head != kNone) entries_by_tet_[cell.head].prev = t.value;
-  cell.head = t.value;
+  if (cell.tail == kNone || blocks_[cell.tail].count == kBlockEntries) {
+    const std::uint32_t b = new_block();  // may move blocks_, never table_
+    blocks_[b].prev = cell.tail;
+    if (cell.tail == kNone) {
+      cell.head = b;
+    } else {
+      blocks_[cell.tail].next = b;
+    }
+    cell.tail = b;
+  }
+  Block& block = blocks_[cell.tail];
+  block.entries[block.count] = {fx, fy, fz, outer, inner_f, t.value};
+  where_[t.value] = {cell.tail, block.count};
+  ++block.count;
   ++entries_;
 }
 
 void SpatialIndex::erase(TetId t) {
-  if (t.value >= entries_by_tet_.size()) return;
-  Entry& e = entries_by_tet_[t.value];
-  if (e.radius < 0.0) return;
-  if (e.prev != kNone) {
-    entries_by_tet_[e.prev].next = e.next;
-  } else {
-    table_[e.slot].head = e.next;
-  }
-  if (e.next != kNone) entries_by_tet_[e.next].prev = e.prev;
-  e = Entry{};
+  if (t.value >= where_.size() || where_[t.value].block == kNone) return;
+  const Location at = where_[t.value];
+  where_[t.value] = Location{};
   --entries_;
+  // The cell's last entry fills the hole. The cell is the one whose chain holds the block: find
+  // its slot through the entry's centroid.
+  const Entry& gone = blocks_[at.block].entries[at.index];
+  Slot& cell = table_[find_slot(pack(cell_of(gone.x), cell_of(gone.y), cell_of(gone.z)))];
+  Block& tail = blocks_[cell.tail];
+  const Entry last = tail.entries[tail.count - 1];
+  --tail.count;
+  if (last.tet != t.value) {
+    blocks_[at.block].entries[at.index] = last;
+    where_[last.tet] = at;
+  }
+  if (tail.count == 0 && cell.tail != cell.head) {
+    const std::uint32_t b = cell.tail;
+    cell.tail = blocks_[b].prev;
+    blocks_[cell.tail].next = kNone;
+    blocks_[b].next = free_block_;
+    free_block_ = b;
+  }
 }
 
 void SpatialIndex::apply(const TetMesh& mesh, const ChangeLog& log, std::size_t removed_from, std::size_t created_from) {
@@ -172,7 +218,7 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
     for (std::int32_t i = lo[0]; i <= hi[0]; ++i)
       for (std::int32_t j = lo[1]; j <= hi[1]; ++j)
         for (std::int32_t k = lo[2]; k <= hi[2]; ++k)
-          if (const Slot* cell = find_cell(pack(i, j, k))) collect(mesh, *cell, ball, out);
+          if (const std::size_t s = find_slot(pack(i, j, k)); s != kNoSlot) collect(mesh, table_[s], ball, out);
   }
   std::sort(out.begin(), out.end());
 }
@@ -180,16 +226,22 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
 // Appends the tets of one cell that meet the ball.
 void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out) const {
   if (cell.head == kNone || gap_to_cell(ball.centre, cell.key) > ball.radius + cell.reach) return;
-  for (std::uint32_t t = cell.head; t != kNone;) {
-    const Entry& e = entries_by_tet_[t];
-    const Vec3 d = e.centre - ball.centre;
-    const double reach = ball.radius + e.radius;
-    if (dot(d, d) <= reach * reach && mesh.is_live(TetId{t})) {
-      const auto v = mesh.tet(TetId{t});
-      if (intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
-        out.push_back(TetId{t});
+  for (std::uint32_t b = cell.head; b != kNone; b = blocks_[b].next) {
+    const Block& block = blocks_[b];
+    for (std::uint32_t e = 0; e < block.count; ++e) {
+      const Entry& entry = block.entries[e];
+      const double dx = entry.x - ball.centre.x, dy = entry.y - ball.centre.y, dz = entry.z - ball.centre.z;
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      const double outer = ball.radius + entry.outer;
+      if (d2 > outer * outer) continue;
+      const TetId t{entry.tet};
+      if (!mesh.is_live(t)) continue;
+      const double inner = ball.radius + entry.inner;
+      const auto v = mesh.tet(t);
+      if (d2 <= inner * inner ||
+          intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
+        out.push_back(t);
     }
-    t = e.next;
   }
 }
 

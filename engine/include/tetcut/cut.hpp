@@ -79,9 +79,16 @@ struct CutReport {
 
 class Cutter {
  public:
-  // Indexes the mesh once (O(#T)); the grid's cell is the mesh's mean edge length. Reserves
-  // room in the mesh for half as many tets again, so cuts do not reallocate its arrays.
+  // Indexes the mesh once (O(#T)); the grid's cell is the mesh's mean edge length. Then
+  // prepare(): the first cut costs what the others do.
   Cutter(TetMesh& mesh, const CutParams& params);
+
+  // Makes every working array ready for cuts on the mesh as it is now, O(#T) once: room in the
+  // mesh for half as many tets again, the marks, the scratch lists and the journal at their
+  // working size, all allocated and touched (a page fault in a cut is a latency spike, and the
+  // first cut used to pay a hundred). The constructor calls it; call it again after the mesh has
+  // grown past that room, so that the cuts that follow do not reallocate.
+  void prepare();
 
   // Fails (returns the message, keeps the old parameters) when validate() does.
   std::optional<std::string> set_params(const CutParams& params);

@@ -140,8 +140,9 @@ class TetMesh {
                     std::vector<TetId>* created = nullptr);
   void remove_tets(std::span<const TetId> removed) { replace_tets(removed, {}, nullptr); }
 
-  // Reserves room for this many tet and vertex ids (scratch included), so that operations
-  // growing the mesh up to there never reallocate: the way to no allocation per cut.
+  // Reserves room for this many tet and vertex ids (scratch and the journal's working size
+  // included), so that operations growing the mesh up to there never reallocate: the way to no
+  // allocation per cut. The memory is touched too, so that no operation pays its page faults.
   void reserve(std::uint32_t tets, std::uint32_t vertices);
 
   // Renumbers live tets and vertices densely, keeping their relative order; attributes follow.
@@ -254,6 +255,7 @@ class TetMesh {
   };
   void note(Array array, std::uint32_t index);
   Journal journal_;
+  static constexpr std::size_t kJournalWorkingSize = 16384;  // entries reserve() makes room for
 
   std::vector<FaceSlot> scratch_faces_;
   std::vector<std::uint32_t> face_table_;  // open addressing over scratch_faces_ indices

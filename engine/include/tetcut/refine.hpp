@@ -87,15 +87,9 @@ class Refiner {
   RefineReport refine(TetMesh& mesh, std::span<const TetId> initial, const RefineParams& params,
                       std::vector<TetId>& region, ChangeLog* log = nullptr);
 
-  void reserve(std::uint32_t tets) {
-    splitter_.reserve(tets);
-    born_.reserve(tets);
-    // The working size of one loop; a larger one grows these once.
-    current_.reserve(4096);
-    created_.reserve(4096);
-    shell_.reserve(256);
-    edges_.reserve(2048);
-  }
+  // Room (allocated and touched) for meshes up to `tets` tet ids and the working size of one
+  // loop; a larger loop grows its lists once.
+  void reserve(std::uint32_t tets);
 
  private:
   void collect_long_edges(const TetMesh& mesh, double d_ref);

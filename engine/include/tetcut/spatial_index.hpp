@@ -2,15 +2,19 @@
 // that finding the tets a tool touches (paper 3.1) never scans the mesh: a query visits the
 // cells near the tool, and an update touches one cell per changed tet.
 //
-// Each tet is listed once, in the cell that holds its centroid, with its bounding sphere (the
-// centroid and the largest distance to a vertex). Each cell remembers the largest sphere it ever
-// held, and the index the largest of all. A query looks at the cells within the ball's radius
-// plus that largest sphere, skips a cell whose box is farther from the centre than the radius
-// plus the cell's own largest sphere, rejects a tet whose sphere misses the ball without reading
-// the mesh, and runs the exact test (tool_ball.hpp) on the rest. (A tet listed in every cell its
+// Each tet is listed once, in the cell that holds its centroid, with two spheres about the
+// centroid: one holding the tet, one the tet holds. Each cell remembers the largest outer sphere
+// it ever held, and the index the largest of all. A query looks at the cells within the ball's
+// radius plus that largest sphere, skips a cell whose box is farther from the centre than the
+// radius plus the cell's own largest sphere, rejects a tet whose outer sphere misses the ball
+// and accepts one whose inner sphere meets it without reading the mesh, and runs the closest-
+// point test (tool_ball.hpp) on the rest. (A tet listed in every cell its
 // box overlaps cost a dozen candidates per tet found: each tet was met in several cells, most
-// far from the ball.) Cells live in an open-addressing table keyed by their integer coordinates;
-// query results are sorted by tet id, so the order in which cells are visited never shows.
+// far from the ball.) A cell keeps its entries contiguously, in a chain of fixed-size blocks
+// from a pool, so that a query reads each cell in a few cache lines rather than chasing one
+// line per tet; erasing moves the cell's last entry into the hole. Cells live in an
+// open-addressing table keyed by their integer coordinates; query results are sorted by tet id,
+// so the order in which cells and entries are visited never shows.
 //
 // A query costs what the index holds, not what the ball's box spans: the box is clamped to the
 // bounds of the cells that ever held a tet (grown on insert, never shrunk: conservative), and
@@ -55,18 +59,30 @@ class SpatialIndex {
 
  private:
   static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  // A tet's centroid, the radius of a sphere about it that holds the tet (rounded up) and of
+  // one the tet holds (rounded down), in single precision: 24 bytes, so a block is a few cache
+  // lines. The bounds absorb the rounding of the centroid, so both tests stay conservative.
+  struct Entry {
+    float x = 0, y = 0, z = 0;
+    float outer = 0, inner = 0;
+    std::uint32_t tet = kNone;
+  };
+  static constexpr std::uint32_t kBlockEntries = 12;
+  struct Block {
+    std::uint32_t count = 0;
+    std::uint32_t next = kNone, prev = kNone;  // in the cell's chain
+    Entry entries[kBlockEntries];
+  };
   struct Slot {
     std::uint64_t key = 0;
-    std::uint32_t head = kNone;  // first tet of the cell's list
+    std::uint32_t head = kNone, tail = kNone;  // the cell's chain of blocks (tail: the one with room)
+    double reach = 0.0;                        // largest bounding sphere the cell ever held
     bool used = false;
-    double reach = 0.0;          // largest bounding sphere the cell ever held
   };
-  // Per tet id.
-  struct Entry {
-    Vec3 centre{};
-    double radius = -1.0;        // < 0: not indexed
-    std::uint32_t slot = kNone;  // the cell's slot in table_ (stable: the table only grows by rehash)
-    std::uint32_t next = kNone, prev = kNone;  // in the cell's list
+  // Where a tet's entry is: block and index in it (block kNone: not indexed).
+  struct Location {
+    std::uint32_t block = kNone;
+    std::uint32_t index = 0;
   };
 
   [[nodiscard]] std::int32_t cell_of(double x) const;
@@ -74,14 +90,18 @@ class SpatialIndex {
   [[nodiscard]] static std::array<std::int32_t, 3> unpack(std::uint64_t key);
   void collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out) const;
   [[nodiscard]] double gap_to_cell(const Vec3& p, std::uint64_t key) const;
-  [[nodiscard]] const Slot* find_cell(std::uint64_t key) const;
-  std::uint32_t cell_for(std::uint64_t key);
+  static constexpr std::size_t kNoSlot = ~std::size_t{0};
+  [[nodiscard]] std::size_t find_slot(std::uint64_t key) const;
+  Slot& cell_for(std::uint64_t key);
+  std::uint32_t new_block();
   void grow_table();
 
   double cell_size_;
   std::vector<Slot> table_;
   std::size_t used_slots_ = 0;
-  std::vector<Entry> entries_by_tet_;
+  std::vector<Block> blocks_;
+  std::uint32_t free_block_ = kNone;     // free list through Block::next
+  std::vector<Location> where_;          // by tet id
   std::size_t entries_ = 0;
   double reach_ = 0.0;  // largest bounding sphere ever indexed
   std::array<std::int32_t, 3> occupied_lo_{1, 1, 1}, occupied_hi_{0, 0, 0};  // lo > hi: empty

@@ -1,5 +1,6 @@
 #include "remove/neighbour_search.hpp"
 
+#include "detail/reserve_touched.hpp"
 #include "tetcut/local_tables.hpp"
 
 namespace tetcut::detail {
@@ -20,6 +21,11 @@ void sides_of_edge(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, VertId
   sizes.clear();
   const int local_edge = kEdgeIndex[mesh.local_index(t, a)][mesh.local_index(t, b)];
   ws.remaining_runs(mesh, t, local_edge, tets, sizes);
+}
+
+void NeighbourSearch::reserve() {
+  for (auto* v : {&base_, &candidate_, &parts_}) reserve_touched(*v, 256);
+  reserve_touched(sizes_, 64);
 }
 
 void NeighbourSearch::consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> base,

@@ -32,12 +32,13 @@ class NeighbourSearch {
   // candidates all fail. `first` is the O(1) test's verdict on t (not removable).
   bool find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first, int max_depth,
             std::uint32_t max_set_size, std::vector<TetId>& out);
+  // Working sizes, allocated and touched now (a larger search grows them once).
+  void reserve();
 
  private:
   // Tests base + extra; keeps it in `out` when removable and smaller than what `out` holds.
   void consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> base,
                 std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out);
-
   std::vector<TetId> base_, candidate_, parts_;
   std::vector<std::uint32_t> sizes_;
 };

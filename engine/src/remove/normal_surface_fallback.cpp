@@ -2,7 +2,18 @@
 
 #include <algorithm>
 
+#include "detail/reserve_touched.hpp"
+
 namespace tetcut::detail {
+
+void NormalSurfaceFallback::reserve() {
+  reserve_touched(edges_, 1024);
+  for (auto* v : {&shell_, &set_, &larger_}) reserve_touched(*v, 1024);
+  reserve_touched(midpoints_, 1024);
+  reserve_touched(split_log_.removed, 1024);
+  reserve_touched(split_log_.created, 4096);
+  reserve_touched(split_log_.vertices, 1024);
+}
 
 void NormalSurfaceFallback::plan(const TetMesh& mesh, TetId t, std::vector<Edge>& edges) {
   const TetMesh::TetVerts corners = mesh.tet(t);

@@ -22,6 +22,8 @@ namespace tetcut::detail {
 
 class NormalSurfaceFallback {
  public:
+  // Working sizes, allocated and touched now (a larger request grows them once).
+  void reserve();
   // Removes T with the half-star around it; returns the size of the set, 0 when the splitter
   // refused (a degenerate child or the budget: the mesh as before).
   std::uint32_t remove(RemovalContext& ctx, TetId t);

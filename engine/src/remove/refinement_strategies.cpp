@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "detail/reserve_touched.hpp"
 #include "remove/neighbour_search.hpp"
 #include "tetcut/local_tables.hpp"
 
@@ -15,6 +16,16 @@ bool contains_all(const TetMesh& mesh, TetId t, std::span<const VertId> verts) {
 }
 
 }  // namespace
+
+void RefinementStrategies::reserve() {
+  search_.reserve();
+  reserve_touched(edges_, 512);
+  for (auto* v : {&parents_, &sides_, &set_, &larger_, &repaired_}) reserve_touched(*v, 512);
+  reserve_touched(sizes_, 64);
+  reserve_touched(split_log_.removed, 512);
+  reserve_touched(split_log_.created, 2048);
+  reserve_touched(split_log_.vertices, 512);
+}
 
 void RefinementStrategies::add_edges_from(const TetMesh& mesh, VertId from, std::span<const TetId> tets,
                                           std::span<const VertId> skip) {

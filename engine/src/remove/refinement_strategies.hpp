@@ -31,6 +31,8 @@ namespace tetcut::detail {
 
 class RefinementStrategies {
  public:
+  // Working sizes, allocated and touched now (a larger request grows them once).
+  void reserve();
   // Each returns the size of the set removed, 0 when the attempt failed (the mesh as before).
   std::uint32_t basic(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair);
   std::uint32_t optimized(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair);

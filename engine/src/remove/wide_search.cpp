@@ -2,7 +2,16 @@
 
 #include <algorithm>
 
+#include "detail/reserve_touched.hpp"
+
 namespace tetcut::detail {
+
+void WideSearch::reserve() {
+  reserve_touched(pool_, 4096);
+  for (auto* v : {&candidates_, &frontier_, &next_frontier_}) reserve_touched(*v, 256);
+  for (auto* v : {&tmp_tets_, &tmp_path_}) reserve_touched(*v, 256);
+  reserve_touched(tmp_sizes_, 64);
+}
 namespace {
 
 // Two candidate sets of one round are kept for the next one: enough for a path extended by

@@ -26,6 +26,8 @@ struct WideSearchLimits {
 
 class WideSearch {
  public:
+  // Working sizes, allocated and touched now (a larger request grows them once).
+  void reserve();
   // A removable set containing `seed` into `out`, starting from the offence the seed alone has.
   bool find(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> seed, const SetRemovalCheck& offence,
             const WideSearchLimits& limits, std::vector<TetId>& out);
