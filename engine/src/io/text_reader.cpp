@@ -314,7 +314,8 @@ void IgnoredTally::emit(std::vector<std::string>& notices) const {
 
 std::vector<CellCount> IgnoredTally::summary() const {
   std::vector<CellCount> out;
-  for (const auto& [kind, e] : counts_) {
+  for (const auto& entry : counts_) {
+    const Entry& e = entry.second;
     auto same = std::find_if(out.begin(), out.end(), [&](const CellCount& c) { return c.noun == e.noun; });
     if (same != out.end()) {
       same->count += e.count;
