@@ -16,8 +16,15 @@ constexpr std::size_t kChunk = 64 * 1024;
 // writer uses) needs 65 MiB; a header asking for more is refused rather than allocated.
 constexpr std::uint64_t kLzmaMemoryLimit = 80ull << 20;
 
-std::string too_much(std::uint64_t expected) {
-  return "compressed block yields more than the " + std::to_string(expected) + " bytes its header declares";
+// Appends the `produced` bytes of `chunk` to `out`, unless the block would then exceed `expected`.
+bool append_output(const unsigned char* chunk, std::size_t produced, std::size_t start, std::uint64_t expected,
+                   std::vector<unsigned char>& out, std::string& reason) {
+  if (out.size() - start + produced > expected) {
+    reason = "compressed block yields more than the " + std::to_string(expected) + " bytes its header declares";
+    return false;
+  }
+  out.insert(out.end(), chunk, chunk + produced);
+  return true;
 }
 
 std::string too_little(std::uint64_t got, std::uint64_t expected) {
@@ -45,13 +52,10 @@ bool inflate_zlib(std::string_view in, std::uint64_t expected, std::vector<unsig
     zs.next_out = chunk;
     zs.avail_out = kChunk;
     rc = inflate(&zs, Z_NO_FLUSH);
-    const std::size_t produced = kChunk - zs.avail_out;
-    if (out.size() - start + produced > expected) {
+    if (!append_output(chunk, kChunk - zs.avail_out, start, expected, out, reason)) {
       inflateEnd(&zs);
-      reason = too_much(expected);
       return false;
     }
-    out.insert(out.end(), chunk, chunk + produced);
     // Output space was given, so "no progress possible" means the input ran out.
     if (rc == Z_BUF_ERROR) {
       inflateEnd(&zs);
@@ -104,13 +108,10 @@ bool inflate_lzma(std::string_view in, std::uint64_t expected, std::vector<unsig
     xs.avail_out = kChunk;
     // All the input is there: LZMA_FINISH says so, and makes a truncated stream an error.
     rc = lzma_code(&xs, LZMA_FINISH);
-    const std::size_t produced = kChunk - xs.avail_out;
-    if (out.size() - start + produced > expected) {
+    if (!append_output(chunk, kChunk - xs.avail_out, start, expected, out, reason)) {
       lzma_end(&xs);
-      reason = too_much(expected);
       return false;
     }
-    out.insert(out.end(), chunk, chunk + produced);
   }
   lzma_end(&xs);
   if (rc != LZMA_STREAM_END) {

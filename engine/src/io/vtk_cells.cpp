@@ -41,6 +41,17 @@ void ignore_vtk_cell(IgnoredTally& ignored, std::int64_t type) {
   ignored.add(std::move(kind), 1, vtk_type_noun(type));
 }
 
+bool append_cell_ends(ErrorSink& sink, const std::vector<std::int64_t>& ends, std::uint64_t line, VtkCells& cells) {
+  for (std::size_t c = 0; c < ends.size(); ++c) {
+    if (ends[c] < 0 || static_cast<std::uint64_t>(ends[c]) < cells.offsets.back() ||
+        static_cast<std::uint64_t>(ends[c]) > cells.connectivity.size()) {
+      return sink.fail(line, "offsets not increasing within the connectivity at cell " + std::to_string(c));
+    }
+    cells.offsets.push_back(static_cast<std::uint64_t>(ends[c]));
+  }
+  return true;
+}
+
 bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
                        std::uint64_t line, std::vector<std::array<std::uint32_t, 4>>& tets,
                        IgnoredTally& ignored, std::vector<std::string>& notices) {
@@ -123,6 +134,13 @@ bool vtk_faces_to_triangles(ErrorSink& sink, const VtkCells& cells, std::uint64_
     ++strips_split;
   }
   return true;
+}
+
+void surface_notices(std::uint64_t polygons_split, std::uint64_t strips_split, const IgnoredTally& ignored,
+                     std::vector<std::string>& notices) {
+  polygon_notice(polygons_split, notices);
+  if (strips_split > 0) notices.push_back("split " + std::to_string(strips_split) + " triangle strips into triangles");
+  ignored.emit(notices);
 }
 
 }  // namespace tetcut::io_detail

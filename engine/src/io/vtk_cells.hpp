@@ -30,6 +30,10 @@ std::string vtk_type_noun(std::int64_t type);
 // Counts one ignored cell of `type` in `ignored` ("cells of VTK type 12 (hexahedron)").
 void ignore_vtk_cell(IgnoredTally& ignored, std::int64_t type);
 
+// VTK XML's offsets are where each cell ends: appends them to cells.offsets, checking that
+// they increase within the connectivity (an error at `line` otherwise).
+bool append_cell_ends(ErrorSink& sink, const std::vector<std::int64_t>& ends, std::uint64_t line, VtkCells& cells);
+
 // Appends the tets of `cells` (point ids checked against num_points); the other cells go to
 // `ignored`, a notice for quadratic tets to `notices`.
 bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
@@ -42,5 +46,9 @@ bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num
 bool vtk_faces_to_triangles(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
                             std::uint64_t line, bool strips, SurfaceMesh& surface,
                             std::uint64_t& polygons_split, std::uint64_t& strips_split);
+
+// The notices of a VTK surface: polygons and strips split, cells ignored.
+void surface_notices(std::uint64_t polygons_split, std::uint64_t strips_split, const IgnoredTally& ignored,
+                     std::vector<std::string>& notices);
 
 }  // namespace tetcut::io_detail

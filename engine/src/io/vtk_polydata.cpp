@@ -70,9 +70,7 @@ class VtkPolydataReader {
       sink_.fail(stream_.line(), "no POLYGONS or TRIANGLE_STRIPS: the file holds no surface");
       return;
     }
-    polygon_notice(polygons_split_, notices);
-    if (strips_ > 0) notices.push_back("split " + std::to_string(strips_) + " triangle strips into triangles");
-    ignored_.emit(notices);
+    surface_notices(polygons_split_, strips_, ignored_, notices);
   }
 
   ErrorSink sink_;

@@ -152,15 +152,18 @@ bool VtkArrayDecoder::compressed_values(const VtkDataArray& a) {
   return true;
 }
 
-bool VtkArrayDecoder::reals(const VtkDataArray& a, std::uint64_t expected, std::string_view role,
-                            std::vector<double>& out) {
+// The shared walk of reals() and integers(): ascii tokens through `from_token(line, token, v)`,
+// binary values through `from_bytes(index, bytes, v)`, each false (with an error) to stop.
+template <class T, class FromToken, class FromBytes>
+bool VtkArrayDecoder::decode(const VtkDataArray& a, std::uint64_t expected, std::string_view role,
+                             std::vector<T>& out, FromToken from_token, FromBytes from_bytes) {
   out.clear();
   if (a.format == "ascii") {
     TokenReader tokens(text_.substr(a.content_begin, a.content_end - a.content_begin), '\0', a.content_line);
     std::string_view token;
     while (tokens.next(token)) {
-      double v = 0;
-      if (!parse_coordinate(sink_, tokens.line_number(), token, v)) return false;
+      T v{};
+      if (!from_token(tokens.line_number(), token, v)) return false;
       if (out.size() >= expected) {
         return sink_.fail(tokens.line_number(), "more " + std::string(role) + " values than the Piece declares");
       }
@@ -176,9 +179,8 @@ bool VtkArrayDecoder::reals(const VtkDataArray& a, std::uint64_t expected, std::
     }
     out.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const double v = real_value(a.type, values_.data() + i * size, file_.order);
-      if (std::isnan(v)) return sink_.fail(a.line, "NaN coordinate (value " + std::to_string(i) + ")");
-      if (std::isinf(v)) return sink_.fail(a.line, "infinite coordinate (value " + std::to_string(i) + ")");
+      T v{};
+      if (!from_bytes(i, values_.data() + i * size, v)) return false;
       out.push_back(v);
     }
   }
@@ -189,47 +191,33 @@ bool VtkArrayDecoder::reals(const VtkDataArray& a, std::uint64_t expected, std::
   return true;
 }
 
+bool VtkArrayDecoder::reals(const VtkDataArray& a, std::uint64_t expected, std::string_view role,
+                            std::vector<double>& out) {
+  return decode(
+      a, expected, role, out,
+      [&](std::uint64_t line, std::string_view token, double& v) { return parse_coordinate(sink_, line, token, v); },
+      [&](std::size_t i, const unsigned char* p, double& v) {
+        v = real_value(a.type, p, file_.order);
+        if (std::isnan(v)) return sink_.fail(a.line, "NaN coordinate (value " + std::to_string(i) + ")");
+        if (std::isinf(v)) return sink_.fail(a.line, "infinite coordinate (value " + std::to_string(i) + ")");
+        return true;
+      });
+}
+
 bool VtkArrayDecoder::integers(const VtkDataArray& a, std::uint64_t expected, std::string_view role,
                                std::vector<std::int64_t>& out) {
-  out.clear();
   if (is_float_type(a.type)) {
     return sink_.fail(a.line, std::string(role) + " must have an integer type, got " + quote(a.type));
   }
-  if (a.format == "ascii") {
-    TokenReader tokens(text_.substr(a.content_begin, a.content_end - a.content_begin), '\0', a.content_line);
-    std::string_view token;
-    while (tokens.next(token)) {
-      std::int64_t v = 0;
-      if (!parse_i64(token, v)) {
-        return sink_.fail(tokens.line_number(), "expected an integer in " + std::string(role) + ", got " + quote(token));
-      }
-      if (out.size() >= expected) {
-        return sink_.fail(tokens.line_number(), "more " + std::string(role) + " values than the Piece declares");
-      }
-      out.push_back(v);
-    }
-  } else {
-    if (!value_bytes(a)) return false;
-    const std::size_t size = vtk_type_size(a.type);
-    const std::size_t n = values_.size() / size;
-    if (expected != kAny && n != expected) {
-      return sink_.fail(a.line, "expected " + std::to_string(expected) + " " + std::string(role) + " values, got " +
-                                    std::to_string(n));
-    }
-    out.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      std::int64_t v = 0;
-      if (!integer_value(a.type, values_.data() + i * size, file_.order, v)) {
-        return sink_.fail(a.line, "value out of range in " + std::string(role));
-      }
-      out.push_back(v);
-    }
-  }
-  if (expected != kAny && out.size() != expected) {
-    return sink_.fail(a.line, "expected " + std::to_string(expected) + " " + std::string(role) + " values, got " +
-                                  std::to_string(out.size()));
-  }
-  return true;
+  return decode(
+      a, expected, role, out,
+      [&](std::uint64_t line, std::string_view token, std::int64_t& v) {
+        return parse_i64(token, v) ||
+               sink_.fail(line, "expected an integer in " + std::string(role) + ", got " + quote(token));
+      },
+      [&](std::size_t, const unsigned char* p, std::int64_t& v) {
+        return integer_value(a.type, p, file_.order, v) || sink_.fail(a.line, "value out of range in " + std::string(role));
+      });
 }
 
 }  // namespace tetcut::io_detail

@@ -38,6 +38,9 @@ class VtkArrayDecoder {
   bool uncompressed_values(const VtkDataArray& a);
   bool compressed_values(const VtkDataArray& a);
   [[nodiscard]] std::uint64_t header_value(std::size_t index) const;
+  template <class T, class FromToken, class FromBytes>
+  bool decode(const VtkDataArray& a, std::uint64_t expected, std::string_view role, std::vector<T>& out,
+              FromToken from_token, FromBytes from_bytes);
 
   std::string_view text_;
   const VtkXmlFile& file_;

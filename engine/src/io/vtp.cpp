@@ -29,11 +29,7 @@ class VtpReader {
     if (!sink_.failed() && surface_.triangles.empty()) {
       sink_.fail(file_.pieces.empty() ? 1 : file_.pieces.front().line, "no Polys or Strips: the file holds no surface");
     }
-    if (!sink_.failed()) {
-      polygon_notice(polygons_split_, notices);
-      if (strips_ > 0) notices.push_back("split " + std::to_string(strips_) + " triangle strips into triangles");
-      ignored_.emit(notices);
-    }
+    if (!sink_.failed()) surface_notices(polygons_split_, strips_, ignored_, notices);
     return make_surface_result(sink_, std::move(surface_), std::move(notices));
   }
 
@@ -58,14 +54,7 @@ class VtpReader {
         !arrays_.integers(*offsets, expected, "offsets", ends)) {
       return false;
     }
-    for (std::size_t c = 0; c < ends.size(); ++c) {
-      if (ends[c] < 0 || static_cast<std::uint64_t>(ends[c]) < cells.offsets.back() ||
-          static_cast<std::uint64_t>(ends[c]) > cells.connectivity.size()) {
-        return sink_.fail(offsets->line, "offsets not increasing within the connectivity at cell " + std::to_string(c));
-      }
-      cells.offsets.push_back(static_cast<std::uint64_t>(ends[c]));
-    }
-    return true;
+    return append_cell_ends(sink_, ends, offsets->line, cells);
   }
 
   bool read_piece(const VtkXmlPiece& piece) {

@@ -71,14 +71,7 @@ class VtuReader {
         !arrays_.integers(*types, num_cells, "types", cells.types)) {
       return false;
     }
-    // VTK's offsets are where each cell ends.
-    for (std::size_t c = 0; c < ends.size(); ++c) {
-      if (ends[c] < 0 || static_cast<std::uint64_t>(ends[c]) < cells.offsets.back() ||
-          static_cast<std::uint64_t>(ends[c]) > cells.connectivity.size()) {
-        return sink_.fail(offsets->line, "offsets not increasing within the connectivity at cell " + std::to_string(c));
-      }
-      cells.offsets.push_back(static_cast<std::uint64_t>(ends[c]));
-    }
+    if (!append_cell_ends(sink_, ends, offsets->line, cells)) return false;
     const std::size_t first_tet = mesh_.tets.size();
     if (!vtk_cells_to_tets(sink_, cells, points, types->line, mesh_.tets, ignored_, notices)) return false;
     for (std::size_t t = first_tet; t < mesh_.tets.size(); ++t) {
