@@ -1,8 +1,9 @@
 // Reading and writing meshes in the formats users bring (design: formats). A file's format is
 // told by its content where the content says it (VTK XML, legacy VTK, Gmsh, medit), else by its
 // extension. Readers never throw and never crash on bad bytes: a ParseError names the file, the
-// line (0 for a binary block, whose reason then says where) and the reason; no allocation is
-// larger than what the file can hold. Writers write a temporary file next to the target and
+// line (inside binary data: the line of its section's header or tag) and the reason; no
+// allocation is larger than what the file can hold (compressed data: than what it decompresses
+// to). Writers write a temporary file next to the target and
 // rename it, so a failed write never leaves a partial file.
 //
 // Read and written:
