@@ -13,5 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   tetcut::fuzz::fuzz_tet_reader("read_vtk", &tetcut::read_vtk, text, &tetcut::format_vtk, &tetcut::read_vtk,
                                 &tetcut::format_vtk_binary);
+  // The same bytes also go to the legacy POLYDATA surface reader (gen surface's .vtk input).
+  tetcut::fuzz::check_surface_result("read_vtk_polydata", tetcut::read_vtk_polydata(text, "input"));
   return 0;
 }

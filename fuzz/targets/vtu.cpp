@@ -14,5 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   tetcut::fuzz::fuzz_tet_reader("read_vtu", &tetcut::read_vtu, text, &tetcut::format_vtu, &tetcut::read_vtu,
                                 [](const tetcut::RawMesh& m) { return tetcut::format_vtu_binary(m, tetcut::Compression::kZlib); });
+  // The same bytes also go to the XML PolyData surface reader (gen surface's .vtp input), which
+  // shares the XML scanner and the DataArray decoding.
+  tetcut::fuzz::check_surface_result("read_vtp", tetcut::read_vtp(text, "input"));
   return 0;
 }
