@@ -75,10 +75,12 @@ void check_round_trip(std::string_view writer, const RawMesh& mesh, TetFormatter
 }
 
 void fuzz_tet_reader(std::string_view reader_name, TetReader read, std::string_view text, TetFormatter format,
-                     TetReader reread) {
+                     TetReader reread, TetFormatter binary_format) {
   const ReadResult result = read(text, "input");
   const RawMesh* mesh = check_read_result(reader_name, result);
-  if (mesh != nullptr && format != nullptr && reread != nullptr) check_round_trip(reader_name, *mesh, format, reread);
+  if (mesh == nullptr || reread == nullptr) return;
+  if (format != nullptr) check_round_trip(reader_name, *mesh, format, reread);
+  if (binary_format != nullptr) check_round_trip(std::string(reader_name) + " (binary)", *mesh, binary_format, reread);
 }
 
 }  // namespace tetcut::fuzz

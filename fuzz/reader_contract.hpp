@@ -24,8 +24,9 @@ void check_surface_result(std::string_view reader, const SurfaceReadResult& resu
 void check_round_trip(std::string_view writer, const RawMesh& mesh, TetFormatter format, TetReader read);
 
 // The common body of a single-text tet format target: read, check, and round-trip through
-// `format`/`reread` when given (a read-only format round-trips through another format).
+// `format`/`reread` when given (a read-only format round-trips through another format), and
+// through `binary_format`/`reread` too when the format also has a binary writer.
 void fuzz_tet_reader(std::string_view reader_name, TetReader read, std::string_view text,
-                     TetFormatter format, TetReader reread);
+                     TetFormatter format, TetReader reread, TetFormatter binary_format = nullptr);
 
 }  // namespace tetcut::fuzz

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_fixture.hpp"
 #include "mini_json.hpp"
 #include "run_process.hpp"
 #include "tetcut/box_mesh.hpp"
@@ -18,8 +19,6 @@
 
 namespace tetcut::test {
 namespace {
-
-namespace fs = std::filesystem;
 
 // One positive tet, in Gmsh 2.2 ASCII.
 constexpr const char* kOneTetMsh =
@@ -33,68 +32,6 @@ constexpr const char* kBowtieMsh =
     "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
     "$Nodes\n7\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 -1 0\n6 -1 0 0\n7 0 0 -1\n$EndNodes\n"
     "$Elements\n2\n1 4 2 0 1 1 2 3 4\n2 4 2 0 1 1 5 6 7\n$EndElements\n";
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("tetcut_cli_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& contents) const {
-    const std::string p = path(name);
-    std::ofstream(p, std::ios::binary) << contents;
-    return p;
-  }
-
-  std::string write_box(const std::string& name, std::uint32_t nx, std::uint32_t ny,
-                        std::uint32_t nz) const {
-    const std::string p = path(name);
-    const WriteResult w = write_mesh(p, make_box_mesh(nx, ny, nz));
-    EXPECT_TRUE(w.ok) << w.error;
-    return p;
-  }
-
-  ProcessResult tetcut(const std::vector<std::string>& args) const {
-    return run_process(TETCUT_EXE, args, dir_.string());
-  }
-
-  // Runs tetcut with --json and parses its stdout.
-  Json tetcut_json(const std::vector<std::string>& args, int expected_exit) const {
-    const ProcessResult r = tetcut(args);
-    EXPECT_TRUE(r.exited) << "signal " << r.signal;
-    EXPECT_EQ(r.exit_code, expected_exit) << r.err;
-    const auto json = parse_json(r.out);
-    EXPECT_TRUE(json.has_value()) << "not JSON:\n" << r.out;
-    return json.value_or(Json{});
-  }
-
-  fs::path dir_;
-};
-
-// "tetcut: FILE:LINE: reason", on a single line.
-void expect_file_line_message(const ProcessResult& r, const std::string& file) {
-  EXPECT_TRUE(r.exited) << "signal " << r.signal;
-  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  const std::string prefix = "tetcut: " + file + ":";
-  ASSERT_TRUE(r.err.starts_with(prefix)) << r.err;
-  std::size_t i = prefix.size();
-  const std::size_t digits_start = i;
-  while (i < r.err.size() && std::isdigit(static_cast<unsigned char>(r.err[i]))) ++i;
-  EXPECT_GT(i, digits_start) << "no line number: " << r.err;
-  EXPECT_EQ(r.err.substr(i, 2), ": ") << r.err;
-  EXPECT_GT(r.err.size(), i + 3) << "no reason: " << r.err;
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
-}
 
 std::size_t count_violations_named(const Json& report, const std::string& id) {
   std::size_t n = 0;
@@ -247,18 +184,6 @@ TEST_F(Cli, QualityFloorAboveTheMeshsWorstTetIsAnI7Violation) {
   EXPECT_EQ(tetcut({"check", box, "--min-radius-ratio", "0.01"}).exit_code, 0);
   const Json report = tetcut_json({"check", box, "--min-radius-ratio", "0.99", "--json"}, 1);
   EXPECT_EQ(count_violations_named(report, "I7"), 1u) << "violations name I7";
-}
-
-TEST_F(Cli, InfoOnAMeshWithoutTetsHasNoQualityRatherThanZero) {
-  const std::string file =
-      write("no_tets.msh",
-            "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n"
-            "$Elements\n0\n$EndElements\n");
-  const Json info = tetcut_json({"info", file, "--json"}, 0);
-  EXPECT_EQ(info.get("tets")->number, 0);
-  EXPECT_EQ(info.get("vertices")->number, 1);
-  EXPECT_EQ(info.get("min_radius_ratio")->kind, Json::Kind::kNull);
-  EXPECT_EQ(info.get("hash")->text.size(), 16u);
 }
 
 // ---- a non-manifold mesh --------------------------------------------------------------------

@@ -102,7 +102,7 @@ TEST(Malformed, Msh22) {
                   {"negative count", with_line(kMsh22, 5, "-5"), 5, "negative count -5"},
                   {"count too large for the section", with_line(kMsh22, 5, "6"), 11, "section ended after 5 of 6 nodes"},
                   {"duplicate node id", with_line(kMsh22, 8, "2 0 1 0"), 8, "duplicate node id 2"},
-                  {"binary", with_line(kMsh22, 2, "2.2 1 8"), 2, "binary MSH is not supported"},
+                  {"ASCII data in a binary file", with_line(kMsh22, 2, "2.2 1 8"), 3, "binary check value '$End' is not the int 1"},
                   {"version 3", with_line(kMsh22, 2, "3.0 0 8"), 2, "unsupported MSH version"},
                   {"version 4.0", with_line(kMsh22, 2, "4 0 8"), 2, "MSH 4.0 is not supported"},
                   {"second $Nodes", kMsh22 + "$Nodes\n0\n$EndNodes\n", 17, "second $Nodes"},
@@ -137,7 +137,7 @@ TEST(Malformed, Msh41) {
                   {"negative block size", with_line(kMsh41, 6, "3 1 0 -1"), 6, "negative count -1"},
                   {"blocks short of the total", with_line(kMsh41, 5, "1 6 1 6"), 16, "node blocks hold 5 nodes, the header declares 6"},
                   {"bad parametric flag", with_line(kMsh41, 6, "3 1 7 5"), 6, "parametric must be 0 or 1"},
-                  {"binary", with_line(kMsh41, 2, "4.1 1 8"), 2, "binary MSH is not supported"},
+                  {"ASCII data in a binary file", with_line(kMsh41, 2, "4.1 1 8"), 3, "binary check value '$End' is not the int 1"},
               }));
 }
 
@@ -167,7 +167,7 @@ TEST(Malformed, LegacyVtk) {
               {
                   {"empty file", "", 1, "empty file"},
                   {"garbage", "garbage\n", 1, "not a legacy VTK file"},
-                  {"binary", with_line(kVtk, 3, "BINARY"), 3, "binary legacy VTK is not supported"},
+                  {"ASCII data in a binary file", with_line(kVtk, 3, "BINARY"), 5, "binary POINTS: 15 double values need 120 bytes"},
                   {"polydata", with_line(kVtk, 4, "DATASET POLYDATA"), 4, "not an UNSTRUCTURED_GRID"},
                   {"NaN coordinate", with_line(kVtk, 7, "0 1 0 0 NaN 1"), 7, "NaN coordinate"},
                   {"truncated points", first_lines(kVtk, 7), 7, "unexpected end of file: expected point coordinates"},

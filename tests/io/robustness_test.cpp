@@ -88,6 +88,20 @@ TEST(Robustness, MutatedVtkAndVtuNeverCrash) {
   ASSERT_NO_FATAL_FAILURE(fuzz(vtu, corpus_text("two_tets_appended_base64.vtu"), 11, kIterations));
 }
 
+TEST(Robustness, MutatedBinaryAndCompressedFilesNeverCrash) {
+  const Reader msh = [](const std::string& t) { return read_msh(t, "f.msh"); };
+  const Reader vtk = [](const std::string& t) { return read_vtk(t, "f.vtk"); };
+  const Reader vtu = [](const std::string& t) { return read_vtu(t, "f.vtu"); };
+  ASSERT_NO_FATAL_FAILURE(fuzz(msh, format_msh22_binary(kBox), 21, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(msh, format_msh41_binary(kBox), 22, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(msh, corpus_text("binary/two_tets_msh41_binary_be.msh"), 23, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtk, format_vtk_binary(kBox), 24, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtk, corpus_text("binary/two_tets_binary_v3.vtk"), 25, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtu, format_vtu_binary(kBox, Compression::kZlib), 26, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtu, corpus_text("binary/vtu_be_u64_b64_lzma.vtu"), 27, kIterations));
+  ASSERT_NO_FATAL_FAILURE(fuzz(vtu, corpus_text("binary/vtu_le_u32_inline_zlib.vtu"), 28, kIterations));
+}
+
 TEST(Robustness, MutatedMeditAndTetgenNeverCrash) {
   const Reader medit = [](const std::string& t) { return read_medit(t, "f.mesh"); };
   ASSERT_NO_FATAL_FAILURE(fuzz(medit, format_medit(kBox), 12, kIterations));

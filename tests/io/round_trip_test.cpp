@@ -125,15 +125,51 @@ TEST(RoundTrip, ExtensionPicksTheFormatCaseInsensitively) {
   EXPECT_TRUE(identical(mesh, *read_mesh(dir.file("pair.node")).mesh));
 }
 
+TEST(RoundTrip, BinaryAndCompressedWritersKeepEveryBit) {
+  test::ScratchDir dir;
+  struct BinaryCase {
+    MeshFormat format;
+    Compression compression;
+    const char* file;
+  };
+  constexpr BinaryCase kCases[] = {
+      {MeshFormat::kMsh22, Compression::kNone, "b22.msh"}, {MeshFormat::kMsh41, Compression::kNone, "b41.msh"},
+      {MeshFormat::kVtk, Compression::kNone, "b.vtk"},     {MeshFormat::kVtu, Compression::kNone, "b.vtu"},
+      {MeshFormat::kVtu, Compression::kZlib, "z.vtu"},     {MeshFormat::kVtu, Compression::kLzma, "x.vtu"},
+  };
+  // A mesh large enough for several 32 KiB compressed blocks per array.
+  const RawMesh mesh = random_bits_mesh(7);
+  const RawMesh big = make_box_mesh(12, 12, 12);
+  for (const BinaryCase& c : kCases) {
+    for (const RawMesh* m : {&mesh, &big}) {
+      SCOPED_TRACE(c.file);
+      const std::string path = dir.file(c.file);
+      ASSERT_TRUE(write_mesh_as(path, *m, c.format, WriteOptions{.binary = true, .compression = c.compression}).ok);
+      const ReadResult back = read_mesh(path);
+      ASSERT_TRUE(back.mesh.has_value()) << test::describe(back);
+      EXPECT_TRUE(identical(*m, *back.mesh));
+    }
+  }
+  const WriteResult medit = write_mesh_as(dir.file("m.mesh"), mesh, MeshFormat::kMedit, WriteOptions{.binary = true});
+  EXPECT_FALSE(medit.ok);
+  EXPECT_NE(medit.error.find("written as text only"), std::string::npos) << medit.error;
+  const WriteResult gmsh = write_mesh_as(dir.file("m.msh"), mesh, MeshFormat::kMsh22, WriteOptions{.compression = Compression::kZlib});
+  EXPECT_FALSE(gmsh.ok);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.msh")));
+}
+
 TEST(RoundTrip, UnknownExtensionIsAnErrorForReadAndWrite) {
   test::ScratchDir dir;
   const WriteResult w = write_mesh(dir.file("mesh.xyz"), test::two_tets());
   EXPECT_FALSE(w.ok);
   EXPECT_NE(w.error.find("unknown extension"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir.file("mesh.xyz")));
+  // Read: the content is looked at first; content no reader knows is an error naming both.
+  ASSERT_TRUE(write_file_atomically(dir.file("mesh.xyz"), "1 2 3\n").ok);
   const ReadResult r = read_mesh(dir.file("mesh.xyz"));
   ASSERT_TRUE(r.error.has_value());
-  EXPECT_NE(r.error->reason.find("unknown extension"), std::string::npos);
+  EXPECT_NE(r.error->reason.find("unknown extension '.xyz'"), std::string::npos) << r.error->reason;
+  EXPECT_NE(r.error->reason.find("text starting '1 2 3'"), std::string::npos) << r.error->reason;
   EXPECT_FALSE(read_mesh(dir.file("no_extension")).mesh.has_value());
 }
 

@@ -86,13 +86,6 @@ TEST(TestFiles, VtuAppendedRawAndBase64) {
   }
 }
 
-TEST(TestFiles, CompressedVtuIsRefusedWithAClearMessage) {
-  const ReadResult r = read_mesh(test::corpus_file("two_tets_compressed.vtu"));
-  ASSERT_TRUE(r.error.has_value());
-  EXPECT_EQ(r.error->line, 2u);
-  EXPECT_NE(r.error->reason.find("compress"), std::string::npos) << r.error->reason;
-}
-
 TEST(TestFiles, MeditCommentsSplitKeywordAndExtraSections) {
   const ReadResult r = read_test_file("two_tets_quirks.mesh");
   expect_two_tets(r);

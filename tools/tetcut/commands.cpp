@@ -44,16 +44,24 @@ constexpr std::string_view kInfoHelp =
 constexpr std::string_view kConvertHelp =
     "Converts a mesh between the supported formats, chosen by file extension, and prints the\n"
     "canonical hash of the mesh (identical for IN and OUT when the round trip is faithful).\n"
+    "IN may be any format tetcut reads (ASCII, binary or compressed; see the README).\n"
     "The output is written to a temporary file and renamed: a failure leaves no partial file.\n"
     "\n"
-    "  --format F   the output format, for when the extension is not enough: msh22 (the\n"
-    "               default for .msh) or msh41; also vtu, vtk, medit, tetgen\n"
+    "  --format F       the output format, for when the extension is not enough: msh22 (the\n"
+    "                   default for .msh) or msh41; also vtu, vtk, medit, tetgen\n"
+    "  --binary         binary output: Gmsh binary MSH, legacy VTK BINARY, VTU appended raw\n"
+    "                   data (medit and TetGen are text only)\n"
+    "  --compress C     VTU only, binary: zlib (vtkZLibDataCompressor) or lzma (xz)\n"
+    "  --reorient       turn every negatively oriented tet positive (two vertices swapped), as\n"
+    "                   the mesh builder does on request; for meshes from tools whose convention\n"
+    "                   is the opposite of tetcut's\n"
     "\n"
-    "exit: 0, 2 unreadable input, unwritable output or bad usage\n";
+    "exit: 0, 2 unreadable input, unwritable output, a mesh --reorient cannot build, or bad usage\n";
 
 constexpr std::string_view kGenHelp =
     "Generates a mesh: cylinder, sheet, box (TetGen), surface FILE (any closed .off/.stl/.obj\n"
-    "surface through TetGen), liver (CGAL Mesh_3). Prints the canonical hash.\n"
+    "surface, or a VTK POLYDATA surface .vtk/.vtp, through TetGen), liver (CGAL Mesh_3).\n"
+    "Prints the canonical hash.\n"
     "\n"
     "exit: 0, 2 bad parameters or unwritable output\n";
 
@@ -175,7 +183,8 @@ constexpr std::array kCommands = {
                 "tetcut check MESH [--level local|full|exact] [--min-radius-ratio R] [--json]",
                 "runs the invariant checker, names each violated invariant", kCheckHelp,
                 &cmd_check},
-    CommandInfo{"convert", "tetcut convert IN OUT [--format F]", "converts between the supported formats",
+    CommandInfo{"convert", "tetcut convert IN OUT [--format F] [--binary] [--compress zlib|lzma] [--reorient]",
+                "converts between the supported formats",
                 kConvertHelp, &cmd_convert},
     CommandInfo{"gen", "tetcut gen KIND [OPTIONS] -o OUT",
                 "generates a mesh (cylinder, sheet, box, surface, liver)", kGenHelp, &cmd_gen},

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "tetcut/io.hpp"
+#include "tetcut/predicates.hpp"
 
 namespace tetcut::cli {
 
@@ -23,9 +24,22 @@ std::string one_line(std::string_view s) {
   return out;
 }
 
+// True when every tet is negatively oriented. Stops at the first tet that is not, so a mesh in
+// tetcut's convention costs one orientation test.
+bool all_tets_inverted(const RawMesh& mesh) {
+  for (const auto& t : mesh.tets) {
+    for (std::uint32_t v : t) {
+      if (v >= mesh.positions.size()) return false;  // the checker names it
+    }
+    const auto& p = mesh.positions;
+    if (orientation(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) >= 0) return false;
+  }
+  return !mesh.tets.empty();
+}
+
 }  // namespace
 
-std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err) {
+std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err, bool orientation_note) {
   ReadResult result = read_mesh(path);
   for (const std::string& notice : result.notices) {
     err << "tetcut: " << one_line(path) << ": note: " << one_line(notice) << '\n';
@@ -50,6 +64,15 @@ std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err) {
       err << "tetcut: " << one_line(path) << ": unreadable mesh\n";
     }
     return std::nullopt;
+  }
+  if (result.mesh->tets.empty()) {
+    err << "tetcut: " << one_line(path) << ": " << one_line(no_tetrahedra_reason(result)) << '\n';
+    return std::nullopt;
+  }
+  if (orientation_note && all_tets_inverted(*result.mesh)) {
+    err << "tetcut: " << one_line(path) << ": note: all " << result.mesh->tets.size()
+        << " tets are negatively oriented (the opposite of tetcut's convention); "
+           "`tetcut convert " << one_line(path) << " OUT --reorient` writes them positively oriented\n";
   }
   return std::move(*result.mesh);
 }

@@ -12,10 +12,13 @@
 
 namespace tetcut::cli {
 
-// Reads `path` by its extension. On failure prints "tetcut: FILE:LINE: reason" (one line) to
-// `err` and returns nothing; the reader's notices (ignored elements, ...) go to `err` as
-// "tetcut: FILE: note: ...".
-std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err);
+// Reads `path` (format by content, else by extension). On failure prints "tetcut: FILE:LINE:
+// reason" (one line) to `err` and returns nothing; the reader's notices (ignored elements, ...)
+// go to `err` as "tetcut: FILE: note: ...". A file without tets is a failure that says what it
+// held ("27 hexahedra, no tetrahedra"): every command needs tets. A mesh whose tets are all
+// negatively oriented (another tool's convention) gets a note naming the command that
+// reorients it, unless `orientation_note` is false (that command itself).
+std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err, bool orientation_note = true);
 
 // Writes `mesh` to `mesh_path` and, when `report_path` is set, a JSON object whose members
 // `fill` writes, each through a temporary file and a rename. On failure prints one line

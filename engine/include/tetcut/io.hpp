@@ -1,14 +1,30 @@
-// Reading and writing meshes in the formats users bring (design: formats). Formats are chosen by
-// file extension. Readers never throw and never crash on bad bytes: a ParseError names the file,
-// the line and the reason. Writers write a temporary file next to the target and rename it, so a
-// failed write never leaves a partial file.
+// Reading and writing meshes in the formats users bring (design: formats). A file's format is
+// told by its content where the content says it (VTK XML, legacy VTK, Gmsh, medit), else by its
+// extension. Readers never throw and never crash on bad bytes: a ParseError names the file, the
+// line (inside binary data: the line of its section's header or tag) and the reason; no
+// allocation is larger than what the file can hold (compressed data: than what it decompresses
+// to). Writers write a temporary file next to the target and
+// rename it, so a failed write never leaves a partial file.
+//
+// Read and written:
+//   Gmsh .msh 2.2 and 4.1, ASCII and binary (either byte order, told by the file's own check
+//     value); 1.0 read only;
+//   VTK XML .vtu: ascii, inline binary (base64) and appended data (raw or base64), UInt32 or
+//     UInt64 headers, either byte order, uncompressed or compressed (vtkZLibDataCompressor,
+//     vtkLZMADataCompressor); written as ascii or as appended raw data, optionally compressed;
+//   legacy VTK .vtk UNSTRUCTURED_GRID, ASCII and binary (big-endian, as the format says), file
+//     versions up to 5.1;
+//   medit .mesh (ASCII), TetGen .node/.ele.
+// Surfaces, for mesh generation: .off, .stl (ASCII or binary), .obj, VTK POLYDATA (.vtk legacy
+// ASCII or binary, .vtp XML).
 //
 // Readers return tetrahedra only, with 0-based indices and the vertex order of the file (no
 // reorientation: that is the builder's job, on request). Other element kinds are ignored with a
-// notice. Second-order tetrahedra (Gmsh type 11, VTK type 24, TetGen 10-node .ele) are read as
-// their 4 corner vertices, with a notice. A cell declared as a tetrahedron with another number of
-// vertices is an error. Readers check the format only: a tet that repeats a vertex is returned as
-// is, for the checker to name (I1).
+// notice, and counted in ReadResult::ignored (a caller that needs tets says what a file without
+// any held: no_tetrahedra_reason). Second-order tetrahedra (Gmsh type 11, VTK type 24, TetGen
+// 10-node .ele) are read as their 4 corner vertices, with a notice. A cell declared as a
+// tetrahedron with another number of vertices is an error. Readers check the format only: a tet
+// that repeats a vertex is returned as is, for the checker to name (I1).
 #pragma once
 
 #include <array>
@@ -32,47 +48,78 @@ struct ParseError {
   [[nodiscard]] std::string message() const;
 };
 
+// How many elements of one kind a reader ignored; `noun` is singular ("hexahedron").
+struct CellCount {
+  std::string noun;
+  std::uint64_t count = 0;
+};
+
 struct ReadResult {
   std::optional<RawMesh> mesh;       // set iff error is empty
   std::optional<ParseError> error;
   std::vector<std::string> notices;  // e.g. "ignored 120 elements of type 2 (triangle)"
+  std::vector<CellCount> ignored;    // the elements that are not tets, by kind
 };
+
+// What a mesh read without tets held, for the error of a caller that needs tets:
+// "27 hexahedra, no tetrahedra", "12 points and no cells, no tetrahedra".
+std::string no_tetrahedra_reason(const ReadResult& result);
 
 struct WriteResult {
   bool ok = true;
   std::string error;  // with the path
 };
 
-// Dispatch on extension (case-insensitive): .msh (Gmsh 1.0, 2.2 or 4.1, told apart by the file's
-// header), .vtu, .vtk, .mesh (medit), .node or .ele (the TetGen pair: x.node with x.ele). Any
-// other extension is an error ("unknown extension").
+// The format is told by the content where its first bytes say it (an XML VTKFile, "# vtk
+// DataFile", "$MeshFormat", "MeshVersionFormatted"), whatever the extension, with a notice when
+// it differs from the extension's; otherwise by the extension (case-insensitive): .msh (Gmsh 1.0,
+// 2.2 or 4.1, told apart by the header), .vtu, .vtk, .mesh (medit), .node or .ele (the TetGen
+// pair: x.node with x.ele). An unknown extension whose content is not recognised is an error that
+// says what the content looks like.
 ReadResult read_mesh(const std::string& path);
-// .msh is written as 2.2 (the most widely read); call write_mesh_as for 4.1.
-WriteResult write_mesh(const std::string& path, const RawMesh& mesh);
-WriteResult write_mesh(const std::string& path, const TetMesh& mesh);
 
 enum class MeshFormat { kMsh22, kMsh41, kVtu, kVtk, kMedit, kTetgen };
-WriteResult write_mesh_as(const std::string& path, const RawMesh& mesh, MeshFormat format);
+// Compression of binary VTU arrays.
+enum class Compression : std::uint8_t { kNone, kZlib, kLzma };
+
+struct WriteOptions {
+  // Gmsh: binary MSH (little-endian); legacy VTK: BINARY (big-endian); VTU: appended raw data.
+  // medit and TetGen are written as text only: asking them for binary is an error.
+  bool binary = false;
+  // VTU only; implies binary.
+  Compression compression = Compression::kNone;
+};
+
+// By extension; .msh is written as 2.2 (the most widely read): call write_mesh_as for 4.1.
+WriteResult write_mesh(const std::string& path, const RawMesh& mesh, const WriteOptions& options = {});
+WriteResult write_mesh(const std::string& path, const TetMesh& mesh);
+WriteResult write_mesh_as(const std::string& path, const RawMesh& mesh, MeshFormat format,
+                          const WriteOptions& options = {});
 
 // ---- per format, from memory (for fuzzing and tests); `name` is used in errors -----------------
 
 // Gmsh: detects 1.0 ($NOD), 2.x or 4.1 from the header and calls the matching reader.
 ReadResult read_msh(std::string_view text, std::string_view name);
-// Gmsh MSH 2.2 ASCII.
+// Gmsh MSH 2.2, ASCII or binary.
 ReadResult read_msh22(std::string_view text, std::string_view name);
 std::string format_msh22(const RawMesh& mesh);
-// Gmsh MSH 4.1 ASCII.
+std::string format_msh22_binary(const RawMesh& mesh);
+// Gmsh MSH 4.1, ASCII or binary.
 ReadResult read_msh41(std::string_view text, std::string_view name);
 std::string format_msh41(const RawMesh& mesh);
+std::string format_msh41_binary(const RawMesh& mesh);
 // Gmsh MSH 1.0 ($NOD / $ELM), read only.
 ReadResult read_msh10(std::string_view text, std::string_view name);
-// VTK XML unstructured grid: ascii DataArrays; inline binary (base64, UInt32/UInt64 header) and
-// appended data (raw or base64), uncompressed. Written as ascii.
+// VTK XML unstructured grid (see the top of this file for the encodings read).
 ReadResult read_vtu(std::string_view text, std::string_view name);
 std::string format_vtu(const RawMesh& mesh);
-// Legacy VTK ASCII unstructured grid (file versions up to 5.1: CELLS with OFFSETS/CONNECTIVITY).
+// Appended raw data, UInt64 headers, little-endian, compressed as asked (32 KiB blocks).
+std::string format_vtu_binary(const RawMesh& mesh, Compression compression);
+// Legacy VTK unstructured grid, ASCII or BINARY (file versions up to 5.1: CELLS with
+// OFFSETS/CONNECTIVITY). Written as version 3.0 (CELLS with point counts), read by every VTK.
 ReadResult read_vtk(std::string_view text, std::string_view name);
 std::string format_vtk(const RawMesh& mesh);
+std::string format_vtk_binary(const RawMesh& mesh);
 // medit / Mmg .mesh ASCII (1-based).
 ReadResult read_medit(std::string_view text, std::string_view name);
 std::string format_medit(const RawMesh& mesh);
@@ -95,12 +142,17 @@ struct SurfaceReadResult {
   std::vector<std::string> notices;  // e.g. "split 6 polygons into triangles"
 };
 
-// Dispatch on extension: .off, .stl (ASCII or binary), .obj. Polygons are split into triangle
-// fans with a notice; STL vertices with bit-identical positions are merged.
+// Dispatch on extension: .off, .stl (ASCII or binary), .obj, .vtk and .vtp (VTK POLYDATA; a
+// .vtk or .vtp is read as legacy or XML by its content). Polygons and triangle strips are split
+// into triangles with a notice; STL vertices with bit-identical positions are merged.
 SurfaceReadResult read_surface(const std::string& path);
 SurfaceReadResult read_off(std::string_view text, std::string_view name);
 SurfaceReadResult read_stl(std::string_view bytes, std::string_view name);
 SurfaceReadResult read_obj(std::string_view text, std::string_view name);
+// Legacy VTK DATASET POLYDATA (POLYGONS, TRIANGLE_STRIPS), ASCII or BINARY.
+SurfaceReadResult read_vtk_polydata(std::string_view text, std::string_view name);
+// VTK XML PolyData (.vtp): Polys and Strips, every encoding read_vtu reads.
+SurfaceReadResult read_vtp(std::string_view text, std::string_view name);
 
 // ---- files ---------------------------------------------------------------------------------
 

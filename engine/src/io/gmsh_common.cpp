@@ -40,6 +40,22 @@ std::string gmsh_ignored_kind(std::int64_t type) {
   return kind;
 }
 
+std::size_t gmsh_type_nodes(std::int64_t type) {
+  // Gmsh's reference manual, "MSH file format": element types and their node counts.
+  switch (type) {
+    case 1: return 2;   case 2: return 3;   case 3: return 4;   case 4: return 4;
+    case 5: return 8;   case 6: return 6;   case 7: return 5;   case 8: return 3;
+    case 9: return 6;   case 10: return 9;  case 11: return 10; case 12: return 27;
+    case 13: return 18; case 14: return 14; case 15: return 1;  case 16: return 8;
+    case 17: return 20; case 18: return 15; case 19: return 13; case 20: return 9;
+    case 21: return 10; case 22: return 12; case 23: return 15; case 24: return 15;
+    case 25: return 21; case 26: return 4;  case 27: return 5;  case 28: return 6;
+    case 29: return 20; case 30: return 35; case 31: return 56; case 92: return 64;
+    case 93: return 125;
+    default: return 0;
+  }
+}
+
 bool skip_gmsh_section(LineReader& lines, ErrorSink& sink, std::string_view name) {
   const std::uint64_t start = lines.line_number();
   const std::string end = "$End" + std::string(name);
@@ -73,7 +89,7 @@ bool GmshElementSink::add(ErrorSink& sink, std::uint64_t line, std::int64_t type
   } else if (type == kGmshTet10) {
     expected = 10;
   } else {
-    ignored.add(gmsh_ignored_kind(type));
+    ignore(type, 1);
     return true;
   }
   if (num_nodes != expected) {
@@ -90,6 +106,29 @@ bool GmshElementSink::add(ErrorSink& sink, std::uint64_t line, std::int64_t type
     if (index == NodeIdMap::kNone) {
       return sink.fail(line, "node id " + std::to_string(id) + " not defined");
     }
+    if (k < 4) tet[k] = index;
+  }
+  if (type == kGmshTet10) ++second_order_tets;
+  tets->push_back(tet);
+  return true;
+}
+
+void GmshElementSink::ignore(std::int64_t type, std::uint64_t n) {
+  const std::string_view name = gmsh_type_name(type);
+  ignored.add(gmsh_ignored_kind(type), n,
+              name.empty() ? "element of Gmsh type " + std::to_string(type) : std::string(name));
+}
+
+bool GmshElementSink::add_ids(ErrorSink& sink, std::uint64_t line, std::int64_t type, const std::int64_t* ids,
+                              std::size_t num_nodes) {
+  if (type != kGmshTet4 && type != kGmshTet10) {
+    ignore(type, 1);
+    return true;
+  }
+  std::array<std::uint32_t, 4> tet{};
+  for (std::size_t k = 0; k < num_nodes; ++k) {
+    const std::uint32_t index = nodes->find(ids[k]);
+    if (index == NodeIdMap::kNone) return sink.fail(line, "node id " + std::to_string(ids[k]) + " not defined");
     if (k < 4) tet[k] = index;
   }
   if (type == kGmshTet10) ++second_order_tets;

@@ -18,6 +18,8 @@ inline constexpr int kGmshTet10 = 11;
 std::string_view gmsh_type_name(std::int64_t type);
 // "elements of type 2 (triangle)"
 std::string gmsh_ignored_kind(std::int64_t type);
+// Nodes of an element of `type` (binary MSH lists no count), 0 for a type we do not know.
+std::size_t gmsh_type_nodes(std::int64_t type);
 
 // Called on a "$Name" header line: skips to "$EndName". False (and an error) if it is missing.
 bool skip_gmsh_section(LineReader& lines, ErrorSink& sink, std::string_view name);
@@ -37,6 +39,11 @@ struct GmshElementSink {
   bool add(ErrorSink& sink, std::uint64_t line, std::int64_t type,
            const std::string_view* node_tokens, std::size_t num_nodes);
   void emit_notices(std::vector<std::string>& notices) const;
+  // Counts `n` ignored elements of `type` (binary blocks skip them without decoding).
+  void ignore(std::int64_t type, std::uint64_t n);
+  // Appends the tet of an element of `type` whose node ids are `ids` (binary: already numbers).
+  bool add_ids(ErrorSink& sink, std::uint64_t line, std::int64_t type, const std::int64_t* ids,
+               std::size_t num_nodes);
 };
 
 // Parses "id x y z" tokens (exactly 4) into the map and positions.

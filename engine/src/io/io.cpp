@@ -1,4 +1,5 @@
-// Dispatch by extension, whole-file reading, and atomic writing (temporary file + rename).
+// Dispatch by content and extension, whole-file reading, and atomic writing (temporary file +
+// rename).
 #include "tetcut/io.hpp"
 
 #include <fcntl.h>
@@ -10,6 +11,9 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+
+#include "content_format.hpp"
+#include "text_reader.hpp"
 
 namespace tetcut {
 
@@ -64,13 +68,54 @@ std::optional<ParseError> read_file(const std::string& path, std::string& conten
   return std::nullopt;
 }
 
+namespace {
+
+std::string_view format_name(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::kMsh22:
+    case MeshFormat::kMsh41: return "Gmsh MSH";
+    case MeshFormat::kVtu: return "VTK XML";
+    case MeshFormat::kVtk: return "legacy VTK";
+    case MeshFormat::kMedit: return "medit MESH";
+    case MeshFormat::kTetgen: return "TetGen";
+  }
+  return "?";
+}
+
+// The reader the content asks for, or an error for content that is not a volume mesh (a
+// surface, another VTK dataset); nullopt when the content says nothing.
+struct ContentChoice {
+  std::optional<MeshFormat> format;
+  std::optional<std::string> refusal;
+};
+
+ContentChoice choose_by_content(const io_detail::DetectedContent& d) {
+  using io_detail::ContentFormat;
+  const std::string gen = "; `tetcut gen surface FILE -o OUT.msh` tetrahedralizes a closed surface";
+  switch (d.format) {
+    case ContentFormat::kVtkXml:
+      if (d.dataset == "UnstructuredGrid") return {MeshFormat::kVtu, {}};
+      if (d.dataset == "PolyData") return {{}, "the content is " + d.description + ", a surface, not a tetrahedral mesh" + gen};
+      return {{}, "the content is " + d.description + ", not an UnstructuredGrid of tetrahedra"};
+    case ContentFormat::kLegacyVtk:
+      if (io_detail::iequals(d.dataset, "POLYDATA")) {
+        return {{}, "the content is " + d.description + ", a surface, not a tetrahedral mesh" + gen};
+      }
+      return {MeshFormat::kVtk, {}};  // the reader names any other dataset
+    case ContentFormat::kGmsh: return {MeshFormat::kMsh22, {}};
+    case ContentFormat::kMedit: return {MeshFormat::kMedit, {}};
+    case ContentFormat::kSurface: return {{}, "the content is " + d.description + ", not a tetrahedral mesh" + gen};
+    case ContentFormat::kUnknown: break;
+  }
+  return {};
+}
+
+}  // namespace
+
 ReadResult read_mesh(const std::string& path) {
   const std::string ext = lower_extension(path);
-  const auto format = format_for(ext);
-  if (!format) {
-    return error_result(path, "unknown extension '" + ext + "' (known: " + kKnownMeshExtensions + ")");
-  }
-  if (*format == MeshFormat::kTetgen) {
+  const auto by_extension = format_for(ext);
+  if (by_extension == MeshFormat::kTetgen) {
     // The pair shares its base name; the extension of each file keeps the case the user gave.
     const std::string base = strip_extension(path);
     const bool upper = path.size() >= 4 && path.substr(path.size() - ext.size()) != ext;
@@ -78,49 +123,86 @@ ReadResult read_mesh(const std::string& path) {
     const std::string ele_path = base + (upper ? ".ELE" : ".ele");
     std::string node_text;
     std::string ele_text;
-    if (auto e = read_file(node_path, node_text)) return ReadResult{std::nullopt, std::move(e), {}};
-    if (auto e = read_file(ele_path, ele_text)) return ReadResult{std::nullopt, std::move(e), {}};
+    if (auto e = read_file(node_path, node_text)) return ReadResult{std::nullopt, std::move(e), {}, {}};
+    if (auto e = read_file(ele_path, ele_text)) return ReadResult{std::nullopt, std::move(e), {}, {}};
     return read_tetgen(node_text, node_path, ele_text, ele_path);
   }
   std::string text;
-  if (auto e = read_file(path, text)) return ReadResult{std::nullopt, std::move(e), {}};
+  if (auto e = read_file(path, text)) return ReadResult{std::nullopt, std::move(e), {}, {}};
+  const io_detail::DetectedContent detected = io_detail::detect_content(text);
+  const ContentChoice by_content = choose_by_content(detected);
+  if (by_content.refusal) return error_result(path, *by_content.refusal);
+  std::string notice;
+  if (by_content.format && !by_extension) {
+    notice = "unknown extension '" + ext + "': the content is " + detected.description + ", read as such";
+  } else if (by_content.format && format_name(*by_content.format) != format_name(*by_extension)) {
+    notice = "the extension '" + ext + "' says " + std::string(format_name(*by_extension)) + " but the content is " +
+             detected.description + ": read as " + std::string(format_name(*by_content.format));
+  }
+  const std::optional<MeshFormat> format = by_content.format ? by_content.format : by_extension;
+  if (!format) {
+    return error_result(path, "unknown extension '" + ext + "' (known: " + kKnownMeshExtensions +
+                                  ") and the content is not a mesh format tetcut reads: " + detected.description);
+  }
+  ReadResult result;
   switch (*format) {
     case MeshFormat::kMsh22:
-    case MeshFormat::kMsh41: return read_msh(text, path);
-    case MeshFormat::kVtu: return read_vtu(text, path);
-    case MeshFormat::kVtk: return read_vtk(text, path);
-    case MeshFormat::kMedit: return read_medit(text, path);
-    case MeshFormat::kTetgen: break;
+    case MeshFormat::kMsh41: result = read_msh(text, path); break;
+    case MeshFormat::kVtu: result = read_vtu(text, path); break;
+    case MeshFormat::kVtk: result = read_vtk(text, path); break;
+    case MeshFormat::kMedit: result = read_medit(text, path); break;
+    case MeshFormat::kTetgen: return error_result(path, "a TetGen pair is read by its .node or .ele name");
   }
-  return error_result(path, "unknown extension '" + ext + "'");
+  if (!notice.empty()) result.notices.insert(result.notices.begin(), notice);
+  return result;
 }
 
-WriteResult write_mesh_as(const std::string& path, const RawMesh& mesh, MeshFormat format) {
+std::string no_tetrahedra_reason(const ReadResult& result) {
+  std::string held;
+  for (std::size_t i = 0; i < result.ignored.size(); ++i) {
+    const CellCount& c = result.ignored[i];
+    if (i > 0) held += i + 1 == result.ignored.size() ? " and " : ", ";
+    held += std::to_string(c.count) + " " + (c.count == 1 ? c.noun : io_detail::plural_noun(c.noun));
+  }
+  if (held.empty()) {
+    const std::size_t points = result.mesh ? result.mesh->positions.size() : 0;
+    held = points == 0 ? "no points and no cells" : std::to_string(points) + (points == 1 ? " point" : " points") + " and no cells";
+  }
+  return held + ", no tetrahedra";
+}
+
+WriteResult write_mesh_as(const std::string& path, const RawMesh& mesh, MeshFormat format, const WriteOptions& options) {
+  const bool binary = options.binary || options.compression != Compression::kNone;
+  if (options.compression != Compression::kNone && format != MeshFormat::kVtu) {
+    return WriteResult{false, path + ": only VTU (.vtu) is written compressed"};
+  }
   switch (format) {
-    case MeshFormat::kMsh22: return write_file_atomically(path, format_msh22(mesh));
-    case MeshFormat::kMsh41: return write_file_atomically(path, format_msh41(mesh));
-    case MeshFormat::kVtu: return write_file_atomically(path, format_vtu(mesh));
-    case MeshFormat::kVtk: return write_file_atomically(path, format_vtk(mesh));
-    case MeshFormat::kMedit: return write_file_atomically(path, format_medit(mesh));
-    case MeshFormat::kTetgen: {
-      const std::string base = strip_extension(path);
-      // Each file of the pair is atomic; the .ele goes last, so a reader never finds a new .ele
-      // that refers to an old .node.
-      WriteResult r = write_file_atomically(base + ".node", format_tetgen_node(mesh));
-      if (!r.ok) return r;
-      return write_file_atomically(base + ".ele", format_tetgen_ele(mesh));
-    }
+    case MeshFormat::kMsh22: return write_file_atomically(path, binary ? format_msh22_binary(mesh) : format_msh22(mesh));
+    case MeshFormat::kMsh41: return write_file_atomically(path, binary ? format_msh41_binary(mesh) : format_msh41(mesh));
+    case MeshFormat::kVtu:
+      return write_file_atomically(path, binary ? format_vtu_binary(mesh, options.compression) : format_vtu(mesh));
+    case MeshFormat::kVtk: return write_file_atomically(path, binary ? format_vtk_binary(mesh) : format_vtk(mesh));
+    case MeshFormat::kMedit:
+    case MeshFormat::kTetgen:
+      if (binary) return WriteResult{false, path + ": " + std::string(format_name(format)) + " is written as text only"};
+      break;
   }
-  return WriteResult{false, path + ": unknown format"};
+  if (format == MeshFormat::kMedit) return write_file_atomically(path, format_medit(mesh));
+  const std::string base = strip_extension(path);
+  // Each file of the pair is atomic; the .ele goes last, so a reader never finds a new .ele
+  // that refers to an old .node.
+  WriteResult r = write_file_atomically(base + ".node", format_tetgen_node(mesh));
+  if (!r.ok) return r;
+  return write_file_atomically(base + ".ele", format_tetgen_ele(mesh));
 }
 
-WriteResult write_mesh(const std::string& path, const RawMesh& mesh) {
+WriteResult write_mesh(const std::string& path, const RawMesh& mesh, const WriteOptions& options) {
   const auto format = format_for(lower_extension(path));
   if (!format) {
     return WriteResult{false, path + ": unknown extension '" + lower_extension(path) +
                                   "' (known: " + kKnownMeshExtensions + ")"};
   }
-  return write_mesh_as(path, mesh, *format);
+  return write_mesh_as(path, mesh, *format, options);
 }
 
 WriteResult write_mesh(const std::string& path, const TetMesh& mesh) {
@@ -129,16 +211,19 @@ WriteResult write_mesh(const std::string& path, const TetMesh& mesh) {
 
 SurfaceReadResult read_surface(const std::string& path) {
   const std::string ext = lower_extension(path);
-  if (ext != ".off" && ext != ".stl" && ext != ".obj") {
+  if (ext != ".off" && ext != ".stl" && ext != ".obj" && ext != ".vtk" && ext != ".vtp") {
     SurfaceReadResult r;
-    r.error = ParseError{path, 0, "unknown extension '" + ext + "' (known: .off, .stl, .obj)"};
+    r.error = ParseError{path, 0, "unknown extension '" + ext + "' (known: .off, .stl, .obj, .vtk, .vtp)"};
     return r;
   }
   std::string text;
   if (auto e = read_file(path, text)) return SurfaceReadResult{std::nullopt, std::move(e), {}};
   if (ext == ".off") return read_off(text, path);
   if (ext == ".stl") return read_stl(text, path);
-  return read_obj(text, path);
+  if (ext == ".obj") return read_obj(text, path);
+  // VTK: XML or legacy, whichever the content is.
+  if (io_detail::detect_content(text).format == io_detail::ContentFormat::kVtkXml) return read_vtp(text, path);
+  return read_vtk_polydata(text, path);
 }
 
 WriteResult write_file_atomically(const std::string& path, std::string_view contents) {

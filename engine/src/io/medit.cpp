@@ -14,6 +14,17 @@ namespace {
 
 using namespace io_detail;
 
+// "Hexahedra" -> "hexahedron", "Vertices" -> "vertex", "Triangles" -> "triangle".
+std::string keyword_noun(std::string_view keyword) {
+  std::string s;
+  for (char c : keyword) s += (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+  const auto ends_with = [&](std::string_view tail) { return s.size() > tail.size() && s.ends_with(tail); };
+  if (ends_with("hedra")) return s.substr(0, s.size() - 1) + "on";
+  if (ends_with("ices")) return s.substr(0, s.size() - 4) + "ex";
+  if (ends_with("s")) return s.substr(0, s.size() - 1);
+  return s;
+}
+
 class MeditReader {
  public:
   MeditReader(std::string_view text, std::string_view name) : lines_(text), sink_(name) {}
@@ -66,7 +77,7 @@ class MeditReader {
     }
     std::vector<std::string> notices;
     ignored_.emit(notices);
-    return make_result(sink_, std::move(mesh_), std::move(notices));
+    return make_result(sink_, std::move(mesh_), std::move(notices), &ignored_);
   }
 
  private:
@@ -176,7 +187,7 @@ class MeditReader {
     for (std::uint64_t i = 0; i < count; ++i) {
       if (!next_entry(keyword, i, count)) return;
     }
-    if (count > 0) ignored_.add("entries of " + keyword, count);
+    if (count > 0) ignored_.add("entries of " + keyword, count, keyword_noun(keyword));
   }
 
   LineReader lines_;

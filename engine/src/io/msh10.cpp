@@ -43,7 +43,7 @@ class Msh10Reader {
     }
     std::vector<std::string> notices;
     elements_.emit_notices(notices);
-    return make_result(sink_, std::move(mesh_), std::move(notices));
+    return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
   }
 
  private:

@@ -1,10 +1,12 @@
-// Gmsh MSH 2.2 ASCII. Line based: "$Nodes" count, "id x y z" lines, "$EndNodes"; "$Elements"
-// count, "id type ntags tag... node..." lines, "$EndElements". Node ids are arbitrary (mapped);
+// Gmsh MSH 2.2, ASCII or binary. Line based: "$Nodes" count, "id x y z" lines, "$EndNodes";
+// "$Elements" count, "id type ntags tag... node..." lines, "$EndElements"; in a binary file the
+// records between count and marker are raw (gmsh_binary.hpp). Node ids are arbitrary (mapped);
 // tags (physical, elementary, partitions) are skipped; unknown sections ($Comments,
 // $PhysicalNames, $NodeData, ...) are skipped to their $End marker.
 #include <algorithm>
 #include <string>
 
+#include "gmsh_binary.hpp"
 #include "gmsh_common.hpp"
 #include "tetcut/io.hpp"
 
@@ -58,7 +60,7 @@ class Msh22Reader {
     }
     std::vector<std::string> notices;
     elements_.emit_notices(notices);
-    return make_result(sink_, std::move(mesh_), std::move(notices));
+    return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
   }
 
  private:
@@ -85,8 +87,13 @@ class Msh22Reader {
       return;
     }
     if (file_type == 1) {
-      sink_.fail(lines_.line_number(), "binary MSH is not supported; save the mesh as ASCII");
-      return;
+      std::int64_t data_size = 0;
+      if (!parse_i64(tokens_[2], data_size) || data_size != 8) {
+        sink_.fail(lines_.line_number(), "data-size must be 8 (bytes of a double), got " + quote(tokens_[2]));
+        return;
+      }
+      binary_ = true;
+      if (!binary_reader_.read_check_value(8)) return;
     }
     expect_gmsh_marker(lines_, sink_, "$EndMeshFormat", "the format line");
   }
@@ -104,6 +111,12 @@ class Msh22Reader {
       return;
     }
     if (!parse_count(sink_, lines_.line_number(), tokens_[0], lines_.remaining_bytes(), count)) return;
+    if (binary_) {
+      if (binary_reader_.msh22_nodes(count, lines_.line_number())) {
+        expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node");
+      }
+      return;
+    }
     mesh_.positions.reserve(count);
     for (std::uint64_t i = 0; i < count; ++i) {
       if (!lines_.next_nonblank(line)) {
@@ -138,6 +151,12 @@ class Msh22Reader {
     mesh_.tets.reserve(count);
     elements_.nodes = &ids_;
     elements_.tets = &mesh_.tets;
+    if (binary_) {
+      if (binary_reader_.msh22_elements(count, lines_.line_number())) {
+        expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element");
+      }
+      return;
+    }
     for (std::uint64_t i = 0; i < count; ++i) {
       if (!lines_.next_nonblank(line)) {
         sink_.fail(lines_.line_number(), "unexpected end of file in $Elements: expected " +
@@ -180,6 +199,8 @@ class Msh22Reader {
   NodeIdMap ids_;
   GmshElementSink elements_;
   std::vector<std::string_view> tokens_;
+  GmshBinaryReader binary_reader_{lines_, sink_, mesh_, ids_, elements_};
+  bool binary_ = false;
 };
 
 }  // namespace
@@ -215,6 +236,36 @@ std::string format_msh22(const RawMesh& mesh) {
     out += '\n';
   }
   out += "$EndElements\n";
+  return out;
+}
+
+std::string format_msh22_binary(const RawMesh& mesh) {
+  constexpr auto kOrder = ByteOrder::kLittle;
+  std::string out;
+  out.reserve(128 + mesh.positions.size() * 28 + mesh.tets.size() * 28);
+  out += "$MeshFormat\n2.2 1 8\n";
+  store_uint(out, 1, 4, kOrder);  // the check value that tells readers the byte order
+  out += "\n$EndMeshFormat\n$Nodes\n";
+  append_uint(out, mesh.positions.size());
+  out += '\n';
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    store_uint(out, i + 1, 4, kOrder);
+    for (double c : {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z}) store_f64(out, c, kOrder);
+  }
+  out += "\n$EndNodes\n$Elements\n";
+  append_uint(out, mesh.tets.size());
+  out += '\n';
+  if (!mesh.tets.empty()) {
+    // One block: type 4, every tet, 2 tags (physical and elementary entity 1, as in ASCII).
+    for (std::uint64_t v : {std::uint64_t{kGmshTet4}, std::uint64_t{mesh.tets.size()}, std::uint64_t{2}}) {
+      store_uint(out, v, 4, kOrder);
+    }
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      for (std::uint64_t v : {std::uint64_t{t + 1}, std::uint64_t{1}, std::uint64_t{1}}) store_uint(out, v, 4, kOrder);
+      for (std::uint32_t v : mesh.tets[t]) store_uint(out, std::uint64_t{v} + 1, 4, kOrder);
+    }
+  }
+  out += "\n$EndElements\n";
   return out;
 }
 

@@ -1,12 +1,15 @@
-// Gmsh MSH 4.1 ASCII. Nodes and elements come in entity blocks:
+// Gmsh MSH 4.1, ASCII or binary. Nodes and elements come in entity blocks:
 //   $Nodes: numBlocks numNodes minTag maxTag, then per block "dim entity parametric n", n tag
 //   lines, n coordinate lines ("x y z" plus u [v [w]] when parametric).
 //   $Elements: numBlocks numElements minTag maxTag, then per block "dim entity type n" and n lines
 //   "tag node...".
+// In a binary file the same fields are raw values (gmsh_binary.hpp).
 // $Entities (physical tags live there), $PhysicalNames, $Comments and the rest are skipped.
 #include <algorithm>
+#include <array>
 #include <string>
 
+#include "gmsh_binary.hpp"
 #include "gmsh_common.hpp"
 #include "tetcut/io.hpp"
 
@@ -60,7 +63,7 @@ class Msh41Reader {
     }
     std::vector<std::string> notices;
     elements_.emit_notices(notices);
-    return make_result(sink_, std::move(mesh_), std::move(notices));
+    return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
   }
 
  private:
@@ -92,10 +95,14 @@ class Msh41Reader {
       return;
     }
     if (tokens_[1] == "1") {
-      sink_.fail(lines_.line_number(), "binary MSH is not supported; save the mesh as ASCII");
-      return;
-    }
-    if (tokens_[1] != "0") {
+      std::uint64_t data_size = 0;
+      if (!parse_u64(tokens_[2], data_size)) {
+        sink_.fail(lines_.line_number(), "data-size must be 4 or 8, got " + quote(tokens_[2]));
+        return;
+      }
+      binary_ = true;
+      if (!binary_reader_.read_check_value(data_size)) return;
+    } else if (tokens_[1] != "0") {
       sink_.fail(lines_.line_number(), "file-type must be 0 (ASCII) or 1 (binary), got " + quote(tokens_[1]));
       return;
     }
@@ -114,6 +121,12 @@ class Msh41Reader {
   }
 
   void read_nodes() {
+    if (binary_) {
+      if (binary_reader_.msh41_nodes(lines_.line_number())) {
+        expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node block");
+      }
+      return;
+    }
     std::uint64_t blocks = 0;
     std::uint64_t total = 0;
     if (!read_header("$Nodes", blocks, total)) return;
@@ -171,12 +184,18 @@ class Msh41Reader {
   }
 
   void read_elements() {
+    elements_.nodes = &ids_;
+    elements_.tets = &mesh_.tets;
+    if (binary_) {
+      if (binary_reader_.msh41_elements(lines_.line_number())) {
+        expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element block");
+      }
+      return;
+    }
     std::uint64_t blocks = 0;
     std::uint64_t total = 0;
     if (!read_header("$Elements", blocks, total)) return;
     mesh_.tets.reserve(total);
-    elements_.nodes = &ids_;
-    elements_.tets = &mesh_.tets;
     std::uint64_t seen = 0;
     for (std::uint64_t b = 0; b < blocks; ++b) {
       if (!next_record("$Elements block header") ||
@@ -216,7 +235,23 @@ class Msh41Reader {
   NodeIdMap ids_;
   GmshElementSink elements_;
   std::vector<std::string_view> tokens_;
+  GmshBinaryReader binary_reader_{lines_, sink_, mesh_, ids_, elements_};
+  bool binary_ = false;
 };
+
+// The bounding box of every position ({0,0,0}, {0,0,0} for none), for the volume entity.
+std::array<double, 6> bounding_box(const RawMesh& mesh) {
+  Vec3 lo{0, 0, 0};
+  Vec3 hi{0, 0, 0};
+  if (!mesh.positions.empty()) {
+    lo = hi = mesh.positions[0];
+    for (const Vec3& p : mesh.positions) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+  }
+  return {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
+}
 
 }  // namespace
 
@@ -229,17 +264,8 @@ std::string format_msh41(const RawMesh& mesh) {
   out.reserve(256 + mesh.positions.size() * 64 + mesh.tets.size() * 40);
   out += "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   // One volume entity (tag 1) holding everything, with its bounding box, as Gmsh expects.
-  Vec3 lo{0, 0, 0};
-  Vec3 hi{0, 0, 0};
-  if (!mesh.positions.empty()) {
-    lo = hi = mesh.positions[0];
-    for (const Vec3& p : mesh.positions) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-  }
   out += "$Entities\n0 0 0 1\n1 ";
-  for (double c : {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) {
+  for (double c : bounding_box(mesh)) {
     append_double(out, c);
     out += ' ';
   }
@@ -284,6 +310,50 @@ std::string format_msh41(const RawMesh& mesh) {
     }
   }
   out += "$EndElements\n";
+  return out;
+}
+
+std::string format_msh41_binary(const RawMesh& mesh) {
+  constexpr auto kOrder = ByteOrder::kLittle;
+  const auto put_int = [](std::string& out, std::uint64_t v) { store_uint(out, v, 4, kOrder); };
+  const auto put_size = [](std::string& out, std::uint64_t v) { store_uint(out, v, 8, kOrder); };
+  std::string out;
+  out.reserve(256 + mesh.positions.size() * 32 + mesh.tets.size() * 40);
+  out += "$MeshFormat\n4.1 1 8\n";
+  put_int(out, 1);  // the check value that tells readers the byte order
+  out += "\n$EndMeshFormat\n$Entities\n";
+  // No points, curves or surfaces; one volume (tag 1) with its bounding box, no physical tags
+  // and no bounding surfaces.
+  for (std::uint64_t n : {0, 0, 0, 1}) put_size(out, n);
+  put_int(out, 1);
+  for (double c : bounding_box(mesh)) store_f64(out, c, kOrder);
+  put_size(out, 0);
+  put_size(out, 0);
+  out += "\n$EndEntities\n$Nodes\n";
+  const std::uint64_t nv = mesh.positions.size();
+  const std::uint64_t node_blocks = nv > 0 ? 1 : 0;
+  for (std::uint64_t v : {node_blocks, nv, node_blocks, nv}) put_size(out, v);
+  if (nv > 0) {
+    for (std::uint64_t v : {3, 1, 0}) put_int(out, v);
+    put_size(out, nv);
+    for (std::uint64_t i = 0; i < nv; ++i) put_size(out, i + 1);
+    for (const Vec3& p : mesh.positions) {
+      for (double c : {p.x, p.y, p.z}) store_f64(out, c, kOrder);
+    }
+  }
+  out += "\n$EndNodes\n$Elements\n";
+  const std::uint64_t nt = mesh.tets.size();
+  const std::uint64_t element_blocks = nt > 0 ? 1 : 0;
+  for (std::uint64_t v : {element_blocks, nt, element_blocks, nt}) put_size(out, v);
+  if (nt > 0) {
+    for (std::uint64_t v : {3, 1, kGmshTet4}) put_int(out, v);
+    put_size(out, nt);
+    for (std::uint64_t t = 0; t < nt; ++t) {
+      put_size(out, t + 1);
+      for (std::uint32_t v : mesh.tets[t]) put_size(out, std::uint64_t{v} + 1);
+    }
+  }
+  out += "\n$EndElements\n";
   return out;
 }
 

@@ -1,5 +1,6 @@
 #include "text_reader.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -112,6 +113,16 @@ bool LineReader::next(std::string_view& line) {
   return true;
 }
 
+bool LineReader::take_bytes(std::size_t n, std::string_view& bytes) {
+  if (n > text_.size() - pos_) return false;
+  bytes = text_.substr(pos_, n);
+  for (std::size_t i = pos_; i < pos_ + n; ++i) {
+    if (text_[i] == '\n' || (text_[i] == '\r' && (i + 1 >= text_.size() || text_[i + 1] != '\n'))) ++line_;
+  }
+  pos_ += n;
+  return true;
+}
+
 bool LineReader::next_nonblank(std::string_view& line) {
   const std::uint64_t previous_line = line_;
   while (next(line)) {
@@ -205,6 +216,20 @@ void TokenReader::skip_past_blank_line() {
   line_ += lines.line_number();
 }
 
+bool TokenReader::take_binary(std::size_t n, std::string_view& bytes) {
+  std::size_t pos = pos_;
+  while (pos < text_.size() && text_[pos] != '\n' && text_[pos] != '\r') ++pos;
+  if (pos >= text_.size()) return false;
+  pos += text_[pos] == '\r' && pos + 1 < text_.size() && text_[pos + 1] == '\n' ? 2 : 1;
+  if (n > text_.size() - pos) return false;
+  bytes = text_.substr(pos, n);
+  for (std::size_t i = pos_; i < pos + n; ++i) {
+    if (text_[i] == '\n' || (text_[i] == '\r' && (i + 1 >= text_.size() || text_[i + 1] != '\n'))) ++line_;
+  }
+  pos_ = pos + n;
+  return true;
+}
+
 bool check_count(ErrorSink& sink, std::uint64_t line, std::uint64_t count,
                  std::size_t remaining_bytes) {
   // The last entry may end the file without a separator, hence the + 1.
@@ -275,18 +300,55 @@ std::uint32_t NodeIdMap::find(std::int64_t id) const {
   return it == map_.end() ? kNone : it->second;
 }
 
+void IgnoredTally::add(std::string kind, std::uint64_t n, std::string noun) {
+  Entry& e = counts_[kind];
+  e.count += n;
+  if (e.noun.empty()) e.noun = noun.empty() ? std::move(kind) : std::move(noun);
+}
+
 void IgnoredTally::emit(std::vector<std::string>& notices) const {
-  for (const auto& [kind, n] : counts_) {
-    notices.push_back("ignored " + std::to_string(n) + " " + kind);
+  for (const auto& [kind, e] : counts_) {
+    notices.push_back("ignored " + std::to_string(e.count) + " " + kind);
   }
 }
 
-ReadResult make_result(ErrorSink& sink, RawMesh&& mesh, std::vector<std::string>&& notices) {
+std::vector<CellCount> IgnoredTally::summary() const {
+  std::vector<CellCount> out;
+  for (const auto& entry : counts_) {
+    const Entry& e = entry.second;
+    auto same = std::find_if(out.begin(), out.end(), [&](const CellCount& c) { return c.noun == e.noun; });
+    if (same != out.end()) {
+      same->count += e.count;
+    } else {
+      out.push_back({e.noun, e.count});
+    }
+  }
+  return out;
+}
+
+std::string plural_noun(std::string_view singular) {
+  const auto ends_with = [&](std::string_view tail) {
+    return singular.size() >= tail.size() && singular.substr(singular.size() - tail.size()) == tail;
+  };
+  std::string s(singular);
+  // "element of type 99" -> "elements of type 99"
+  if (const std::size_t of = s.find(" of "); of != std::string::npos) {
+    return plural_noun(s.substr(0, of)) + s.substr(of);
+  }
+  if (ends_with("hedron")) return s.substr(0, s.size() - 2) + "a";
+  if (ends_with("ertex")) return s.substr(0, s.size() - 2) + "ices";
+  if (ends_with("x") || ends_with("s")) return s + "es";
+  return s + "s";
+}
+
+ReadResult make_result(ErrorSink& sink, RawMesh&& mesh, std::vector<std::string>&& notices,
+                       const IgnoredTally* ignored) {
   ReadResult result;
   if (sink.failed()) {
     result.error = sink.error();
   } else {
     result.mesh = std::move(mesh);
+    if (ignored != nullptr) result.ignored = ignored->summary();
   }
   result.notices = std::move(notices);
   return result;

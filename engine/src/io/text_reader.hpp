@@ -69,6 +69,10 @@ class LineReader {
   [[nodiscard]] bool at_end() const { return pos_ >= text_.size(); }
   // Keeps the position but reports `line` as the current line (end-of-file messages).
   void rewind_line_count(std::uint64_t line) { line_ = line; }
+  // Binary data from the start of the next line (binary MSH): the next `n` bytes in `bytes`,
+  // moving past them; false, moving nothing, when fewer remain. Line numbers go on counting the
+  // line ends inside the data, so they stay the file's.
+  bool take_bytes(std::size_t n, std::string_view& bytes);
 
  private:
   std::string_view text_;
@@ -98,6 +102,11 @@ class TokenReader {
   std::string_view rest_of_line();
   // Skips whole lines up to and including the next blank line (VTK's METADATA blocks).
   void skip_past_blank_line();
+  // Binary data after a keyword line (legacy VTK BINARY): skips the rest of the current line
+  // and its end, then returns the next `n` bytes in `bytes` and moves past them; false, moving
+  // nothing, when the line has no end or fewer bytes remain. Line numbers go on counting the
+  // line ends inside the data, so they stay the file's.
+  bool take_binary(std::size_t n, std::string_view& bytes);
 
  private:
   void skip_space();
@@ -140,18 +149,33 @@ class NodeIdMap {
   std::unordered_map<std::int64_t, std::uint32_t> map_;
 };
 
-// Counts ignored elements by kind, for one notice per kind in a stable order.
+// Counts ignored elements by kind, for one notice per kind in a stable order, and for the
+// summary of a file that held no tets ("27 hexahedra, no tetrahedra").
 class IgnoredTally {
  public:
-  void add(std::string kind, std::uint64_t n = 1) { counts_[std::move(kind)] += n; }
+  // `kind` as a notice names it ("elements of type 5 (hexahedron)"), `noun` as a summary does
+  // (singular: "hexahedron"); an empty noun means the kind.
+  void add(std::string kind, std::uint64_t n = 1, std::string noun = {});
   // "ignored 12 elements of type 2 (triangle)" style notices, one per kind.
   void emit(std::vector<std::string>& notices) const;
+  // Counts by noun, merged, in the order of their kinds.
+  [[nodiscard]] std::vector<CellCount> summary() const;
 
  private:
-  std::map<std::string, std::uint64_t> counts_;
+  struct Entry {
+    std::uint64_t count = 0;
+    std::string noun;
+  };
+  std::map<std::string, Entry> counts_;
 };
 
-ReadResult make_result(ErrorSink& sink, RawMesh&& mesh, std::vector<std::string>&& notices);
+// "hexahedron" -> "hexahedra", "vertex" -> "vertices", "triangle" -> "triangles".
+std::string plural_noun(std::string_view singular);
+
+// The result of a reader: the error if `sink` failed, else the mesh; with the summary of
+// `ignored` (when given) for a caller that needs to say what a file without tets held.
+ReadResult make_result(ErrorSink& sink, RawMesh&& mesh, std::vector<std::string>&& notices,
+                       const IgnoredTally* ignored = nullptr);
 SurfaceReadResult make_surface_result(ErrorSink& sink, SurfaceMesh&& surface,
                                       std::vector<std::string>&& notices);
 

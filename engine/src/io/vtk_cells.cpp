@@ -4,8 +4,6 @@
 
 namespace tetcut::io_detail {
 
-namespace {
-
 std::string_view vtk_type_name(std::int64_t type) {
   switch (type) {
     case 1: return "vertex";
@@ -31,12 +29,32 @@ std::string_view vtk_type_name(std::int64_t type) {
   }
 }
 
-}  // namespace
+std::string vtk_type_noun(std::int64_t type) {
+  const std::string_view name = vtk_type_name(type);
+  return name.empty() ? "cell of VTK type " + std::to_string(type) : std::string(name);
+}
+
+void ignore_vtk_cell(IgnoredTally& ignored, std::int64_t type) {
+  std::string kind = "cells of VTK type " + std::to_string(type);
+  const std::string_view name = vtk_type_name(type);
+  if (!name.empty()) kind += " (" + std::string(name) + ")";
+  ignored.add(std::move(kind), 1, vtk_type_noun(type));
+}
+
+bool append_cell_ends(ErrorSink& sink, const std::vector<std::int64_t>& ends, std::uint64_t line, VtkCells& cells) {
+  for (std::size_t c = 0; c < ends.size(); ++c) {
+    if (ends[c] < 0 || static_cast<std::uint64_t>(ends[c]) < cells.offsets.back() ||
+        static_cast<std::uint64_t>(ends[c]) > cells.connectivity.size()) {
+      return sink.fail(line, "offsets not increasing within the connectivity at cell " + std::to_string(c));
+    }
+    cells.offsets.push_back(static_cast<std::uint64_t>(ends[c]));
+  }
+  return true;
+}
 
 bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
                        std::uint64_t line, std::vector<std::array<std::uint32_t, 4>>& tets,
-                       std::vector<std::string>& notices) {
-  IgnoredTally ignored;
+                       IgnoredTally& ignored, std::vector<std::string>& notices) {
   std::uint64_t second_order = 0;
   const std::size_t n = cells.types.size();
   if (cells.offsets.size() != n + 1) {
@@ -53,10 +71,7 @@ bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num
     }
     const std::uint64_t size = end - begin;
     if (type != kVtkTetra && type != kVtkQuadraticTetra) {
-      std::string kind = "cells of VTK type " + std::to_string(type);
-      const std::string_view name = vtk_type_name(type);
-      if (!name.empty()) kind += " (" + std::string(name) + ")";
-      ignored.add(std::move(kind));
+      ignore_vtk_cell(ignored, type);
       continue;
     }
     const std::uint64_t expected = type == kVtkTetra ? 4 : 10;
@@ -82,8 +97,50 @@ bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num
     notices.push_back("read " + std::to_string(second_order) +
                       " quadratic tetrahedra (VTK type 24) as their 4 corner points");
   }
-  ignored.emit(notices);
   return true;
+}
+
+bool vtk_faces_to_triangles(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
+                            std::uint64_t line, bool strips, SurfaceMesh& surface,
+                            std::uint64_t& polygons_split, std::uint64_t& strips_split) {
+  std::vector<std::uint32_t> corners;
+  for (std::size_t c = 0; c + 1 < cells.offsets.size(); ++c) {
+    const std::uint64_t at = cells.lines.empty() ? line : cells.lines[c];
+    const std::uint64_t begin = cells.offsets[c];
+    const std::uint64_t end = cells.offsets[c + 1];
+    if (end < begin || end > cells.connectivity.size()) {
+      return sink.fail(at, "cell " + std::to_string(c) + ": offsets out of range of the connectivity");
+    }
+    if (end - begin < 3) {
+      return sink.fail(at, std::string(strips ? "triangle strip " : "polygon ") + std::to_string(c) + " has " +
+                               std::to_string(end - begin) + " points, fewer than 3");
+    }
+    corners.clear();
+    for (std::uint64_t k = begin; k < end; ++k) {
+      const std::int64_t id = cells.connectivity[k];
+      if (id < 0 || static_cast<std::uint64_t>(id) >= num_points) {
+        return sink.fail(at, "point id " + std::to_string(id) + " not defined (" + std::to_string(num_points) + " points)");
+      }
+      corners.push_back(static_cast<std::uint32_t>(id));
+    }
+    if (!strips) {
+      add_polygon(surface, corners, polygons_split);
+      continue;
+    }
+    for (std::size_t k = 0; k + 2 < corners.size(); ++k) {
+      if (k % 2 == 0) surface.triangles.push_back({corners[k], corners[k + 1], corners[k + 2]});
+      else surface.triangles.push_back({corners[k + 1], corners[k], corners[k + 2]});
+    }
+    ++strips_split;
+  }
+  return true;
+}
+
+void surface_notices(std::uint64_t polygons_split, std::uint64_t strips_split, const IgnoredTally& ignored,
+                     std::vector<std::string>& notices) {
+  polygon_notice(polygons_split, notices);
+  if (strips_split > 0) notices.push_back("split " + std::to_string(strips_split) + " triangle strips into triangles");
+  ignored.emit(notices);
 }
 
 }  // namespace tetcut::io_detail

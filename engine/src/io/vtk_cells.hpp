@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "text_reader.hpp"
@@ -22,9 +23,32 @@ struct VtkCells {
   std::vector<std::uint64_t> lines;           // line of each cell, or empty (then `line` below)
 };
 
-// Appends the tets of `cells` (point ids checked against num_points); notices for the rest.
+// "triangle", "hexahedron", ... or "" for a type we do not name.
+std::string_view vtk_type_name(std::int64_t type);
+// The noun a summary uses for cells of `type` ("hexahedron", "cell of VTK type 99").
+std::string vtk_type_noun(std::int64_t type);
+// Counts one ignored cell of `type` in `ignored` ("cells of VTK type 12 (hexahedron)").
+void ignore_vtk_cell(IgnoredTally& ignored, std::int64_t type);
+
+// VTK XML's offsets are where each cell ends: appends them to cells.offsets, checking that
+// they increase within the connectivity (an error at `line` otherwise).
+bool append_cell_ends(ErrorSink& sink, const std::vector<std::int64_t>& ends, std::uint64_t line, VtkCells& cells);
+
+// Appends the tets of `cells` (point ids checked against num_points); the other cells go to
+// `ignored`, a notice for quadratic tets to `notices`.
 bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
                        std::uint64_t line, std::vector<std::array<std::uint32_t, 4>>& tets,
-                       std::vector<std::string>& notices);
+                       IgnoredTally& ignored, std::vector<std::string>& notices);
+
+// Appends the triangles of polygons (`strips` false: each a fan) or of triangle strips (true:
+// each consecutive triple, every other one turned so that all face the same way); point ids are
+// checked against num_points. Counts the polygons with more than 3 corners and the strips.
+bool vtk_faces_to_triangles(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
+                            std::uint64_t line, bool strips, SurfaceMesh& surface,
+                            std::uint64_t& polygons_split, std::uint64_t& strips_split);
+
+// The notices of a VTK surface: polygons and strips split, cells ignored.
+void surface_notices(std::uint64_t polygons_split, std::uint64_t strips_split, const IgnoredTally& ignored,
+                     std::vector<std::string>& notices);
 
 }  // namespace tetcut::io_detail
