@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # ctest ci.packages: the machines (ci/deps) and the ClusterFuzzLite build image
 # (.clusterfuzzlite/Dockerfile) install their Debian packages from the one list,
-# ci/packages.txt, through ci/packages; the image's packages are among the machines'; and the
-# image has what fuzz/oss_fuzz_build.sh calls.
+# ci/packages.txt, through ci/packages; the image's packages are among the machines'; the
+# image has what fuzz/oss_fuzz_build.sh calls; and the image's Ubuntu is the one project.yaml
+# names for running the fuzzers.
 #   packages_test.sh SOURCE_DIR
 set -uo pipefail
 src=${1:?usage: packages_test.sh SOURCE_DIR}
@@ -28,6 +29,18 @@ done
 for need in cmake:cmake ninja:ninja-build zip:zip libtet:libtet1.5-dev cgal:libcgal-dev; do
   printf '%s\n' "${image[@]}" | grep -qx "${need#*:}" || fail "the image lacks ${need#*:} (${need%%:*})"
 done
+# The image's Ubuntu and the one ClusterFuzzLite runs the fuzzers on are the same, and the
+# workflows check out the repository before building, so that the action reads project.yaml.
+base=$(sed -nE 's|^FROM gcr.io/oss-fuzz-base/base-builder:?([^ ]*).*|\1|p' .clusterfuzzlite/Dockerfile)
+if [[ -n $base ]]; then
+  grep -qx "base_os_version: $base" .clusterfuzzlite/project.yaml ||
+    fail "the Dockerfile builds on $base but project.yaml does not say base_os_version: $base"
+  for wf in .github/workflows/cflite_*.yml; do
+    builds=$(grep -c 'clusterfuzzlite/actions/build_fuzzers' "$wf")
+    checkouts=$(grep -c 'uses: actions/checkout' "$wf")
+    ((checkouts >= builds)) || fail "$wf builds fuzzers $builds times after $checkouts checkouts"
+  done
+fi
 ci/packages --for nowhere >/dev/null 2>&1 && fail "ci/packages accepted an unknown place"
 ((status == 0)) && echo "one package list: ${#deps[@]} for ci/deps, ${#image[@]} of them for the image"
 exit $status
