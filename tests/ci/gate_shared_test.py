@@ -13,13 +13,7 @@ import tempfile
 
 import yaml
 
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
+from checks import check, verdict  # noqa: E402 (this folder is on sys.path: the script's own)
 
 
 def commands(lines):
@@ -70,10 +64,7 @@ def main(src):
               "the Markdown report does not give the bisect command of the figure over budget")
         check("cut p50" not in text.split("To find the commit")[-1],
               "the report asks to bisect a figure within budget")
-    if failures:
-        return 1
-    print("ci.yml and .ci/run share ci/test and ci/gate")
-    return 0
+    return verdict("ci.yml and .ci/run share ci/test and ci/gate")
 
 
 if __name__ == "__main__":
