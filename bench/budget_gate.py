@@ -8,8 +8,13 @@ missing from the results or a file cannot be read.
 A figure reads the `median` aggregate of its benchmark when the run had
 repetitions (robust to a noisy neighbour on a 2-core machine), else the single
 run's value.
+
+--markdown FILE also writes the table as Markdown (ci/gate's report, uploaded by
+CI), with the `ci/bisect --budget` command that finds the commit that pushed each
+figure over budget.
 """
 import json
+import os
 import sys
 
 
@@ -32,14 +37,39 @@ def measured_value(results, figure):
     return float(chosen[figure["field"]])
 
 
+def take_option(argv, name):
+    """Removes `name VALUE` from argv; returns (argv, VALUE or None)."""
+    if name not in argv:
+        return argv, None
+    i = argv.index(name)
+    if i + 1 >= len(argv):
+        return argv, None
+    return argv[:i] + argv[i + 2:], argv[i + 1]
+
+
+def write_markdown(path, rows, summary):
+    lines = ["| figure | measured | budget | margin | status |", "|---|---|---|---|---|"]
+    lines += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+    lines += ["", summary]
+    over = [r[0] for r in rows if r[4] == "OVER BUDGET"]
+    if over:
+        lines += ["", "To find the commit that pushed a figure over budget (instruction counts, so"
+                  " the machine's noise does not matter; see README, \"Using tetcut in your CI\"):", ""]
+        # The unit in parentheses is left out: ci/bisect matches a figure by the start of its name.
+        lines += [f"    ci/bisect --budget \"{name.split(' (')[0]}\" --good LAST_GOOD_COMMIT" for name in over]
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(tmp, path)
+
+
 def main(argv):
-    skip = set()
-    if "--skip-missing" in argv:
-        i = argv.index("--skip-missing")
-        skip = set(argv[i + 1].split(","))
-        argv = argv[:i] + argv[i + 2:]
+    argv, skip_arg = take_option(argv, "--skip-missing")
+    skip = set(skip_arg.split(",")) if skip_arg else set()
+    argv, markdown = take_option(argv, "--markdown")
     if len(argv) != 3:
-        print("usage: budget_gate.py RESULTS.json BUDGETS.json [--skip-missing BENCH,...]", file=sys.stderr)
+        print("usage: budget_gate.py RESULTS.json BUDGETS.json [--skip-missing BENCH,...] [--markdown FILE]",
+              file=sys.stderr)
         return 2
     results = load(argv[1], "results")
     budgets = load(argv[2], "budgets")
@@ -71,7 +101,10 @@ def main(argv):
     for r in [header] + rows:
         print("  ".join(str(c).ljust(w) for c, w in zip(r, widths)))
     skipped = sum(1 for r in rows if r[4] == "skipped")
-    print(f"budget gate: {len(rows) - failed - missing - skipped} within budget, {failed} over, {missing} missing, {skipped} skipped")
+    summary = f"budget gate: {len(rows) - failed - missing - skipped} within budget, {failed} over, {missing} missing, {skipped} skipped"
+    print(summary)
+    if markdown:
+        write_markdown(markdown, rows, summary)
     if missing:
         return 2
     return 1 if failed else 0

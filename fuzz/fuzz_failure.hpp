@@ -5,7 +5,8 @@
 //
 // The first word after "tetcut-fuzz:" is the property's id (an invariant I1-I9 of the design, or
 // one of the harness's own: reader-contract, round-trip, interpolation, checker-differential,
-// refused-split, unresolved-combined, rollback-changed-mesh, mesh-queries); ci/fuzz-nightly
+// refused-split, unresolved-combined, rollback-changed-mesh, mesh-queries; planted-bug, the switched-off
+// bug of planted_bug.hpp that the tests of triage switch on); ci/fuzz-nightly
 // deduplicates crashes by it and by the top stack frames, and reads the operation's index and
 // name from the same line.
 //
