@@ -191,6 +191,7 @@ void Refiner::reserve(std::uint32_t tets) {
   reserve_touched(created_, 4096);
   reserve_touched(shell_, 256);
   reserve_touched(edges_, 2048);
+  seen_.reserve(8192);
 }
 
 }  // namespace tetcut

@@ -41,6 +41,7 @@ void SetRemovalWorkspace::reserve(std::uint32_t tets) {
   for (auto* v : {&shell_, &queue_, &ring_, &group_}) detail::reserve_touched(*v, 512);
   detail::reserve_touched(depth_, 512);
   detail::reserve_touched(at_vertex_, 2048);
+  edges_seen_.reserve(4096);
 }
 
 void SetRemovalWorkspace::mark(const TetMesh& mesh, std::span<const TetId> set) {

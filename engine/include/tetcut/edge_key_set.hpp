@@ -21,6 +21,11 @@ class EdgeKeySet {
     size_ = 0;
   }
 
+  // Room for this many edges without growing (the table is allocated and written now).
+  void reserve(std::size_t edges) {
+    while ((edges + 1) * 2 > slots_.size()) grow();
+  }
+
   // Inserts the edge; returns false when it was already there.
   bool insert(VertId a, VertId b) {
     if ((size_ + 1) * 2 > slots_.size()) grow();
