@@ -3,7 +3,8 @@
 
 Prints one row per gated figure (figure, measured, budget, margin) and exits
 0 when every figure is within budget, 1 when any exceeds it, 2 when a figure is
-missing from the results or a file cannot be read.
+missing from the results, was measured with another toolchain than the one its
+budget records (the instruction count), or a file cannot be read.
 
 A figure reads the `median` aggregate of its benchmark when the run had
 repetitions (robust to a noisy neighbour on a 2-core machine), else the single
@@ -27,14 +28,29 @@ def load(path, what):
         sys.exit(2)
 
 
-def measured_value(results, figure):
+def measured_entry(results, figure):
     runs = [b for b in results.get("benchmarks", []) if b.get("run_name", b.get("name")) == figure["benchmark"]]
     medians = [b for b in runs if b.get("aggregate_name") == "median"]
     plain = [b for b in runs if b.get("run_type", "iteration") == "iteration"]
-    chosen = medians[0] if medians else (plain[0] if plain else None)
+    return medians[0] if medians else (plain[0] if plain else None)
+
+
+def measured_value(results, figure):
+    chosen = measured_entry(results, figure)
     if chosen is None or figure["field"] not in chosen:
         return None
     return float(chosen[figure["field"]])
+
+
+def toolchain_mismatch(results, figure):
+    """A figure calibrated with a recorded toolchain (the instruction count: deterministic for
+    one compiler, flags and libraries, meaningless across them) is only compared with results
+    taken with the same one. Returns the results' toolchain when it differs, else None."""
+    if "toolchain" not in figure:
+        return None
+    entry = measured_entry(results, figure) or {}
+    measured = entry.get("toolchain", "unknown")
+    return None if measured == figure["toolchain"] else measured
 
 
 def take_option(argv, name):
@@ -73,7 +89,7 @@ def main(argv):
         return 2
     results = load(argv[1], "results")
     budgets = load(argv[2], "budgets")
-    rows, failed, missing = [], 0, 0
+    rows, failed, missing, mismatched = [], 0, 0, []
     for figure in budgets.get("figures", []):
         value = measured_value(results, figure)
         if "max" in figure:
@@ -86,6 +102,13 @@ def main(argv):
         if value is None:
             missing += 1
             rows.append((figure["name"], "missing", f"{sign} {bound:g}", "", "MISSING"))
+            continue
+        other = toolchain_mismatch(results, figure)
+        if other is not None:
+            # Not a pass: the count was taken with another toolchain and says nothing about
+            # this change. Recalibrate on the new toolchain instead (README, "Recalibrating").
+            mismatched.append((figure["name"], other))
+            rows.append((figure["name"], f"{value:.4g}", f"{sign} {bound:g}", "", "OTHER TOOLCHAIN"))
             continue
         ok = ok_cmp(value, bound)
         failed += not ok
@@ -101,11 +124,17 @@ def main(argv):
     for r in [header] + rows:
         print("  ".join(str(c).ljust(w) for c, w in zip(r, widths)))
     skipped = sum(1 for r in rows if r[4] == "skipped")
-    summary = f"budget gate: {len(rows) - failed - missing - skipped} within budget, {failed} over, {missing} missing, {skipped} skipped"
+    summary = (f"budget gate: {len(rows) - failed - missing - skipped - len(mismatched)} within budget, {failed} over, "
+               f"{missing} missing, {skipped} skipped, {len(mismatched)} on another toolchain")
     print(summary)
+    for name, other in mismatched:
+        figure = next(f for f in budgets["figures"] if f["name"] == name)
+        print(f"budget_gate: '{name}' was calibrated with\n  {figure['toolchain']}\nbut this build is\n  {other}\n"
+              "the counts cannot be compared: recalibrate with `ci/bench --instructions --recalibrate-instructions`"
+              " on an idle machine and commit bench/budgets.json", file=sys.stderr)
     if markdown:
         write_markdown(markdown, rows, summary)
-    if missing:
+    if missing or mismatched:
         return 2
     return 1 if failed else 0
 

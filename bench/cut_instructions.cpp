@@ -1,21 +1,21 @@
 // The deterministic companion of the per-cut timings (issue 7): a fixed cautery sweep on the
 // bundled liver whose cuts run inside measured_cuts(), so that
 //   valgrind --tool=callgrind --toggle-collect=measured_cuts ...
-// counts exactly the instructions of those cuts, whatever else the machine is doing. The
-// warm-up cuts run first, outside the function. Prints the number of measured cuts.
+// counts exactly the instructions of those cuts, whatever else the machine is doing. Every cut
+// of the sweep is counted, the first included (the Cutter prepares itself when constructed).
+// Prints the number of measured cuts and the toolchain it was built with.
 #include <cstdio>
 
 #include "bench_meshes.hpp"
+#include "toolchain.hpp"
 #include "tetcut/cut.hpp"
 
 namespace {
 
-constexpr int kWarmUp = 40;
-
 // Not inlined, so callgrind can toggle on it.
 [[gnu::noinline]] std::uint64_t measured_cuts(tetcut::Cutter& cutter, const std::vector<tetcut::Vec3>& centres) {
   std::uint64_t removed = 0;
-  for (std::size_t i = kWarmUp; i < centres.size(); ++i) removed += cutter.cut(centres[i]).tets_removed;
+  for (const tetcut::Vec3& c : centres) removed += cutter.cut(c).tets_removed;
   return removed;
 }
 
@@ -27,8 +27,8 @@ int main() {
   for (double z = 60; z <= 150; z += 15)
     for (double y = 40; y <= 180; y += 4) centres.push_back({95, y, z});
   tetcut::Cutter cutter(mesh, {.tool_diameter = 8.0});
-  for (int i = 0; i < kWarmUp; ++i) cutter.cut(centres[static_cast<std::size_t>(i)]);
   const std::uint64_t removed = measured_cuts(cutter, centres);
-  std::printf("measured_cuts %zu removed %llu\n", centres.size() - kWarmUp, static_cast<unsigned long long>(removed));
+  std::printf("measured_cuts %zu removed %llu\n", centres.size(), static_cast<unsigned long long>(removed));
+  std::printf("toolchain %s\n", TETCUT_TOOLCHAIN);
   return 0;
 }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "detail/planted_slowdown.hpp"
 #include "detail/reserve_touched.hpp"
 #include "tetcut/local_tables.hpp"
 #include "tetcut/quality.hpp"
@@ -165,6 +166,7 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
     return report;
   }
   const Clock::time_point t0 = Clock::now();
+  detail::planted_slowdown();
   const Ball tool{centre, params_.tool_diameter / 2};
   const double d_ref = params_.d_ref_factor * params_.tool_diameter;
 

@@ -1,0 +1,126 @@
+#!/usr/bin/python3
+"""Calibrates bench/budgets.json from measurements (README, "Recalibrating budgets").
+
+  calibrate_budgets.py instructions BUDGETS.json RESULTS.json
+      The instruction figure (kind "instructions"): its baseline becomes the count in RESULTS,
+      its bound the baseline plus the figure's tolerance (3 % unless it says otherwise), and it
+      records the toolchain the count was taken with; the gate refuses to compare across
+      toolchains. The count is deterministic for one toolchain, so one run is enough.
+
+  calibrate_budgets.py times BUDGETS.json RESULTS1.json RESULTS2.json ...
+      Every wall-time figure (kind "time") from N >= 5 runs of `ci/bench --quick` on the CI
+      machine, idle: its bound becomes the one-sided 99.9 % prediction bound for one more run,
+      under a log-normal model of the run-to-run spread (exp(m + t(0.999, N-1) s sqrt(1 + 1/N))
+      over the logs of the N medians). A figure that is steady gets a tight bound, a noisy one a
+      wide bound; a flat multiple of the median gave both the same. Figures of kind "count"
+      (exact: allocations, bytes per tet, unresolved) are left alone.
+
+Writes BUDGETS.json in place (through a temporary file) and prints what changed. Needs scipy
+(Debian's python3-scipy, installed by ci/deps): run it with /usr/bin/python3.
+"""
+import datetime
+import json
+import math
+import os
+import statistics
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from budget_gate import measured_entry, measured_value  # noqa: E402  (one reading of a result)
+
+
+def load(path):
+    with open(path, encoding="utf-8") as f:
+        return json.load(f)
+
+
+def save(path, budgets):
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write(format_budgets(budgets))
+    os.replace(tmp, path)
+
+
+def format_budgets(budgets):
+    """One figure a line, as the file has always been written (diffs stay readable)."""
+    lines = ["{", f'  "comment": {json.dumps(budgets["comment"])},', '  "figures": [']
+    figures = [json.dumps(f) for f in budgets["figures"]]
+    lines += ["    " + f + ("," if i + 1 < len(figures) else "") for i, f in enumerate(figures)]
+    lines += ["  ]", "}"]
+    return "\n".join(lines) + "\n"
+
+
+def round_up(x, digits=2):
+    if x <= 0:
+        return x
+    unit = 10 ** (math.floor(math.log10(x)) - digits + 1)
+    return math.ceil(x / unit) * unit
+
+
+def today():
+    return datetime.date.today().isoformat()
+
+
+def calibrate_instructions(budgets, results):
+    figure = next((f for f in budgets["figures"] if f.get("kind") == "instructions"), None)
+    if figure is None:
+        sys.exit("calibrate_budgets: no figure of kind 'instructions' in the budgets")
+    value = measured_value(results, figure)
+    entry = measured_entry(results, figure) or {}
+    if value is None or "toolchain" not in entry:
+        sys.exit("calibrate_budgets: the results hold no instruction count with its toolchain (ci/bench --instructions)")
+    tolerance = float(figure.get("tolerance_pct", 3))
+    old = figure.get("baseline")
+    figure["baseline"] = int(value)
+    figure["tolerance_pct"] = tolerance
+    figure["max"] = math.ceil(value * (1 + tolerance / 100))
+    figure["toolchain"] = entry["toolchain"]
+    figure["note"] = (f"callgrind count of bench/cut_instructions (every cut of the fixed liver sweep), calibrated {today()}; "
+                      f"gated at +{tolerance:g} %")
+    print(f"{figure['name']}: baseline {old} -> {figure['baseline']}, bound {figure['max']}")
+    print(f"  toolchain: {figure['toolchain']}")
+
+
+def calibrate_times(budgets, runs):
+    from scipy import stats  # python3-scipy
+
+    n = len(runs)
+    if n < 5:
+        sys.exit(f"calibrate_budgets: {n} runs; a prediction bound wants at least 5")
+    t = stats.t.ppf(0.999, n - 1)
+    for figure in budgets["figures"]:
+        if figure.get("kind") != "time":
+            continue
+        values = [measured_value(r, figure) for r in runs]
+        if any(v is None or v <= 0 for v in values):
+            print(f"{figure['name']}: missing or non-positive in some run, left alone")
+            continue
+        logs = [math.log(v) for v in values]
+        m, s = statistics.fmean(logs), statistics.stdev(logs)
+        bound = round_up(math.exp(m + t * s * math.sqrt(1 + 1 / n)))
+        old = figure["max"]
+        figure["max"] = bound
+        figure["calibration"] = (f"{today()}: {n} runs, median {statistics.median(values):.4g}, "
+                                 f"min {min(values):.4g}, max {max(values):.4g}; bound = 99.9 % prediction (log-normal)")
+        print(f"{figure['name']}: {old} -> {bound} (median {statistics.median(values):.4g}, spread {math.exp(s):.3f}x)")
+
+
+def main(argv):
+    if len(argv) < 4 or argv[1] not in ("instructions", "times"):
+        print(__doc__, file=sys.stderr)
+        return 2
+    budgets_path = argv[2]
+    budgets = load(budgets_path)
+    if argv[1] == "instructions":
+        if len(argv) != 4:
+            print(__doc__, file=sys.stderr)
+            return 2
+        calibrate_instructions(budgets, load(argv[3]))
+    else:
+        calibrate_times(budgets, [load(p) for p in argv[3:]])
+    save(budgets_path, budgets)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
