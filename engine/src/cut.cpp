@@ -69,6 +69,22 @@ void Cutter::prepare() {
   reserve_touched(refine_log_.vertices, kCutScratch);
 }
 
+void Cutter::reset() {
+  index_.build(mesh_, mesh_.mean_edge_length());
+  scale_ = measure_scale(mesh_);
+  remover_.reset();
+  // Marks of the old mesh must not match the next cut's generation.
+  for (auto* marks : {&made_, &selected_, &tissue_, &tried_, &queued_}) std::fill(marks->begin(), marks->end(), 0u);
+  generation_ = 0;
+  prepare();
+}
+
+Renumbering Cutter::compact() {
+  Renumbering map = mesh_.compact();
+  reset();
+  return map;
+}
+
 std::optional<std::string> Cutter::set_params(const CutParams& params) {
   if (auto invalid = validate(params)) return invalid;
   const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth;

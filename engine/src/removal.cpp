@@ -1,6 +1,7 @@
 // The removal dispatcher: one request, the strategy's stages in the paper's order (removal.hpp).
 #include "tetcut/removal.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <vector>
 
@@ -87,6 +88,11 @@ void Remover::reserve(std::uint32_t tets) {
   ws_->refinement.reserve();
   ws_->fallback.reserve();
   if (ws_->met_unresolved.size() < tets) ws_->met_unresolved.resize(tets, 0);
+}
+
+void Remover::reset() {
+  report_ = {};
+  std::fill(ws_->met_unresolved.begin(), ws_->met_unresolved.end(), std::uint8_t{0});
 }
 
 std::span<const TetId> Remover::last_removed() const { return ws_->net_removed; }

@@ -52,6 +52,14 @@ std::vector<Vec3> sweep(const Box& b, int cuts) {
 
 double diagonal(const Box& b) { return norm(b.hi - b.lo); }
 
+// The removal requests a fresh Cutter makes on `base` along `centres`.
+std::uint64_t removal_requests_of_fresh_sweep(const TetMesh& base, const std::vector<Vec3>& centres, double diameter) {
+  TetMesh mesh = base;
+  Cutter cutter(mesh, {.tool_diameter = diameter});
+  for (const Vec3& c : centres) cutter.cut(c);
+  return cutter.removal_report().requested;
+}
+
 class CorpusSweep : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CorpusSweep, EveryCutKeepsTheMeshValidAndRemovesEverythingRequested) {
@@ -170,6 +178,59 @@ TEST(Cut, TheSameSweepGivesTheSameHash) {
     return canonical_hash(mesh);
   };
   EXPECT_EQ(run(), run());
+}
+
+// A Cutter reset onto another mesh (assigned into the one it holds: a fuzzer's next input)
+// cuts exactly as a Cutter built on that mesh does, and so does one whose mesh was compacted
+// through it: the index never keeps ids of the old mesh.
+TEST(Cut, AResetCutterCutsAsAFreshOne) {
+  const TetMesh liver = load_corpus("liver-coarse.msh");
+  const TetMesh cylinder = load_corpus("cylinder.msh");
+  auto sweep_of = [](const TetMesh& m) {
+    const Box box = bounds(m);
+    return std::make_pair(sweep(box, 6), diagonal(box) / 20);
+  };
+  auto fresh = [&](const TetMesh& base) {
+    TetMesh mesh = base;
+    const auto [centres, diameter] = sweep_of(base);
+    Cutter cutter(mesh, {.tool_diameter = diameter});
+    std::uint32_t removed = 0;
+    for (const Vec3& c : centres) removed += cutter.cut(c).tets_removed;
+    return std::make_pair(canonical_hash(mesh), removed);
+  };
+
+  TetMesh mesh = liver;
+  auto [liver_centres, liver_diameter] = sweep_of(liver);
+  Cutter cutter(mesh, {.tool_diameter = liver_diameter});
+  for (const Vec3& c : liver_centres) cutter.cut(c);
+  EXPECT_EQ(canonical_hash(mesh), fresh(liver).first);
+
+  mesh = cylinder;  // the next case, into the same object
+  cutter.reset();
+  const auto [cylinder_centres, cylinder_diameter] = sweep_of(cylinder);
+  ASSERT_FALSE(cutter.set_params({.tool_diameter = cylinder_diameter}).has_value());
+  std::uint32_t removed = 0;
+  for (const Vec3& c : cylinder_centres) removed += cutter.cut(c).tets_removed;
+  EXPECT_GT(removed, 0u);
+  EXPECT_EQ(std::make_pair(canonical_hash(mesh), removed), fresh(cylinder));
+  EXPECT_EQ(cutter.removal_report().requested, removal_requests_of_fresh_sweep(cylinder, cylinder_centres, cylinder_diameter));
+  EXPECT_TRUE(testing::mesh_is_valid(mesh));
+
+  // Compacted through the Cutter, then cut again: valid, and as a fresh Cutter on the compacted mesh.
+  const std::uint32_t capacity_before = mesh.tet_capacity(), live = mesh.num_tets();
+  ASSERT_GT(capacity_before, live) << "the sweep left tombstones to compact";
+  const Renumbering map = cutter.compact();
+  EXPECT_EQ(map.tet_old_to_new.size(), capacity_before);
+  EXPECT_EQ(mesh.tet_capacity(), live);
+  const TetMesh compacted = mesh;
+  const Vec3 again = cylinder_centres.front();
+  const CutReport r = cutter.cut(again);
+  ASSERT_TRUE(r.ok) << r.failure;
+  TetMesh reference = compacted;
+  Cutter reference_cutter(reference, {.tool_diameter = cylinder_diameter});
+  reference_cutter.cut(again);
+  EXPECT_EQ(canonical_hash(mesh), canonical_hash(reference));
+  EXPECT_TRUE(testing::mesh_is_valid(mesh));
 }
 
 }  // namespace

@@ -90,6 +90,15 @@ class Cutter {
   // grown past that room, so that the cuts that follow do not reallocate.
   void prepare();
 
+  // After the mesh this Cutter holds was replaced (assigned another mesh: a fuzzer's next input,
+  // a simulator's next case) or renumbered: the index is rebuilt, the scale remeasured, the
+  // removal statistics and marks cleared, and prepare() run, all in the memory the Cutter
+  // already has (no reallocation unless the new mesh is larger). O(#T).
+  void reset();
+  // Compacts the mesh (TetMesh::compact(), ids renumbered densely) and resets this Cutter, so
+  // that its index never holds stale ids. Returns the renumbering.
+  Renumbering compact();
+
   // Fails (returns the message, keeps the old parameters) when validate() does.
   std::optional<std::string> set_params(const CutParams& params);
   [[nodiscard]] const CutParams& params() const { return params_; }

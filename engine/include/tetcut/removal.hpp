@@ -116,6 +116,9 @@ class Remover {
   // Sizes all per-tet scratch for meshes up to this capacity (see Cutter).
   void reserve(std::uint32_t tets);
   void reset_report() { report_ = {}; }
+  // For another mesh (or the same one assigned anew): the report and every per-tet mark of the
+  // old one are cleared; the workspaces keep their memory, so nothing is reallocated.
+  void reset();
   [[nodiscard]] const RemovalOptions& options() const { return options_; }
 
   // The net effect of the last remove(), sorted by id: ids live before it that it killed, and

@@ -39,8 +39,13 @@ class SpatialIndex {
   explicit SpatialIndex(double cell_size = 1.0) : cell_size_(cell_size) {}
 
   // Indexes every live tet: O(#T), once. Leaves room for half as many tets again, so that the
-  // operations that follow do not grow the index's arrays.
+  // operations that follow do not grow the index's arrays. Rebuilding reuses them.
   void build(const TetMesh& mesh);
+  // The same with another cell size (a Cutter reset onto a mesh of another scale).
+  void build(const TetMesh& mesh, double cell_size) {
+    cell_size_ = cell_size;
+    build(mesh);
+  }
 
   void insert(const TetMesh& mesh, TetId t);
   void erase(TetId t);
