@@ -25,6 +25,7 @@
 #include "tetcut/attributes.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/raw_mesh.hpp"
+#include "tetcut/raw_mesh_view.hpp"
 #include "tetcut/vec3.hpp"
 
 namespace tetcut {
@@ -190,6 +191,13 @@ class TetMesh {
   // #capacity by 4; a tombstone has kDeadTetMarker in its first entry.
   [[nodiscard]] std::span<const std::array<std::uint32_t, 4>> raw_tets() const { return tet_verts_; }
   [[nodiscard]] std::span<const Vec3> positions() const { return positions_; }
+  // Everything above plus the adjacency, vertex->tet references, boundary counts and counts,
+  // as the arrays the independent checker reads (raw_mesh_view.hpp). O(1).
+  [[nodiscard]] RawMeshView raw_view() const {
+    static_assert(kNoNeighbour == kNoRawRef && kNoTet.value == kNoRawRef);  // pack() matches: tests/invariants
+    return {positions_, tet_verts_, true,
+            EngineRecordsView{tet_adj_, vert_tet_, vert_boundary_faces_, live_tets_, live_vertices_, attributes_.size()}};
+  }
   // Live tets and live vertices, renumbered densely (vertices in id order).
   [[nodiscard]] RawMesh to_raw() const;
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "tetcut/raw_mesh_view.hpp"  // kDeadTetMarker, and the view the checker reads
 #include "tetcut/vec3.hpp"
 
 namespace tetcut {
@@ -13,9 +14,10 @@ namespace tetcut {
 struct RawMesh {
   std::vector<Vec3> positions;                    // #V positions
   std::vector<std::array<std::uint32_t, 4>> tets;  // #T by 4 vertex indices, 0-based
-};
 
-// Marks a dead tet in a raw tet array (TetMesh::raw_tets() keeps tombstones): its first entry.
-inline constexpr std::uint32_t kDeadTetMarker = 0xFFFFFFFFu;
+  // A file as read is already raw arrays: it converts to the checker's view like a string to a
+  // string_view (no tombstones, no engine records).
+  operator RawMeshView() const { return {positions, tets}; }  // NOLINT(google-explicit-constructor)
+};
 
 }  // namespace tetcut

@@ -7,7 +7,7 @@
 namespace tetcut {
 
 // Sign of det(b - a, c - a, d - a): +1 when (a, b, c, d) is a positively oriented tet (tetcut's
-// convention, see local_tables.hpp), -1 when inverted, 0 when flat. Exact.
+// convention), -1 when inverted, 0 when flat. Exact.
 int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 // det(b - a, c - a, d - a) / 6 in plain floating point: the signed volume, for measurements only.
