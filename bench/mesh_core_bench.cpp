@@ -45,7 +45,7 @@ void BM_FullCheck(benchmark::State& state) {
     return;
   }
   for (auto _ : state) {
-    tetcut::invariants::CheckReport report = tetcut::invariants::check_mesh(*built.mesh);
+    tetcut::invariants::CheckReport report = tetcut::invariants::check_mesh(built.mesh->raw_view());
     if (!report.ok()) state.SkipWithError("check found a violation on a valid mesh");
     benchmark::DoNotOptimize(report);
   }

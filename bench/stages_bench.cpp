@@ -162,7 +162,7 @@ void BM_LocalCheck(benchmark::State& state) {
   tetcut::TetMesh mesh = tetcut::bench::corpus_mesh("liver.msh");
   const Bounds b = bounds(mesh);
   tetcut::Cutter cutter(mesh, {.tool_diameter = 8.0});
-  tetcut::invariants::LocalChecker local(mesh);
+  tetcut::invariants::LocalChecker local(mesh.raw_view());
   double y = b.lo.y + 20;
   std::uint64_t failures = 0;
   for (auto _ : state) {
@@ -170,7 +170,7 @@ void BM_LocalCheck(benchmark::State& state) {
     y = y + 4.0 > b.hi.y - 20 ? b.lo.y + 20 : y + 4.0;
     cutter.cut({95, y, 100});
     state.ResumeTiming();
-    failures += !local.after_operation(mesh, cutter.last_removed(), cutter.last_created()).ok();
+    failures += !local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created()).ok();
   }
   state.counters["violations"] = static_cast<double>(failures);
 }

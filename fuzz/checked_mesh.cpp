@@ -13,7 +13,7 @@ namespace tetcut::fuzz {
 namespace inv = tetcut::invariants;
 
 CheckedMesh::CheckedMesh(TetMesh mesh) : mesh_(std::move(mesh)), expected_volume_(mesh_.total_volume()) {
-  local_.emplace(mesh_);
+  local_.emplace(mesh_.raw_view());
   const char* env = std::getenv("TETCUT_FUZZ_TRACE");
   tracing_ = env != nullptr && *env != '\0' && *env != '0';
   if (tracing_) trace(0, 0);
@@ -49,7 +49,7 @@ void CheckedMesh::end(std::span<const TetId> removed, std::span<const TetId> cre
   options.level = inv::CheckLevel::kLocal;
   options.operation = name_;
   if (tracing_) trace(removed.size(), created.size());
-  report(local_->after_operation(mesh_, removed, created, options, volume_change), "local");
+  report(local_->after_operation(mesh_.raw_view(), removed, created, options, volume_change), "local");
 }
 
 void CheckedMesh::describe(const std::string& arguments) {
@@ -65,7 +65,7 @@ void CheckedMesh::trace(std::size_t removed, std::size_t created) const {
 
 void CheckedMesh::end_renumbered() {
   if (tracing_) trace(0, 0);
-  local_.emplace(mesh_);
+  local_.emplace(mesh_.raw_view());
   full_check();
 }
 
@@ -75,7 +75,7 @@ void CheckedMesh::full_check() {
   options.operation = name_;
   // An empty mesh has nothing to compare a relative tolerance with.
   if (mesh_.num_tets() > 0) options.expected_volume = expected_volume_;
-  report(inv::check_mesh(mesh_, options), "full");
+  report(inv::check_mesh(mesh_.raw_view(), options), "full");
 }
 
 void CheckedMesh::require(bool condition, std::string_view property, const std::string& detail) const {

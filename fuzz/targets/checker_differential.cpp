@@ -101,7 +101,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   BuildResult built = build_mesh(fuzz::consume_box_mesh(input, kMaxBoxCells));
   if (!built.ok()) fuzz::fail("build", 0, "build box", "make_box_mesh gave a mesh build_mesh refuses");
   TetMesh mesh = std::move(*built.mesh);
-  inv::LocalChecker local(mesh);
+  inv::LocalChecker local(mesh.raw_view());
   Workspace ws;
   // As in CheckedMesh: TETCUT_FUZZ_TRACE=1 prints each edit and the verdict, for triage.
   const char* env = std::getenv("TETCUT_FUZZ_TRACE");
@@ -151,9 +151,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     inv::CheckOptions options;
     options.level = inv::CheckLevel::kLocal;
     options.operation = edit_name(edit);
-    const inv::CheckReport local_report = local.after_operation(mesh, ws.removed, ws.created, options);
+    const inv::CheckReport local_report = local.after_operation(mesh.raw_view(), ws.removed, ws.created, options);
     options.level = inv::CheckLevel::kFull;
-    const inv::CheckReport full_report = inv::check_mesh(mesh, options);
+    const inv::CheckReport full_report = inv::check_mesh(mesh.raw_view(), options);
     const bool agree = local_report.ok() == full_report.ok() &&
                        has(local_report, inv::Invariant::kI5VertexShell) == has(full_report, inv::Invariant::kI5VertexShell) &&
                        has(local_report, inv::Invariant::kI6EdgeShell) == has(full_report, inv::Invariant::kI6EdgeShell);

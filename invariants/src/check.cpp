@@ -5,6 +5,7 @@
 #include <string>
 
 #include "boundary_self_intersection.hpp"
+#include "engine_records.hpp"
 #include "report_builder.hpp"
 #include "tet_checks.hpp"
 #include "vertex_link.hpp"
@@ -63,16 +64,9 @@ namespace {
 
 using detail::RawTet;
 using detail::ReportBuilder;
+using detail::str;
 
-std::string str(std::uint64_t x) { return std::to_string(x); }
-
-struct Source {
-  std::span<const RawTet> tets;
-  std::span<const Vec3> positions;
-  bool has_tombstones = false;  // TetMesh::raw_tets(): kDeadTetMarker in entry 0 marks a dead tet
-};
-
-void check_boundary_geometry(const Source& src, std::span<const detail::BoundaryTriangle> boundary,
+void check_boundary_geometry(const RawMeshView& src, std::span<const detail::BoundaryTriangle> boundary,
                              const ReportBuilder& so_far, ReportBuilder& report, CheckReport& out) {
   // The surface test needs a consistently oriented 2-manifold boundary; otherwise the
   // combinatorial invariants already say what is wrong.
@@ -105,10 +99,11 @@ void check_boundary_geometry(const Source& src, std::span<const detail::Boundary
   report.add_count(Invariant::kI3Conformity, found.pair_count - found.first_pairs.size());
 }
 
-CheckReport run_full(const Source& src, const TetMesh* engine, const CheckOptions& options) {
+CheckReport run_full(const RawMeshView& src, const CheckOptions& options) {
   CheckReport out;
   out.operation = options.operation;
   ReportBuilder report;
+  const EngineRecordsView* engine = detail::usable_records(src, report);
   const auto tet_count = static_cast<std::uint32_t>(src.tets.size());
   const auto vertex_count = static_cast<std::uint32_t>(src.positions.size());
 
@@ -159,14 +154,7 @@ CheckReport run_full(const Source& src, const TetMesh* engine, const CheckOption
       link.check(ctx, v, shell);
       continue;
     }
-    // An unused vertex: the engine must consider it dead and off the boundary.
-    if (engine != nullptr && (engine->vertex_tet(VertId(v)).valid() || engine->boundary_face_count(VertId(v)) != 0)) {
-      report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
-        return "vertex " + str(v) + " is in no live tet, but the engine keeps it live (incident tet " +
-               (engine->vertex_tet(VertId(v)).valid() ? str(engine->vertex_tet(VertId(v)).value) : std::string("none")) +
-               ", " + str(engine->boundary_face_count(VertId(v))) + " boundary faces)";
-      });
-    }
+    if (engine != nullptr) detail::compare_unused_vertex(*engine, v, report);
   }
 
   // Pass 3: geometry of every tet that passed I1 and is not a duplicate.
@@ -182,18 +170,7 @@ CheckReport run_full(const Source& src, const TetMesh* engine, const CheckOption
                          options.volume_rel_tolerance, "the total volume", report);
   }
 
-  // I8: the engine's counts.
-  if (engine != nullptr) {
-    auto compare = [&](const char* what, std::uint64_t claimed, std::uint64_t actual) {
-      if (claimed == actual) return;
-      report.add(Invariant::kI8Bookkeeping, {}, {}, [&] {
-        return std::string("the engine's ") + what + " is " + str(claimed) + ", the tets give " + str(actual);
-      });
-    };
-    compare("tet count", engine->num_tets(), live_tets);
-    compare("vertex count", engine->num_vertices(), used_vertices);
-    compare("attribute array size", engine->attributes().size(), vertex_count);
-  }
+  if (engine != nullptr) detail::compare_counts(*engine, live_tets, used_vertices, vertex_count, report);
 
   if (exact) check_boundary_geometry(src, boundary, report, report, out);
   report.finish(out);
@@ -202,12 +179,12 @@ CheckReport run_full(const Source& src, const TetMesh* engine, const CheckOption
 
 }  // namespace
 
-CheckReport check_raw(const RawMesh& mesh, const CheckOptions& options) {
-  return run_full(Source{mesh.tets, mesh.positions, false}, nullptr, options);
+CheckReport check_raw(const RawMeshView& mesh, const CheckOptions& options) {
+  RawMeshView tets_only = mesh;
+  tets_only.engine.reset();
+  return run_full(tets_only, options);
 }
 
-CheckReport check_mesh(const TetMesh& mesh, const CheckOptions& options) {
-  return run_full(Source{mesh.raw_tets(), mesh.positions(), true}, &mesh, options);
-}
+CheckReport check_mesh(const RawMeshView& mesh, const CheckOptions& options) { return run_full(mesh, options); }
 
 }  // namespace tetcut::invariants

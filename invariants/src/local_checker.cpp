@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "engine_records.hpp"
 #include "report_builder.hpp"
 #include "tet_checks.hpp"
 #include "tetcut/invariants/check.hpp"
@@ -18,10 +19,10 @@ namespace tetcut::invariants {
 
 using detail::RawTet;
 using detail::ReportBuilder;
+using detail::str;
 
 namespace {
 constexpr RawTet kDeadTet{kDeadTetMarker, kDeadTetMarker, kDeadTetMarker, kDeadTetMarker};
-std::string str(std::uint64_t x) { return std::to_string(x); }
 
 bool references_in_range(const RawTet& q, std::size_t vertex_count) {
   return q[0] < vertex_count && q[1] < vertex_count && q[2] < vertex_count && q[3] < vertex_count;
@@ -37,9 +38,9 @@ LocalChecker::~LocalChecker() = default;
 LocalChecker::LocalChecker(LocalChecker&&) noexcept = default;
 LocalChecker& LocalChecker::operator=(LocalChecker&&) noexcept = default;
 
-LocalChecker::LocalChecker(const TetMesh& mesh) : scratch_(std::make_unique<Scratch>()) {
-  const auto raw = mesh.raw_tets();
-  const auto positions = mesh.positions();
+LocalChecker::LocalChecker(const RawMeshView& mesh) : scratch_(std::make_unique<Scratch>()) {
+  const auto raw = mesh.tets;
+  const auto positions = mesh.positions;
   known_tets_.assign(raw.begin(), raw.end());
   known_volume_.assign(raw.size(), 0.0);
   known_rounding_.assign(raw.size(), 0.0);
@@ -59,14 +60,15 @@ LocalChecker::LocalChecker(const TetMesh& mesh) : scratch_(std::make_unique<Scra
     if (!list.empty()) ++live_vertices_;
 }
 
-CheckReport LocalChecker::after_operation(const TetMesh& mesh, std::span<const TetId> removed,
-                                          std::span<const TetId> created, const CheckOptions& options,
+CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds removed, RawIds created,
+                                          const CheckOptions& options,
                                           std::optional<double> expected_volume_change) {
   CheckReport out;
   out.operation = options.operation;
   ReportBuilder report;
-  const auto raw = mesh.raw_tets();
-  const auto positions = mesh.positions();
+  const EngineRecordsView* engine = detail::usable_records(mesh, report);
+  const auto raw = mesh.tets;
+  const auto positions = mesh.positions;
   if (known_tets_.size() < raw.size()) {
     known_tets_.resize(raw.size(), kDeadTet);
     known_volume_.resize(raw.size(), 0.0);
@@ -90,16 +92,20 @@ CheckReport LocalChecker::after_operation(const TetMesh& mesh, std::span<const T
     }
   };
 
+  // I8: the operation's account of what it did does not match the mesh.
+  auto misreported = [&](std::uint32_t t, const char* claim, const char* fact) {
+    report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
+      return std::string("the operation reports ") + claim + " tet " + str(t) + ", " + fact;
+    });
+  };
+
   // Removed tets leave the index; their old vertices are remembered from it, not from the mesh.
   detail::VolumeSum removed_volume;
   double removed_abs = 0.0;
   double rounding = 0.0;  // what rounding alone can put into the volume change
-  for (TetId r : removed) {
-    const std::uint32_t t = r.value;
+  for (std::uint32_t t : removed) {
     if (t >= known_tets_.size() || known_tets_[t][0] == kDeadTetMarker) {
-      report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
-        return "the operation reports removing tet " + str(t) + ", which was not live";
-      });
+      misreported(t, "removing", "which was not live");
       continue;
     }
     for (std::uint32_t v : known_tets_[t]) {
@@ -123,18 +129,13 @@ CheckReport LocalChecker::after_operation(const TetMesh& mesh, std::span<const T
   detail::TetGeometryChecker geometry(options.radius_ratio_floor, report);
   detail::VolumeSum created_volume;
   double created_abs = 0.0;
-  for (TetId c : created) {
-    const std::uint32_t t = c.value;
+  for (std::uint32_t t : created) {
     if (t >= raw.size() || raw[t][0] == kDeadTetMarker) {
-      report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
-        return "the operation reports creating tet " + str(t) + ", which is not live in the mesh";
-      });
+      misreported(t, "creating", "which is not live in the mesh");
       continue;
     }
     if (known_tets_[t][0] != kDeadTetMarker) {
-      report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
-        return "the operation reports creating tet " + str(t) + ", which was already live and not removed";
-      });
+      misreported(t, "creating", "which was already live and not removed");
       continue;
     }
     const RawTet& q = raw[t];
@@ -154,14 +155,9 @@ CheckReport LocalChecker::after_operation(const TetMesh& mesh, std::span<const T
     created_abs += std::abs(known_volume_[t]);
     rounding += known_rounding_[t];
   }
-  for (TetId r : removed) {
-    const std::uint32_t t = r.value;
-    if (t < raw.size() && raw[t][0] != kDeadTetMarker && known_tets_[t][0] == kDeadTetMarker) {
-      report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
-        return "the operation reports removing tet " + str(t) + ", but it is still live in the mesh";
-      });
-    }
-  }
+  for (std::uint32_t t : removed)
+    if (t < raw.size() && raw[t][0] != kDeadTetMarker && known_tets_[t][0] == kDeadTetMarker)
+      misreported(t, "removing", "but it is still live in the mesh");
 
   // The shells of the touched vertices, in vertex order (the full level's order restricted).
   std::sort(touched.begin(), touched.end());
@@ -170,7 +166,7 @@ CheckReport LocalChecker::after_operation(const TetMesh& mesh, std::span<const T
   ctx.excluded = excluded_;
   ctx.touched_stamp = touched_stamp_.data();
   ctx.stamp = stamp_;
-  ctx.engine = &mesh;
+  ctx.engine = engine;
   ctx.report = &report;
   std::uint64_t shell_tets = 0;
   for (std::uint32_t v : touched) {
@@ -189,30 +185,14 @@ CheckReport LocalChecker::after_operation(const TetMesh& mesh, std::span<const T
         });
       }
     }
-    if (!shell.empty()) {
-      scratch_->link.check(ctx, v, shell);
-      continue;
-    }
-    if (mesh.vertex_tet(VertId(v)).valid() || mesh.boundary_face_count(VertId(v)) != 0) {
-      report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
-        return "vertex " + str(v) + " lost its last tet, but the engine keeps it live";
-      });
-    }
+    if (!shell.empty()) scratch_->link.check(ctx, v, shell);
+    else if (engine != nullptr) detail::compare_unused_vertex(*engine, v, report);
   }
   for (std::uint32_t v : touched)
     for (std::uint32_t t : vertex_to_tets_[v]) excluded_[t] = 0;
 
   // I8: counts, kept by the checker from the operations alone.
-  auto compare = [&](const char* what, std::uint64_t claimed, std::uint64_t actual) {
-    if (claimed == actual) return;
-    report.add(Invariant::kI8Bookkeeping, {}, {}, [&] {
-      return std::string("the engine's ") + what + " is " + str(claimed) + ", the checker's index gives " +
-             str(actual);
-    });
-  };
-  compare("tet count", mesh.num_tets(), live_tets_);
-  compare("vertex count", mesh.num_vertices(), live_vertices_);
-  compare("attribute array size", mesh.attributes().size(), positions.size());
+  if (engine != nullptr) detail::compare_counts(*engine, live_tets_, live_vertices_, positions.size(), report);
 
   const double change = created_volume.value() - removed_volume.value();
   if (expected_volume_change) {

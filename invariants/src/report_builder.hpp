@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -13,6 +14,14 @@
 #include "tetcut/invariants/check.hpp"
 
 namespace tetcut::invariants::detail {
+
+// Numbers in detail lines: ids and counts in decimal, doubles so that they read back exactly.
+inline std::string str(std::uint64_t x) { return std::to_string(x); }
+inline std::string num(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
 
 class ReportBuilder {
  public:

@@ -3,24 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <cstdio>
 #include <string>
 
+#include "tet_quality.hpp"
 #include "tetcut/predicates.hpp"
-#include "tetcut/quality.hpp"
 
 namespace tetcut::invariants::detail {
-namespace {
-
-std::string str(std::uint32_t x) { return std::to_string(x); }
-
-std::string num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
-}  // namespace
 
 bool check_references(std::uint32_t t, const RawTet& q, std::span<const Vec3> positions, ReportBuilder& report) {
   for (int i = 0; i < 4; ++i) {
@@ -83,10 +71,10 @@ void TetGeometryChecker::check(std::uint32_t t, const RawTet& q, std::span<const
              ") is " + (sign < 0 ? "inverted" : "flat") + " by the exact orientation predicate";
     });
   }
-  volume_.add(dot(b - a, cross(c - a, d - a)) / 6.0);
+  volume_.add(tet_volume(q, positions));
 
-  const double ratio = radius_ratio(a, b, c, d);
-  const double dihedral = min_dihedral_angle_deg(a, b, c, d);
+  const double ratio = tet_radius_ratio(a, b, c, d);
+  const double dihedral = tet_min_dihedral_deg(a, b, c, d);
   if (stats_.tets == 0) {
     stats_.min_radius_ratio = ratio;
     stats_.min_dihedral_deg = dihedral;

@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <string>
 
-#include "tetcut/local_tables.hpp"
-#include "tetcut/raw_mesh.hpp"
+#include "tet_tables.hpp"
 
 namespace tetcut::invariants::detail {
 namespace {
 
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
-
-std::string str(std::uint32_t x) { return std::to_string(x); }
 
 bool touched(const LinkContext& ctx, std::uint32_t w) {
   return ctx.touched_stamp == nullptr || ctx.touched_stamp[w] == ctx.stamp;
@@ -84,7 +81,7 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
     if (lv == 4) continue;  // a stale index entry; the caller's bookkeeping check reports it
     const auto i = static_cast<std::uint32_t>(shell_.size());
     shell_.push_back(t);
-    const std::uint8_t* local = kFaceVerts[lv];
+    const auto& local = kTetFaces[lv];
     const std::array<std::uint32_t, 3> tri{q[local[0]], q[local[1]], q[local[2]]};
     triangle_.push_back(tri);
     for (int p = 0; p < 3; ++p) {
@@ -141,17 +138,13 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
       ++boundary_count;
       if (boundary_faces_[ia] < 255) ++boundary_faces_[ia];
       if (boundary_faces_[ib] < 255) ++boundary_faces_[ib];
-      if (mine && ctx.engine != nullptr && ctx.engine->neighbour(TetId(t0), e0.face).valid()) {
-        const FaceRef got = ctx.engine->neighbour(TetId(t0), e0.face);
-        report.add(Invariant::kI2Adjacency, {t0, got.tet.value}, {v, a, b}, [&] {
-          return "face (" + str(v) + ", " + str(a) + ", " + str(b) + ") of tet " + str(t0) +
-                 " belongs to no other tet, but the engine gives it neighbour tet " + str(got.tet.value) +
-                 " face " + str(got.face);
-        });
+      if (mine && ctx.engine != nullptr) {
+        const TetFace face[] = {{t0, e0.face}};
+        compare_face(*ctx.engine, face, v, a, b, report);
       }
       if (mine && ctx.boundary != nullptr) {
         const RawTet& q = ctx.tets[t0];
-        const std::uint8_t* f = kFaceVerts[e0.face];
+        const auto& f = kTetFaces[e0.face];
         ctx.boundary->push_back({{q[f[0]], q[f[1]], q[f[2]]}, t0});
       }
     } else if (c == 2) {
@@ -163,22 +156,8 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
       wedge_parent_[find(wedge_parent_, wa0)] = find(wedge_parent_, wa1);
       wedge_parent_[find(wedge_parent_, wb0)] = find(wedge_parent_, wb1);
       if (mine && ctx.engine != nullptr) {
-        const FaceRef want0{TetId(t1), e1.face};
-        const FaceRef want1{TetId(t0), e0.face};
-        const FaceRef got0 = ctx.engine->neighbour(TetId(t0), e0.face);
-        const FaceRef got1 = ctx.engine->neighbour(TetId(t1), e1.face);
-        if (!(got0 == want0) || !(got1 == want1)) {
-          report.add(Invariant::kI2Adjacency, {t0, t1}, {v, a, b}, [&] {
-            const FaceRef& bad_got = !(got0 == want0) ? got0 : got1;
-            const std::uint32_t from = !(got0 == want0) ? t0 : t1;
-            const std::uint32_t want = !(got0 == want0) ? t1 : t0;
-            return "face (" + str(v) + ", " + str(a) + ", " + str(b) + ") is shared by tets " + str(t0) +
-                   " and " + str(t1) + ", but the engine's neighbour of tet " + str(from) + " there is " +
-                   (bad_got.valid() ? "tet " + str(bad_got.tet.value) + " face " + str(bad_got.face)
-                                    : std::string("the boundary")) +
-                   " instead of tet " + str(want);
-          });
-        }
+        const TetFace faces[] = {{t0, e0.face}, {t1, e1.face}};
+        compare_face(*ctx.engine, faces, v, a, b, report);
       }
     } else {
       bad_[ia] |= 2;
@@ -256,28 +235,7 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
   }
 
   // I8: the engine's O(1) classification and its shell seed.
-  if (ctx.engine != nullptr) {
-    const TetMesh& mesh = *ctx.engine;
-    const std::uint32_t claimed = mesh.boundary_face_count(VertId(v));
-    if (claimed != boundary_count) {
-      report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
-        return "vertex " + str(v) + ": the engine counts " + str(claimed) + " boundary faces, the tets give " +
-               str(boundary_count);
-      });
-    }
-    const TetId seed = mesh.vertex_tet(VertId(v));
-    bool seed_ok = seed.valid() && seed.value < ctx.tets.size();
-    if (seed_ok) {
-      const RawTet& q = ctx.tets[seed.value];
-      seed_ok = q[0] != kDeadTetMarker && (q[0] == v || q[1] == v || q[2] == v || q[3] == v);
-    }
-    if (!seed_ok) {
-      report.add(Invariant::kI8Bookkeeping, {seed.value}, {v}, [&] {
-        return "vertex " + str(v) + ": the engine's incident tet " +
-               (seed.valid() ? str(seed.value) : std::string("(none)")) + " is not a live tet containing it";
-      });
-    }
-  }
+  if (ctx.engine != nullptr) compare_vertex(*ctx.engine, ctx.tets, v, boundary_count, report);
   return boundary_count;
 }
 

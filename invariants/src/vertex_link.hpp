@@ -21,14 +21,12 @@
 #include <span>
 #include <vector>
 
-#include "tetcut/mesh.hpp"
+#include "engine_records.hpp"
 #include "report_builder.hpp"
 
 namespace tetcut::invariants::detail {
 
-using RawTet = std::array<std::uint32_t, 4>;
-
-// A boundary face, vertices counter-clockwise seen from outside (kFaceVerts order of its tet).
+// A boundary face, vertices counter-clockwise seen from outside (kTetFaces order of its tet).
 struct BoundaryTriangle {
   std::array<std::uint32_t, 3> v;
   std::uint32_t tet;
@@ -41,7 +39,7 @@ struct LinkContext {
   // touched_stamp[w] == stamp.
   const std::uint32_t* touched_stamp = nullptr;
   std::uint32_t stamp = 0;
-  const TetMesh* engine = nullptr;                  // set: compare for I2 and I8
+  const EngineRecordsView* engine = nullptr;        // set: compare for I2 and I8
   std::vector<BoundaryTriangle>* boundary = nullptr;  // set: collect each boundary face once
   ReportBuilder* report = nullptr;
 };

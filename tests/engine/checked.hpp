@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tetcut/invariants/check.hpp"
+#include "tetcut/mesh.hpp"
 
 namespace tetcut::testing {
 
@@ -15,7 +16,7 @@ inline ::testing::AssertionResult mesh_is_valid(const TetMesh& mesh,
   options.level = level;
   options.expected_volume = expected_volume;
   options.volume_rel_tolerance = 1e-12;
-  const invariants::CheckReport report = invariants::check_mesh(mesh, options);
+  const invariants::CheckReport report = invariants::check_mesh(mesh.raw_view(), options);
   if (report.ok()) return ::testing::AssertionSuccess();
   auto failure = ::testing::AssertionFailure();
   for (const invariants::Violation& v : report.violations)

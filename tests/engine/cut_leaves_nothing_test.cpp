@@ -134,7 +134,7 @@ TEST_P(CutLeavesNothing, EverySelectedTetIsRemovedOrCounted) {
   params.tool_diameter = std::max({size.x, size.y, size.z}) / 12.0;
   params.strategy = GetParam().strategy;
   Cutter cutter(mesh, params);
-  invariants::LocalChecker local(mesh);
+  invariants::LocalChecker local(mesh.raw_view());
   const double r = params.tool_diameter / 2, d_ref = params.d_ref_factor * params.tool_diameter;
   int cuts = 0, unresolved = 0;
   for (double depth : {0.15, 0.3})
@@ -146,7 +146,7 @@ TEST_P(CutLeavesNothing, EverySelectedTetIsRemovedOrCounted) {
       ASSERT_TRUE(report.ok) << report.failure;
       ++cuts;
       unresolved += static_cast<int>(report.unresolved);
-      const invariants::CheckReport l = local.after_operation(mesh, cutter.last_removed(), cutter.last_created());
+      const invariants::CheckReport l = local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created());
       ASSERT_TRUE(l.ok()) << invariants::to_string(l);
       EXPECT_LE(selected_left(mesh, selected, tool, d_ref), report.unresolved)
           << "cut " << cuts << " at " << centre.x << "," << centre.y << "," << centre.z;

@@ -66,14 +66,14 @@ TEST_P(CorpusSweep, EveryCutKeepsTheMeshValidAndRemovesEverythingRequested) {
   TetMesh mesh = load_corpus(GetParam());
   const Box box = bounds(mesh);
   Cutter cutter(mesh, {.tool_diameter = diagonal(box) / 25});
-  invariants::LocalChecker local(mesh);
+  invariants::LocalChecker local(mesh.raw_view());
   std::uint32_t removed = 0;
   for (const Vec3& centre : sweep(box, 12)) {
     const CutReport r = cutter.cut(centre);
     ASSERT_TRUE(r.ok) << r.failure;
     EXPECT_EQ(r.unresolved, 0u) << "combined must resolve every singularity";
     removed += r.tets_removed;
-    const invariants::CheckReport l = local.after_operation(mesh, cutter.last_removed(), cutter.last_created());
+    const invariants::CheckReport l = local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created());
     ASSERT_TRUE(l.ok()) << invariants::id_string(l.violations.front().id) << ": " << l.violations.front().detail;
     ASSERT_TRUE(testing::mesh_is_valid(mesh)) << "after the cut at " << centre.x << "," << centre.y << "," << centre.z;
   }

@@ -189,12 +189,12 @@ TEST(EdgeSplit, RandomEdgeSetsKeepTheMeshValidAfterEverySplit) {
       const int e = static_cast<int>(rng.below(6));
       edges.push_back({mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])});
     }
-    invariants::LocalChecker local(mesh);
+    invariants::LocalChecker local(mesh.raw_view());
     ChangeLog log;
     ASSERT_TRUE(splitter.split(mesh, edges, round % 2 ? SplitMethod::kBisection : SplitMethod::kTemplates, nullptr, &log).ok());
     std::vector<TetId> created;
     for (const CreatedTet& c : log.created) created.push_back(c.tet);
-    EXPECT_TRUE(local.after_operation(mesh, log.removed, created, {.level = invariants::CheckLevel::kLocal}, 0.0).ok());
+    EXPECT_TRUE(local.after_operation(mesh.raw_view(), log.removed, created, {.level = invariants::CheckLevel::kLocal}, 0.0).ok());
     ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kFull, volume)) << "round " << round;
   }
 }

@@ -58,7 +58,7 @@ std::vector<VertId> star_vertices(const TetMesh& mesh, TetId t) {
     if (n == 0) return ::testing::AssertionFailure() << "tet " << i << ": the fallback refused";
     if (mesh.is_live(t)) return ::testing::AssertionFailure() << "tet " << i << ": still there";
     if (tet_containing(mesh, c).valid()) return ::testing::AssertionFailure() << "tet " << i << ": its centroid is covered";
-    const auto report = invariants::check_mesh(mesh);
+    const auto report = invariants::check_mesh(mesh.raw_view());
     if (!report.ok()) return ::testing::AssertionFailure() << "tet " << i << ": " << describe(report);
     // Local: every edge split has an end among T's corners, so every tet removed or made has
     // its original vertices in the stars.

@@ -29,7 +29,7 @@ RunOutcome hollow_out(TetMesh& mesh, RemovalStrategy strategy, std::uint64_t see
   // Every request removes at least one tet unless it is left unresolved, and each unresolved
   // tet is met again at most a few times before the picker moves on: bound the loop anyway.
   if (max_requests == 0) max_requests = 20ull * mesh.num_tets() + 100;
-  invariants::LocalChecker local(mesh);
+  invariants::LocalChecker local(mesh.raw_view());
   Remover remover({.strategy = strategy});
   BoundaryTetPicker picker(mesh, seed);
   std::uint64_t n = 0;

@@ -36,7 +36,7 @@ TEST(RemovalStrategies, AVertexSingularityIsResolvedByEachStrategy) {
     ASSERT_TRUE(t.valid());
     const Vec3 centre = centroid(mesh, t);
     const double before = mesh.total_volume(), vol = mesh.volume(t);
-    invariants::LocalChecker local(mesh);
+    invariants::LocalChecker local(mesh.raw_view());
     Remover remover({.strategy = strategy});
     RemovalResult result;
     ASSERT_TRUE(remove_checked(remover, mesh, t, local, &result));
@@ -63,7 +63,7 @@ TEST(RemovalStrategies, AnEdgeSingularityIsResolvedByEachStrategy) {
     ASSERT_TRUE(t.valid());
     const Vec3 centre = centroid(mesh, t);
     const double before = mesh.total_volume(), vol = mesh.volume(t);
-    invariants::LocalChecker local(mesh);
+    invariants::LocalChecker local(mesh.raw_view());
     Remover remover({.strategy = strategy});
     RemovalResult result;
     ASSERT_TRUE(remove_checked(remover, mesh, t, local, &result));
@@ -88,7 +88,7 @@ TEST(RemovalStrategies, EdgeSingularitiesInABoxAreResolvedWithValidMeshes) {
   for (RemovalStrategy strategy : kAll) {
     SCOPED_TRACE(to_string(strategy));
     TetMesh mesh = box(3, 3, 2);
-    invariants::LocalChecker local(mesh);
+    invariants::LocalChecker local(mesh.raw_view());
     Remover remover({.strategy = strategy});
     BoundaryTetPicker picker(mesh, 11);
     for (int i = 0; i < 400 && remover.report().edge_singularities == 0; ++i) {
@@ -138,7 +138,7 @@ TEST(RemovalStrategies, NeighboursFailsBeyondItsDepthAndCombinedThenSucceeds) {
   for (RemovalStrategy strategy : {RemovalStrategy::kCombined, RemovalStrategy::kBasic}) {
     SCOPED_TRACE(to_string(strategy));
     TetMesh mesh = original;
-    invariants::LocalChecker local(mesh);
+    invariants::LocalChecker local(mesh.raw_view());
     Remover remover({.strategy = strategy});
     RemovalResult result;
     const double before = mesh.total_volume(), vol = mesh.volume(t);
@@ -187,7 +187,7 @@ TEST(RemovalStrategies, DirectRemovalsAgreeWithTheSetTest) {
   TetMesh mesh = box(3, 3, 3);
   Remover remover({.strategy = RemovalStrategy::kWide, .verify_direct = true});
   BoundaryTetPicker picker(mesh, 3);
-  invariants::LocalChecker local(mesh);
+  invariants::LocalChecker local(mesh.raw_view());
   for (TetId t = picker.pick(mesh); t.valid(); t = picker.pick(mesh)) {
     RemovalResult result;
     ASSERT_TRUE(remove_checked(remover, mesh, t, local, &result));

@@ -27,7 +27,7 @@ inline TetMesh box(std::uint32_t nx, std::uint32_t ny, std::uint32_t nz) {
 inline bool still_valid_without(const TetMesh& mesh, std::span<const TetId> set) {
   TetMesh copy = mesh;
   copy.remove_tets(set);
-  return invariants::check_mesh(copy).ok();
+  return invariants::check_mesh(copy.raw_view()).ok();
 }
 
 inline std::string describe(const invariants::CheckReport& report) { return invariants::to_string(report); }
@@ -88,7 +88,7 @@ inline ::testing::AssertionResult remove_checked(Remover& remover, TetMesh& mesh
   invariants::CheckOptions options;
   options.operation = "remove tet " + std::to_string(t.value);
   const invariants::CheckReport report =
-      local.after_operation(mesh, remover.last_removed(), remover.last_created(), options);
+      local.after_operation(mesh.raw_view(), remover.last_removed(), remover.last_created(), options);
   if (!report.ok()) return ::testing::AssertionFailure() << describe(report);
   return ::testing::AssertionSuccess();
 }

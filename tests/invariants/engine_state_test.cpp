@@ -1,19 +1,10 @@
 // I2 and I8: the engine's adjacency and bookkeeping are compared with the checker's own
 // recomputation. To break exactly them we corrupt a TetMesh's private state through the
-// test-only friend TetMeshTestAccess (declared in mesh.hpp, defined here only).
+// test-only friend TetMeshTestAccess.
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-
-namespace tetcut {
-struct TetMeshTestAccess {
-  static auto& adjacency(TetMesh& m) { return m.tet_adj_; }
-  static auto& vertex_tet(TetMesh& m) { return m.vert_tet_; }
-  static auto& boundary_faces(TetMesh& m) { return m.vert_boundary_faces_; }
-  static auto& tet_verts(TetMesh& m) { return m.tet_verts_; }
-  static auto& live_tets(TetMesh& m) { return m.live_tets_; }
-};
-}  // namespace tetcut
+#include "tet_mesh_test_access.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {
@@ -32,11 +23,11 @@ FaceRef interior_face(const TetMesh& mesh) {
 
 TEST(EngineState, I2ANeighbourDroppedOnOneSideIsNamedAndOnlyThat) {
   TetMesh mesh = box();
-  ASSERT_TRUE(check_mesh(mesh).ok());
+  ASSERT_TRUE(check_mesh(mesh.raw_view()).ok());
   const FaceRef face = interior_face(mesh);
   ASSERT_TRUE(face.valid());
   Access::adjacency(mesh)[face.tet.value][face.face] = TetMesh::kNoNeighbour;
-  const CheckReport report = check_mesh(mesh);
+  const CheckReport report = check_mesh(mesh.raw_view());
   EXPECT_EQ(names(report), "I2") << to_string(report);
   EXPECT_EQ(report.find(Invariant::kI2Adjacency)->count, 1u);
 }
@@ -47,7 +38,7 @@ TEST(EngineState, I2ANeighbourWithTheWrongMirrorFaceIsNamed) {
   const FaceRef other = mesh.neighbour(face.tet, face.face);
   auto& adj = Access::adjacency(mesh)[face.tet.value][face.face];
   adj = (other.tet.value << 2) | ((other.face + 1u) & 3u);
-  const CheckReport report = check_mesh(mesh);
+  const CheckReport report = check_mesh(mesh.raw_view());
   EXPECT_EQ(names(report), "I2") << to_string(report);
 }
 
@@ -57,7 +48,7 @@ TEST(EngineState, I2ABoundaryFaceGivenANeighbourIsNamed) {
     for (int f = 0; f < 4; ++f)
       if (mesh.is_boundary_face(TetId{t}, f)) {
         Access::adjacency(mesh)[t][f] = ((t + 1) << 2) | 0u;
-        const CheckReport report = check_mesh(mesh);
+        const CheckReport report = check_mesh(mesh.raw_view());
         EXPECT_EQ(names(report), "I2") << to_string(report);
         return;
       }
@@ -67,7 +58,7 @@ TEST(EngineState, I2ABoundaryFaceGivenANeighbourIsNamed) {
 TEST(EngineState, I8ABoundaryFlagOffByOneIsNamedAndOnlyThat) {
   TetMesh mesh = box();
   ++Access::boundary_faces(mesh)[4];
-  const CheckReport report = check_mesh(mesh);
+  const CheckReport report = check_mesh(mesh.raw_view());
   EXPECT_EQ(names(report), "I8") << to_string(report);
   EXPECT_EQ(report.find(Invariant::kI8Bookkeeping)->vertices, std::vector<std::uint32_t>{4});
 }
@@ -81,18 +72,18 @@ TEST(EngineState, I8AVertexToTetReferenceToAForeignTetIsNamed) {
       break;
     }
   }
-  const CheckReport report = check_mesh(mesh);
+  const CheckReport report = check_mesh(mesh.raw_view());
   EXPECT_EQ(names(report), "I8") << to_string(report);
 }
 
 TEST(EngineState, I8CountsAndAttributeSizesAreCompared) {
   TetMesh mesh = box();
   ++Access::live_tets(mesh);
-  EXPECT_EQ(names(check_mesh(mesh)), "I8");
+  EXPECT_EQ(names(check_mesh(mesh.raw_view())), "I8");
   --Access::live_tets(mesh);
-  EXPECT_TRUE(check_mesh(mesh).ok());
+  EXPECT_TRUE(check_mesh(mesh.raw_view()).ok());
   mesh.attributes().resize(mesh.vertex_capacity() + 1);
-  EXPECT_EQ(names(check_mesh(mesh)), "I8");
+  EXPECT_EQ(names(check_mesh(mesh.raw_view())), "I8");
 }
 
 TEST(EngineState, LocalCheckerSeesCorruptionInTheRegionOfAnOperation) {
@@ -102,28 +93,28 @@ TEST(EngineState, LocalCheckerSeesCorruptionInTheRegionOfAnOperation) {
     TetMesh trial = box();
     const TetId one[] = {TetId{c}};
     trial.remove_tets(one);
-    if (check_mesh(trial).ok()) t = TetId{c};
+    if (check_mesh(trial.raw_view()).ok()) t = TetId{c};
   }
   ASSERT_TRUE(t.valid());
   TetMesh mesh = box();
-  LocalChecker local(mesh);
+  LocalChecker local(mesh.raw_view());
   const auto verts = mesh.tet(t);
   const TetId removed[] = {t};
   mesh.remove_tets(removed);
   ++Access::boundary_faces(mesh)[verts[0].value];
-  const CheckReport report = local.after_operation(mesh, removed, {});
+  const CheckReport report = local.after_operation(mesh.raw_view(), removed, {});
   EXPECT_EQ(names(report), "I8") << to_string(report);
-  EXPECT_EQ(names(check_mesh(mesh)), "I8");
+  EXPECT_EQ(names(check_mesh(mesh.raw_view())), "I8");
 }
 
 TEST(EngineState, LocalCheckerSeesATetChangedBehindItsBack) {
   TetMesh mesh = box();
-  LocalChecker local(mesh);
+  LocalChecker local(mesh.raw_view());
   // Tet 0 and tet 1 share vertices; change tet 1 silently, then report an operation on tet 0.
   std::swap(Access::tet_verts(mesh)[1][1], Access::tet_verts(mesh)[1][2]);
   const TetId removed[] = {TetId{0}};
   mesh.remove_tets(removed);
-  const CheckReport report = local.after_operation(mesh, removed, {});
+  const CheckReport report = local.after_operation(mesh.raw_view(), removed, {});
   EXPECT_TRUE(has(report, Invariant::kI8Bookkeeping)) << to_string(report);
 }
 

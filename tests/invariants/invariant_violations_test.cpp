@@ -40,8 +40,8 @@ TEST(Invariants, AValidBoxPassesEveryLevelWithStatistics) {
     EXPECT_EQ(std::accumulate(h.begin(), h.end(), std::uint64_t{0}), 162u);
   }
   const TetMesh mesh = build_or_fail(raw);
-  EXPECT_TRUE(check_mesh(mesh).ok()) << to_string(check_mesh(mesh));
-  EXPECT_TRUE(check_mesh(mesh, exact()).ok()) << to_string(check_mesh(mesh, exact()));
+  EXPECT_TRUE(check_mesh(mesh.raw_view()).ok()) << to_string(check_mesh(mesh.raw_view()));
+  EXPECT_TRUE(check_mesh(mesh.raw_view(), exact()).ok()) << to_string(check_mesh(mesh.raw_view(), exact()));
 }
 
 TEST(Invariants, I1RepeatedVertexIsNamed) {

@@ -30,50 +30,50 @@ std::vector<TetId> split_at_centroid(TetMesh& mesh, TetId t) {
 
 TEST(LocalChecker, AValidSplitPassesAndKeepsTheVolume) {
   TetMesh mesh = build_or_fail(make_box_mesh(2, 2, 2));
-  LocalChecker local(mesh);
+  LocalChecker local(mesh.raw_view());
   const TetId t{17};
   const double before = mesh.volume(t);
   const std::vector<TetId> created = split_at_centroid(mesh, t);
   ASSERT_EQ(created.size(), 4u);
   const TetId removed[] = {t};
-  const CheckReport report = local.after_operation(mesh, removed, created, {}, 0.0);
+  const CheckReport report = local.after_operation(mesh.raw_view(), removed, created, {}, 0.0);
   EXPECT_TRUE(report.ok()) << to_string(report);
   EXPECT_NEAR(report.volume, 0.0, 1e-15);
   EXPECT_EQ(report.quality.tets, 4u);
   EXPECT_EQ(report.vertices_checked, 5u);
-  EXPECT_TRUE(check_mesh(mesh).ok()) << to_string(check_mesh(mesh));
+  EXPECT_TRUE(check_mesh(mesh.raw_view()).ok()) << to_string(check_mesh(mesh.raw_view()));
   EXPECT_GT(before, 0.0);
 }
 
 TEST(LocalChecker, I9AWrongVolumeChangeIsNamed) {
   TetMesh mesh = build_or_fail(make_box_mesh(2, 2, 2));
-  LocalChecker local(mesh);
+  LocalChecker local(mesh.raw_view());
   const TetId t{3};
   const std::vector<TetId> created = split_at_centroid(mesh, t);
   const TetId removed[] = {t};
-  const CheckReport report = local.after_operation(mesh, removed, created, {}, -1e-3);
+  const CheckReport report = local.after_operation(mesh.raw_view(), removed, created, {}, -1e-3);
   EXPECT_EQ(names(report), "I9") << to_string(report);
 }
 
 TEST(LocalChecker, RemovalReducesTheVolumeByTheRemovedTet) {
   TetMesh mesh = build_or_fail(make_box_mesh(2, 2, 2));
-  LocalChecker local(mesh);
+  LocalChecker local(mesh.raw_view());
   const TetId t{0};
   const double v = mesh.volume(t);
   const TetId removed[] = {t};
   mesh.remove_tets(removed);
-  const CheckReport report = local.after_operation(mesh, removed, {}, {}, -v);
+  const CheckReport report = local.after_operation(mesh.raw_view(), removed, {}, {}, -v);
   EXPECT_TRUE(report.ok()) << to_string(report);
   EXPECT_DOUBLE_EQ(report.volume, -v);
 }
 
 TEST(LocalChecker, AnOperationThatLiesAboutWhatItRemovedIsI8) {
   TetMesh mesh = build_or_fail(make_box_mesh(2, 2, 2));
-  LocalChecker local(mesh);
+  LocalChecker local(mesh.raw_view());
   const TetId removed[] = {TetId{5}};
   mesh.remove_tets(removed);
   const TetId claimed[] = {TetId{6}};  // still live
-  const CheckReport report = local.after_operation(mesh, claimed, {});
+  const CheckReport report = local.after_operation(mesh.raw_view(), claimed, {});
   EXPECT_TRUE(has(report, Invariant::kI8Bookkeeping)) << to_string(report);
 }
 
@@ -91,10 +91,10 @@ TEST(LocalChecker, ReplacingEveryTetByItselfChecksTheWholeMesh) {
     std::vector<TetId> all;
     for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
       if (mesh.is_live(TetId{t})) all.push_back(TetId{t});
-    LocalChecker local(mesh);
-    const CheckReport report = local.after_operation(mesh, all, all, {}, 0.0);
+    LocalChecker local(mesh.raw_view());
+    const CheckReport report = local.after_operation(mesh.raw_view(), all, all, {}, 0.0);
     EXPECT_EQ(names(report), bowtie ? "I5" : "") << to_string(report);
-    EXPECT_EQ(names(report), names(check_mesh(mesh)));
+    EXPECT_EQ(names(report), names(check_mesh(mesh.raw_view())));
     EXPECT_EQ(report.vertices_checked, raw.positions.size());
   }
 }
@@ -121,7 +121,7 @@ TEST(LocalChecker, AgreesWithTheFullCheckOnRandomRemovals) {
   int ended_i5 = 0, ended_i6 = 0, steps = 0;
   for (int trial = 0; trial < 60; ++trial) {
     TetMesh mesh = build_or_fail(box);
-    LocalChecker local(mesh);
+    LocalChecker local(mesh.raw_view());
     for (int step = 0; step < 40 && mesh.num_tets() > 0; ++step) {
       std::vector<TetId> candidates;
       for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
@@ -130,8 +130,8 @@ TEST(LocalChecker, AgreesWithTheFullCheckOnRandomRemovals) {
       const TetId removed[] = {candidates[rng.below(static_cast<std::uint32_t>(candidates.size()))]};
       mesh.remove_tets(removed);
       ++steps;
-      const CheckReport local_report = local.after_operation(mesh, removed, {});
-      const CheckReport full_report = check_mesh(mesh);
+      const CheckReport local_report = local.after_operation(mesh.raw_view(), removed, {});
+      const CheckReport full_report = check_mesh(mesh.raw_view());
       ASSERT_EQ(local_report.ok(), full_report.ok())
           << "trial " << trial << " step " << step << "\nlocal:\n" << to_string(local_report) << "full:\n"
           << to_string(full_report);
@@ -157,7 +157,7 @@ TEST(LocalChecker, AgreesWithTheFullCheckOnRandomRemovals) {
 TEST(LocalChecker, AgreesWithTheFullCheckOnRandomSplits) {
   SplitMix64 rng(42);
   TetMesh mesh = build_or_fail(make_box_mesh(2, 2, 2));
-  LocalChecker local(mesh);
+  LocalChecker local(mesh.raw_view());
   for (int step = 0; step < 200; ++step) {
     std::vector<TetId> live;
     for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
@@ -165,14 +165,14 @@ TEST(LocalChecker, AgreesWithTheFullCheckOnRandomSplits) {
     const TetId t = live[rng.below(static_cast<std::uint32_t>(live.size()))];
     const std::vector<TetId> created = split_at_centroid(mesh, t);
     const TetId removed[] = {t};
-    const CheckReport local_report = local.after_operation(mesh, removed, created, {}, 0.0);
+    const CheckReport local_report = local.after_operation(mesh.raw_view(), removed, created, {}, 0.0);
     ASSERT_TRUE(local_report.ok()) << "step " << step << ": " << to_string(local_report);
-    const CheckReport full_report = check_mesh(mesh);
+    const CheckReport full_report = check_mesh(mesh.raw_view());
     ASSERT_TRUE(full_report.ok()) << "step " << step << ": " << to_string(full_report);
   }
   CheckOptions options;
   options.expected_volume = 1.0;
-  EXPECT_TRUE(check_mesh(mesh, options).ok()) << to_string(check_mesh(mesh, options));
+  EXPECT_TRUE(check_mesh(mesh.raw_view(), options).ok()) << to_string(check_mesh(mesh.raw_view(), options));
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ void expect_valid_everywhere(const RawMesh& raw, double volume) {
   EXPECT_TRUE(report.notes.empty());
   EXPECT_EQ(report.tets_checked, raw.tets.size());
   const TetMesh mesh = build_or_fail(raw);
-  const CheckReport engine_report = check_mesh(mesh, options);
+  const CheckReport engine_report = check_mesh(mesh.raw_view(), options);
   EXPECT_TRUE(engine_report.ok()) << to_string(engine_report);
 }
 

@@ -91,9 +91,9 @@ CheckOutcome run_check(const RawMesh& raw, inv::CheckLevel level, double radius_
       for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
         if (mesh.is_live(TetId{t})) all.push_back(TetId{t});
       }
-      inv::LocalChecker checker(mesh);
+      inv::LocalChecker checker(mesh.raw_view());
       options.level = inv::CheckLevel::kLocal;
-      outcome.report = checker.after_operation(mesh, all, all, options);
+      outcome.report = checker.after_operation(mesh.raw_view(), all, all, options);
       // The local report's volume is that of the region it looked at; say the mesh's.
       outcome.volume = mesh.total_volume();
       outcome.level_run = inv::CheckLevel::kLocal;
@@ -113,7 +113,7 @@ CheckOutcome run_check(const RawMesh& raw, inv::CheckLevel level, double radius_
     // The geometric tests of the exact level do not depend on the engine's structure: run them
     // once, on the raw arrays, and compare the built mesh at the full level.
     options.level = inv::CheckLevel::kFull;
-    merge_violations(outcome.report, inv::check_mesh(*built.mesh, options));
+    merge_violations(outcome.report, inv::check_mesh(built.mesh->raw_view(), options));
   }
   return outcome;
 }

@@ -89,7 +89,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   }
   TetMesh& mesh = *built.mesh;
   Cutter cutter(mesh, params);
-  invariants::LocalChecker local(mesh);
+  invariants::LocalChecker local(mesh.raw_view());
   std::vector<scenario::CutRecord> cuts;
   const auto steps = static_cast<std::uint64_t>(std::floor(length / *step));
   bool valid = true;
@@ -100,7 +100,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
     cuts.push_back({0, centre, r});
     if (!r.ok) err << "tetcut cut: cut " << k << " rolled back: " << r.failure << "\n";
     if (check == "every") {
-      const invariants::CheckReport c = local.after_operation(mesh, cutter.last_removed(), cutter.last_created());
+      const invariants::CheckReport c = local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created());
       if (!c.ok()) {
         valid = false;
         violation = std::string(invariants::id_string(c.violations.front().id)) + " after cut " + std::to_string(k) + ": " +
@@ -119,7 +119,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
     }
   }
   if (valid && check != "none") {
-    const invariants::CheckReport c = invariants::check_mesh(mesh);
+    const invariants::CheckReport c = invariants::check_mesh(mesh.raw_view());
     if (!c.ok()) {
       valid = false;
       violation = std::string(invariants::id_string(c.violations.front().id)) + " at the end: " + c.violations.front().detail;

@@ -151,7 +151,7 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
 
   invariants::CheckOptions check;
   check.expected_volume = volume;
-  const invariants::CheckReport verdict = invariants::check_mesh(mesh, check);
+  const invariants::CheckReport verdict = invariants::check_mesh(mesh.raw_view(), check);
   const std::string hash = hash_to_hex(canonical_hash(mesh));
   out << "refined: " << report.iterations << " iteration(s), " << report.edges_split << " edges split, "
       << report.tets_created << " tets created, " << tets_before << " -> " << mesh.num_tets()

@@ -148,7 +148,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
 
   Remover remover(options);
   std::optional<invariants::LocalChecker> local;
-  if (check_mode == CheckMode::kEvery) local.emplace(mesh);
+  if (check_mode == CheckMode::kEvery) local.emplace(mesh.raw_view());
   std::string first_violation;
   std::uint64_t points_outside = 0;
   auto request = [&](TetId t, std::uint64_t index) {
@@ -156,7 +156,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
     if (local && first_violation.empty()) {
       invariants::CheckOptions co;
       co.operation = "request " + std::to_string(index);
-      const invariants::CheckReport r = local->after_operation(mesh, remover.last_removed(), remover.last_created(), co);
+      const invariants::CheckReport r = local->after_operation(mesh.raw_view(), remover.last_removed(), remover.last_created(), co);
       if (!r.ok()) first_violation = co.operation + ": " + invariants::to_string(r);
     }
   };
@@ -185,7 +185,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
 
   bool valid = first_violation.empty();
   if (check_mode != CheckMode::kNone) {
-    const invariants::CheckReport r = invariants::check_mesh(mesh);
+    const invariants::CheckReport r = invariants::check_mesh(mesh.raw_view());
     if (!r.ok() && valid) first_violation = "end: " + invariants::to_string(r);
     valid = valid && r.ok();
   }

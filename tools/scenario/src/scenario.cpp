@@ -190,7 +190,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     }
     if (options.check == CheckMode::kNone || !cutter) return true;
     if (options.check == CheckMode::kEvery) {
-      const invariants::CheckReport r = local->after_operation(mesh, cutter->last_removed(), cutter->last_created());
+      const invariants::CheckReport r = local->after_operation(mesh.raw_view(), cutter->last_removed(), cutter->last_created());
       if (!r.ok()) {
         stop(op, 1, "invariant violated: " + violations(r));
         return false;
@@ -221,7 +221,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         cutter.reset();
         mesh = std::move(*built.mesh);
         cutter.emplace(mesh, params);
-        local.emplace(mesh);
+        local.emplace(mesh.raw_view());
         break;
       }
       case OpKind::kParam:
@@ -266,12 +266,12 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         result.removal += cutter->removal_report();
         mesh.compact();
         cutter.emplace(mesh, params);
-        local.emplace(mesh);
+        local.emplace(mesh.raw_view());
         break;
       case OpKind::kCheck: {
         invariants::CheckOptions o;
         o.level = op.text == "exact" ? invariants::CheckLevel::kExact : invariants::CheckLevel::kFull;
-        const invariants::CheckReport r = invariants::check_mesh(mesh, o);
+        const invariants::CheckReport r = invariants::check_mesh(mesh.raw_view(), o);
         if (!r.ok()) {
           stop(op, 1, "check failed: " + violations(r));
           return result;
@@ -309,7 +309,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     }
   }
   if (options.check == CheckMode::kEnd && cutter) {
-    const invariants::CheckReport r = invariants::check_mesh(mesh);
+    const invariants::CheckReport r = invariants::check_mesh(mesh.raw_view());
     if (!r.ok()) {
       result.ok = false;
       result.exit_code = 1;

@@ -57,7 +57,7 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   run.strategy = options.strategy;
   run.split = options.split;
   run.tets_before = before->num_tets();
-  run.quality_before = invariants::check_mesh(*before).quality;
+  run.quality_before = invariants::check_mesh(before->raw_view()).quality;
 
   CutParams params;
   params.strategy = options.strategy;
@@ -75,7 +75,7 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   run.cut_us.reserve(run.result.cuts.size());
   for (const scenario::CutRecord& c : run.result.cuts) run.cut_us.push_back(c.report.time.total_us);
   // A run that stopped early leaves its mesh as it was then: "after" is at the stop.
-  run.quality_after = invariants::check_mesh(after).quality;
+  run.quality_after = invariants::check_mesh(after.raw_view()).quality;
   if (options.keep_meshes) {
     run.mesh_before = std::move(before);
     run.mesh_after = std::move(after);

@@ -1,8 +1,12 @@
 // The independent invariant checker (design: invariants I1-I9).
 //
-// It recomputes everything it verifies from the raw tet array with its own hashing; it never
-// trusts the engine's adjacency or classification, it only compares against them (I2, I8).
-// Orientation (I4) is always decided by an exact predicate.
+// It recomputes everything it verifies from the raw tet array with its own tables, its own
+// quality measures and its own link analysis; it never trusts the engine's adjacency or
+// classification, it only compares against them (I2, I8). It reads a mesh only through
+// RawMeshView (tetcut/raw_mesh_view.hpp): no engine header is included anywhere in the checker,
+// which shares nothing with the engine but tetcut::geometry (Vec3, the exact orientation
+// predicate that decides I4, and that view). An engine mesh is passed as mesh.raw_view(), a
+// RawMesh as itself.
 //
 // Levels and what they cost (#T tets, #V vertices, s = tets in a vertex shell, a few dozen):
 //   local  LocalChecker::after_operation: O(sum of s over the vertices of the removed and
@@ -11,8 +15,8 @@
 //          fuzzers. On a whole mesh (check_raw / check_mesh) there is no operation, so `local`
 //          means the same as `full`.
 //   full   O(#T + #V) plus a small sort per vertex shell (O(s log s)): references, conformity,
-//          orientation (exact), vertex links, edge shells, quality, volume; for a TetMesh also
-//          the engine's adjacency and bookkeeping. About a second per million tets.
+//          orientation (exact), vertex links, edge shells, quality, volume; for an engine mesh
+//          also the engine's adjacency and bookkeeping. About a second per million tets.
 //   exact  full + the geometric half of I3: the boundary surface does not self-intersect (CGAL
 //          box intersection with exact triangle-triangle predicates, O(#boundary log #boundary)
 //          for reasonable surfaces). Only run when the boundary is a 2-manifold.
@@ -26,9 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "tetcut/ids.hpp"
-#include "tetcut/mesh.hpp"
-#include "tetcut/raw_mesh.hpp"
+#include "tetcut/raw_mesh_view.hpp"
 
 namespace tetcut::invariants {
 
@@ -104,13 +106,14 @@ struct CheckReport {
 // Several lines for people: one per violation, "I5 manifold vertex shells: 3 ...: detail".
 std::string to_string(const CheckReport& report);
 
-// Full or exact check of a mesh given only as raw arrays (a file as read): I1, I3-I7, I9.
-CheckReport check_raw(const RawMesh& mesh, const CheckOptions& options = {});
+// Full or exact check of a mesh as raw arrays (a file as read): I1, I3-I7, I9. Engine records
+// in the view, if any, are ignored.
+CheckReport check_raw(const RawMeshView& mesh, const CheckOptions& options = {});
 
-// Full or exact check of an engine mesh: everything check_raw does on its live tets, plus I2 and
-// I8 by comparing the engine's adjacency, boundary counts and vertex->tet references with the
-// checker's own recomputation.
-CheckReport check_mesh(const TetMesh& mesh, const CheckOptions& options = {});
+// Full or exact check of an engine mesh (TetMesh::raw_view()): everything check_raw does on its
+// live tets, plus I2 and I8 by comparing the engine's adjacency, boundary counts, vertex->tet
+// references and counts with the checker's own recomputation.
+CheckReport check_mesh(const RawMeshView& mesh, const CheckOptions& options = {});
 
 // The local level. Holds its own vertex->tets index, built once from the raw tets and then
 // updated from what each operation says it removed and created (read back from the raw tets),
@@ -122,17 +125,19 @@ CheckReport check_mesh(const TetMesh& mesh, const CheckOptions& options = {});
 // compact() renumbers everything: build a new LocalChecker after it.
 class LocalChecker {
  public:
-  explicit LocalChecker(const TetMesh& mesh);
+  explicit LocalChecker(const RawMeshView& mesh);
   ~LocalChecker();
   LocalChecker(LocalChecker&&) noexcept;
   LocalChecker& operator=(LocalChecker&&) noexcept;
 
-  // `removed`: ids the operation killed (their old vertices are remembered from the index);
-  // `created`: ids it made live (may reuse removed ids). I9 is checked when an expected volume
-  // change of the region (created volume - removed volume) is given. options.level is ignored
-  // (the region is always checked combinatorially and with exact orientation).
-  CheckReport after_operation(const TetMesh& mesh, std::span<const TetId> removed,
-                              std::span<const TetId> created, const CheckOptions& options = {},
+  // `mesh`: the same engine mesh after the operation (its raw_view() again). `removed`: tet
+  // ids the operation killed (their old vertices are remembered from the index); `created`:
+  // ids it made live (may reuse removed ids); both as the caller holds them (TetId spans or
+  // vectors). I9 is checked when an expected volume change of the region (created volume -
+  // removed volume) is given. options.level is ignored (the region is always checked
+  // combinatorially and with exact orientation).
+  CheckReport after_operation(const RawMeshView& mesh, RawIds removed, RawIds created,
+                              const CheckOptions& options = {},
                               std::optional<double> expected_volume_change = std::nullopt);
 
  private:
