@@ -28,7 +28,10 @@ void bisect_locally(std::uint8_t mask, const std::array<std::uint32_t, 4>& ids, 
   for (int e = 0; e < 6; ++e)
     if ((mask >> e) & 1) order[n++] = e;
   auto key = [&](int e) { return std::minmax(ids[kEdgeVerts[e][0]], ids[kEdgeVerts[e][1]]); };
-  std::sort(order.begin(), order.begin() + n, [&](int x, int y) { return key(x) < key(y); });
+  // Insertion sort of at most 6 entries (std::sort on a part of a 6-array makes GCC 12 warn
+  // -Warray-bounds about the 16 entries of its own insertion-sort threshold).
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && key(order[j]) < key(order[j - 1]); --j) std::swap(order[j], order[j - 1]);
   for (int k = 0; k < n; ++k) {
     const int e = order[k];
     const std::uint8_t x = kEdgeVerts[e][0], y = kEdgeVerts[e][1], m = static_cast<std::uint8_t>(4 + e);

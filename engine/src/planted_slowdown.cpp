@@ -10,8 +10,9 @@ namespace tetcut::detail {
 
 void planted_slowdown() {
 #ifdef TETCUT_PLANTED_SLOWDOWN
-  for (volatile unsigned k = 0; k < 3000; k = k + 1) {
-  }
+  // A volatile sum the compiler cannot fold: a load, an add and a store per turn, and the loop.
+  volatile unsigned sum = 0;
+  for (unsigned k = 0; k < 3000; ++k) sum = sum + k;
 #endif
 }
 

@@ -155,8 +155,9 @@ TEST(Cut, AFailedCutLeavesTheMeshBitIdentical) {
   ASSERT_EQ(mesh.vertex_capacity(), before.vertex_capacity());
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
     ASSERT_EQ(mesh.raw_tets()[t], before.raw_tets()[t]);
-    if (mesh.is_live(TetId{t}))
+    if (mesh.is_live(TetId{t})) {
       for (int f = 0; f < 4; ++f) ASSERT_EQ(mesh.neighbour(TetId{t}, f), before.neighbour(TetId{t}, f));
+    }
   }
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
     ASSERT_EQ(mesh.position(VertId{v}), before.position(VertId{v}));

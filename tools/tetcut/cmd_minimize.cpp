@@ -140,7 +140,10 @@ struct Minimizer {
         std::vector<std::string> options;
         for (int decimals = 0; decimals <= 3; ++decimals) {
           std::string line = w[0];
-          for (std::size_t k = 1; k < w.size(); ++k) line += " " + round_point(w[k], decimals, w[0] == "sweep" && k == 3);
+          for (std::size_t k = 1; k < w.size(); ++k) {
+            line += ' ';  // appended apart: `" " + std::string&&` trips GCC 12's -Wrestrict (bug 105651)
+            line += round_point(w[k], decimals, w[0] == "sweep" && k == 3);
+          }
           options.push_back(line);
         }
         try_replace(lines, i, options);
