@@ -19,6 +19,16 @@ CheckedMesh::CheckedMesh(TetMesh mesh) : mesh_(std::move(mesh)), expected_volume
   if (tracing_) trace(0, 0);
 }
 
+void CheckedMesh::reset(const TetMesh& mesh) {
+  mesh_ = mesh;  // a copy-assignment: the vectors keep their capacity
+  expected_volume_ = mesh_.total_volume();
+  local_->reset(mesh_.raw_view());
+  index_ = 0;
+  name_ = "build";
+  arguments_.clear();
+  if (tracing_) trace(0, 0);
+}
+
 void CheckedMesh::begin(std::string name) {
   ++index_;
   name_ = std::move(name);

@@ -26,6 +26,8 @@ namespace tetcut::fuzz {
 class CheckedMesh {
  public:
   explicit CheckedMesh(TetMesh mesh);
+  // Starts over on a copy of `mesh`, as a new CheckedMesh would, in the memory this one holds.
+  void reset(const TetMesh& mesh);
 
   TetMesh& mesh() { return mesh_; }
   [[nodiscard]] const TetMesh& mesh() const { return mesh_; }

@@ -150,7 +150,7 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
   const BundledMesh& bundled = sequence_mesh(version, input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshCount - 1));
   recorder.add("# tetcut replay --target cut_sequence (input version " + std::to_string(version) + ")");
   recorder.add("mesh " + bundled.path);
-  SequenceSession session(bundled, recorder);
+  SequenceSession& session = SequenceSession::start(bundled, recorder);
   Context ctx{version, bundled, limits, session.cutter().params(), coordinate_quantum(bundled.box.diagonal(), 3)};
   std::size_t since_check = 0;
   const std::uint32_t max_tets = kMaxTetsFactor * bundled.mesh.num_tets();
@@ -169,7 +169,7 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
       since_check = 0;
     }
   }
-  session.full_check_if_changed();
+  session.finish();
 }
 
 }  // namespace

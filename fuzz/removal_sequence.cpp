@@ -54,7 +54,7 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
   const BundledMesh& bundled = sequence_mesh(version, input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshCount - 1));
   recorder.add("# tetcut replay --target removal_sequence (input version " + std::to_string(version) + ")");
   recorder.add("mesh " + bundled.path);
-  SequenceSession session(bundled, recorder);
+  SequenceSession& session = SequenceSession::start(bundled, recorder);
   CutParams params = session.cutter().params();
   const double quantum = coordinate_quantum(bundled.box.diagonal(), 3);
   const Vec3 margin = 0.1 * (bundled.box.hi - bundled.box.lo);
@@ -91,7 +91,7 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
       since_check = 0;
     }
   }
-  session.full_check_if_changed();
+  session.finish();
 }
 
 }  // namespace

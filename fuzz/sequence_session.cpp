@@ -3,25 +3,54 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <memory>
 #include <thread>
+#include <utility>
 
 #include "tetcut/canonical_hash.hpp"
 
 namespace tetcut::fuzz {
 
-SequenceSession::SequenceSession(const BundledMesh& bundled, ScenarioRecorder& recorder)
-    : recorder_(recorder),
-      checked_(bundled.mesh),
-      cutter_(checked_.mesh(), params_with_budget(bundled)) {
+SequenceSession::SequenceSession(const BundledMesh& bundled)
+    : checked_(bundled.mesh), cutter_(checked_.mesh(), params_with_budget(bundled)) {}
+
+SequenceSession& SequenceSession::start(const BundledMesh& bundled, ScenarioRecorder& recorder) {
+  // Keyed by the bundled mesh, which sequence_mesh() keeps for the whole process. Not a
+  // std::map: no allocation per input once the few meshes have their sessions.
+  static std::vector<std::pair<const BundledMesh*, std::unique_ptr<SequenceSession>>> sessions;
+  auto it = std::find_if(sessions.begin(), sessions.end(), [&](const auto& s) { return s.first == &bundled; });
+  if (it == sessions.end()) {
+    sessions.emplace_back(&bundled, std::unique_ptr<SequenceSession>(new SequenceSession(bundled)));
+    it = sessions.end() - 1;
+  }
+  it->second->restart(bundled, recorder);
+  return *it->second;
+}
+
+void SequenceSession::restart(const BundledMesh& bundled, ScenarioRecorder& recorder) {
+  recorder_ = &recorder;
+  checked_.reset(bundled.mesh);
+  cutter_.reset();
+  const auto refused = cutter_.set_params(params_with_budget(bundled));
+  checked_.require(!refused.has_value(), "cut-params", "the default parameters are refused: " + refused.value_or(""));
+  unresolved_ = 0;
+  changed_since_full_check_ = false;
   // A failure on demand, to test what reports failures (tetcut replay's exit code and messages)
   // without depending on a bug of the engine.
+  fail_at_ = 0;
   if (const char* env = std::getenv("TETCUT_FUZZ_FAIL_AT")) fail_at_ = std::strtoull(env, nullptr, 10);
   // The same for slowness (issue 16): operation N sleeps 30 s, so that ci/fuzz-nightly's
   // timeout handling can be tried without a slow engine.
+  slow_at_ = 0;
   if (const char* env = std::getenv("TETCUT_FUZZ_SLOW_AT")) slow_at_ = std::strtoull(env, nullptr, 10);
-  grow_volumes();
+  volume_.assign(mesh().tet_capacity(), 0.0);
   for (std::uint32_t t = 0; t < mesh().tet_capacity(); ++t)
     if (mesh().is_live(TetId{t})) volume_[t] = mesh().volume(TetId{t});
+}
+
+void SequenceSession::finish() {
+  full_check_if_changed();
+  if (recorder_->enabled()) recorder_->set_final_hash(canonical_hash(mesh()));
 }
 
 CutParams SequenceSession::params_with_budget(const BundledMesh& bundled) {
@@ -38,14 +67,14 @@ void SequenceSession::grow_volumes() {
 
 void SequenceSession::begin(const std::string& name, std::uint32_t line) {
   checked_.begin(name);
-  recorder_.map_operation(checked_.operation_index(), line);
+  recorder_->map_operation(checked_.operation_index(), line);
   if (checked_.operation_index() == slow_at_) std::this_thread::sleep_for(std::chrono::seconds(30));
   if (checked_.operation_index() == fail_at_)
     checked_.require(false, "injected", "TETCUT_FUZZ_FAIL_AT=" + std::to_string(fail_at_) + " (a test of the harness)");
 }
 
 void SequenceSession::set_param(const std::string& name, const std::string& value, const CutParams& params) {
-  const std::uint32_t line = recorder_.add(name + " " + value);
+  const std::uint32_t line = recorder_->add(name + " " + value);
   begin(name, line);
   const auto refused = cutter_.set_params(params);
   checked_.require(!refused.has_value(), "cut-params", name + " " + value + ": clamped value refused: " + refused.value_or(""));
@@ -98,7 +127,7 @@ OperationOutcome SequenceSession::after(const CutReport& report) {
   unresolved_ += report.unresolved;
   if (cutter_.params().strategy == RemovalStrategy::kCombined && report.unresolved > 0) {
     // What the scenario runner sees: its count of unresolved tets moves.
-    recorder_.add("expect unresolved " + std::to_string(before));
+    recorder_->add("expect unresolved " + std::to_string(before));
     checked_.require(false, "unresolved-combined",
                      std::to_string(report.unresolved) + " of " + std::to_string(report.requested) +
                          " requested tets left unresolved by the combined strategy (" +
@@ -109,7 +138,7 @@ OperationOutcome SequenceSession::after(const CutReport& report) {
 }
 
 void SequenceSession::full_check() {
-  const std::uint32_t line = recorder_.add("check full");
+  const std::uint32_t line = recorder_->add("check full");
   begin("check full", line);
   checked_.end({}, {}, 0.0);
   checked_.full_check();
@@ -137,6 +166,7 @@ SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const Se
     recorder.add("# finding: " + to_string(e.finding()));
   }
   result.scenario = recorder.text();
+  if (!result.finding) result.final_hash = recorder.final_hash();
   return result;
 }
 

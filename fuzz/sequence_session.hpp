@@ -11,6 +11,12 @@
 // TETCUT_FUZZ_FAIL_AT=N in the environment makes operation N fail ("injected"): a test of what
 // reports failures, independent of any bug. TETCUT_FUZZ_SLOW_AT=N makes operation N take 30 s:
 // the same for what reports slowness (ci/fuzz-nightly's timeouts).
+//
+// One session per bundled mesh lives as long as the process (issue 18, fuzzer throughput):
+// start() copies the mesh back into the same buffers and resets the checker and the Cutter
+// (Cutter::reset) instead of building them again, which was a third of an input's cost. An
+// input's outcome does not depend on the inputs before it: tests/fuzz replays the corpus in two
+// orders and compares every input's scenario and final mesh.
 #pragma once
 
 #include <cstddef>
@@ -33,17 +39,20 @@ struct OperationOutcome {
 
 class SequenceSession {
  public:
+  // The session of `bundled`, started on a fresh copy of its mesh, recording into `recorder`.
   // The Cutter starts with the default parameters but a per-operation tet budget of the
   // initial mesh's tets (params_with_budget): an operation over it is rolled back, and written
   // into the scenario as a comment, so that the scenario (which cannot set the budget) stays
-  // equivalent.
-  SequenceSession(const BundledMesh& bundled, ScenarioRecorder& recorder);
+  // equivalent. The reference is valid until the next start() on the same mesh.
+  static SequenceSession& start(const BundledMesh& bundled, ScenarioRecorder& recorder);
   static CutParams params_with_budget(const BundledMesh& bundled);
+  SequenceSession(const SequenceSession&) = delete;
+  SequenceSession& operator=(const SequenceSession&) = delete;
 
   CheckedMesh& checked() { return checked_; }
   TetMesh& mesh() { return checked_.mesh(); }
   Cutter& cutter() { return cutter_; }
-  ScenarioRecorder& recorder() { return recorder_; }
+  ScenarioRecorder& recorder() { return *recorder_; }
   // The scenario runner's count of unresolved tets so far (of the operations that went through).
   [[nodiscard]] std::uint64_t unresolved() const { return unresolved_; }
 
@@ -60,13 +69,18 @@ class SequenceSession {
   void full_check_if_changed() {
     if (changed_since_full_check_) full_check();
   }
+  // The end of an input: the full check if anything changed, and the final mesh's canonical
+  // hash for the recorder.
+  void finish();
 
  private:
+  explicit SequenceSession(const BundledMesh& bundled);
+  void restart(const BundledMesh& bundled, ScenarioRecorder& recorder);
   void begin(const std::string& name, std::uint32_t line);
   OperationOutcome after(const CutReport& report);
   void grow_volumes();
 
-  ScenarioRecorder& recorder_;
+  ScenarioRecorder* recorder_ = nullptr;
   CheckedMesh checked_;
   TetMesh before_;  // the mesh before the current Cutter operation, for the rollback check
   Cutter cutter_;

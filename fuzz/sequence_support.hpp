@@ -89,9 +89,13 @@ class ScenarioRecorder {
   void map_operation(std::size_t index, std::uint32_t number);
   [[nodiscard]] std::uint32_t line_of(std::size_t index) const;
   [[nodiscard]] std::string text() const;
+  // The canonical hash of the mesh an input ended with (SequenceResult::final_hash).
+  void set_final_hash(std::uint64_t hash) { final_hash_ = hash; }
+  [[nodiscard]] std::uint64_t final_hash() const { return final_hash_; }
 
  private:
   bool enabled_;
+  std::uint64_t final_hash_ = 0;
   std::vector<std::string> lines_;
   std::vector<std::uint32_t> operation_lines_;
 };
@@ -118,6 +122,7 @@ struct SequenceResult {
   std::string scenario;           // when recorded: up to the failing operation when there is one
   std::optional<Finding> finding; // when captured
   std::uint32_t finding_line = 0; // the scenario line of the failing operation (0: none)
+  std::uint64_t final_hash = 0;   // when recorded and no finding: the final mesh's canonical hash
 };
 
 // One sequence target, for the command line and the tests.

@@ -89,10 +89,7 @@ std::optional<std::string> Cutter::set_params(const CutParams& params) {
   if (auto invalid = validate(params)) return invalid;
   const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth;
   params_ = params;
-  if (removal_changed) {
-    remover_ = Remover(removal_options(params_));
-    remover_.reserve(mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096);
-  }
+  if (removal_changed) remover_.set_options(removal_options(params_));
   return std::nullopt;
 }
 

@@ -38,15 +38,21 @@ LocalChecker::~LocalChecker() = default;
 LocalChecker::LocalChecker(LocalChecker&&) noexcept = default;
 LocalChecker& LocalChecker::operator=(LocalChecker&&) noexcept = default;
 
-LocalChecker::LocalChecker(const RawMeshView& mesh) : scratch_(std::make_unique<Scratch>()) {
+LocalChecker::LocalChecker(const RawMeshView& mesh) : scratch_(std::make_unique<Scratch>()) { reset(mesh); }
+
+void LocalChecker::reset(const RawMeshView& mesh) {
   const auto raw = mesh.tets;
   const auto positions = mesh.positions;
   known_tets_.assign(raw.begin(), raw.end());
   known_volume_.assign(raw.size(), 0.0);
   known_rounding_.assign(raw.size(), 0.0);
   excluded_.assign(raw.size(), 0);
+  for (auto& list : vertex_to_tets_) list.clear();  // their memory stays
   vertex_to_tets_.resize(positions.size());
   touched_stamp_.assign(positions.size(), 0);
+  stamp_ = 0;
+  live_tets_ = 0;
+  live_vertices_ = 0;
   for (std::uint32_t t = 0; t < raw.size(); ++t) {
     const RawTet& q = raw[t];
     if (q[0] == kDeadTetMarker) continue;

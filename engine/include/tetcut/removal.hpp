@@ -119,6 +119,11 @@ class Remover {
   // For another mesh (or the same one assigned anew): the report and every per-tet mark of the
   // old one are cleared; the workspaces keep their memory, so nothing is reallocated.
   void reset();
+  // Other options, as a new Remover would have them (reset() included), in the same memory.
+  void set_options(const RemovalOptions& options) {
+    options_ = options;
+    reset();
+  }
   [[nodiscard]] const RemovalOptions& options() const { return options_; }
 
   // The net effect of the last remove(), sorted by id: ids live before it that it killed, and
