@@ -308,7 +308,6 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
   for (TetId r : removed) free_tet(r);
 
   // 2. The new tets, unglued for now.
-  const std::size_t first_created = created ? created->size() : 0;
   for (const TetVerts& tv : added) {
     const TetId t = allocate_tet();
     note(Array::kTetVerts, t.value);
@@ -329,7 +328,6 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     }
     if (created) created->push_back(t);
   }
-  (void)first_created;
 
   // 3. Glue faces with equal vertex triples, matched through a small open-addressing table of
   // slot indices (reused scratch: no allocation once grown). The pairs do not depend on the

@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "tetcut/local_tables.hpp"
-#include "tetcut/predicates.hpp"
 
 namespace tetcut {
 

@@ -5,7 +5,8 @@
 //
 //   mesh PATH                     load a mesh (relative paths: to the scenario's folder)
 //   diameter D                    tool diameter           (also: dref_factor F, p P, depth N,
-//   strategy basic|neighbours|combined                     iterations N, split templates|bisection)
+//                                                          iterations N, split templates|bisection)
+//   strategy S                    basic|neighbours|combined|wide
 //   cut X,Y,Z                     one cut with the tool centred there
 //   sweep X,Y,Z X,Y,Z STEP        one cut every STEP along the segment (both ends included)
 //   remove X,Y,Z                  remove the tet containing the point with the strategy
