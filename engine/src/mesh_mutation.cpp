@@ -1,0 +1,311 @@
+// TetMesh's mutations (the mesh itself: include/tetcut/mesh.hpp): vertices and tets allocated
+// and freed, replace_tets() (the one way tets change: remove some, add some, glue the faces),
+// reserve() and compact(). Every write goes through note(), so that a transaction can roll it back
+// (mesh_journal.cpp).
+#include <algorithm>
+#include <cassert>
+#include <cstring>
+
+#include "detail/reserve_touched.hpp"
+#include "tetcut/local_tables.hpp"
+#include "tetcut/mesh.hpp"
+
+namespace tetcut {
+namespace {
+
+std::array<std::uint32_t, 3> sorted_face_key(const std::array<std::uint32_t, 4>& v, int face) {
+  std::array<std::uint32_t, 3> k = {v[kFaceVerts[face][0]], v[kFaceVerts[face][1]], v[kFaceVerts[face][2]]};
+  if (k[0] > k[1]) std::swap(k[0], k[1]);
+  if (k[1] > k[2]) std::swap(k[1], k[2]);
+  if (k[0] > k[1]) std::swap(k[0], k[1]);
+  return k;
+}
+
+}  // namespace
+
+VertId TetMesh::add_vertex(const Vec3& p) {
+  VertId v;
+  if (free_vert_head_.valid()) {
+    v = free_vert_head_;
+    note(Array::kFreeVertNext, v.value);
+    note(Array::kPositions, v.value);
+    note(Array::kAttributes, v.value);
+    free_vert_head_ = free_vert_next_[v.value];
+    free_vert_next_[v.value] = kNoVert;
+    positions_[v.value] = p;
+    for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
+      for (double& x : attributes_.value(c, v.value)) x = 0.0;
+  } else {
+    v = VertId{vertex_capacity()};
+    positions_.push_back(p);
+    vert_tet_.push_back(kNoTet);
+    vert_boundary_faces_.push_back(0);
+    free_vert_next_.push_back(kNoVert);
+    attributes_.resize(vertex_capacity());
+  }
+  return v;
+}
+
+VertId TetMesh::add_vertex_on_edge(VertId a, VertId b, double t) {
+  const Vec3 p = (1.0 - t) * positions_[a.value] + t * positions_[b.value];
+  const VertId v = add_vertex(p);
+  note(Array::kAttributes, v.value);
+  attributes_.interpolate(v.value, a.value, b.value, t);
+  return v;
+}
+
+TetId TetMesh::allocate_tet() {
+  if (free_tet_head_.valid()) {
+    const TetId t = free_tet_head_;
+    free_tet_head_ = TetId{tet_verts_[t.value][1]};
+    return t;
+  }
+  assert(tet_capacity() < kMaxTets);
+  tet_verts_.push_back({kDeadTetMarker, kDeadTetMarker, kDeadTetMarker, kDeadTetMarker});
+  tet_adj_.push_back({kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour});
+  return TetId{tet_capacity() - 1};
+}
+
+void TetMesh::free_tet(TetId t) {
+  note(Array::kTetVerts, t.value);
+  note(Array::kTetAdj, t.value);
+  // In a transaction the id waits on the pending list until commit(): never reused inside it.
+  TetId& head = journal_.active ? pending_tet_head_ : free_tet_head_;
+  if (journal_.active && !pending_tet_tail_.valid()) pending_tet_tail_ = t;
+  tet_verts_[t.value] = {kDeadTetMarker, head.value, kDeadTetMarker, kDeadTetMarker};
+  tet_adj_[t.value] = {kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour};
+  head = t;
+}
+
+void TetMesh::free_vertex(VertId v) {
+  assert(vert_boundary_faces_[v.value] == 0);
+  note(Array::kVertTet, v.value);
+  note(Array::kFreeVertNext, v.value);
+  VertId& head = journal_.active ? pending_vert_head_ : free_vert_head_;
+  if (journal_.active && !pending_vert_tail_.valid()) pending_vert_tail_ = v;
+  vert_tet_[v.value] = kNoTet;
+  free_vert_next_[v.value] = head;
+  head = v;
+}
+
+// Journals a vertex's seed and boundary count once per replace_tets() call, however many of its
+// faces and tets the call touches (the first record is the one a rollback keeps).
+void TetMesh::touch_vertex(std::uint32_t v) {
+  if (vert_stamp_[v] == stamp_) return;
+  vert_stamp_[v] = stamp_;
+  note(Array::kVertTet, v);
+  note(Array::kBoundary, v);
+}
+
+void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVerts> added,
+                           std::vector<TetId>* created) {
+  // Stamp the removed tets so that "is this neighbour also going?" is O(1).
+  if (tet_stamp_.size() < tet_capacity()) tet_stamp_.resize(tet_capacity(), 0);
+  if (++stamp_ == 0) {
+    std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0);
+    std::fill(vert_stamp_.begin(), vert_stamp_.end(), 0);
+    stamp_ = 1;
+  }
+  for (TetId r : removed) {
+    assert(is_live(r));
+    tet_stamp_[r.value] = stamp_;
+  }
+  if (vert_stamp_.size() < vertex_capacity()) vert_stamp_.resize(vertex_capacity(), 0);
+
+  scratch_faces_.clear();
+  scratch_verts_.clear();
+
+  // 1. The cavity's outer faces; boundary faces that disappear; vertices losing their seed.
+  for (TetId r : removed) {
+    const auto verts = tet_verts_[r.value];
+    for (int f = 0; f < 4; ++f) {
+      const std::uint32_t adj = tet_adj_[r.value][f];
+      if (adj == kNoNeighbour) {
+        for (int k = 0; k < 3; ++k) {
+          touch_vertex(verts[kFaceVerts[f][k]]);
+          --vert_boundary_faces_[verts[kFaceVerts[f][k]]];
+        }
+      } else if (tet_stamp_[adj >> 2] != stamp_) {
+        scratch_faces_.push_back({sorted_face_key(verts, f), adj, kNoSlot, 1});
+      }
+    }
+    for (std::uint32_t v : verts) {
+      const TetId seed = vert_tet_[v];
+      if (seed.valid() && seed != kReseed && tet_stamp_[seed.value] == stamp_) {
+        touch_vertex(v);
+        vert_tet_[v] = kReseed;
+        scratch_verts_.push_back(VertId{v});
+      }
+    }
+  }
+  for (TetId r : removed) free_tet(r);
+
+  // 2. The new tets, unglued for now.
+  for (const TetVerts& tv : added) {
+    const TetId t = allocate_tet();
+    note(Array::kTetVerts, t.value);
+    note(Array::kTetAdj, t.value);
+    auto& verts = tet_verts_[t.value];
+    for (int i = 0; i < 4; ++i) verts[i] = tv[i].value;
+    tet_adj_[t.value] = {kNoNeighbour, kNoNeighbour, kNoNeighbour, kNoNeighbour};
+    for (int f = 0; f < 4; ++f) scratch_faces_.push_back({sorted_face_key(verts, f), pack(t, f), kNoSlot, 0});
+    for (std::uint32_t v : verts) {
+      const TetId seed = vert_tet_[v];
+      if (seed == kReseed || !seed.valid()) touch_vertex(v);
+      if (seed == kReseed) {
+        vert_tet_[v] = t;
+      } else if (!seed.valid()) {  // a vertex made by add_vertex, used for the first time
+        vert_tet_[v] = t;
+        ++live_vertices_;
+      }
+    }
+    if (created) created->push_back(t);
+  }
+
+  // 3. Glue faces with equal vertex triples, matched through a small open-addressing table of
+  // slot indices (reused scratch: no allocation once grown). The pairs do not depend on the
+  // table's order, and everything below walks the slots in the order they were made, so the
+  // result is deterministic. (A sort did the same in O(n log n) and was a quarter of a split.)
+  const std::size_t n = scratch_faces_.size();
+  std::size_t size = 16;
+  while (size < 2 * n) size *= 2;
+  if (face_table_.size() < size) face_table_.resize(size);
+  std::fill(face_table_.begin(), face_table_.begin() + static_cast<std::ptrdiff_t>(size), kNoSlot);
+  const std::size_t mask = size - 1;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    FaceSlot& slot = scratch_faces_[i];
+    slot.partner = kNoSlot;
+    const auto& k = slot.key;
+    std::size_t h = (k[0] * 0x9E3779B1u ^ k[1] * 0x85EBCA77u ^ k[2] * 0xC2B2AE3Du) & mask;
+    for (;; h = (h + 1) & mask) {
+      const std::uint32_t other = face_table_[h];
+      if (other == kNoSlot) {
+        face_table_[h] = i;
+        break;
+      }
+      if (scratch_faces_[other].key == k) {
+        assert(scratch_faces_[other].partner == kNoSlot && "a face would be shared by more than two tets");
+        scratch_faces_[other].partner = i;
+        slot.partner = other;
+        break;
+      }
+    }
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const FaceSlot& s = scratch_faces_[i];
+    if (s.partner != kNoSlot) {
+      if (s.partner < i) continue;  // glued from the first of the pair
+      const std::uint32_t x = s.ref, y = scratch_faces_[s.partner].ref;
+      // New tets were journaled when allocated; an outer tet is journaled per glued face.
+      if (s.is_outer) note(Array::kTetAdj, x >> 2);
+      if (scratch_faces_[s.partner].is_outer) note(Array::kTetAdj, y >> 2);
+      tet_adj_[x >> 2][x & 3u] = y;
+      tet_adj_[y >> 2][y & 3u] = x;
+    } else {
+      // Unmatched: a new boundary face (an outer face of the cavity left uncovered, or a face of
+      // a new tet on the surface).
+      if (s.is_outer) {
+        note(Array::kTetAdj, s.ref >> 2);
+        tet_adj_[s.ref >> 2][s.ref & 3u] = kNoNeighbour;
+      }
+      for (std::uint32_t v : s.key) {
+        touch_vertex(v);
+        ++vert_boundary_faces_[v];
+      }
+    }
+  }
+
+  // 4. Vertices that lost their seed and got none from a new tet: any outer tet that contains
+  // them will do (in a manifold shell the remaining tets touch the removed ones through a face
+  // containing the vertex); none means the vertex has no tets left and goes too.
+  for (VertId v : scratch_verts_) {
+    if (vert_tet_[v.value] != kReseed) continue;
+    TetId seed = kNoTet;
+    for (const FaceSlot& s : scratch_faces_) {
+      if (!s.is_outer) continue;
+      if (s.key[0] == v.value || s.key[1] == v.value || s.key[2] == v.value) {
+        seed = TetId{s.ref >> 2};
+        break;
+      }
+    }
+    if (seed.valid()) {
+      vert_tet_[v.value] = seed;  // journaled when it lost its seed
+    } else {
+      free_vertex(v);
+      --live_vertices_;
+    }
+  }
+
+  live_tets_ = live_tets_ - static_cast<std::uint32_t>(removed.size()) + static_cast<std::uint32_t>(added.size());
+}
+
+void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
+  using detail::reserve_touched;
+  reserve_touched(tet_verts_, tets);
+  reserve_touched(tet_adj_, tets);
+  reserve_touched(tet_stamp_, tets);
+  reserve_touched(vert_stamp_, vertices);
+  reserve_touched(positions_, vertices);
+  reserve_touched(vert_tet_, vertices);
+  reserve_touched(vert_boundary_faces_, vertices);
+  reserve_touched(free_vert_next_, vertices);
+  attributes_.reserve(vertices);
+  // The working size of one operation: its journal and the faces replace_tets() glues. A larger
+  // operation grows them once.
+  reserve_touched(journal_.entries, kJournalWorkingSize);
+  reserve_touched(scratch_faces_, 4096);
+  reserve_touched(face_table_, 8192);
+  reserve_touched(scratch_verts_, 1024);
+}
+
+Renumbering TetMesh::compact() {
+  assert(!journal_.active && "compact() inside a transaction");
+  Renumbering map;
+  map.tet_old_to_new.assign(tet_capacity(), kNoTet);
+  map.vert_old_to_new.assign(vertex_capacity(), kNoVert);
+  std::uint32_t nt = 0, nv = 0;
+  for (std::uint32_t t = 0; t < tet_capacity(); ++t)
+    if (tet_verts_[t][0] != kDeadTetMarker) map.tet_old_to_new[t] = TetId{nt++};
+  std::vector<std::uint32_t> vert_new_to_old;
+  vert_new_to_old.reserve(live_vertices_);
+  for (std::uint32_t v = 0; v < vertex_capacity(); ++v)
+    if (vert_tet_[v].valid()) {
+      map.vert_old_to_new[v] = VertId{nv++};
+      vert_new_to_old.push_back(v);
+    }
+
+  std::vector<std::array<std::uint32_t, 4>> verts(nt), adj(nt);
+  for (std::uint32_t t = 0; t < tet_capacity(); ++t) {
+    const TetId n = map.tet_old_to_new[t];
+    if (!n.valid()) continue;
+    for (int i = 0; i < 4; ++i) {
+      verts[n.value][i] = map.vert_old_to_new[tet_verts_[t][i]].value;
+      const std::uint32_t a = tet_adj_[t][i];
+      adj[n.value][i] = a == kNoNeighbour ? kNoNeighbour : pack(map.tet_old_to_new[a >> 2], static_cast<int>(a & 3u));
+    }
+  }
+  std::vector<Vec3> positions(nv);
+  std::vector<TetId> vert_tet(nv);
+  std::vector<std::uint32_t> boundary(nv);
+  for (std::uint32_t n = 0; n < nv; ++n) {
+    const std::uint32_t old = vert_new_to_old[n];
+    positions[n] = positions_[old];
+    vert_tet[n] = map.tet_old_to_new[vert_tet_[old].value];
+    boundary[n] = vert_boundary_faces_[old];
+  }
+  attributes_.permute(vert_new_to_old);
+
+  tet_verts_ = std::move(verts);
+  tet_adj_ = std::move(adj);
+  positions_ = std::move(positions);
+  vert_tet_ = std::move(vert_tet);
+  vert_boundary_faces_ = std::move(boundary);
+  free_vert_next_.assign(nv, kNoVert);
+  free_tet_head_ = kNoTet;
+  free_vert_head_ = kNoVert;
+  tet_stamp_.assign(nt, 0);
+  stamp_ = 0;
+  return map;
+}
+
+}  // namespace tetcut
