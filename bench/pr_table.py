@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The pull-request delta: one Markdown row per gated figure of bench/budgets.json.
 
     pr_table.py BASE.json HEAD.json BUDGETS.json [--alpha A]
@@ -7,9 +7,9 @@ BASE and HEAD are results files of `ci/bench` (Google Benchmark JSON, merged acr
 run on the same machine. Columns: figure, base, head, change, significance, budget (the head's
 value against it). Instruction counts (callgrind, `ci/bench --instructions`) come first: they do
 not depend on the runner's load, so any change is real for one toolchain ("exact"). Wall-time
-figures follow, with a two-sided Mann-Whitney U test over their repetitions
-(bench/compare_runs.py): "significant" when p < alpha (0.05) and the medians are more than 1 %
-apart, as compare_runs.py says it.
+figures follow, with a two-sided Mann-Whitney U test over their repetitions (scipy's, the one
+Google Benchmark's compare.py uses; Debian's python3-scipy, so run it with /usr/bin/python3):
+"significant" when p < alpha (0.05) and the medians are more than 1 % apart.
 
 Prints the Markdown (the workflow adds it to the job summary and to a pull-request comment).
 Exit 0 (information, not a gate: ci/gate is the gate), 2 on unreadable input or bad usage.
@@ -19,7 +19,6 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from budget_gate import load, measured_value  # noqa: E402
-from compare_runs import mann_whitney_p  # noqa: E402
 
 # Marks the comment the workflow updates instead of adding a new one on every push.
 MARKER = "<!-- tetcut-benchmark-delta -->"
@@ -53,7 +52,9 @@ def significance(figure, base, head, alpha):
     xb, xh = repetition_samples(base, figure), repetition_samples(head, figure)
     if len(xb) < 2 or len(xh) < 2:
         return "one run each: no test"
-    p = mann_whitney_p(xb, xh)
+    from scipy.stats import mannwhitneyu  # python3-scipy (ci/packages.txt)
+
+    p = float(mannwhitneyu(xb, xh, alternative="two-sided").pvalue)
     vb, vh = measured_value(base, figure), measured_value(head, figure)
     apart = vb != 0 and abs(vh - vb) / abs(vb) * 100 > NOISE_FLOOR_PERCENT
     return f"{'significant' if p < alpha and apart else 'noise'} (p={p:.2f}, n={len(xb)}+{len(xh)})"
