@@ -13,8 +13,9 @@
       under a log-normal model of the run-to-run spread (exp(m + t(0.999, N-1) s sqrt(1 + 1/N))
       over the logs of the N medians). A figure that is steady gets a tight bound, a noisy one a
       wide bound; a flat multiple of the median gave both the same. The bound is never below
-      1.25 times the slowest of the N runs: runs taken in one sitting do not see the drift
-      between sittings; and it never rises above the bound in the file (calibration tightens,
+      1.5 times the slowest of the N runs: runs taken in one sitting do not see the drift
+      between sittings, nor a CI run's 25 minutes of compiling just before (1.25 was too close:
+      the p50 of a CI run on 2026-11-24 came out 1.29 x the slowest idle run); and it never rises above the bound in the file (calibration tightens,
       an issue's goal stays a ceiling). Figures of kind "count"
       (exact: allocations, bytes per tet, unresolved) are left alone.
 
@@ -85,7 +86,7 @@ def calibrate_instructions(budgets, results):
 
 
 # The least margin over the slowest calibration run (see calibrate_times).
-DRIFT = 1.25
+DRIFT = 1.5
 
 
 def calibrate_times(budgets, runs):
