@@ -26,6 +26,15 @@ void cut_once(Cutter& cutter) {
   ASSERT_GT(cutter.mesh().tet_capacity(), cutter.mesh().num_tets());
 }
 
+// The Cutter is current again: it cuts, removes, and leaves a valid mesh.
+void expect_current_and_cutting(Cutter& cutter) {
+  EXPECT_TRUE(cutter.indexes_current_mesh());
+  const CutReport r = cutter.cut(kBottomCentre);
+  EXPECT_TRUE(r.ok) << r.failure;
+  EXPECT_GT(r.tets_removed, 0u);
+  EXPECT_TRUE(testing::mesh_is_valid(cutter.mesh()));
+}
+
 TEST(CutterAndCompaction, MeshCompactedBehindTheCuttersBackIsRefusedAndLeftUntouched) {
   TetMesh mesh = box();
   Cutter cutter(mesh, {.tool_diameter = 0.5});
@@ -51,11 +60,7 @@ TEST(CutterAndCompaction, MeshCompactedBehindTheCuttersBackIsRefusedAndLeftUntou
   EXPECT_EQ(mesh.tet_capacity(), capacity);
 
   cutter.reset();  // re-indexes the compacted mesh
-  EXPECT_TRUE(cutter.indexes_current_mesh());
-  const CutReport again = cutter.cut(kBottomCentre);
-  EXPECT_TRUE(again.ok) << again.failure;
-  EXPECT_GT(again.tets_removed, 0u);
-  EXPECT_TRUE(testing::mesh_is_valid(mesh));
+  expect_current_and_cutting(cutter);
 }
 
 TEST(CutterAndCompaction, CompactingThroughTheCutterKeepsItCurrent) {
@@ -65,11 +70,7 @@ TEST(CutterAndCompaction, CompactingThroughTheCutterKeepsItCurrent) {
   const std::uint32_t live = mesh.num_tets();
   cutter.compact();
   EXPECT_EQ(mesh.tet_capacity(), live);
-  EXPECT_TRUE(cutter.indexes_current_mesh());
-  const CutReport r = cutter.cut(kBottomCentre);
-  EXPECT_TRUE(r.ok) << r.failure;
-  EXPECT_GT(r.tets_removed, 0u);
-  EXPECT_TRUE(testing::mesh_is_valid(mesh));
+  expect_current_and_cutting(cutter);
 }
 
 TEST(CutterAndCompaction, AnotherMeshAssignedIntoTheHeldObjectIsRefusedUntilReset) {
@@ -80,7 +81,7 @@ TEST(CutterAndCompaction, AnotherMeshAssignedIntoTheHeldObjectIsRefusedUntilRese
   EXPECT_FALSE(cutter.indexes_current_mesh());
   EXPECT_FALSE(cutter.cut(kTopCentre).ok);
   cutter.reset();
-  EXPECT_TRUE(cutter.cut(kTopCentre).ok);
+  expect_current_and_cutting(cutter);
 }
 
 TEST(CutterAndCompaction, ACopyOfAMeshIsANewObjectAFreshCutterMayIndex) {
