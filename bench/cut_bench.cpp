@@ -23,7 +23,8 @@
 
 #include "bench_meshes.hpp"
 #include "tetcut/cut.hpp"
-#include "tetcut/local_tables.hpp"
+#include "detail/edge_split.hpp"
+#include "detail/local_tables.hpp"
 
 namespace {
 std::atomic<std::uint64_t> g_allocations{0};

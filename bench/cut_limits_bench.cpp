@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bench_meshes.hpp"
+#include "detail/refine.hpp"
 #include "tetcut/cut.hpp"
 
 namespace {

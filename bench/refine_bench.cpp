@@ -6,8 +6,8 @@
 #include <algorithm>
 
 #include "bench_meshes.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/refine.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/refine.hpp"
 
 namespace {
 

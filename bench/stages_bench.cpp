@@ -14,10 +14,11 @@
 #include <cmath>
 
 #include "bench_meshes.hpp"
-#include "tetcut/boundary_tet_picker.hpp"
+#include "detail/boundary_tet_picker.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
-#include "tetcut/removal.hpp"
+#include "detail/removal.hpp"
+#include "detail/spatial_index.hpp"
 
 namespace {
 

@@ -1,6 +1,7 @@
 # tetcut_add_installed_library(NAME SOURCES...): the static library tetcut_NAME of the current
 # folder, aliased tetcut::NAME, public headers in its include/ (style: fmt), installed and
-# exported so that find_package(tetcut) gives tetcut::NAME. For geometry, engine, invariants.
+# exported so that find_package(tetcut) gives tetcut::NAME (when TETCUT_INSTALL). For geometry,
+# engine, invariants.
 function(tetcut_add_installed_library name)
   set(target tetcut_${name})
   add_library(${target} STATIC ${ARGN})
@@ -10,6 +11,8 @@ function(tetcut_add_installed_library name)
   target_include_directories(${target} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-  install(TARGETS ${target} EXPORT tetcutTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  install(DIRECTORY include/tetcut DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  if(TETCUT_INSTALL)
+    install(TARGETS ${target} EXPORT tetcutTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+    install(DIRECTORY include/tetcut DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  endif()
 endfunction()

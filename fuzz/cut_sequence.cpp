@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "sequence_session.hpp"
-#include "tetcut/removal.hpp"
+#include "detail/removal.hpp"
 
 namespace tetcut::fuzz::cut_sequence {
 namespace {

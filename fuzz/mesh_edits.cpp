@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "tetcut/box_mesh.hpp"
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 
 namespace tetcut::fuzz {
 

@@ -11,11 +11,11 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
-#include "tetcut/edge_split.hpp"
+#include "detail/edge_split.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/raw_mesh.hpp"
-#include "tetcut/tool_ball.hpp"
+#include "detail/tool_ball.hpp"
 #include "tetcut/vec3.hpp"
 
 namespace tetcut::fuzz {

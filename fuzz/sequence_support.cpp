@@ -8,7 +8,7 @@
 #include <mutex>
 
 #include "tetcut/io.hpp"
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 #include "tetcut/mesh_builder.hpp"
 
 #ifndef TETCUT_FUZZ_MESH_DIR

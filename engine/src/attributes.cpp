@@ -21,14 +21,14 @@ std::optional<std::uint32_t> VertexAttributes::find(std::string_view name) const
   return std::nullopt;
 }
 
-std::span<double> VertexAttributes::value(std::uint32_t c, std::uint32_t vertex) {
+std::span<double> VertexAttributes::value(std::uint32_t c, VertId vertex) {
   Channel& ch = channels_[c];
-  return {ch.values.data() + std::size_t{vertex} * ch.width, ch.width};
+  return {ch.values.data() + std::size_t{vertex.value} * ch.width, ch.width};
 }
 
-std::span<const double> VertexAttributes::value(std::uint32_t c, std::uint32_t vertex) const {
+std::span<const double> VertexAttributes::value(std::uint32_t c, VertId vertex) const {
   const Channel& ch = channels_[c];
-  return {ch.values.data() + std::size_t{vertex} * ch.width, ch.width};
+  return {ch.values.data() + std::size_t{vertex.value} * ch.width, ch.width};
 }
 
 void VertexAttributes::resize(std::uint32_t vertex_count) {
@@ -40,22 +40,22 @@ void VertexAttributes::reserve(std::uint32_t vertex_count) {
   for (Channel& ch : channels_) ch.values.reserve(std::size_t{vertex_count} * ch.width);
 }
 
-void VertexAttributes::interpolate(std::uint32_t dst, std::uint32_t a, std::uint32_t b, double t) {
+void VertexAttributes::interpolate(VertId dst, VertId a, VertId b, double t) {
   for (Channel& ch : channels_) {
     const std::size_t w = ch.width;
     for (std::size_t k = 0; k < w; ++k) {
-      const double va = ch.values[a * w + k];
-      const double vb = ch.values[b * w + k];
-      ch.values[dst * w + k] = (1.0 - t) * va + t * vb;
+      const double va = ch.values[a.value * w + k];
+      const double vb = ch.values[b.value * w + k];
+      ch.values[dst.value * w + k] = (1.0 - t) * va + t * vb;
     }
   }
 }
 
-void VertexAttributes::permute(std::span<const std::uint32_t> new_to_old) {
+void VertexAttributes::permute(std::span<const VertId> new_to_old) {
   for (Channel& ch : channels_) {
     std::vector<double> moved(new_to_old.size() * ch.width);
     for (std::size_t n = 0; n < new_to_old.size(); ++n)
-      std::copy_n(ch.values.begin() + static_cast<std::ptrdiff_t>(new_to_old[n] * ch.width), ch.width,
+      std::copy_n(ch.values.begin() + static_cast<std::ptrdiff_t>(std::size_t{new_to_old[n].value} * ch.width), ch.width,
                   moved.begin() + static_cast<std::ptrdiff_t>(n * ch.width));
     ch.values = std::move(moved);
   }

@@ -1,4 +1,4 @@
-#include "tetcut/boundary_tet_picker.hpp"
+#include "detail/boundary_tet_picker.hpp"
 
 namespace tetcut {
 

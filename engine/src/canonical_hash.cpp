@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "tetcut/random.hpp"
+#include "detail/random.hpp"
 
 namespace tetcut {
 namespace {

@@ -1,13 +1,13 @@
-#include "tetcut/edge_split.hpp"
+#include "detail/edge_split.hpp"
 
 #include <algorithm>
 #include <tuple>
 
+#include "detail/local_tables.hpp"
+#include "detail/quality.hpp"
 #include "detail/reserve_touched.hpp"
-#include "tetcut/local_tables.hpp"
+#include "detail/split_templates.hpp"
 #include "tetcut/predicates.hpp"
-#include "tetcut/quality.hpp"
-#include "tetcut/split_templates.hpp"
 
 namespace tetcut {
 namespace {

@@ -8,7 +8,7 @@
 #include <cassert>
 #include <cstring>
 
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -4,7 +4,8 @@
 #include <numeric>
 #include <string>
 
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/mesh_internals.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {
@@ -25,7 +26,7 @@ const char* to_string(BuildProblemKind kind) {
   return "unknown problem";
 }
 
-// Fills a TetMesh's private arrays (friend of TetMesh).
+// Validates the input, then fills a TetMesh's arrays in one pass (through detail::MeshInternals).
 class MeshAssembler {
  public:
   MeshAssembler(const RawMesh& raw, const BuildOptions& options, BuildResult& result)
@@ -314,29 +315,32 @@ void MeshAssembler::check_edge_shells() {
 }
 
 TetMesh MeshAssembler::assemble() {
+  using M = detail::MeshInternals;
   TetMesh mesh;
   const std::uint32_t nv = static_cast<std::uint32_t>(raw_.positions.size());
-  mesh.tet_verts_ = tets_;
-  mesh.tet_adj_ = std::move(adj_);
-  mesh.positions_ = raw_.positions;
-  mesh.vert_tet_.assign(nv, kNoTet);
-  mesh.vert_boundary_faces_ = std::move(boundary_faces_);
-  mesh.free_vert_next_.assign(nv, kNoVert);
-  mesh.live_tets_ = static_cast<std::uint32_t>(tets_.size());
+  M::tet_verts(mesh) = tets_;
+  M::adjacency(mesh) = std::move(adj_);
+  M::positions(mesh) = raw_.positions;
+  auto& vert_tet = M::vertex_tet(mesh);
+  vert_tet.assign(nv, kNoTet);
+  M::boundary_faces(mesh) = std::move(boundary_faces_);
+  auto& free_next = M::free_vert_next(mesh);
+  free_next.assign(nv, kNoVert);
+  M::live_tets(mesh) = static_cast<std::uint32_t>(tets_.size());
   for (std::uint32_t v = 0; v < nv; ++v) {
     if (offsets_[v] != offsets_[v + 1]) {
-      mesh.vert_tet_[v] = TetId{incidence_[offsets_[v]]};
-      ++mesh.live_vertices_;
+      vert_tet[v] = TetId{incidence_[offsets_[v]]};
+      ++M::live_vertices(mesh);
     }
   }
   // Unreferenced input vertices keep their ids as tombstones, reusable by later splits;
   // pushed in descending order so that the lowest id is reused first.
   for (std::uint32_t v = nv; v-- > 0;)
-    if (!mesh.vert_tet_[v].valid()) {
-      mesh.free_vert_next_[v] = mesh.free_vert_head_;
-      mesh.free_vert_head_ = VertId{v};
+    if (!vert_tet[v].valid()) {
+      free_next[v] = M::free_vert_head(mesh);
+      M::free_vert_head(mesh) = VertId{v};
     }
-  mesh.attributes_.resize(nv);
+  M::attributes(mesh).resize(nv);
   return mesh;
 }
 

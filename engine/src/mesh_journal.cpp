@@ -73,7 +73,7 @@ void TetMesh::note(Array array, std::uint32_t index) {
     case Array::kAttributes:
       e.old[0] = static_cast<std::uint32_t>(journal_.attribute_values.size());
       for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
-        for (double x : attributes_.value(c, index)) journal_.attribute_values.push_back(x);
+        for (double x : attributes_.value(c, VertId{index})) journal_.attribute_values.push_back(x);
       break;
   }
   journal_.entries.push_back(e);
@@ -93,7 +93,7 @@ void TetMesh::rollback_to(const Savepoint& p) {
       case Array::kAttributes: {
         std::size_t k = e.old[0];
         for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
-          for (double& x : attributes_.value(c, e.index)) x = journal_.attribute_values[k++];
+          for (double& x : attributes_.value(c, VertId{e.index})) x = journal_.attribute_values[k++];
         break;
       }
     }

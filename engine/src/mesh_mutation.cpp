@@ -6,8 +6,8 @@
 #include <cassert>
 #include <cstring>
 
+#include "detail/local_tables.hpp"
 #include "detail/reserve_touched.hpp"
-#include "tetcut/local_tables.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut {
@@ -34,7 +34,7 @@ VertId TetMesh::add_vertex(const Vec3& p) {
     free_vert_next_[v.value] = kNoVert;
     positions_[v.value] = p;
     for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
-      for (double& x : attributes_.value(c, v.value)) x = 0.0;
+      for (double& x : attributes_.value(c, v)) x = 0.0;
   } else {
     v = VertId{vertex_capacity()};
     positions_.push_back(p);
@@ -50,7 +50,7 @@ VertId TetMesh::add_vertex_on_edge(VertId a, VertId b, double t) {
   const Vec3 p = (1.0 - t) * positions_[a.value] + t * positions_[b.value];
   const VertId v = add_vertex(p);
   note(Array::kAttributes, v.value);
-  attributes_.interpolate(v.value, a.value, b.value, t);
+  attributes_.interpolate(v, a, b, t);
   return v;
 }
 
@@ -266,12 +266,12 @@ Renumbering TetMesh::compact() {
   std::uint32_t nt = 0, nv = 0;
   for (std::uint32_t t = 0; t < tet_capacity(); ++t)
     if (tet_verts_[t][0] != kDeadTetMarker) map.tet_old_to_new[t] = TetId{nt++};
-  std::vector<std::uint32_t> vert_new_to_old;
+  std::vector<VertId> vert_new_to_old;
   vert_new_to_old.reserve(live_vertices_);
   for (std::uint32_t v = 0; v < vertex_capacity(); ++v)
     if (vert_tet_[v].valid()) {
       map.vert_old_to_new[v] = VertId{nv++};
-      vert_new_to_old.push_back(v);
+      vert_new_to_old.push_back(VertId{v});
     }
 
   std::vector<std::array<std::uint32_t, 4>> verts(nt), adj(nt);
@@ -288,7 +288,7 @@ Renumbering TetMesh::compact() {
   std::vector<TetId> vert_tet(nv);
   std::vector<std::uint32_t> boundary(nv);
   for (std::uint32_t n = 0; n < nv; ++n) {
-    const std::uint32_t old = vert_new_to_old[n];
+    const std::uint32_t old = vert_new_to_old[n].value;
     positions[n] = positions_[old];
     vert_tet[n] = map.tet_old_to_new[vert_tet_[old].value];
     boundary[n] = vert_boundary_faces_[old];
@@ -305,6 +305,7 @@ Renumbering TetMesh::compact() {
   free_vert_head_ = kNoVert;
   tet_stamp_.assign(nt, 0);
   stamp_ = 0;
+  id_epoch_.advance();
   return map;
 }
 

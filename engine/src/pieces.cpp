@@ -1,4 +1,4 @@
-#include "tetcut/pieces.hpp"
+#include "detail/pieces.hpp"
 
 namespace tetcut {
 

@@ -1,10 +1,10 @@
-#include "tetcut/quality.hpp"
+#include "detail/quality.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 
 namespace tetcut {
 

@@ -1,4 +1,4 @@
-#include "tetcut/refine.hpp"
+#include "detail/refine.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "detail/local_tables.hpp"
 #include "detail/reserve_touched.hpp"
-#include "tetcut/local_tables.hpp"
 
 namespace tetcut {
 namespace {

@@ -1,8 +1,8 @@
-#include "tetcut/removability.hpp"
+#include "detail/removability.hpp"
 
 #include <cassert>
 
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 
 namespace tetcut {
 

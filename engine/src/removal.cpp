@@ -1,20 +1,20 @@
 // The removal dispatcher: one request, the strategy's stages in the paper's order (removal.hpp).
-#include "tetcut/removal.hpp"
+#include "detail/removal.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <vector>
 
+#include "detail/edge_split.hpp"
+#include "detail/local_tables.hpp"
 #include "detail/reserve_touched.hpp"
+#include "detail/set_removal.hpp"
+#include "detail/split_templates.hpp"
 #include "remove/neighbour_search.hpp"
 #include "remove/normal_surface_fallback.hpp"
 #include "remove/refinement_strategies.hpp"
 #include "remove/removal_context.hpp"
 #include "remove/wide_search.hpp"
-#include "tetcut/edge_split.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/set_removal.hpp"
-#include "tetcut/split_templates.hpp"
 
 namespace tetcut {
 
@@ -35,24 +35,6 @@ struct Remover::Workspace {
       met_unresolved.resize(mesh.tet_capacity() + mesh.tet_capacity() / 4 + 16, 0);
   }
 };
-
-const char* to_string(RemovalStrategy strategy) {
-  switch (strategy) {
-    case RemovalStrategy::kBasic: return "basic";
-    case RemovalStrategy::kNeighbours: return "neighbours";
-    case RemovalStrategy::kCombined: return "combined";
-    case RemovalStrategy::kWide: return "wide";
-  }
-  return "?";
-}
-
-std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text) {
-  if (text == "basic") return RemovalStrategy::kBasic;
-  if (text == "neighbours" || text == "neighbors") return RemovalStrategy::kNeighbours;
-  if (text == "combined") return RemovalStrategy::kCombined;
-  if (text == "wide") return RemovalStrategy::kWide;
-  return std::nullopt;
-}
 
 const char* to_string(RemovalOutcome outcome) {
   switch (outcome) {
@@ -191,7 +173,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const Requ
     if (mesh.boundary_face_count(c) > 0) w.exposed.push_back(c);
   if (own_transaction) mesh.commit();
 
-  report_.add(result, repeat);
+  count_request(report_, result, repeat);
   w.grow(mesh);
   if (result.outcome == RemovalOutcome::kUnresolved) {
     w.met_unresolved[t.value] = 1;

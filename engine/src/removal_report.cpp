@@ -1,6 +1,6 @@
 #include "tetcut/removal_report.hpp"
 
-#include "tetcut/removal.hpp"
+#include "detail/removal.hpp"  // RemovalResult
 
 namespace tetcut {
 
@@ -15,50 +15,50 @@ double RemovalReport::cardinality_per_selected() const {
   return static_cast<double>(direct + neighbour_set_tets) / static_cast<double>(selected_in_sets);
 }
 
-void RemovalReport::add(const RemovalResult& result, bool repeat) {
+void count_request(RemovalReport& report, const RemovalResult& result, bool repeat) {
   const SingularityKind kind = result.first.kind;
   if (repeat) {
-    ++repeated_requests;
+    ++report.repeated_requests;
   } else {
-    ++requested;
-    if (kind == SingularityKind::kVertex) ++vertex_singularities;
-    if (kind == SingularityKind::kEdge) ++edge_singularities;
+    ++report.requested;
+    if (kind == SingularityKind::kVertex) ++report.vertex_singularities;
+    if (kind == SingularityKind::kEdge) ++report.edge_singularities;
   }
   if (result.outcome != RemovalOutcome::kUnresolved) {
-    ++removed;
-    if (repeat) --unresolved;
-    tets_removed += result.tets_removed;
-    tets_created += result.tets_created;
-    edges_split += result.edges_split;
+    ++report.removed;
+    if (repeat) --report.unresolved;
+    report.tets_removed += result.tets_removed;
+    report.tets_created += result.tets_created;
+    report.edges_split += result.edges_split;
   }
   switch (result.outcome) {
     case RemovalOutcome::kDirect:
       if (!repeat) {
-        ++direct;
-        selected_in_sets += result.selected_removed;
+        ++report.direct;
+        report.selected_in_sets += result.selected_removed;
       }
       break;
     case RemovalOutcome::kNeighbours:
-      ++resolved_by_neighbours;
-      neighbour_set_tets += result.tets_removed;
-      selected_in_sets += result.selected_removed;
+      ++report.resolved_by_neighbours;
+      report.neighbour_set_tets += result.tets_removed;
+      report.selected_in_sets += result.selected_removed;
       if (kind == SingularityKind::kVertex) {
-        ++vertex_resolved_by_neighbours;
-        vertex_neighbour_set_tets += result.tets_removed;
+        ++report.vertex_resolved_by_neighbours;
+        report.vertex_neighbour_set_tets += result.tets_removed;
       } else {
-        ++edge_resolved_by_neighbours;
-        edge_neighbour_set_tets += result.tets_removed;
+        ++report.edge_resolved_by_neighbours;
+        report.edge_neighbour_set_tets += result.tets_removed;
       }
       break;
     case RemovalOutcome::kRefinement:
-      ++resolved_by_refinement;
-      if (result.optimized_refinement) ++resolved_by_optimized_refinement;
+      ++report.resolved_by_refinement;
+      if (result.optimized_refinement) ++report.resolved_by_optimized_refinement;
       break;
     case RemovalOutcome::kFallback:
-      ++resolved_by_fallback;
+      ++report.resolved_by_fallback;
       break;
     case RemovalOutcome::kUnresolved:
-      if (!repeat) ++unresolved;
+      if (!repeat) ++report.unresolved;
       break;
   }
 }

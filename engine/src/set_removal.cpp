@@ -1,10 +1,10 @@
-#include "tetcut/set_removal.hpp"
+#include "detail/set_removal.hpp"
 
 #include <algorithm>
 #include <cassert>
 
+#include "detail/local_tables.hpp"
 #include "detail/reserve_touched.hpp"
-#include "tetcut/local_tables.hpp"
 
 namespace tetcut {
 namespace {

@@ -1,11 +1,11 @@
-#include "tetcut/spatial_index.hpp"
+#include "detail/spatial_index.hpp"
 
 #include <algorithm>
 #include <cmath>
 
+#include "detail/local_tables.hpp"
+#include "detail/random.hpp"
 #include "detail/reserve_touched.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/random.hpp"
 
 namespace tetcut {
 

@@ -1,11 +1,11 @@
-#include "tetcut/split_templates.hpp"
+#include "detail/split_templates.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <utility>
 #include <vector>
 
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -1,9 +1,9 @@
-#include "tetcut/tool_ball.hpp"
+#include "detail/tool_ball.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -23,10 +23,10 @@
 #include "fuzz_failure.hpp"
 #include "mesh_edits.hpp"
 #include "tetcut/change_log.hpp"
-#include "tetcut/edge_split.hpp"
+#include "detail/edge_split.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "tetcut/refine.hpp"
+#include "detail/refine.hpp"
 
 namespace {
 

@@ -21,11 +21,11 @@
 #include "tetcut/attributes.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/change_log.hpp"
-#include "tetcut/edge_split.hpp"
+#include "detail/edge_split.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "tetcut/random.hpp"
-#include "tetcut/refine.hpp"
-#include "tetcut/removability.hpp"
+#include "detail/random.hpp"
+#include "detail/refine.hpp"
+#include "detail/removability.hpp"
 
 namespace {
 
@@ -87,8 +87,8 @@ void check_created_vertices(const CheckedMesh& checked, const ChangeLog& log) {
                     "interpolation", which + ": position is not (1 - t) a + t b");
     for (std::uint32_t ch = 0; ch < attributes.channel_count(); ++ch) {
       checked.require(c.vertex.value < attributes.size(), "I8", which + ": no attribute slot");
-      const auto va = attributes.value(ch, c.a.value), vb = attributes.value(ch, c.b.value);
-      const auto vp = attributes.value(ch, c.vertex.value);
+      const auto va = attributes.value(ch, c.a), vb = attributes.value(ch, c.b);
+      const auto vp = attributes.value(ch, c.vertex);
       for (std::size_t k = 0; k < vp.size(); ++k)
         checked.require(close(vp[k], (1.0 - c.t) * va[k] + c.t * vb[k], std::fabs(va[k]) + std::fabs(vb[k]) + 1.0),
                         "interpolation", which + ": channel " + attributes.channel(ch).name + "[" + std::to_string(k) +
@@ -188,8 +188,8 @@ void compact(CheckedMesh& checked) {
     checked.require(mesh.is_live(to) && mesh.position(to) == positions[v], "I8",
                     "vertex " + std::to_string(v) + " lost its position in compact()");
     for (std::uint32_t ch = 0; ch < attributes.channel_count(); ++ch) {
-      const auto before = attributes.value(ch, v);
-      const auto after = mesh.attributes().value(ch, to.value);
+      const auto before = attributes.value(ch, VertId{v});
+      const auto after = mesh.attributes().value(ch, to);
       for (std::size_t k = 0; k < before.size(); ++k)
         checked.require(before[k] == after[k], "I8", "vertex " + std::to_string(v) + " lost its attributes in compact()");
     }
@@ -208,7 +208,7 @@ void add_channel(CheckedMesh& checked, FuzzedDataProvider& input) {
     if (checked.tracing()) checked.describe("width " + std::to_string(width) + " seed " + std::to_string(seed));
     SplitMix64 rng(seed);
     for (std::uint32_t v = 0; v < attributes.size(); ++v)
-      for (double& x : attributes.value(*channel, v)) x = (2.0 * rng.unit() - 1.0) * kMaxAttributeValue;
+      for (double& x : attributes.value(*channel, VertId{v})) x = (2.0 * rng.unit() - 1.0) * kMaxAttributeValue;
   }
   checked.end({}, {}, 0.0);
 }

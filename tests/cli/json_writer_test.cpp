@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "tetcut/random.hpp"
+#include "detail/random.hpp"
 
 namespace tetcut::cli {
 namespace {

@@ -22,9 +22,9 @@
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/refine.hpp"
-#include "tetcut/tool_ball.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/refine.hpp"
+#include "detail/tool_ball.hpp"
 
 namespace tetcut::testing {
 namespace {

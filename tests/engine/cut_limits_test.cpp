@@ -11,7 +11,8 @@
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/io.hpp"
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/refine.hpp"
 
 namespace tetcut {
 namespace {

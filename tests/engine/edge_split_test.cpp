@@ -12,11 +12,11 @@
 #include "checked.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "tetcut/edge_split.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/quality.hpp"
-#include "tetcut/random.hpp"
-#include "tetcut/split_templates.hpp"
+#include "detail/edge_split.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/quality.hpp"
+#include "detail/random.hpp"
+#include "detail/split_templates.hpp"
 
 namespace tetcut {
 namespace {

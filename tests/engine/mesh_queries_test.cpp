@@ -4,7 +4,7 @@
 #include <set>
 
 #include "test_meshes.hpp"
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {

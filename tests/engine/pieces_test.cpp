@@ -3,7 +3,7 @@
 
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "tetcut/pieces.hpp"
+#include "detail/pieces.hpp"
 
 namespace tetcut {
 namespace {

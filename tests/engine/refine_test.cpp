@@ -6,8 +6,8 @@
 #include "checked.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/refine.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/refine.hpp"
 
 namespace tetcut {
 namespace {

@@ -8,9 +8,9 @@
 
 #include "removal_test_support.hpp"
 #include "tetcut/io.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/random.hpp"
-#include "tetcut/set_removal.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/random.hpp"
+#include "detail/set_removal.hpp"
 
 namespace tetcut::testing {
 namespace {

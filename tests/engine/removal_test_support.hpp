@@ -12,8 +12,8 @@
 #include "test_meshes.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/predicates.hpp"
-#include "tetcut/boundary_tet_picker.hpp"
-#include "tetcut/removal.hpp"
+#include "detail/boundary_tet_picker.hpp"
+#include "detail/removal.hpp"
 
 namespace tetcut::testing {
 

@@ -4,8 +4,8 @@
 
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/random.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/random.hpp"
 
 namespace tetcut {
 namespace {

@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "test_meshes.hpp"
-#include "tetcut/edge_split.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/random.hpp"
-#include "tetcut/spatial_index.hpp"
+#include "detail/edge_split.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/random.hpp"
+#include "detail/spatial_index.hpp"
 
 namespace tetcut {
 namespace {

@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include "test_meshes.hpp"
-#include "tetcut/edge_split.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/random.hpp"
+#include "detail/edge_split.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/random.hpp"
 
 namespace tetcut {
 namespace {
@@ -53,7 +53,7 @@ void random_operation(TetMesh& mesh, SplitMix64& rng, EdgeSplitter& splitter) {
 TEST(Transaction, RollbackRestoresTheMeshBitForBit) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
   const auto tag = *mesh.attributes().add_channel("tag", 1);
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, v)[0] = v;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = v;
   SplitMix64 rng(17);
   EdgeSplitter splitter;
   // Some history first, so that free lists are not empty.
@@ -91,7 +91,7 @@ TEST(Transaction, CommitKeepsTheChanges) {
 TEST(Transaction, SavepointsRollBackBitForBitAndNest) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
   const auto tag = *mesh.attributes().add_channel("tag", 1);
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, v)[0] = v;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = v;
   SplitMix64 rng(23);
   EdgeSplitter splitter;
   for (int i = 0; i < 5; ++i) random_operation(mesh, rng, splitter);

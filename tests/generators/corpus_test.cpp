@@ -13,8 +13,8 @@
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "tetcut/refine.hpp"
-#include "tetcut/tool_ball.hpp"
+#include "detail/refine.hpp"
+#include "detail/tool_ball.hpp"
 
 namespace tetcut {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "tet_quality.hpp"
-#include "tetcut/quality.hpp"
-#include "tetcut/random.hpp"
+#include "detail/quality.hpp"
+#include "detail/random.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {

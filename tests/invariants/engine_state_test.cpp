@@ -1,6 +1,6 @@
 // I2 and I8: the engine's adjacency and bookkeeping are compared with the checker's own
 // recomputation. To break exactly them we corrupt a TetMesh's private state through the
-// test-only friend TetMeshTestAccess.
+// engine's internal seam (detail::MeshInternals, aliased TetMeshTestAccess).
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "tetcut/random.hpp"
+#include "detail/random.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "io_test_support.hpp"
 #include "tetcut/box_mesh.hpp"
-#include "tetcut/random.hpp"
+#include "detail/random.hpp"
 
 namespace tetcut {
 namespace {

@@ -6,7 +6,7 @@
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "tetcut/random.hpp"
+#include "detail/random.hpp"
 
 namespace tetcut {
 namespace {

@@ -19,7 +19,7 @@
 #include "tetcut/generators/shapes.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "tetcut/quality.hpp"
+#include "detail/quality.hpp"
 
 namespace tetcut::cli {
 namespace {

@@ -13,10 +13,10 @@
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
-#include "tetcut/local_tables.hpp"
+#include "detail/local_tables.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "tetcut/random.hpp"
-#include "tetcut/refine.hpp"
+#include "detail/random.hpp"
+#include "detail/refine.hpp"
 
 namespace tetcut::cli {
 namespace {

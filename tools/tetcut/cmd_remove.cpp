@@ -20,13 +20,13 @@
 #include "command.hpp"
 #include "json_writer.hpp"
 #include "mesh_input.hpp"
-#include "tetcut/boundary_tet_picker.hpp"
+#include "detail/boundary_tet_picker.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
 #include "tetcut/predicates.hpp"
-#include "tetcut/removal.hpp"
+#include "detail/removal.hpp"
 
 namespace tetcut::cli {
 

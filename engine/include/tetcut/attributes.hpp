@@ -11,12 +11,16 @@
 #include <string_view>
 #include <vector>
 
+#include "tetcut/ids.hpp"
+
 namespace tetcut {
 
 // Conventional channel names.
 inline constexpr std::string_view kRestPositionChannel = "rest_position";  // width 3
 inline constexpr std::string_view kTexCoordChannel = "texcoord";           // width 2
 
+// Channels are addressed by their index (0, 1, ... in the order added), vertices by VertId; the
+// values of vertex v in channel c are value(c, v), `width` doubles.
 class VertexAttributes {
  public:
   struct Channel {
@@ -33,8 +37,8 @@ class VertexAttributes {
   [[nodiscard]] std::size_t channel_count() const { return channels_.size(); }
   [[nodiscard]] const Channel& channel(std::uint32_t c) const { return channels_[c]; }
 
-  std::span<double> value(std::uint32_t c, std::uint32_t vertex);
-  [[nodiscard]] std::span<const double> value(std::uint32_t c, std::uint32_t vertex) const;
+  std::span<double> value(std::uint32_t c, VertId vertex);
+  [[nodiscard]] std::span<const double> value(std::uint32_t c, VertId vertex) const;
 
   // Number of vertices every channel is sized for.
   [[nodiscard]] std::uint32_t size() const { return size_; }
@@ -42,10 +46,10 @@ class VertexAttributes {
   void reserve(std::uint32_t vertex_count);
 
   // dst := (1 - t) * a + t * b on every channel.
-  void interpolate(std::uint32_t dst, std::uint32_t a, std::uint32_t b, double t);
+  void interpolate(VertId dst, VertId a, VertId b, double t);
 
-  // Keeps vertex old_id at new_to_old position: values[new] = values[new_to_old[new]].
-  void permute(std::span<const std::uint32_t> new_to_old);
+  // Renumbers the vertices: vertex n takes the values vertex new_to_old[n] had (compaction).
+  void permute(std::span<const VertId> new_to_old);
 
  private:
   std::vector<Channel> channels_;

@@ -8,7 +8,7 @@
 //            closed ball. A tet that only grazes the ball stays; the cavity then has the
 //            tool's size to within one small tet.
 //   remove   every directly removable selected tet first (3.3), again until none is left; then
-//            the strategy (removal.hpp) on one stuck tet, on the surface first (outside in),
+//            the strategy (cut_strategies.hpp) on one stuck tet, on the surface first (outside in),
 //            and again. When a strategy refines a selected tet, its pieces that pass the same
 //            test join T_removal; pieces of a kept tet stay kept (selection is decided once,
 //            on the refined region). Every selected tet is removed or counted unresolved.
@@ -21,22 +21,22 @@
 // The budget counts net tets created: tets the cut made that are still there at its end (an
 // attempt a strategy undid, or children a later step removed, do not count).
 //
-// Cost: local to the tool. Scratch memory lives in the Cutter; nothing allocates once warm
-// (the mesh's arrays grow only when the free lists run dry).
+// Cost: local to the tool. Scratch memory lives in the Cutter, allocated when it is constructed;
+// nothing allocates once warm (the mesh's arrays grow only when the free lists run dry).
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "tetcut/change_log.hpp"
-#include "tetcut/edge_split.hpp"
+#include "tetcut/cut_strategies.hpp"
+#include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/refine.hpp"
-#include "tetcut/removal.hpp"
-#include "tetcut/spatial_index.hpp"
-#include "tetcut/tool_ball.hpp"
+#include "tetcut/removal_report.hpp"
+#include "tetcut/vec3.hpp"
 
 namespace tetcut {
 
@@ -47,7 +47,7 @@ struct CutParams {
   std::uint32_t search_depth = 10;   // neighbour search depth (paper 3.5)
   std::uint32_t max_refine_iterations = 8;
   std::uint32_t max_tets_created = 20000;  // net tets a cut may create; more is refused, in < 50 ms on the liver
-  RemovalStrategy strategy = RemovalStrategy::kCombined;
+  RemovalStrategy strategy = RemovalStrategy::kCombined;   // cut_strategies.hpp
   SplitMethod split_method = SplitMethod::kTemplates;
 };
 
@@ -71,7 +71,7 @@ struct CutReport {
   std::uint32_t tets_created = 0;    // net: by refinement and by removal, still there at the end
   std::uint32_t direct = 0, vertex_singularities = 0, edge_singularities = 0;
   // unresolved: requests of this cut left in place (a tet left twice counts twice; the
-  // Remover's report counts distinct tets, as the paper's tables do).
+  // removal_report() counts distinct tets, as the paper's tables do).
   std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_fallback = 0, unresolved = 0;
   double min_radius_ratio = 1.0;     // worst tet created (1 when none)
   CutTimings time;
@@ -80,8 +80,11 @@ struct CutReport {
 class Cutter {
  public:
   // Indexes the mesh once (O(#T)); the grid's cell is the mesh's mean edge length. Then
-  // prepare(): the first cut costs what the others do.
+  // prepare(): the first cut costs what the others do. The mesh must outlive the Cutter.
   Cutter(TetMesh& mesh, const CutParams& params);
+  ~Cutter();
+  Cutter(Cutter&&) noexcept;             // a moved-from Cutter may only be destroyed or assigned
+  Cutter& operator=(Cutter&&) noexcept;
 
   // Makes every working array ready for cuts on the mesh as it is now, O(#T) once: room in the
   // mesh for half as many tets again, the marks, the scratch lists and the journal at their
@@ -91,17 +94,22 @@ class Cutter {
   void prepare();
 
   // After the mesh this Cutter holds was replaced (assigned another mesh: a fuzzer's next input,
-  // a simulator's next case) or renumbered: the index is rebuilt, the scale remeasured, the
-  // removal statistics and marks cleared, and prepare() run, all in the memory the Cutter
-  // already has (no reallocation unless the new mesh is larger). O(#T).
+  // a simulator's next case): the index is rebuilt, the scale remeasured, the removal statistics
+  // and marks cleared, and prepare() run, all in the memory the Cutter already has (no
+  // reallocation unless the new mesh is larger). O(#T).
   void reset();
   // Compacts the mesh (TetMesh::compact(), ids renumbered densely) and resets this Cutter, so
-  // that its index never holds stale ids. Returns the renumbering.
+  // that its index never holds stale ids. Returns the renumbering. The way to compact a mesh a
+  // Cutter holds: after TetMesh::compact() called directly, or an assignment to the mesh, the
+  // mesh's id_epoch() has moved on and cut(), remove() refuse (ok false, the mesh untouched)
+  // and tet_containing() finds nothing until reset().
   Renumbering compact();
+  // False when the mesh was compacted or assigned since this Cutter indexed it (see compact()).
+  [[nodiscard]] bool indexes_current_mesh() const;
 
   // Fails (returns the message, keeps the old parameters) when validate() does.
   std::optional<std::string> set_params(const CutParams& params);
-  [[nodiscard]] const CutParams& params() const { return params_; }
+  [[nodiscard]] const CutParams& params() const;
 
   // One cut with the tool centred at `centre`. Appends its net change to `log` when given: the
   // tets live before and gone after, the tets live after and not before (each with the tet it
@@ -116,45 +124,18 @@ class Cutter {
   // address tets geometrically.
   TetId tet_containing(const Vec3& p);
 
-  [[nodiscard]] const RemovalReport& removal_report() const { return remover_.report(); }
-  [[nodiscard]] TetMesh& mesh() { return mesh_; }
+  // The removal statistics of every request since construction or reset() (paper Tables 1, 2).
+  [[nodiscard]] const RemovalReport& removal_report() const;
+  [[nodiscard]] TetMesh& mesh();
   // The removals and creations of the last cut, net (what LocalChecker wants).
-  [[nodiscard]] const std::vector<TetId>& last_removed() const { return net_removed_; }
-  [[nodiscard]] const std::vector<TetId>& last_created() const { return net_created_; }
+  [[nodiscard]] const std::vector<TetId>& last_removed() const;
+  [[nodiscard]] const std::vector<TetId>& last_created() const;
 
  private:
-  // Removes the selected tets (removal_, growing), directly removable ones first, and fills the
-  // counts.
-  void remove_selected(CutReport& report);
-  // Follows a step's history: which tets the cut made (for the budget and the net log's
-  // parents), and which of them are inside the tool and so selected in turn.
-  void follow(const ChangeLog& step);
-  [[nodiscard]] bool selectable(TetId t) const;
-  [[nodiscard]] bool pending(TetId t) const;
-  void grow_marks();
-  void next_generation();  // a new cut: fresh marks
-  void finish(CutReport& report, ChangeLog* log);
-
-  TetMesh& mesh_;
-  CutParams params_;
-  MeshScale scale_;  // what the refinement can serve (check_scale), measured once
-  SpatialIndex index_;
-  Refiner refiner_;
-  Remover remover_;
-  std::vector<CreatedVertex> vertices_made_;  // by the cut, when the caller wants its log
-  bool keep_vertices_ = false;
-  ChangeLog refine_log_;
-  std::vector<TetId> hit_, region_, removal_, net_removed_, net_created_;
-  // Per tet id, == generation_ when true in the current cut: made by it, selected, selected
-  // tissue (a selected tet or a piece of one, inside the tool or not), already requested (and
-  // left unresolved), waiting in work_.
-  std::vector<std::uint32_t> made_, selected_, tissue_, tried_, queued_;
-  std::vector<TetId> work_;          // selected tets to test for a direct removal
-  std::vector<TetId> origin_;        // per tet id made by the cut: the tet it came from
-  std::uint32_t generation_ = 0;
-  std::uint32_t net_created_count_ = 0;
-  std::optional<Ball> tool_;         // the cut's ball (none for remove())
-  double d_ref_ = 0.0;
+  // The index, the refiner, the Remover, the marks and the scratch lists (engine/src/detail/
+  // cut_pipeline.hpp): allocated once, by the constructor.
+  class Pipeline;
+  std::unique_ptr<Pipeline> pipeline_;
 };
 
 }  // namespace tetcut

@@ -36,6 +36,10 @@ struct Renumbering {
   std::vector<VertId> vert_old_to_new;
 };
 
+namespace detail {
+struct MeshInternals;  // engine/src/detail/mesh_internals.hpp: the builder's and the checker tests' way in
+}  // namespace detail
+
 // Tets are addressed by 30 bits in packed neighbour references: about 1.07e9 tets at most.
 inline constexpr std::uint32_t kMaxTets = (1u << 30) - 1;
 
@@ -147,8 +151,12 @@ class TetMesh {
   void reserve(std::uint32_t tets, std::uint32_t vertices);
 
   // Renumbers live tets and vertices densely, keeping their relative order; attributes follow.
-  // Not allowed inside a transaction.
+  // Not allowed inside a transaction. A Cutter holding this mesh must do it (Cutter::compact()):
+  // its index would hold the old ids, so it refuses to cut a mesh compacted behind its back.
   Renumbering compact();
+  // Advanced by compact() and by every assignment to this object (see IdEpoch below): a Cutter
+  // compares it with the value it indexed.
+  [[nodiscard]] std::uint64_t id_epoch() const { return id_epoch_.value(); }
 
   // ---- transactions: atomic operations (design: a cut completes or leaves no trace) --------
   // Between begin_transaction() and commit(), every write to the mesh's arrays is journaled
@@ -207,8 +215,9 @@ class TetMesh {
   static constexpr std::uint32_t kNoNeighbour = 0xFFFFFFFFu;
 
  private:
-  friend class MeshAssembler;      // mesh_builder.cpp fills the arrays directly
-  friend struct TetMeshTestAccess;  // tests corrupt engine state to prove the checker sees it
+  // The one seam under this interface, for the builder and for the checker's tests (who need the
+  // arrays themselves); declared in an internal header, so no user of this class can name it.
+  friend struct detail::MeshInternals;
 
   static constexpr std::uint32_t pack(TetId t, int face) { return (t.value << 2) | static_cast<std::uint32_t>(face); }
 
@@ -224,6 +233,26 @@ class TetMesh {
   std::vector<TetId> vert_tet_;
   std::vector<std::uint32_t> vert_boundary_faces_;
   VertexAttributes attributes_;
+  // Counts the events after which a mesh's ids no longer mean what they meant to whoever indexed
+  // them (a Cutter): compact(), and assigning another mesh into the object. A copy starts from its
+  // source's count (no Cutter holds a new object yet); an assignment counts one more whatever it
+  // copies, so a mesh replaced in place never looks like the one that was indexed.
+  class IdEpoch {
+   public:
+    IdEpoch() = default;
+    IdEpoch(const IdEpoch&) = default;
+    IdEpoch& operator=(const IdEpoch&) {
+      ++value_;
+      return *this;
+    }
+    ~IdEpoch() = default;
+    void advance() { ++value_; }
+    [[nodiscard]] std::uint64_t value() const { return value_; }
+
+   private:
+    std::uint64_t value_ = 0;
+  };
+  IdEpoch id_epoch_;
 
   std::uint32_t live_tets_ = 0;
   std::uint32_t live_vertices_ = 0;

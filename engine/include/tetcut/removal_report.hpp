@@ -1,4 +1,5 @@
-// The statistics of the paper's Tables 1 and 2 (3.3, 3.6), as a Remover accumulates them.
+// The statistics of the paper's Tables 1 and 2 (3.3, 3.6), as a Cutter's removals accumulate
+// them (Cutter::removal_report()).
 //
 // Counted per distinct tet: a tet requested again after being left unresolved is not counted
 // again (its final fate replaces the first one). Two denominators for the cardinality of the
@@ -11,8 +12,6 @@
 #include <cstdint>
 
 namespace tetcut {
-
-struct RemovalResult;
 
 struct RemovalReport {
   std::uint64_t requested = 0;             // distinct tets requested
@@ -42,8 +41,6 @@ struct RemovalReport {
   [[nodiscard]] double mean_cardinality() const;
   // Tets removed per selected tet they took, over the same sets: the paper's 1.3 (3.6).
   [[nodiscard]] double cardinality_per_selected() const;
-  // Counts one request; `repeat` when the tet was left unresolved before.
-  void add(const RemovalResult& result, bool repeat);
   bool operator==(const RemovalReport&) const = default;
   // Adds another run's counts (a scenario that reloads or compacts its mesh has several).
   RemovalReport& operator+=(const RemovalReport& other);

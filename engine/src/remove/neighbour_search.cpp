@@ -1,7 +1,7 @@
 #include "remove/neighbour_search.hpp"
 
+#include "detail/local_tables.hpp"
 #include "detail/reserve_touched.hpp"
-#include "tetcut/local_tables.hpp"
 
 namespace tetcut::detail {
 

@@ -20,9 +20,9 @@
 #include <span>
 #include <vector>
 
+#include "detail/removability.hpp"
+#include "detail/set_removal.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/removability.hpp"
-#include "tetcut/set_removal.hpp"
 
 namespace tetcut::detail {
 

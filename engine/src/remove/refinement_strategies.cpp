@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "detail/local_tables.hpp"
 #include "detail/reserve_touched.hpp"
 #include "remove/neighbour_search.hpp"
-#include "tetcut/local_tables.hpp"
 
 namespace tetcut::detail {
 namespace {

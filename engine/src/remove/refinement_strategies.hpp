@@ -23,9 +23,9 @@
 #include <span>
 #include <vector>
 
+#include "detail/removability.hpp"
 #include "remove/removal_context.hpp"
 #include "remove/wide_search.hpp"
-#include "tetcut/removability.hpp"
 
 namespace tetcut::detail {
 

@@ -8,11 +8,11 @@
 #include <span>
 #include <vector>
 
+#include "detail/edge_split.hpp"
+#include "detail/removal.hpp"
+#include "detail/set_removal.hpp"
 #include "tetcut/change_log.hpp"
-#include "tetcut/edge_split.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/removal.hpp"
-#include "tetcut/set_removal.hpp"
 
 namespace tetcut::detail {
 

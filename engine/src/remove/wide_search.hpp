@@ -12,8 +12,8 @@
 #include <span>
 #include <vector>
 
+#include "detail/set_removal.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/set_removal.hpp"
 
 namespace tetcut::detail {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tetcut/local_tables.hpp"
-#include "tetcut/spatial_index.hpp"
+#include "detail/local_tables.hpp"
+#include "detail/spatial_index.hpp"
 
 namespace tetcut::render {
 namespace {

@@ -9,7 +9,7 @@
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "tetcut/pieces.hpp"
+#include "detail/pieces.hpp"
 
 namespace tetcut::scenario {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "tetcut/pieces.hpp"
+#include "detail/pieces.hpp"
 
 namespace tetcut::stats {
 

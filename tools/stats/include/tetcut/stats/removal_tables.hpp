@@ -10,7 +10,7 @@
 
 #include <cstdint>
 
-#include "tetcut/removal.hpp"
+#include "tetcut/removal_report.hpp"
 
 namespace tetcut::stats {
 

@@ -27,9 +27,9 @@
 #include <span>
 #include <vector>
 
+#include "detail/tool_ball.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/tool_ball.hpp"
 
 namespace tetcut {
 

@@ -1,13 +1,14 @@
-#include "tetcut/cut.hpp"
+// The cut pipeline behind Cutter (cut.hpp): locate, refine, select, remove.
+#include "detail/cut_pipeline.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
+#include "detail/local_tables.hpp"
 #include "detail/planted_slowdown.hpp"
+#include "detail/quality.hpp"
 #include "detail/reserve_touched.hpp"
-#include "tetcut/local_tables.hpp"
-#include "tetcut/quality.hpp"
 
 namespace tetcut {
 namespace {
@@ -24,30 +25,18 @@ RemovalOptions removal_options(const CutParams& p) {
   o.max_path_depth = static_cast<int>(p.search_depth);
   return o;
 }
-
-
 }  // namespace
 
-std::optional<std::string> validate(const CutParams& p) {
-  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
-  if (!positive(p.tool_diameter)) return "tool diameter must be a positive finite length";
-  if (!positive(p.d_ref_factor)) return "D_ref factor must be a positive finite number";
-  if (!std::isfinite(p.p) || p.p <= 1.0) return "p must be a finite number greater than 1";
-  if (p.search_depth == 0 || p.search_depth > 64) return "search depth must be between 1 and 64";
-  if (p.max_refine_iterations == 0 || p.max_refine_iterations > 64) return "refinement iteration bound must be between 1 and 64";
-  if (p.max_tets_created == 0) return "the per-cut tet budget must be positive";
-  return std::nullopt;
-}
-
-Cutter::Cutter(TetMesh& mesh, const CutParams& params)
+Cutter::Pipeline::Pipeline(TetMesh& mesh, const CutParams& params)
     // The grid's cell is the mean edge length, so that a tet spans a few cells at most.
-    : mesh_(mesh), params_(params), index_(mesh.mean_edge_length()), remover_(removal_options(params)) {
+    : mesh_(mesh), params_(params), remover_(removal_options(params)), index_(mesh.mean_edge_length()) {
   index_.build(mesh_);
+  epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
   prepare();
 }
 
-void Cutter::prepare() {
+void Cutter::Pipeline::prepare() {
   using detail::reserve_touched;
   // Headroom of half the mesh again: cuts grow it (refinement creates more than removal takes)
   // and a reallocation of a million-tet array in the middle of a cut is a latency spike.
@@ -69,8 +58,9 @@ void Cutter::prepare() {
   reserve_touched(refine_log_.vertices, kCutScratch);
 }
 
-void Cutter::reset() {
+void Cutter::Pipeline::reset() {
   index_.build(mesh_, mesh_.mean_edge_length());
+  epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
   remover_.reset();
   // Marks of the old mesh must not match the next cut's generation.
@@ -79,13 +69,7 @@ void Cutter::reset() {
   prepare();
 }
 
-Renumbering Cutter::compact() {
-  Renumbering map = mesh_.compact();
-  reset();
-  return map;
-}
-
-std::optional<std::string> Cutter::set_params(const CutParams& params) {
+std::optional<std::string> Cutter::Pipeline::set_params(const CutParams& params) {
   if (auto invalid = validate(params)) return invalid;
   const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth;
   params_ = params;
@@ -93,12 +77,19 @@ std::optional<std::string> Cutter::set_params(const CutParams& params) {
   return std::nullopt;
 }
 
-TetId Cutter::tet_containing(const Vec3& p) {
+std::optional<std::string> Cutter::Pipeline::stale() const {
+  if (indexes_current_mesh()) return std::nullopt;
+  return "the mesh was compacted or replaced since this Cutter indexed it: compact with Cutter::compact(), "
+         "or call Cutter::reset() after replacing the mesh";
+}
+
+TetId Cutter::Pipeline::tet_containing(const Vec3& p) {
+  if (!indexes_current_mesh()) return kNoTet;
   index_.query(mesh_, Ball{p, 0.0}, hit_);
   return hit_.empty() ? kNoTet : hit_.front();
 }
 
-void Cutter::next_generation() {
+void Cutter::Pipeline::next_generation() {
   grow_marks();
   net_created_count_ = 0;
   if (++generation_ != 0) return;
@@ -111,7 +102,7 @@ void Cutter::next_generation() {
   generation_ = 1;
 }
 
-void Cutter::grow_marks() {
+void Cutter::Pipeline::grow_marks() {
   const std::size_t n = mesh_.tet_capacity();
   if (made_.size() >= n) return;
   const std::size_t m = n + n / 4 + 16;
@@ -124,7 +115,7 @@ void Cutter::grow_marks() {
 }
 
 // Paper 3.3: inside the tool (centroid in the closed ball) and no edge longer than D_ref.
-bool Cutter::selectable(TetId t) const {
+bool Cutter::Pipeline::selectable(TetId t) const {
   if (!tool_) return false;
   const auto v = mesh_.tet(t);
   Vec3 centroid{};
@@ -135,11 +126,11 @@ bool Cutter::selectable(TetId t) const {
   return true;
 }
 
-bool Cutter::pending(TetId t) const {
+bool Cutter::Pipeline::pending(TetId t) const {
   return mesh_.is_live(t) && selected_[t.value] == generation_ && tried_[t.value] != generation_;
 }
 
-void Cutter::follow(const ChangeLog& step) {
+void Cutter::Pipeline::follow(const ChangeLog& step) {
   grow_marks();
   // No id is reused inside the cut's transaction, and the history is in order: a parent made
   // by the cut has been seen before its children.
@@ -167,11 +158,12 @@ void Cutter::follow(const ChangeLog& step) {
   if (keep_vertices_) vertices_made_.insert(vertices_made_.end(), step.vertices.begin(), step.vertices.end());
 }
 
-CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
+CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   CutReport report;
   net_removed_.clear();
   net_created_.clear();
-  auto invalid = validate(params_);
+  auto invalid = stale();
+  if (!invalid) invalid = validate(params_);
   if (!invalid) invalid = check_scale(scale_, params_.tool_diameter, params_.d_ref_factor, params_.max_tets_created);
   if (invalid) {
     report.ok = false;
@@ -249,10 +241,15 @@ CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
   return report;
 }
 
-CutReport Cutter::remove(TetId t, ChangeLog* log) {
+CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
   CutReport report;
   net_removed_.clear();
   net_created_.clear();
+  if (auto invalid = stale()) {
+    report.ok = false;
+    report.failure = *invalid;
+    return report;
+  }
   if (!mesh_.is_live(t)) {
     report.ok = false;
     report.failure = "tet " + std::to_string(t.value) + " is not live";
@@ -277,7 +274,7 @@ CutReport Cutter::remove(TetId t, ChangeLog* log) {
   return report;
 }
 
-void Cutter::remove_selected(CutReport& report) {
+void Cutter::Pipeline::remove_selected(CutReport& report) {
   const RemovalReport before = remover_.report();
   grow_marks();
   if (tool_ && removal_.size() == mesh_.num_tets()) {
@@ -365,7 +362,7 @@ void Cutter::remove_selected(CutReport& report) {
 
 // Commits the transaction, brings the index up to date with the net changes, hands the caller
 // the net change, and reports the worst new tet.
-void Cutter::finish(CutReport& report, ChangeLog* log) {
+void Cutter::Pipeline::finish(CutReport& report, ChangeLog* log) {
   mesh_.transaction_changes(net_removed_, net_created_);
   mesh_.commit();
   for (TetId t : net_removed_) index_.erase(t);

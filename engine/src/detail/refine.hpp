@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
+#include "detail/edge_key_set.hpp"
+#include "detail/edge_split.hpp"
+#include "detail/tool_ball.hpp"
 #include "tetcut/change_log.hpp"
-#include "tetcut/edge_key_set.hpp"
-#include "tetcut/edge_split.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/tool_ball.hpp"
 
 namespace tetcut {
 

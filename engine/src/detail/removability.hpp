@@ -17,7 +17,7 @@
 
 #include <cstdint>
 
-#include "tetcut/edge_split.hpp"
+#include "detail/edge_split.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 

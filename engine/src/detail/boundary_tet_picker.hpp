@@ -6,9 +6,9 @@
 #include <span>
 #include <vector>
 
+#include "detail/random.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/random.hpp"
 
 namespace tetcut {
 

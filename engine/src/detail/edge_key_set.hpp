@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "detail/random.hpp"
 #include "tetcut/ids.hpp"
-#include "tetcut/random.hpp"
 
 namespace tetcut {
 

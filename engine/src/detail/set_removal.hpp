@@ -19,11 +19,11 @@
 #include <utility>
 #include <vector>
 
-#include "tetcut/edge_key_set.hpp"
-#include "tetcut/edge_split.hpp"
+#include "detail/edge_key_set.hpp"
+#include "detail/edge_split.hpp"
+#include "detail/removability.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/removability.hpp"
 
 namespace tetcut {
 

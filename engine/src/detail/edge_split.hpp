@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tetcut/change_log.hpp"
+#include "tetcut/cut_strategies.hpp"  // SplitMethod
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 
@@ -42,8 +43,6 @@ struct SplitResult {
 
   [[nodiscard]] bool ok() const { return refusal == SplitRefusal::kNone; }
 };
-
-enum class SplitMethod : std::uint8_t { kTemplates, kBisection };
 
 // Caller-owned scratch: reuse one across calls and nothing is allocated once it has grown.
 class EdgeSplitter {

@@ -34,23 +34,16 @@
 
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <span>
-#include <string_view>
 
+#include "detail/removability.hpp"
 #include "tetcut/change_log.hpp"
+#include "tetcut/cut_strategies.hpp"  // RemovalStrategy
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/removability.hpp"
 #include "tetcut/removal_report.hpp"
 
 namespace tetcut {
-
-enum class RemovalStrategy : std::uint8_t { kBasic, kNeighbours, kCombined, kWide };
-
-const char* to_string(RemovalStrategy strategy);
-// "basic", "neighbours" (or "neighbors"), "combined", "wide".
-std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text);
 
 struct RemovalOptions {
   RemovalStrategy strategy = RemovalStrategy::kCombined;
@@ -84,6 +77,9 @@ struct RemovalResult {
   bool over_budget = false;           // kUnresolved because a split would exceed the budget
   bool set_test_disagrees = false;    // verify_direct: set_removable() refused what 3.3 accepted
 };
+
+// Counts one request in `report`; `repeat` when the tet was left unresolved before.
+void count_request(RemovalReport& report, const RemovalResult& result, bool repeat);
 
 // The tets a caller (a cut) selected for removal: tet id i is selected when
 // stamps[i] == generation. Lets the statistics count what a neighbour set swallowed.

@@ -1,0 +1,29 @@
+// The two choices a cut offers besides its sizes (CutParams, cut.hpp): how a tet that cannot go
+// alone is removed (paper 3.4-3.7), and how the refinement splits edges (paper 3.2).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace tetcut {
+
+// When removing a tet alone would make a vertex or an edge singular:
+//   kNeighbours  the paper's neighbour search (3.5): remove a small removable set around it;
+//                may leave the tet in place (counted as unresolved, the mesh still valid).
+//   kBasic       split every edge at the singularity, then remove the small tets there (3.4).
+//   kCombined    neighbours, else the optimized local refinement (3.7). The default.
+//   kWide        ours, not the paper's: a broader search in place of 3.5, then as combined.
+// kBasic, kCombined and kWide end with a construction that always succeeds
+// (docs/removal-proof.md) unless a split is refused for degeneracy or the cut's tet budget.
+enum class RemovalStrategy : std::uint8_t { kBasic, kNeighbours, kCombined, kWide };
+
+const char* to_string(RemovalStrategy strategy);
+// "basic", "neighbours" (or "neighbors"), "combined", "wide".
+std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text);
+
+// kTemplates: every marked edge of a tet at once, by the tet's split template (paper 3.2).
+// kBisection: one edge at a time across its whole shell (the baseline the templates beat).
+enum class SplitMethod : std::uint8_t { kTemplates, kBisection };
+
+}  // namespace tetcut

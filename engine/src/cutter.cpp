@@ -1,0 +1,47 @@
+// The public Cutter: its one allocation (the pipeline, at construction), the check that the mesh
+// still has the ids it indexed, and forwarding to the pipeline (cut_pipeline.cpp).
+#include "tetcut/cut.hpp"
+
+#include <cmath>
+
+#include "detail/cut_pipeline.hpp"
+
+namespace tetcut {
+
+std::optional<std::string> validate(const CutParams& p) {
+  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  if (!positive(p.tool_diameter)) return "tool diameter must be a positive finite length";
+  if (!positive(p.d_ref_factor)) return "D_ref factor must be a positive finite number";
+  if (!std::isfinite(p.p) || p.p <= 1.0) return "p must be a finite number greater than 1";
+  if (p.search_depth == 0 || p.search_depth > 64) return "search depth must be between 1 and 64";
+  if (p.max_refine_iterations == 0 || p.max_refine_iterations > 64) return "refinement iteration bound must be between 1 and 64";
+  if (p.max_tets_created == 0) return "the per-cut tet budget must be positive";
+  return std::nullopt;
+}
+
+Cutter::Cutter(TetMesh& mesh, const CutParams& params) : pipeline_(std::make_unique<Pipeline>(mesh, params)) {}
+Cutter::~Cutter() = default;
+Cutter::Cutter(Cutter&&) noexcept = default;
+Cutter& Cutter::operator=(Cutter&&) noexcept = default;
+
+void Cutter::prepare() { pipeline_->prepare(); }
+void Cutter::reset() { pipeline_->reset(); }
+
+Renumbering Cutter::compact() {
+  Renumbering map = pipeline_->mesh_.compact();
+  pipeline_->reset();
+  return map;
+}
+
+bool Cutter::indexes_current_mesh() const { return pipeline_->indexes_current_mesh(); }
+std::optional<std::string> Cutter::set_params(const CutParams& params) { return pipeline_->set_params(params); }
+const CutParams& Cutter::params() const { return pipeline_->params_; }
+CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) { return pipeline_->cut(centre, log); }
+CutReport Cutter::remove(TetId t, ChangeLog* log) { return pipeline_->remove(t, log); }
+TetId Cutter::tet_containing(const Vec3& p) { return pipeline_->tet_containing(p); }
+const RemovalReport& Cutter::removal_report() const { return pipeline_->remover_.report(); }
+TetMesh& Cutter::mesh() { return pipeline_->mesh_; }
+const std::vector<TetId>& Cutter::last_removed() const { return pipeline_->net_removed_; }
+const std::vector<TetId>& Cutter::last_created() const { return pipeline_->net_created_; }
+
+}  // namespace tetcut

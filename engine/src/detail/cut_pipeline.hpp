@@ -1,0 +1,73 @@
+// What a Cutter holds (cut.hpp): the spatial index, the refiner, the Remover, the per-tet marks
+// and the scratch lists of one cut. Behind a pointer so that the installed cut.hpp names none of
+// these internal types; allocated once, by the Cutter's constructor, so that a cut still
+// allocates nothing (bench/cut_bench counts it).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "detail/refine.hpp"
+#include "detail/removal.hpp"
+#include "detail/spatial_index.hpp"
+#include "detail/tool_ball.hpp"
+#include "tetcut/cut.hpp"
+
+namespace tetcut {
+
+class Cutter::Pipeline {
+ public:
+  Pipeline(TetMesh& mesh, const CutParams& params);
+
+  void prepare();
+  void reset();
+  std::optional<std::string> set_params(const CutParams& params);
+  CutReport cut(const Vec3& centre, ChangeLog* log);
+  CutReport remove(TetId t, ChangeLog* log);
+  TetId tet_containing(const Vec3& p);
+  // The mesh's ids are the ones the index was built on (TetMesh::id_epoch() unchanged since).
+  [[nodiscard]] bool indexes_current_mesh() const { return epoch_ == mesh_.id_epoch(); }
+
+  TetMesh& mesh_;
+  CutParams params_;
+  Remover remover_;
+  std::vector<TetId> net_removed_, net_created_;
+
+ private:
+  // Removes the selected tets (removal_, growing), directly removable ones first, and fills the
+  // counts.
+  void remove_selected(CutReport& report);
+  // Follows a step's history: which tets the cut made (for the budget and the net log's
+  // parents), and which of them are inside the tool and so selected in turn.
+  void follow(const ChangeLog& step);
+  [[nodiscard]] bool selectable(TetId t) const;
+  [[nodiscard]] bool pending(TetId t) const;
+  void grow_marks();
+  void next_generation();  // a new cut: fresh marks
+  void finish(CutReport& report, ChangeLog* log);
+  // Why the index cannot serve the mesh (compacted or replaced since it was built), if so.
+  [[nodiscard]] std::optional<std::string> stale() const;
+
+  std::uint64_t epoch_ = 0;  // mesh_.id_epoch() when the index was built
+  MeshScale scale_;          // what the refinement can serve (check_scale), measured once
+  SpatialIndex index_;
+  Refiner refiner_;
+  std::vector<CreatedVertex> vertices_made_;  // by the cut, when the caller wants its log
+  bool keep_vertices_ = false;
+  ChangeLog refine_log_;
+  std::vector<TetId> hit_, region_, removal_;
+  // Per tet id, == generation_ when true in the current cut: made by it, selected, selected
+  // tissue (a selected tet or a piece of one, inside the tool or not), already requested (and
+  // left unresolved), waiting in work_.
+  std::vector<std::uint32_t> made_, selected_, tissue_, tried_, queued_;
+  std::vector<TetId> work_;          // selected tets to test for a direct removal
+  std::vector<TetId> origin_;        // per tet id made by the cut: the tet it came from
+  std::uint32_t generation_ = 0;
+  std::uint32_t net_created_count_ = 0;
+  std::optional<Ball> tool_;         // the cut's ball (none for remove())
+  double d_ref_ = 0.0;
+};
+
+}  // namespace tetcut
