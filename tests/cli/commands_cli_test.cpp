@@ -1,0 +1,164 @@
+// Every `tetcut` command owns its parser and its help (tools/tetcut/cmd_NAME.cpp): --help lists
+// the command's options, a bad number or an unknown option is one line naming it plus the usage,
+// exit 2. And the commands that share a runner agree with it: `tetcut cut` is the scenario
+// sweep `tetcut run` runs, `tetcut remove --at` removes the tet `remove X,Y,Z` does.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "cli_fixture.hpp"
+
+namespace tetcut::test {
+namespace {
+
+struct CommandCase {
+  std::string name;
+  std::vector<std::string> options;  // each must appear in the help
+  std::vector<std::string> bad_number;  // arguments with one malformed number; empty: none
+  std::string bad_option;              // the option the bad number is given to
+};
+
+// Arguments are completed by the test: "BOX" is a box mesh, "OUT" a path in the temp dir.
+const std::vector<CommandCase>& cases() {
+  static const std::vector<CommandCase> kCases = {
+      {"info", {"MESH", "--json"}, {}, ""},
+      {"check", {"MESH", "--level", "--min-radius-ratio", "--json"}, {"BOX", "--min-radius-ratio", "0.5x"}, "--min-radius-ratio"},
+      {"convert", {"IN", "OUT", "--format", "--binary", "--compress", "--reorient"}, {}, ""},
+      {"gen",
+       {"cylinder", "--radius", "--segments", "sheet", "--thickness", "box", "--spacing", "surface",
+        "--preserve-boundary", "liver", "--tets", "--seed", "-o"},
+       {"cylinder", "--radius", "nan", "-o", "OUT"},
+       "--radius"},
+      {"repair", {"IN", "-o", "--verbose"}, {}, ""},
+      {"refine",
+       {"MESH", "--uniform", "--random-edges", "--seed", "--ball", "--dref", "--p", "--max-iterations", "--strategy",
+        "-o", "--report"},
+       {"BOX", "--random-edges", "-1", "-o", "OUT"},
+       "--random-edges"},
+      {"remove",
+       {"MESH", "--at", "--random", "--seed", "--strategy", "--check", "-o", "--report"},
+       {"BOX", "--random", "all", "--seed", "1e3", "-o", "OUT"},
+       "--seed"},
+      {"cut",
+       {"MESH", "--diameter", "--from", "--to", "--step", "--strategy", "--split", "--dref-factor", "--p", "--depth",
+        "--check", "--out", "--report", "--frames"},
+       {"BOX", "--diameter", "1e3x", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"},
+       "--diameter"},
+      {"run", {"SCENARIO", "--check", "--out", "--report"}, {}, ""},
+      {"stats", {"--corpus", "--mesh", "--check", "--json", "--html", "--pictures"}, {}, ""},
+      {"replay", {"INPUT", "--target", "--scenario-out"}, {}, ""},
+      {"minimize", {"SCENARIO", "-o", "--max-runs"}, {"BOX", "-o", "OUT", "--max-runs", "inf"}, "--max-runs"},
+  };
+  return kCases;
+}
+
+// Two lines on stderr, "tetcut NAME: ..." naming `what`, then "usage: tetcut NAME ...".
+void expect_usage_error(const ProcessResult& r, const std::string& name, const std::string& what) {
+  EXPECT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_TRUE(r.err.starts_with("tetcut " + name + ": ")) << r.err;
+  EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\nusage: tetcut " + name), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
+}
+
+TEST_F(Cli, EveryCommandsHelpListsItsOptions) {
+  for (const CommandCase& c : cases()) {
+    SCOPED_TRACE(c.name);
+    const ProcessResult help = tetcut({c.name, "--help"});
+    EXPECT_EQ(help.exit_code, 0) << help.err;
+    EXPECT_TRUE(help.err.empty()) << help.err;
+    EXPECT_TRUE(help.out.starts_with("usage: tetcut " + c.name)) << help.out;
+    EXPECT_NE(help.out.find("exit: 0"), std::string::npos) << help.out;
+    for (const std::string& option : c.options) EXPECT_NE(help.out.find(option), std::string::npos) << option;
+    EXPECT_EQ(tetcut({"help", c.name}).out, help.out);
+  }
+}
+
+TEST_F(Cli, EveryCommandRefusesAnUnknownOptionInOneLine) {
+  for (const CommandCase& c : cases()) {
+    SCOPED_TRACE(c.name);
+    expect_usage_error(tetcut({c.name, "--no-such-option"}), c.name, "--no-such-option");
+  }
+}
+
+TEST_F(Cli, EveryCommandRefusesAMalformedNumberNamingTheOption) {
+  const std::string box = write_box("box.msh", 1, 1, 1);
+  for (const CommandCase& c : cases()) {
+    if (c.bad_number.empty()) continue;
+    SCOPED_TRACE(c.name);
+    std::vector<std::string> args = {c.name};
+    for (const std::string& a : c.bad_number) args.push_back(a == "BOX" ? box : a == "OUT" ? path("out.msh") : a);
+    expect_usage_error(tetcut(args), c.name, c.bad_option + ": expects");
+    EXPECT_FALSE(fs::exists(path("out.msh")));
+  }
+}
+
+TEST_F(Cli, CutRefusesNumbersThatAreNotWhatTheUserWrote) {
+  const std::string box = write_box("box.msh", 1, 1, 1);
+  for (const char* bad : {"nan", "inf", "", " 1", "0x10", "1e999", "1e3x"}) {
+    const ProcessResult r =
+        tetcut({"cut", box, "--diameter", bad, "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"});
+    expect_usage_error(r, "cut", std::string("--diameter: expects a finite number, not '") + bad + "'");
+  }
+  expect_usage_error(tetcut({"cut", box, "--diameter", "-1", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"}),
+                     "cut", "diameter");
+  expect_usage_error(tetcut({"cut", box, "--diameter", "0.5", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5",
+                             "--depth", "99999999999999999999"}),
+                     "cut", "--depth: expects a non-negative integer");
+}
+
+std::string read_text(const std::string& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The part of a run's report that does not depend on time.
+Json counts_of(const Json& report) {
+  Json s = report.at("summary");
+  for (const char* t : {"first_us", "p50_us", "p90_us", "p99_us", "max_us"}) s.erase(t);
+  return s;
+}
+
+TEST_F(Cli, CutIsTheScenarioSweepThatRunRuns) {
+  write_box("box.msh", 5, 5, 5);
+  const ProcessResult cut = tetcut({"cut", path("box.msh"), "--diameter", "0.3", "--from", "0.1,0.5,0.5", "--to",
+                                    "0.9,0.5,0.5", "--step", "0.2", "--strategy", "neighbours", "--split", "bisection",
+                                    "--out", path("cut.msh"), "--report", path("cut.json")});
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  write("sweep.scn",
+        "mesh box.msh\ndiameter 0.3\nstrategy neighbours\nsplit bisection\nsweep 0.1,0.5,0.5 0.9,0.5,0.5 0.2\n");
+  const ProcessResult run = tetcut({"run", path("sweep.scn"), "--out", path("run.msh"), "--report", path("run.json")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto cut_report = parse_json(read_text(path("cut.json")));
+  const auto run_report = parse_json(read_text(path("run.json")));
+  ASSERT_TRUE(cut_report && run_report);
+  EXPECT_EQ(counts_of(*cut_report), counts_of(*run_report));
+  EXPECT_EQ(cut_report->at("summary").at("cuts").get<int>(), 5);
+  EXPECT_GT(cut_report->at("summary").at("tets_removed").get<int>(), 0);
+  EXPECT_EQ(read_text(path("cut.msh")), read_text(path("run.msh")));
+}
+
+TEST_F(Cli, RemoveAtAPointRemovesTheTetTheScenarioRemoves) {
+  write_box("box.msh", 3, 3, 3);
+  // On a face and on a vertex shared by several tets: the one rule picks the same tet.
+  const std::vector<std::string> points = {"0.5,0.5,0.5", "0.3333333333333333,0.5,0.5", "0,0,0", "0.1,0.1,0.95"};
+  std::string scenario = "mesh box.msh\n";
+  std::vector<std::string> args = {"remove", path("box.msh"), "-o", path("removed.msh"), "--at", points[0]};
+  for (const std::string& p : points) scenario += "remove " + p + "\n";
+  args.insert(args.end(), points.begin() + 1, points.end());
+  const ProcessResult remove = tetcut(args);
+  ASSERT_EQ(remove.exit_code, 0) << remove.err;
+  write("remove.scn", scenario);
+  const ProcessResult run = tetcut({"run", path("remove.scn"), "--out", path("run.msh")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(read_text(path("removed.msh")), read_text(path("run.msh")));
+  EXPECT_NE(remove.out.find("removed "), std::string::npos) << remove.out;
+}
+
+}  // namespace
+}  // namespace tetcut::test
