@@ -252,11 +252,8 @@ int cmd_minimize(Args args, std::ostream& out, std::ostream& err) {
   for (std::string line : lines) {
     const std::vector<std::string> w = words(line);
     if (w.size() == 2 && w[0] == "mesh") {
-      const fs::path mesh = (w[1].front() == '/' ? fs::path(w[1]) : fs::absolute(fs::path(m.base_dir) / w[1])).lexically_normal();
-      // Relative when both lie in one tree (a checkout), so that the pair can move together.
-      const auto top = [](const fs::path& p) { return std::next(p.begin()) == p.end() ? fs::path() : *std::next(p.begin()); };
-      const fs::path relative = mesh.lexically_relative(out_dir);
-      line = "mesh " + (relative.empty() || top(mesh) != top(out_dir) ? mesh : relative).generic_string();
+      const fs::path mesh = w[1].front() == '/' ? fs::path(w[1]) : fs::absolute(fs::path(m.base_dir) / w[1]);
+      line = "mesh " + scenario::mesh_path_from(mesh.string(), out_dir.string());
     }
     result += line + "\n";
   }

@@ -30,14 +30,7 @@ std::string relocate(const std::string& text, const fs::path& dir) {
     std::size_t end = text.find('\n', begin);
     if (end == std::string::npos) end = text.size();
     std::string line = text.substr(begin, end - begin);
-    if (line.rfind("mesh /", 0) == 0) {
-      const fs::path mesh = fs::path(line.substr(5)).lexically_normal();
-      const fs::path base = fs::absolute(dir).lexically_normal();
-      const fs::path relative = mesh.lexically_relative(base);
-      // Relative when both lie in one tree (a checkout), so that the pair can move together.
-      const auto top = [](const fs::path& p) { return std::next(p.begin()) == p.end() ? fs::path() : *std::next(p.begin()); };
-      if (!relative.empty() && top(mesh) == top(base)) line = "mesh " + relative.generic_string();
-    }
+    if (line.rfind("mesh /", 0) == 0) line = "mesh " + scenario::mesh_path_from(line.substr(5), dir.string());
     out += line + "\n";
     begin = end + 1;
   }

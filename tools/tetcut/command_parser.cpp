@@ -27,7 +27,9 @@ class HelpFormatter : public CLI::Formatter {
   std::string make_help(const CLI::App* app, std::string name, CLI::AppFormatMode mode) const override {
     if (mode == CLI::AppFormatMode::Sub) return make_expanded(app);
     std::ostringstream out;
-    out << make_usage(app, name) << '\n' << make_description(app) << make_positionals(app) << make_groups(app, mode)
+    std::string description = make_description(app);  // ends with the description's own newline and one more
+    if (description.ends_with("\n\n")) description.pop_back();
+    out << make_usage(app, name) << '\n' << description << make_positionals(app) << make_groups(app, mode)
         << make_subcommands(app, CLI::AppFormatMode::All) << '\n'
         << make_footer(app);
     return out.str();
@@ -142,9 +144,21 @@ CommandParser::CommandParser(std::string name, std::string synopsis, std::string
   app_.formatter(std::make_shared<HelpFormatter>(synopsis_));
   app_.set_help_flag("-h,--help", "this help");
   app_.footer(std::move(footer));
+  // Leftovers are collected rather than thrown at once, so that an unknown option is named
+  // even when CLI11 would first complain that a required argument is missing.
+  app_.allow_extras();
 }
 
 std::optional<int> CommandParser::parse(Args args, std::ostream& out, std::ostream& err) {
+  // An argument no option or positional took, named as a person would: the likeliest mistake.
+  const auto leftover = [this]() -> std::optional<std::string> {
+    std::vector<std::string> rest = app_.remaining(true);
+    std::erase(rest, "--");  // CLI11 keeps the end-of-options mark among the leftovers
+    if (rest.empty()) return std::nullopt;
+    const std::string& a = rest.front();
+    const bool option = a.size() > 1 && a[0] == '-' && !scenario::parse_double(a);
+    return (option ? "unknown option '" : "unexpected argument '") + opt::one_line(a) + "'";
+  };
   // CLI11 takes a vector in reverse order (it pops arguments from the back).
   std::vector<std::string> reversed(args.rbegin(), args.rend());
   try {
@@ -153,8 +167,9 @@ std::optional<int> CommandParser::parse(Args args, std::ostream& out, std::ostre
     out << app_.help();  // the selected subcommand's, if any
     return kExitOk;
   } catch (const CLI::ParseError& e) {
-    return usage_error(opt::one_line(e.what()), err);
+    return usage_error(leftover().value_or(opt::one_line(e.what())), err);
   }
+  if (const auto rest = leftover()) return usage_error(*rest, err);
   return std::nullopt;
 }
 

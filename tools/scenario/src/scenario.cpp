@@ -1,6 +1,8 @@
 #include "tetcut/scenario/scenario.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 
@@ -135,6 +137,16 @@ ParseResult parse_file(const std::string& path) {
   text << in.rdbuf();
   const auto slash = path.find_last_of('/');
   return parse(text.str(), path, slash == std::string::npos ? "." : path.substr(0, slash));
+}
+
+std::string mesh_path_from(const std::string& mesh, const std::string& dir) {
+  namespace fs = std::filesystem;
+  const fs::path m = fs::path(mesh).lexically_normal();
+  const fs::path base = fs::absolute(dir).lexically_normal();
+  const fs::path relative = m.lexically_relative(base);
+  // The first component below the root: "/work/a/b" -> "work".
+  const auto top = [](const fs::path& p) { return std::next(p.begin()) == p.end() ? fs::path() : *std::next(p.begin()); };
+  return (relative.empty() || top(m) != top(base) ? m : relative).generic_string();
 }
 
 RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh_out) {

@@ -62,6 +62,10 @@ struct ParseResult {
 ParseResult parse(const std::string& text, const std::string& name, const std::string& base_dir);
 ParseResult parse_file(const std::string& path);
 
+// How a scenario written in folder `dir` names the mesh at absolute path `mesh`: relative when
+// both lie in one tree (a checkout), so that the pair can move together; absolute otherwise.
+std::string mesh_path_from(const std::string& mesh, const std::string& dir);
+
 struct CutRecord {
   std::uint32_t line = 0;  // the scenario line that made the cut
   Vec3 centre;
