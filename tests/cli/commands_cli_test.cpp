@@ -160,5 +160,82 @@ TEST_F(Cli, RemoveAtAPointRemovesTheTetTheScenarioRemoves) {
   EXPECT_NE(remove.out.find("removed "), std::string::npos) << remove.out;
 }
 
+// ---- refine, cut, run ---------------------------------------------------------------------
+
+TEST_F(Cli, RefineUniformGivesEightTimesTheTetsAndAReport) {
+  const std::string box = write_box("box.msh", 2, 2, 2);
+  const ProcessResult r = tetcut({"refine", box, "--uniform", "-o", path("fine.msh"), "--report", path("r.json")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(path("r.json"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto json = parse_json(text);
+  ASSERT_TRUE(json) << text;
+  ASSERT_TRUE(json->contains("summary"));
+  const Json& summary = json->at("summary");
+  for (const char* key : {"iterations", "edges_split", "tets_created", "min_radius_ratio", "hash"})
+    EXPECT_TRUE(summary.contains(key)) << key;
+  EXPECT_EQ(summary.at("tets").get<double>(), 8 * 48);
+  EXPECT_EQ(tetcut({"check", path("fine.msh")}).exit_code, 0);
+}
+
+TEST_F(Cli, CutSweepReportsPercentilesAndLeavesAValidMesh) {
+  const std::string box = write_box("box.msh", 6, 6, 6);
+  const ProcessResult r = tetcut({"cut", box, "--diameter", "0.3", "--from", "0.1,0.5,0.5", "--to", "0.9,0.5,0.5", "--step",
+                                  "0.1", "--out", path("cut.msh"), "--report", path("cut.json")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(path("cut.json"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto json = parse_json(text);
+  ASSERT_TRUE(json) << text;
+  ASSERT_TRUE(json->contains("summary"));
+  const Json& summary = json->at("summary");
+  for (const char* key : {"cuts", "first_us", "p50_us", "p90_us", "p99_us", "max_us", "tets_removed", "tets_created",
+                          "unresolved", "min_radius_ratio", "hash"})
+    ASSERT_TRUE(summary.contains(key)) << key;
+  // The first cut is reported on its own and counted in the percentiles (the max is over all).
+  EXPECT_EQ(summary.at("first_us").get<double>(), json->at("cuts").at(0).at("time_us").get<double>());
+  EXPECT_LE(summary.at("first_us").get<double>(), summary.at("max_us").get<double>());
+  EXPECT_EQ(summary.at("cuts").get<double>(), 9);
+  EXPECT_GT(summary.at("tets_removed").get<double>(), 0);
+  EXPECT_EQ(summary.at("unresolved").get<double>(), 0);
+  EXPECT_LE(summary.at("p50_us").get<double>(), summary.at("p99_us").get<double>());
+  ASSERT_TRUE(json->contains("cuts"));
+  EXPECT_EQ(json->at("cuts").size(), 9u);
+  EXPECT_EQ(tetcut({"check", path("cut.msh"), "--level", "exact"}).exit_code, 0);
+}
+
+TEST_F(Cli, CutRefusesBadParametersWithAMessage) {
+  const std::string box = write_box("box.msh", 2, 2, 2);
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"--diameter", "-1", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.1"},
+        std::vector<std::string>{"--diameter", "nan", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.1"},
+        std::vector<std::string>{"--diameter", "0.2", "--from", "0,0,0", "--to", "1,1,1", "--step", "0"},
+        std::vector<std::string>{"--diameter", "0.2", "--from", "0,0", "--to", "1,1,1", "--step", "0.1"},
+        std::vector<std::string>{"--diameter", "0.2", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.1", "--strategy", "x"}}) {
+    std::vector<std::string> args = {"cut", box};
+    args.insert(args.end(), bad.begin(), bad.end());
+    const ProcessResult r = tetcut(args);
+    EXPECT_TRUE(r.exited);
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_NE(r.err.find("tetcut cut:"), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(Cli, RunNamesTheLineOfAFailedExpectation) {
+  write_box("box.msh", 3, 3, 3);
+  const std::string scenario = write("s.scn",
+                                     "mesh box.msh\n"
+                                     "diameter 0.3\n"
+                                     "cut 0.5,0.5,0.5\n"
+                                     "expect tets 1\n");
+  const ProcessResult r = tetcut({"run", scenario});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("s.scn:4: expected 1 tets"), std::string::npos) << r.err;
+  const std::string broken = write("b.scn", "mesh box.msh\ncut 1,2\n");
+  const ProcessResult p = tetcut({"run", broken});
+  EXPECT_EQ(p.exit_code, 2);
+  EXPECT_NE(p.err.find("b.scn:2:"), std::string::npos) << p.err;
+}
+
 }  // namespace
 }  // namespace tetcut::test
