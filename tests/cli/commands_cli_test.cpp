@@ -117,6 +117,14 @@ std::string read_text(const std::string& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// A report file that is JSON with a summary, or nothing (with a failure saying why).
+std::optional<Json> report_summary(const std::string& p) {
+  const std::string text = read_text(p);
+  const auto json = parse_json(text);
+  EXPECT_TRUE(json && json->contains("summary")) << p << ":\n" << text;
+  return json && json->contains("summary") ? json : std::nullopt;
+}
+
 // The part of a run's report that does not depend on time.
 Json counts_of(const Json& report) {
   Json s = report.at("summary");
@@ -166,11 +174,8 @@ TEST_F(Cli, RefineUniformGivesEightTimesTheTetsAndAReport) {
   const std::string box = write_box("box.msh", 2, 2, 2);
   const ProcessResult r = tetcut({"refine", box, "--uniform", "-o", path("fine.msh"), "--report", path("r.json")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  std::ifstream in(path("r.json"));
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto json = parse_json(text);
-  ASSERT_TRUE(json) << text;
-  ASSERT_TRUE(json->contains("summary"));
+  const auto json = report_summary(path("r.json"));
+  ASSERT_TRUE(json);
   const Json& summary = json->at("summary");
   for (const char* key : {"iterations", "edges_split", "tets_created", "min_radius_ratio", "hash"})
     EXPECT_TRUE(summary.contains(key)) << key;
@@ -183,11 +188,8 @@ TEST_F(Cli, CutSweepReportsPercentilesAndLeavesAValidMesh) {
   const ProcessResult r = tetcut({"cut", box, "--diameter", "0.3", "--from", "0.1,0.5,0.5", "--to", "0.9,0.5,0.5", "--step",
                                   "0.1", "--out", path("cut.msh"), "--report", path("cut.json")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  std::ifstream in(path("cut.json"));
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto json = parse_json(text);
-  ASSERT_TRUE(json) << text;
-  ASSERT_TRUE(json->contains("summary"));
+  const auto json = report_summary(path("cut.json"));
+  ASSERT_TRUE(json);
   const Json& summary = json->at("summary");
   for (const char* key : {"cuts", "first_us", "p50_us", "p90_us", "p99_us", "max_us", "tets_removed", "tets_created",
                           "unresolved", "min_radius_ratio", "hash"})
