@@ -8,10 +8,13 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "mini_json.hpp"
+#include <nlohmann/json.hpp>
+
 #include "run_process.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/io.hpp"
@@ -19,6 +22,15 @@
 namespace tetcut::test {
 
 namespace fs = std::filesystem;
+
+// tetcut's JSON as nlohmann-json reads it (strictly: a parse error is "not JSON").
+using Json = nlohmann::json;
+
+inline std::optional<Json> parse_json(std::string_view text) {
+  Json value = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (value.is_discarded()) return std::nullopt;
+  return value;
+}
 
 class Cli : public ::testing::Test {
  protected:

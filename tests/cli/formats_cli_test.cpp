@@ -59,7 +59,7 @@ TEST_F(Cli, AMeshWhoseTetsAreAllInvertedIsNamedWithTheCommandThatReorientsIt) {
   EXPECT_TRUE(convert.err.empty()) << convert.err;  // no note about what it is fixing
   EXPECT_NE(convert.out.find("reoriented 48 of 48 tets"), std::string::npos) << convert.out;
   EXPECT_EQ(tetcut({"check", fixed}).exit_code, 0);
-  EXPECT_EQ(tetcut_json({"info", fixed, "--json"}, 0).get("hash")->text, hash);
+  EXPECT_EQ(tetcut_json({"info", fixed, "--json"}, 0).at("hash").get<std::string>(), hash);
 
   // One inverted tet among positive ones is the checker's business (I4), not a convention.
   std::swap(box.tets[1][2], box.tets[1][3]);
@@ -82,7 +82,7 @@ TEST_F(Cli, BinaryAndCompressedOutputsReadBackWithTheSameHash) {
     const ProcessResult r = tetcut(args);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find(hash), std::string::npos) << r.out;
-    EXPECT_EQ(tetcut_json({"info", path(output[0]), "--json"}, 0).get("hash")->text, hash);
+    EXPECT_EQ(tetcut_json({"info", path(output[0]), "--json"}, 0).at("hash").get<std::string>(), hash);
   }
   const ProcessResult gmsh = tetcut({"convert", box, path("c.msh"), "--compress", "zlib"});
   EXPECT_EQ(gmsh.exit_code, 2);

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "args.hpp"
 #include "command.hpp"
-#include "json_writer.hpp"
+#include "command_parser.hpp"
+#include "json_output.hpp"
 #include "mesh_input.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mesh_builder.hpp"
@@ -23,22 +23,6 @@ namespace tetcut::cli {
 namespace {
 
 namespace inv = tetcut::invariants;
-
-const char* level_name(inv::CheckLevel level) {
-  switch (level) {
-    case inv::CheckLevel::kLocal: return "local";
-    case inv::CheckLevel::kFull: return "full";
-    case inv::CheckLevel::kExact: return "exact";
-  }
-  return "?";
-}
-
-std::optional<inv::CheckLevel> parse_level(std::string_view s) {
-  if (s == "local") return inv::CheckLevel::kLocal;
-  if (s == "full") return inv::CheckLevel::kFull;
-  if (s == "exact") return inv::CheckLevel::kExact;
-  return std::nullopt;
-}
 
 struct CheckOutcome {
   inv::CheckLevel level_requested = inv::CheckLevel::kFull;
@@ -133,7 +117,7 @@ void write_text(const std::string& path, const CheckOutcome& o, std::ostream& ou
   } else {
     out << "refused by the engine";
   }
-  out << " at level " << level_name(o.level_run) << " (" << o.tets << " tets, " << o.vertices
+  out << " at level " << scenario::to_string(o.level_run) << " (" << o.tets << " tets, " << o.vertices
       << " vertices)\n";
   for (const inv::Violation& v : o.report.violations) {
     out << inv::id_string(v.id) << " (" << inv::description(v.id) << "): count " << v.count
@@ -158,101 +142,75 @@ void write_text(const std::string& path, const CheckOutcome& o, std::ostream& ou
   }
 }
 
-void write_json(const std::string& path, const CheckOutcome& o, std::ostream& out) {
-  JsonWriter json(out);
-  json.begin_object();
-  json.field("file", path);
-  json.field("level", level_name(o.level_requested));
-  json.field("level_run", level_name(o.level_run));
-  json.field("valid", o.valid());
-  json.field("vertices", o.vertices);
-  json.field("tets", o.tets);
-  json.field("tets_checked", o.report.tets_checked);
-  json.field("volume", o.volume);
-  json.key("violations");
-  json.begin_array();
-  for (const inv::Violation& v : o.report.violations) {
-    json.begin_object();
-    json.field("id", inv::id_string(v.id));
-    json.field("description", inv::description(v.id));
-    json.field("count", v.count);
-    json.key("tets");
-    json.begin_array();
-    for (const std::uint32_t t : v.tets) json.value(t);
-    json.end_array();
-    json.key("vertices");
-    json.begin_array();
-    for (const std::uint32_t x : v.vertices) json.value(x);
-    json.end_array();
-    json.field("detail", v.detail);
-    json.end_object();
-  }
-  json.end_array();
-  json.key("engine");
-  json.begin_object();
-  json.field("built", o.engine_built);
-  json.field("problems", o.engine_problems);
-  json.key("first_problem");
-  if (o.engine_first_problem.empty()) {
-    json.null();
-  } else {
-    json.value(o.engine_first_problem);
-  }
-  json.end_object();
-  json.key("quality");
-  json.begin_object();
-  json.field("min_radius_ratio", o.report.quality.min_radius_ratio);
-  json.field("mean_radius_ratio", o.report.quality.mean_radius_ratio);
-  json.field("min_dihedral_deg", o.report.quality.min_dihedral_deg);
-  json.end_object();
-  json.key("notes");
-  json.begin_array();
-  for (const std::string& note : o.notes) json.value(note);
-  json.end_array();
-  json.end_object();
-  json.finish();
+Json violation_json(const inv::Violation& v) {
+  return Json{{"id", inv::id_string(v.id)},
+              {"description", inv::description(v.id)},
+              {"count", v.count},
+              {"tets", v.tets},
+              {"vertices", v.vertices},
+              {"detail", v.detail}};
+}
+
+Json outcome_json(const std::string& path, const CheckOutcome& o) {
+  Json violations = Json::array();
+  for (const inv::Violation& v : o.report.violations) violations.push_back(violation_json(v));
+  const Json first_problem = o.engine_first_problem.empty() ? Json(nullptr) : Json(o.engine_first_problem);
+  return Json{{"file", path},
+              {"level", scenario::to_string(o.level_requested)},
+              {"level_run", scenario::to_string(o.level_run)},
+              {"valid", o.valid()},
+              {"vertices", o.vertices},
+              {"tets", o.tets},
+              {"tets_checked", o.report.tets_checked},
+              {"volume", o.volume},
+              {"violations", std::move(violations)},
+              {"engine", {{"built", o.engine_built}, {"problems", o.engine_problems}, {"first_problem", first_problem}}},
+              {"quality",
+               {{"min_radius_ratio", o.report.quality.min_radius_ratio},
+                {"mean_radius_ratio", o.report.quality.mean_radius_ratio},
+                {"min_dihedral_deg", o.report.quality.min_dihedral_deg}}},
+              {"notes", o.notes}};
 }
 
 }  // namespace
 
 int cmd_check(Args args, std::ostream& out, std::ostream& err) {
-  static constexpr OptionSpec kOptions[] = {
-      {"--level", true}, {"--json", false}, {"--min-radius-ratio", true}};
-  const ArgParseResult parsed = parse_args(args, kOptions);
-  if (!parsed.ok()) return usage_error("check", parsed.error, err);
-  if (parsed.args.positionals.size() != 1) {
-    return usage_error(
-        "check", parsed.args.positionals.empty() ? "missing MESH" : "too many arguments", err);
-  }
-  inv::CheckLevel level = inv::CheckLevel::kFull;
-  if (const auto text = parsed.args.value("--level")) {
-    const auto parsed_level = parse_level(*text);
-    if (!parsed_level) {
-      return usage_error("check", "--level must be local, full or exact, not '" + *text + "'",
-                         err);
-    }
-    level = *parsed_level;
-  }
-  double floor = 0.0;
-  if (const auto text = parsed.args.value("--min-radius-ratio")) {
-    const auto value = parse_double(*text);
-    if (!value || *value < 0.0 || *value > 1.0) {
-      return usage_error("check",
-                         "--min-radius-ratio must be a number from 0 to 1, not '" + *text + "'",
-                         err);
-    }
-    floor = *value;
-  }
+  std::optional<std::string> path;
+  std::optional<inv::CheckLevel> level;
+  std::optional<double> floor;
+  bool json = false;
+  CommandParser parser(
+      "check", "tetcut check MESH [--level local|full|exact] [--min-radius-ratio R] [--json]",
+      "Runs the independent invariant checker (I1-I9) on a mesh file and names every violated\n"
+      "invariant with its count, its first offending tets and vertices, and a detail line.\n"
+      "\n"
+      "The file is checked from its raw arrays, so a non-manifold or inverted mesh is diagnosed\n"
+      "rather than refused. If the engine can also build its mesh from the file, that mesh is\n"
+      "checked too (adjacency I2 and bookkeeping I8), and a refusal by the engine is reported.\n"
+      "\n"
+      "Levels: full (default) every invariant, O(n); exact: full, plus the geometric tests\n"
+      "(boundary self-intersection, exact); local: builds the engine mesh and runs the local\n"
+      "checker as if one operation had just replaced every tet by itself, so that the code path\n"
+      "run after each cut is exercised on the whole file (if the engine cannot build the mesh,\n"
+      "falls back to the full check of the raw arrays, with a note).\n",
+      "exit: 0 valid, 1 an invariant is violated, 2 unreadable input or bad usage");
+  CLI::App& app = parser.app();
+  opt::text(app, "MESH", path, "the mesh file", "")->required();
+  opt::check_level(app, level, "how deep the check goes (default full; see above)");
+  opt::number(app, "--min-radius-ratio", floor, "I7: a tet with radius ratio below R (0..1) is a violation", "R");
+  opt::flag(app, "--json", json, "the report as JSON on stdout");
+  if (const auto code = parser.parse(args, out, err)) return *code;
+  if (floor && (*floor < 0.0 || *floor > 1.0))
+    return parser.usage_error("--min-radius-ratio: must be from 0 to 1", err);
 
-  const std::string& path = parsed.args.positionals[0];
-  const std::optional<RawMesh> mesh = load_mesh(path, err);
+  const std::optional<RawMesh> mesh = load_mesh(*path, err);
   if (!mesh) return kExitBadInput;
 
-  const CheckOutcome outcome = run_check(*mesh, level, floor);
-  if (parsed.args.has("--json")) {
-    write_json(path, outcome, out);
+  const CheckOutcome outcome = run_check(*mesh, level.value_or(inv::CheckLevel::kFull), floor.value_or(0.0));
+  if (json) {
+    out << json_text(outcome_json(*path, outcome));
   } else {
-    write_text(path, outcome, out);
+    write_text(*path, outcome, out);
   }
   return outcome.valid() ? kExitOk : kExitViolated;
 }

@@ -8,8 +8,8 @@
 #include <string>
 #include <string_view>
 
-#include "args.hpp"
 #include "command.hpp"
+#include "command_parser.hpp"
 #include "mesh_input.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/io.hpp"
@@ -29,37 +29,47 @@ std::optional<MeshFormat> parse_format(std::string_view s) {
   return std::nullopt;
 }
 
+std::optional<Compression> parse_compression(std::string_view s) {
+  if (s == "zlib") return Compression::kZlib;
+  if (s == "lzma") return Compression::kLzma;
+  return std::nullopt;
+}
+
 }  // namespace
 
 int cmd_convert(Args args, std::ostream& out, std::ostream& err) {
-  static constexpr OptionSpec kOptions[] = {
-      {"--format", true}, {"--binary", false}, {"--compress", true}, {"--reorient", false}};
-  const ArgParseResult parsed = parse_args(args, kOptions);
-  if (!parsed.ok()) return usage_error("convert", parsed.error, err);
-  const auto& positionals = parsed.args.positionals;
-  if (positionals.size() != 2) {
-    return usage_error("convert",
-                       positionals.size() < 2 ? "needs IN and OUT" : "too many arguments", err);
-  }
+  std::optional<std::string> in_arg, out_arg;
   std::optional<MeshFormat> format;
-  if (const auto text = parsed.args.value("--format")) {
-    format = parse_format(*text);
-    if (!format) {
-      return usage_error(
-          "convert", "--format must be msh22, msh41, vtu, vtk, medit or tetgen, not '" + *text + "'",
-          err);
-    }
-  }
+  std::optional<Compression> compression;
+  bool binary = false, reorient = false;
+  CommandParser parser(
+      "convert", "tetcut convert IN OUT [--format F] [--binary] [--compress zlib|lzma] [--reorient]",
+      "Converts a mesh between the supported formats, chosen by file extension, and prints the\n"
+      "canonical hash of the mesh (identical for IN and OUT when the round trip is faithful).\n"
+      "IN may be any format tetcut reads (ASCII, binary or compressed; see the README).\n"
+      "The output is written to a temporary file and renamed: a failure leaves no partial file.\n",
+      "exit: 0, 2 unreadable input, unwritable output, a mesh --reorient cannot build, or bad usage");
+  CLI::App& app = parser.app();
+  opt::text(app, "IN", in_arg, "the mesh to read", "")->required();
+  opt::text(app, "OUT", out_arg, "the file to write", "")->required();
+  opt::parsed(app, "--format", format,
+              "the output format, for when the extension is not enough: msh22 (the default for .msh) or msh41; "
+              "also vtu, vtk, medit, tetgen",
+              "F", parse_format, "must be msh22, msh41, vtu, vtk, medit or tetgen");
+  opt::flag(app, "--binary", binary,
+            "binary output: Gmsh binary MSH, legacy VTK BINARY, VTU appended raw data (medit and TetGen are "
+            "text only)");
+  opt::parsed(app, "--compress", compression, "VTU only, binary: zlib (vtkZLibDataCompressor) or lzma (xz)",
+              "zlib|lzma", parse_compression, "must be zlib or lzma");
+  opt::flag(app, "--reorient", reorient,
+            "turn every negatively oriented tet positive (two vertices swapped), as the mesh builder does on "
+            "request; for meshes from tools whose convention is the opposite of tetcut's");
+  if (const auto code = parser.parse(args, out, err)) return *code;
   WriteOptions options;
-  options.binary = parsed.args.has("--binary");
-  if (const auto text = parsed.args.value("--compress")) {
-    if (*text == "zlib") options.compression = Compression::kZlib;
-    else if (*text == "lzma") options.compression = Compression::kLzma;
-    else return usage_error("convert", "--compress must be zlib or lzma, not '" + *text + "'", err);
-  }
-  const std::string& in = positionals[0];
-  const std::string& out_path = positionals[1];
-  const bool reorient = parsed.args.has("--reorient");
+  options.binary = binary;
+  if (compression) options.compression = *compression;
+  const std::string& in = *in_arg;
+  const std::string& out_path = *out_arg;
   std::optional<RawMesh> mesh = load_mesh(in, err, !reorient);
   if (!mesh) return kExitBadInput;
   std::uint32_t reoriented = 0;

@@ -1,159 +1,111 @@
-// `tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S]
-//  [--check every|end|none] [--out M] [--report R.json] [--frames DIR]`: a cautery sweep, one
+// `tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [...]`: a cautery sweep, one
 // cut every S along the segment, as the paper's electric lancet (3.6).
-#include <cmath>
+//
+// Not a second runner: the sweep is the scenario `mesh MESH` + `sweep FROM TO STEP` with the
+// command line's parameters, run by the scenario runner that `tetcut run` uses, and reported by
+// the same code (run_report.hpp). `tetcut run` on the equivalent scenario file gives the same
+// mesh, hash and report.
 #include <cstdio>
 #include <ostream>
-#include <sstream>
 
-#include "args.hpp"
 #include "command.hpp"
-#include "cut_report_json.hpp"
-#include "mesh_input.hpp"
-#include "tetcut/canonical_hash.hpp"
-#include "tetcut/cut.hpp"
-#include "tetcut/invariants/check.hpp"
+#include "command_parser.hpp"
+#include "run_report.hpp"
 #include "tetcut/io.hpp"
-#include "tetcut/mesh_builder.hpp"
+#include "tetcut/scenario/scenario.hpp"
 
 namespace tetcut::cli {
+
 namespace {
 
-constexpr OptionSpec kSpecs[] = {
-    {"--diameter", true}, {"--from", true},  {"--to", true},     {"--step", true},   {"--strategy", true},
-    {"--check", true},    {"--out", true},   {"--report", true}, {"--frames", true}, {"--dref-factor", true},
-    {"--p", true},        {"--depth", true}, {"--split", true},
+// At most as many cuts as a scenario file's sweep may hold.
+constexpr double kMaxCuts = 100000;
+
+struct CutArgs {
+  std::optional<std::string> mesh, frames;
+  std::optional<double> diameter, step, dref_factor, p;
+  std::optional<Vec3> from, to;
+  std::optional<std::uint64_t> depth;
+  std::optional<RemovalStrategy> strategy;
+  std::optional<SplitMethod> split;
+  std::optional<scenario::CheckMode> check;
+  RunOutputs outputs;
 };
 
-int usage(std::ostream& err, const std::string& message) {
-  err << "tetcut cut: " << message << "\n"
-      << "usage: tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy basic|neighbours|combined|wide]\n"
-         "                      [--check every|end|none] [--out M] [--report R.json] [--frames DIR]\n";
-  return 2;
+void add_options(CLI::App& app, CutArgs& a) {
+  opt::text(app, "MESH", a.mesh, "the mesh file", "")->required();
+  opt::number(app, "--diameter", a.diameter, "the tool's diameter", "D")->required();
+  opt::point(app, "--from", a.from, "where the sweep starts")->required();
+  opt::point(app, "--to", a.to, "where it ends (included when a whole number of steps away)")->required();
+  opt::number(app, "--step", a.step, "the distance between two cuts (> 0)", "S")->required();
+  opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
+  opt::split_method(app, "--split", a.split, "refinement (default templates)");
+  opt::number(app, "--dref-factor", a.dref_factor, "D_ref = F x diameter (paper 3.2; default 1.5)", "F");
+  opt::number(app, "--p", a.p, "shell edge ratio of the refinement loop (paper 3.2; default 1.5)", "P");
+  opt::count(app, "--depth", a.depth, "neighbour search depth (paper 3.5; default 10, at most 64)");
+  opt::check_mode(app, a.check, "the local check after every cut (default), the full one at the end, or none");
+  opt::text(app, "--out", a.outputs.mesh_path, "the final mesh", "M");
+  opt::text(app, "--report", a.outputs.report_path,
+            "`cuts` (time in microseconds and counts per cut) and `summary` (cuts, first_us, p50_us, p90_us, "
+            "p99_us, max_us over all cuts, tets_removed, tets_created, unresolved, min_radius_ratio, valid, hash)",
+            "R.json");
+  opt::text(app, "--frames", a.frames, "a .vtu snapshot after every cut, for ParaView (DIR must exist)", "DIR");
+}
+
+// The command line's parameters as the scenario runner's initial ones; a message if refused.
+std::optional<std::string> cut_params(const CutArgs& a, CutParams& params) {
+  params.tool_diameter = *a.diameter;
+  if (a.strategy) params.strategy = *a.strategy;
+  if (a.split) params.split_method = *a.split;
+  if (a.dref_factor) params.d_ref_factor = *a.dref_factor;
+  if (a.p) params.p = *a.p;
+  if (a.depth) {
+    if (*a.depth > 64) return "--depth: at most 64";
+    params.search_depth = static_cast<std::uint32_t>(*a.depth);
+  }
+  if (*a.step <= 0) return "--step: must be positive";
+  if (norm(*a.to - *a.from) / *a.step > kMaxCuts) return "more than 100000 cuts: increase --step";
+  return validate(params);
 }
 
 }  // namespace
 
 int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
-  const ArgParseResult parsed = parse_args(args, kSpecs);
-  if (!parsed.ok()) return usage(err, parsed.error);
-  const ParsedArgs& a = parsed.args;
-  if (a.positionals.size() != 1) return usage(err, "expected exactly one MESH");
-  const auto diameter = parse_double(a.value("--diameter").value_or(""));
-  const auto from = parse_vec3(a.value("--from").value_or(""));
-  const auto to = parse_vec3(a.value("--to").value_or(""));
-  const auto step = parse_double(a.value("--step").value_or(""));
-  if (!diameter || !from || !to || !step) return usage(err, "--diameter, --from, --to and --step are required numbers");
-  if (*step <= 0) return usage(err, "--step must be positive");
-  const double length = norm(*to - *from);
-  if (length / *step > 1e6) return usage(err, "more than a million cuts: increase --step");
-
-  CutParams params;
-  params.tool_diameter = *diameter;
-  if (const auto s = a.value("--strategy")) {
-    const auto strategy = parse_removal_strategy(*s);
-    if (!strategy) return usage(err, "--strategy must be basic, neighbours, combined or wide");
-    params.strategy = *strategy;
-  }
-  if (const auto s = a.value("--split")) {
-    if (*s == "templates") params.split_method = SplitMethod::kTemplates;
-    else if (*s == "bisection") params.split_method = SplitMethod::kBisection;
-    else return usage(err, "--split must be templates or bisection");
-  }
-  if (const auto v = a.value("--dref-factor")) {
-    const auto x = parse_double(*v);
-    if (!x) return usage(err, "--dref-factor expects a number");
-    params.d_ref_factor = *x;
-  }
-  if (const auto v = a.value("--p")) {
-    const auto x = parse_double(*v);
-    if (!x) return usage(err, "--p expects a number");
-    params.p = *x;
-  }
-  if (const auto v = a.value("--depth")) {
-    const auto x = parse_uint(*v);
-    if (!x || *x > 64) return usage(err, "--depth expects an integer up to 64");
-    params.search_depth = static_cast<std::uint32_t>(*x);
-  }
-  if (const auto invalid = validate(params)) return usage(err, *invalid);
-  const std::string check = a.value("--check").value_or("every");
-  if (check != "every" && check != "end" && check != "none") return usage(err, "--check must be every, end or none");
-
-  const std::optional<RawMesh> raw = load_mesh(a.positionals[0], err);
-  if (!raw) return 2;
-  BuildResult built = build_mesh(*raw);
-  if (!built.ok()) {
-    err << "tetcut: " << a.positionals[0] << ": not a valid manifold mesh: " << built.problems.front().message
-        << " (see tetcut check)\n";
-    return 2;
-  }
-  TetMesh& mesh = *built.mesh;
-  Cutter cutter(mesh, params);
-  invariants::LocalChecker local(mesh.raw_view());
-  std::vector<scenario::CutRecord> cuts;
-  const auto steps = static_cast<std::uint64_t>(std::floor(length / *step));
-  bool valid = true;
-  std::string violation;
-  for (std::uint64_t k = 0; k <= steps; ++k) {
-    const Vec3 centre = steps == 0 ? *from : *from + (static_cast<double>(k) * *step / length) * (*to - *from);
-    const CutReport r = cutter.cut(centre);
-    cuts.push_back({0, centre, r});
-    if (!r.ok) err << "tetcut cut: cut " << k << " rolled back: " << r.failure << "\n";
-    if (check == "every") {
-      const invariants::CheckReport c = local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created());
-      if (!c.ok()) {
-        valid = false;
-        violation = std::string(invariants::id_string(c.violations.front().id)) + " after cut " + std::to_string(k) + ": " +
-                    c.violations.front().detail;
-        break;
-      }
-    }
-    if (const auto dir = a.value("--frames")) {
+  CutArgs a;
+  CommandParser parser(
+      "cut",
+      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--split M] "
+      "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
+      "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
+      "each cut refined then removed without breaking the manifold (paper 3.1-3.7). The sweep is\n"
+      "the scenario `mesh MESH` + `sweep FROM TO STEP`, run as `tetcut run` runs it.\n",
+      "exit: 0, 1 an invariant broke or a cut was refused, 2 bad input or usage");
+  add_options(parser.app(), a);
+  if (const auto code = parser.parse(args, out, err)) return *code;
+  scenario::RunOptions options;
+  options.initial_params.emplace();
+  if (const auto bad = cut_params(a, *options.initial_params)) return parser.usage_error(*bad, err);
+  options.check = a.check.value_or(scenario::CheckMode::kEvery);
+  if (a.frames) {
+    options.after_cut = [dir = *a.frames](const TetMesh& mesh, std::size_t k) -> std::optional<std::string> {
       char name[32];
-      std::snprintf(name, sizeof name, "/frame_%05llu.vtu", static_cast<unsigned long long>(k));
-      const WriteResult w = write_mesh(*dir + name, mesh);
-      if (!w.ok) {
-        err << "tetcut: " << w.error << "\n";
-        return 2;
-      }
-    }
+      std::snprintf(name, sizeof name, "/frame_%05zu.vtu", k);
+      const WriteResult w = write_mesh(dir + name, mesh);
+      return w.ok ? std::nullopt : std::optional<std::string>(w.error);
+    };
   }
-  if (valid && check != "none") {
-    const invariants::CheckReport c = invariants::check_mesh(mesh.raw_view());
-    if (!c.ok()) {
-      valid = false;
-      violation = std::string(invariants::id_string(c.violations.front().id)) + " at the end: " + c.violations.front().detail;
-    }
+
+  scenario::Scenario sweep{"tetcut cut", ".", {}};
+  sweep.ops.push_back({.kind = scenario::OpKind::kMesh, .line = 1, .text = *a.mesh});
+  sweep.ops.push_back({.kind = scenario::OpKind::kSweep, .line = 2, .a = *a.from, .b = *a.to, .step = *a.step});
+  TetMesh mesh;
+  const scenario::RunResult r = scenario::run(sweep, options, &mesh);
+  if (!r.ok) {
+    if (r.failed_line == 1) err << "tetcut: " << r.reason << "\n";  // the mesh: the reader's FILE:LINE: reason
+    else if (r.failed_line == 2) err << "tetcut cut: cut " << r.cuts.size() - 1 << ": " << r.reason << "\n";
+    else err << "tetcut cut: " << r.reason << "\n";
   }
-  const std::string hash = hash_to_hex(canonical_hash(mesh));
-  std::uint64_t removed = 0, created = 0, unresolved = 0;
-  for (const auto& c : cuts) {
-    removed += c.report.tets_removed;
-    created += c.report.tets_created;
-    unresolved += c.report.unresolved;
-  }
-  out << cuts.size() << " cuts: " << removed << " tets removed, " << created << " created, " << unresolved
-      << " unresolved, " << mesh.num_tets() << " tets left\n"
-      << "per cut (all cuts): p50 " << percentile_us(cuts, 0.5) << " us, p90 " << percentile_us(cuts, 0.9)
-      << " us, p99 " << percentile_us(cuts, 0.99) << " us, max " << percentile_us(cuts, 1.0) << " us; first cut "
-      << (cuts.empty() ? 0.0 : cuts.front().report.time.total_us) << " us\n"
-      << "hash " << hash << "\n";
-  if (!valid) out << "INVARIANT VIOLATED: " << violation << "\n";
-  if (const auto path = a.value("--out")) {
-    const WriteResult w = write_mesh(*path, mesh);
-    if (!w.ok) {
-      err << "tetcut: " << w.error << "\n";
-      return 2;
-    }
-  }
-  if (const auto path = a.value("--report")) {
-    const WriteResult w = write_file_atomically(*path, cut_report_json(cuts, hash, valid));
-    if (!w.ok) {
-      err << "tetcut: " << w.error << "\n";
-      return 2;
-    }
-  }
-  return valid ? 0 : 1;
+  return report_run(r, mesh, a.outputs, out, err);
 }
 
 }  // namespace tetcut::cli

@@ -12,8 +12,8 @@
 #include <string>
 #include <string_view>
 
-#include "args.hpp"
 #include "command.hpp"
+#include "command_parser.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/generators/liver.hpp"
 #include "tetcut/generators/shapes.hpp"
@@ -26,53 +26,18 @@ namespace {
 
 using namespace tetcut::generators;
 
-constexpr OptionSpec kOptions[] = {
-    {"-o", true},          {"--out", true},        {"--radius", true},
-    {"--height", true},    {"--segments", true},   {"--length", true},
-    {"--width", true},     {"--thickness", true},  {"--size", true},
-    {"--spacing", true},   {"--max-volume", true}, {"--quality", true},
-    {"--min-dihedral", true}, {"--preserve-boundary", false}, {"--tets", true},
-    {"--seed", true},      {"--image", true},
-};
-
-// Which options each kind accepts (besides -o/--out).
-struct KindSpec {
-  std::string_view kind;
-  std::initializer_list<std::string_view> options;
-};
-const KindSpec kKinds[] = {
-    {"cylinder", {"--radius", "--height", "--segments", "--max-volume", "--quality", "--min-dihedral"}},
-    {"sheet", {"--length", "--width", "--thickness", "--quality"}},
-    {"box", {"--size", "--spacing", "--max-volume", "--quality", "--min-dihedral"}},
-    {"surface", {"--max-volume", "--quality", "--min-dihedral", "--preserve-boundary"}},
-    {"liver", {"--size", "--tets", "--seed", "--image"}},
-};
-
-// Reads the optional numeric option `name` into `value`; false (with a message) if malformed.
-bool read_double(const ParsedArgs& a, std::string_view name, double& value, std::string& error) {
-  const auto text = a.value(name);
-  if (!text) return true;
-  const auto v = parse_double(*text);
-  if (!v) {
-    error = std::string(name) + " needs a number, not '" + *text + "'";
-    return false;
-  }
-  value = *v;
-  return true;
+// TetGen's quality options, shared by the kinds TetGen meshes.
+void tetgen_options(CLI::App& kind, double& max_volume, double& quality, double& min_dihedral) {
+  opt::number_into(kind, "--max-volume", max_volume, "largest tet volume (0: from the boundary spacing)", "V");
+  opt::number_into(kind, "--quality", quality, "TetGen's radius-edge ratio bound (-q)", "Q");
+  opt::number_into(kind, "--min-dihedral", min_dihedral, "TetGen's minimum dihedral angle in degrees", "DEG");
 }
 
-bool read_uint(const ParsedArgs& a, std::string_view name, std::uint64_t max, std::uint64_t& value,
-               std::string& error) {
-  const auto text = a.value(name);
-  if (!text) return true;
-  const auto v = parse_uint(*text);
-  if (!v || *v > max) {
-    error = std::string(name) + " needs an integer up to " + std::to_string(max) + ", not '" +
-            *text + "'";
-    return false;
-  }
-  value = *v;
-  return true;
+CLI::App* kind(CLI::App& gen, const std::string& name, const std::string& synopsis, const std::string& what) {
+  CLI::App* sub = gen.add_subcommand(name, what);
+  sub->fallthrough();  // -o OUT may come after the kind's own options
+  set_synopsis(*sub, "tetcut gen " + synopsis);
+  return sub;
 }
 
 std::string format_double(double x) {
@@ -84,99 +49,85 @@ std::string format_double(double x) {
 }  // namespace
 
 int cmd_gen(Args args, std::ostream& out, std::ostream& err) {
-  const ArgParseResult parsed = parse_args(args, kOptions);
-  if (!parsed.ok()) return usage_error("gen", parsed.error, err);
-  const ParsedArgs& a = parsed.args;
-  const auto& pos = a.positionals;
-  if (pos.empty()) return usage_error("gen", "needs a KIND: cylinder, sheet, box, surface FILE or liver", err);
-  const std::string& kind = pos[0];
-  const KindSpec* spec = nullptr;
-  for (const auto& k : kKinds)
-    if (k.kind == kind) spec = &k;
-  if (spec == nullptr)
-    return usage_error("gen", "unknown KIND '" + kind + "' (cylinder, sheet, box, surface, liver)", err);
-  for (const auto& [name, value] : a.options) {
-    if (name == "-o" || name == "--out") continue;
-    if (std::find(spec->options.begin(), spec->options.end(), name) == spec->options.end())
-      return usage_error("gen", "option " + name + " does not apply to " + kind, err);
-  }
-  if (pos.size() != (kind == "surface" ? 2u : 1u))
-    return usage_error("gen", kind == "surface" ? "surface needs exactly one FILE" : "too many arguments", err);
-  auto out_path = a.value("-o");
-  if (!out_path) out_path = a.value("--out");
-  if (!out_path || (a.has("-o") && a.has("--out")))
-    return usage_error("gen", "needs exactly one output file: -o OUT", err);
+  std::optional<std::string> out_path, surface_path, image;
+  CylinderOptions cylinder;
+  SheetOptions sheet;
+  BoxOptions box;
+  std::optional<Vec3> box_size;
+  SurfaceOptions surface;
+  LiverOptions liver;
+  std::optional<double> liver_size;
+  std::optional<std::uint64_t> liver_tets;
+  CommandParser parser("gen", "tetcut gen KIND [OPTIONS] -o OUT",
+                       "Generates a mesh: cylinder, sheet, box (TetGen), surface FILE (any closed .off/.stl/.obj\n"
+                       "surface, or a VTK POLYDATA surface .vtk/.vtp, through TetGen), liver (CGAL Mesh_3).\n"
+                       "Prints the canonical hash.\n",
+                       "exit: 0, 2 bad parameters or unwritable output");
+  CLI::App& app = parser.app();
+  app.require_subcommand(1, 1);
+  opt::text(app, "-o,--out", out_path, "the mesh to write", "OUT")->required();
 
-  std::string error;
+  CLI::App* c = kind(app, "cylinder", "cylinder [--radius R] [--height H] [--segments N] -o OUT", "a cylinder (TetGen)");
+  opt::number_into(*c, "--radius", cylinder.radius, "radius", "R");
+  opt::number_into(*c, "--height", cylinder.height, "height", "H");
+  opt::count_into(*c, "--segments", cylinder.segments, 4096, "polygon sides approximating the circle");
+  tetgen_options(*c, cylinder.max_volume, cylinder.radius_edge_ratio, cylinder.min_dihedral_deg);
+
+  CLI::App* sh = kind(app, "sheet", "sheet [--length L] [--width W] [--thickness T] -o OUT", "a thin sheet (TetGen)");
+  opt::number_into(*sh, "--length", sheet.length, "along x", "L");
+  opt::number_into(*sh, "--width", sheet.width, "along y", "W");
+  opt::number_into(*sh, "--thickness", sheet.thickness, "along z", "T");
+  opt::number_into(*sh, "--quality", sheet.radius_edge_ratio, "TetGen's radius-edge ratio bound (-q)", "Q");
+
+  CLI::App* b = kind(app, "box", "box [--size X,Y,Z] [--spacing S] -o OUT", "a box (TetGen)");
+  opt::point(*b, "--size", box_size, "the box's extent");
+  opt::number_into(*b, "--spacing", box.spacing, "boundary edge length; the tet size follows it", "S");
+  tetgen_options(*b, box.max_volume, box.radius_edge_ratio, box.min_dihedral_deg);
+
+  CLI::App* sf = kind(app, "surface", "surface FILE [--preserve-boundary] -o OUT", "a closed surface file, meshed by TetGen");
+  opt::text(*sf, "FILE", surface_path, "a closed .off, .stl, .obj, or VTK POLYDATA .vtk/.vtp surface", "")->required();
+  tetgen_options(*sf, surface.tetgen.max_volume, surface.tetgen.radius_edge_ratio, surface.tetgen.min_dihedral_deg);
+  opt::flag(*sf, "--preserve-boundary", surface.tetgen.preserve_boundary, "keep the input triangles (TetGen -Y)");
+
+  CLI::App* l = kind(app, "liver", "liver [--size S | --tets N] [--seed S] [--image FILE] -o OUT",
+                     "CGAL Mesh_3 on Debian's segmented liver image, then repair");
+  CLI::Option* size = opt::number(*l, "--size", liver_size, "Mesh_3 cell size in mm (smaller: more tets)", "S");
+  opt::count(*l, "--tets", liver_tets, "about this many tets (100 to 10000000)")->excludes(size);
+  opt::count_into(*l, "--seed", liver.seed, std::numeric_limits<std::uint32_t>::max(), "Mesh_3's random seed", "S");
+  opt::text(*l, "--image", image, "an .inr/.inr.gz image instead of the bundled liver", "FILE");
+
+  if (const auto code = parser.parse(args, out, err)) return *code;
   GenResult result;
   std::string extra;  // a line about repair, for the liver
-  if (kind == "cylinder") {
-    CylinderOptions o;
-    std::uint64_t segments = o.segments;
-    if (!read_double(a, "--radius", o.radius, error) || !read_double(a, "--height", o.height, error) ||
-        !read_uint(a, "--segments", 4096, segments, error) ||
-        !read_double(a, "--max-volume", o.max_volume, error) ||
-        !read_double(a, "--quality", o.radius_edge_ratio, error) ||
-        !read_double(a, "--min-dihedral", o.min_dihedral_deg, error))
-      return usage_error("gen", error, err);
-    o.segments = static_cast<std::uint32_t>(segments);
-    result = generate_cylinder(o);
-  } else if (kind == "sheet") {
-    SheetOptions o;
-    if (!read_double(a, "--length", o.length, error) || !read_double(a, "--width", o.width, error) ||
-        !read_double(a, "--thickness", o.thickness, error) ||
-        !read_double(a, "--quality", o.radius_edge_ratio, error))
-      return usage_error("gen", error, err);
-    result = generate_sheet(o);
-  } else if (kind == "box") {
-    BoxOptions o;
-    if (const auto text = a.value("--size")) {
-      const auto v = parse_vec3(*text);
-      if (!v) return usage_error("gen", "--size needs X,Y,Z, not '" + *text + "'", err);
-      o.size = *v;
-    }
-    if (!read_double(a, "--spacing", o.spacing, error) ||
-        !read_double(a, "--max-volume", o.max_volume, error) ||
-        !read_double(a, "--quality", o.radius_edge_ratio, error) ||
-        !read_double(a, "--min-dihedral", o.min_dihedral_deg, error))
-      return usage_error("gen", error, err);
-    result = generate_box(o);
-  } else if (kind == "surface") {
-    SurfaceOptions o;
-    if (!read_double(a, "--max-volume", o.tetgen.max_volume, error) ||
-        !read_double(a, "--quality", o.tetgen.radius_edge_ratio, error) ||
-        !read_double(a, "--min-dihedral", o.tetgen.min_dihedral_deg, error))
-      return usage_error("gen", error, err);
-    o.tetgen.preserve_boundary = a.has("--preserve-boundary");
-    const SurfaceReadResult read = read_surface(pos[1]);
-    for (const auto& note : read.notices) err << "tetcut: " << pos[1] << ": note: " << note << '\n';
+  const std::string kind_name = app.get_subcommands().front()->get_name();
+  if (c->parsed()) {
+    result = generate_cylinder(cylinder);
+  } else if (sh->parsed()) {
+    result = generate_sheet(sheet);
+  } else if (b->parsed()) {
+    if (box_size) box.size = *box_size;
+    result = generate_box(box);
+  } else if (sf->parsed()) {
+    const SurfaceReadResult read = read_surface(*surface_path);
+    for (const auto& note : read.notices) err << "tetcut: " << *surface_path << ": note: " << note << '\n';
     if (!read.surface) {
-      err << "tetcut: " << (read.error ? read.error->message() : pos[1] + ": cannot read") << '\n';
+      err << "tetcut: " << (read.error ? read.error->message() : *surface_path + ": cannot read") << '\n';
       return kExitBadInput;
     }
-    result = generate_from_surface(*read.surface, o);
-    if (!result.ok()) result.error = pos[1] + ": " + result.error;
+    result = generate_from_surface(*read.surface, surface);
+    if (!result.ok()) result.error = *surface_path + ": " + result.error;
   } else {  // liver
-    LiverOptions o;
-    if (a.has("--size") && a.has("--tets"))
-      return usage_error("gen", "give --size or --tets, not both", err);
-    std::uint64_t tets = 0, seed = 0;
-    if (!read_double(a, "--size", o.cell_size, error) ||
-        !read_uint(a, "--tets", 10'000'000, tets, error) ||
-        !read_uint(a, "--seed", std::numeric_limits<std::uint32_t>::max(), seed, error))
-      return usage_error("gen", error, err);
-    if (a.has("--tets")) {
-      if (tets < 100) return usage_error("gen", "--tets needs at least 100", err);
-      o.cell_size = liver_cell_size_for_tets(static_cast<std::uint32_t>(tets));
+    if (liver_size) liver.cell_size = *liver_size;
+    if (liver_tets) {
+      if (*liver_tets < 100 || *liver_tets > 10'000'000) return parser.usage_error("--tets: from 100 to 10000000", err);
+      liver.cell_size = liver_cell_size_for_tets(static_cast<std::uint32_t>(*liver_tets));
     }
-    o.seed = static_cast<std::uint32_t>(seed);
-    if (const auto image = a.value("--image")) o.image_path = *image;
+    if (image) liver.image_path = *image;
     RepairReport repair;
-    result = generate_liver(o, &repair);
-    extra = "Mesh_3 cell size " + format_double(o.cell_size) + "; repair removed " +
-            std::to_string(repair.removed_tets()) + " tets at " +
-            std::to_string(repair.singular_vertices_fixed) + " singular vertices and " +
-            std::to_string(repair.singular_edges_fixed) + " singular edges";
+    result = generate_liver(liver, &repair);
+    extra = "Mesh_3 cell size " + format_double(liver.cell_size) + "; repair removed " +
+            std::to_string(repair.removed_tets()) + " tets at " + std::to_string(repair.singular_vertices_fixed) +
+            " singular vertices and " + std::to_string(repair.singular_edges_fixed) + " singular edges";
   }
   if (!result.ok()) {
     err << "tetcut: gen: " << result.error << '\n';
@@ -187,7 +138,7 @@ int cmd_gen(Args args, std::ostream& out, std::ostream& err) {
   // The generators promise a manifold, positively oriented mesh: hold them to it.
   const BuildResult built = build_mesh(mesh, BuildOptions{.reorient_inverted = false, .require_manifold = true});
   if (!built.ok()) {
-    err << "tetcut: gen " << kind << ": the generated mesh is invalid: "
+    err << "tetcut: gen " << kind_name << ": the generated mesh is invalid: "
         << built.problems.front().message << '\n';
     return kExitViolated;
   }

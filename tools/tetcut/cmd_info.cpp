@@ -10,9 +10,11 @@
 #include <string_view>
 #include <vector>
 
-#include "args.hpp"
+#include <charconv>
+
 #include "command.hpp"
-#include "json_writer.hpp"
+#include "command_parser.hpp"
+#include "json_output.hpp"
 #include "mesh_input.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/invariants/check.hpp"
@@ -101,59 +103,36 @@ MeshInfo describe(const RawMesh& mesh) {
   return info;
 }
 
-void write_json(const std::string& path, const MeshInfo& info, std::ostream& out) {
-  JsonWriter json(out);
-  json.begin_object();
-  json.field("file", path);
-  json.field("vertices", info.vertices);
-  json.field("tets", info.tets);
-  json.field("boundary_faces", info.boundary_faces);
-  json.field("volume", info.volume);
+Json info_json(const std::string& path, const MeshInfo& info) {
   // Without tets there is no quality to report: null, not a 0 that reads as "flat tets".
-  const auto stat = [&](std::string_view name, double v) {
-    json.key(name);
-    if (info.tets == 0) {
-      json.null();
-    } else {
-      json.value(v);
-    }
-  };
-  stat("min_radius_ratio", info.quality.min_radius_ratio);
-  stat("mean_radius_ratio", info.quality.mean_radius_ratio);
-  stat("min_dihedral_deg", info.quality.min_dihedral_deg);
-  stat("mean_min_dihedral_deg", info.quality.mean_min_dihedral_deg);
-  json.key("radius_ratio_histogram");
-  json.begin_array();
-  for (const std::uint64_t n : info.quality.radius_ratio_histogram) json.value(n);
-  json.end_array();
-  json.key("bounding_box");
-  if (info.box) {
-    json.begin_object();
-    json.key("min");
-    json.begin_array();
-    for (const double c : {info.box->min.x, info.box->min.y, info.box->min.z}) json.value(c);
-    json.end_array();
-    json.key("max");
-    json.begin_array();
-    for (const double c : {info.box->max.x, info.box->max.y, info.box->max.z}) json.value(c);
-    json.end_array();
-    json.end_object();
-  } else {
-    json.null();
-  }
-  json.field("manifold", info.manifold);
-  json.field("oriented", info.oriented);
-  json.key("violated");
-  json.begin_array();
-  for (const std::string& id : info.violated) json.value(id);
-  json.end_array();
-  json.field("hash", info.hash);
-  json.end_object();
-  json.finish();
+  const bool q = info.tets > 0;
+  const auto xyz = [](const Vec3& p) { return Json::array({p.x, p.y, p.z}); };
+  return Json{{"file", path},
+              {"vertices", info.vertices},
+              {"tets", info.tets},
+              {"boundary_faces", info.boundary_faces},
+              {"volume", info.volume},
+              {"min_radius_ratio", number_or_null(info.quality.min_radius_ratio, q)},
+              {"mean_radius_ratio", number_or_null(info.quality.mean_radius_ratio, q)},
+              {"min_dihedral_deg", number_or_null(info.quality.min_dihedral_deg, q)},
+              {"mean_min_dihedral_deg", number_or_null(info.quality.mean_min_dihedral_deg, q)},
+              {"radius_ratio_histogram", info.quality.radius_ratio_histogram},
+              {"bounding_box", info.box ? Json{{"min", xyz(info.box->min)}, {"max", xyz(info.box->max)}} : Json(nullptr)},
+              {"manifold", info.manifold},
+              {"oriented", info.oriented},
+              {"violated", info.violated},
+              {"hash", info.hash}};
+}
+
+// The shortest decimal form that reads back to the same double, as in the JSON.
+std::string shortest(double d) {
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, d);
+  return ec == std::errc{} ? std::string(buffer, end) : "?";
 }
 
 void write_text(const std::string& path, const MeshInfo& info, std::ostream& out) {
-  const auto num = [](double d) { return json_number(d); };
+  const auto num = shortest;
   out << "file:                  " << path << '\n'
       << "vertices:              " << info.vertices << '\n'
       << "tets:                  " << info.tets << '\n'
@@ -191,21 +170,29 @@ void write_text(const std::string& path, const MeshInfo& info, std::ostream& out
 }  // namespace
 
 int cmd_info(Args args, std::ostream& out, std::ostream& err) {
-  static constexpr OptionSpec kOptions[] = {{"--json", false}};
-  const ArgParseResult parsed = parse_args(args, kOptions);
-  if (!parsed.ok()) return usage_error("info", parsed.error, err);
-  if (parsed.args.positionals.size() != 1) {
-    return usage_error("info", parsed.args.positionals.empty() ? "missing MESH" : "too many arguments",
-                       err);
-  }
-  const std::string& path = parsed.args.positionals[0];
-  const std::optional<RawMesh> mesh = load_mesh(path, err);
+  std::optional<std::string> path;
+  bool json = false;
+  CommandParser parser(
+      "info", "tetcut info MESH [--json]",
+      "Prints counts, boundary, volume, quality statistics (radius ratio min/mean/histogram,\n"
+      "minimum dihedral angle), bounding box, manifold status and the canonical hash of a mesh.\n"
+      "\n"
+      "`manifold` is true when the full checker finds no violation of I1, I3, I5 or I6;\n"
+      "`oriented` when it finds none of I4.\n",
+      "exit: 0, 2 unreadable input or bad usage");
+  opt::text(parser.app(), "MESH", path, "the mesh file", "")->required();
+  opt::flag(parser.app(), "--json", json,
+            "as JSON (quality values are null when there are no tets): keys vertices, tets, boundary_faces, "
+            "volume, min_radius_ratio, mean_radius_ratio, min_dihedral_deg, mean_min_dihedral_deg, "
+            "radius_ratio_histogram, bounding_box, manifold, oriented, violated, hash");
+  if (const auto code = parser.parse(args, out, err)) return *code;
+  const std::optional<RawMesh> mesh = load_mesh(*path, err);
   if (!mesh) return kExitBadInput;
   const MeshInfo info = describe(*mesh);
-  if (parsed.args.has("--json")) {
-    write_json(path, info, out);
+  if (json) {
+    out << json_text(info_json(*path, info));
   } else {
-    write_text(path, info, out);
+    write_text(*path, info, out);
   }
   return kExitOk;
 }

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "args.hpp"
 #include "command.hpp"
+#include "command_parser.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/scenario/scenario.hpp"
 
@@ -28,7 +28,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr OptionSpec kSpecs[] = {{"-o", true}, {"--max-runs", true}};
 constexpr std::uint64_t kDefaultMaxRuns = 2000;
 
 std::vector<std::string> words(const std::string& line) {
@@ -158,7 +157,7 @@ struct Minimizer {
     while (true) {
       const std::size_t comma = text.find(',', begin);
       const std::string part = text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
-      const auto v = parse_double(part);
+      const auto v = scenario::parse_double(part);
       if (!v) return text;
       const double scale = std::pow(10.0, decimals);
       double r = std::round(*v * scale) / scale;
@@ -190,19 +189,27 @@ std::string trim(const std::string& s) {
 }  // namespace
 
 int cmd_minimize(Args args, std::ostream& out, std::ostream& err) {
-  const ArgParseResult parsed = parse_args(args, kSpecs);
-  if (!parsed.ok()) return usage_error("minimize", parsed.error, err);
-  const ParsedArgs& a = parsed.args;
-  if (a.positionals.size() != 1) return usage_error("minimize", "expected exactly one SCENARIO", err);
-  const auto out_path = a.value("-o");
-  if (!out_path) return usage_error("minimize", "-o OUT is required", err);
+  std::optional<std::string> scenario_path, out_path;
+  std::optional<std::uint64_t> max_runs;
+  CommandParser parser(
+      "minimize", "tetcut minimize SCENARIO -o OUT [--max-runs N]",
+      "Shrinks a failing scenario (one `tetcut run` exits 1 on) while it keeps failing with the\n"
+      "same kind of error (an invariant by its id, an expectation by its kind, a failed cut):\n"
+      "deletes operations (ddmin: chunks, then single lines), turns sweeps into single cuts and\n"
+      "rounds coordinates. Every candidate is a full run. Writes OUT atomically.\n",
+      "exit: 0 written, 2 the scenario does not fail (or does not parse), unwritable OUT, or bad\n"
+      "usage");
+  CLI::App& app = parser.app();
+  opt::text(app, "SCENARIO", scenario_path, "the failing scenario", "")->required();
+  opt::text(app, "-o", out_path, "the minimized scenario (mesh paths relative to its folder)", "OUT")->required();
+  opt::count(app, "--max-runs", max_runs, "stop after N runs of candidates (default 2000)");
+  if (const auto code = parser.parse(args, out, err)) return *code;
   Minimizer m;
-  if (const auto max_runs = a.value("--max-runs")) {
-    const auto n = parse_uint(*max_runs);
-    if (!n || *n == 0) return usage_error("minimize", "--max-runs must be a positive integer", err);
-    m.max_runs = *n;
+  if (max_runs) {
+    if (*max_runs == 0) return parser.usage_error("--max-runs: must be positive", err);
+    m.max_runs = *max_runs;
   }
-  const std::string& path = a.positionals[0];
+  const std::string& path = *scenario_path;
   std::string text;
   if (const auto error = read_file(path, text)) {
     err << "tetcut: " << error->message() << "\n";
@@ -245,11 +252,8 @@ int cmd_minimize(Args args, std::ostream& out, std::ostream& err) {
   for (std::string line : lines) {
     const std::vector<std::string> w = words(line);
     if (w.size() == 2 && w[0] == "mesh") {
-      const fs::path mesh = (w[1].front() == '/' ? fs::path(w[1]) : fs::absolute(fs::path(m.base_dir) / w[1])).lexically_normal();
-      // Relative when both lie in one tree (a checkout), so that the pair can move together.
-      const auto top = [](const fs::path& p) { return std::next(p.begin()) == p.end() ? fs::path() : *std::next(p.begin()); };
-      const fs::path relative = mesh.lexically_relative(out_dir);
-      line = "mesh " + (relative.empty() || top(mesh) != top(out_dir) ? mesh : relative).generic_string();
+      const fs::path mesh = w[1].front() == '/' ? fs::path(w[1]) : fs::absolute(fs::path(m.base_dir) / w[1]);
+      line = "mesh " + scenario::mesh_path_from(mesh.string(), out_dir.string());
     }
     result += line + "\n";
   }

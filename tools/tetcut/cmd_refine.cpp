@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "args.hpp"
 #include "command.hpp"
-#include "json_writer.hpp"
+#include "command_parser.hpp"
+#include "json_output.hpp"
 #include "mesh_input.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/invariants/check.hpp"
@@ -21,17 +21,39 @@
 namespace tetcut::cli {
 namespace {
 
-constexpr OptionSpec kSpecs[] = {
-    {"--uniform", false}, {"--random-edges", true}, {"--seed", true},     {"--ball", true},
-    {"--dref", true},     {"--p", true},            {"--strategy", true}, {"-o", true},
-    {"--report", true},   {"--max-iterations", true},
+struct RefineArgs {
+  std::optional<std::string> mesh, output, report, ball;
+  bool uniform = false;
+  std::optional<std::uint64_t> random_edges, seed, max_iterations;
+  std::optional<double> dref, p;
+  std::optional<SplitMethod> method;
 };
 
-int usage_error(std::ostream& err, const std::string& message) {
-  err << "tetcut refine: " << message << "\n"
-      << "usage: tetcut refine MESH (--uniform | --random-edges N --seed S | --ball X,Y,Z,R [--dref D] [--p P])\n"
-         "                          [--strategy templates|bisection] -o OUT [--report R.json]\n";
-  return 2;
+void add_options(CLI::App& app, RefineArgs& a) {
+  opt::text(app, "MESH", a.mesh, "the mesh file", "")->required();
+  opt::flag(app, "--uniform", a.uniform, "split every edge once (8 times the tets)");
+  opt::count(app, "--random-edges", a.random_edges, "split N edges picked at random (with --seed)");
+  opt::count(app, "--seed", a.seed, "the seed of --random-edges", "S");
+  opt::text(app, "--ball", a.ball, "the paper's loop around a tool of radius R", "X,Y,Z,R");
+  opt::number(app, "--dref", a.dref, "with --ball: split edges longer than D (default 1.5 x tool diameter)", "D");
+  opt::number(app, "--p", a.p, "with --ball: also split shell edges longer than P x |e| (default 1.5)", "P");
+  opt::count(app, "--max-iterations", a.max_iterations, "with --ball: bound on the loop (default 8, at most 1000)");
+  opt::split_method(app, "--strategy", a.method, "the 10 split configurations (default), or sequential bisection");
+  opt::text(app, "-o", a.output, "the refined mesh", "OUT")->required();
+  opt::text(app, "--report", a.report,
+            "summary: iterations, edges_split, tets_created, tets_removed, tets, min_radius_ratio, converged, "
+            "valid, hash",
+            "R.json");
+}
+
+// "X,Y,Z,R" with R > 0.
+std::optional<Ball> parse_ball(const std::string& text) {
+  const auto comma = text.rfind(',');
+  if (comma == std::string::npos) return std::nullopt;
+  const auto centre = scenario::parse_vec3(text.substr(0, comma));
+  const auto radius = scenario::parse_double(text.substr(comma + 1));
+  if (!centre || !radius || *radius <= 0) return std::nullopt;
+  return Ball{*centre, *radius};
 }
 
 std::vector<Edge> all_edges(const TetMesh& mesh) {
@@ -59,27 +81,27 @@ std::vector<Edge> random_edges(const TetMesh& mesh, std::uint64_t count, std::ui
 }  // namespace
 
 int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
-  const ArgParseResult parsed = parse_args(args, kSpecs);
-  if (!parsed.ok()) return usage_error(err, parsed.error);
-  const ParsedArgs& a = parsed.args;
-  if (a.positionals.size() != 1) return usage_error(err, "expected exactly one MESH");
-  const auto output = a.value("-o");
-  if (!output) return usage_error(err, "missing -o OUT");
-  const int modes = a.has("--uniform") + a.has("--random-edges") + a.has("--ball");
-  if (modes != 1) return usage_error(err, "give exactly one of --uniform, --random-edges, --ball");
+  RefineArgs a;
+  CommandParser parser("refine",
+                       "tetcut refine MESH (--uniform | --random-edges N --seed S | --ball X,Y,Z,R [--dref D] [--p P]) "
+                       "[--strategy templates|bisection] -o OUT [--report R.json]",
+                       "Refines a mesh locally by edge splitting (paper 3.2) and checks the result.\n",
+                       "exit: 0, 1 the result violates an invariant or a split was refused, 2 bad input or usage");
+  add_options(parser.app(), a);
+  if (const auto code = parser.parse(args, out, err)) return *code;
+  const int modes = int{a.uniform} + int{a.random_edges.has_value()} + int{a.ball.has_value()};
+  if (modes != 1) return parser.usage_error("give exactly one of --uniform, --random-edges, --ball", err);
+  std::optional<Ball> ball;
+  if (a.ball && !(ball = parse_ball(*a.ball))) return parser.usage_error("--ball: expects X,Y,Z,R with R > 0", err);
+  if (a.max_iterations && *a.max_iterations > 1000) return parser.usage_error("--max-iterations: at most 1000", err);
+  const SplitMethod method = a.method.value_or(SplitMethod::kTemplates);
+  const std::string& path = *a.mesh;
 
-  SplitMethod method = SplitMethod::kTemplates;
-  if (const auto s = a.value("--strategy")) {
-    if (*s == "templates") method = SplitMethod::kTemplates;
-    else if (*s == "bisection") method = SplitMethod::kBisection;
-    else return usage_error(err, "--strategy must be templates or bisection, not '" + *s + "'");
-  }
-
-  const std::optional<RawMesh> raw = load_mesh(a.positionals[0], err);
+  const std::optional<RawMesh> raw = load_mesh(path, err);
   if (!raw) return 2;
   BuildResult built = build_mesh(*raw);
   if (!built.ok()) {
-    err << "tetcut: " << a.positionals[0] << ": not a valid manifold mesh: " << built.problems.front().message
+    err << "tetcut: " << path << ": not a valid manifold mesh: " << built.problems.front().message
         << " (" << built.problems.size() << " problem(s); see tetcut check)\n";
     return 2;
   }
@@ -88,33 +110,15 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
   const std::uint32_t tets_before = mesh.num_tets();
 
   RefineReport report;
-  if (a.has("--ball")) {
-    // X,Y,Z,R: parse the first three as the centre, the last as the radius.
-    const std::string text = *a.value("--ball");
-    const auto comma = text.rfind(',');
-    const auto centre = comma == std::string::npos ? std::nullopt : parse_vec3(text.substr(0, comma));
-    const auto radius = comma == std::string::npos ? std::nullopt : parse_double(text.substr(comma + 1));
-    if (!centre || !radius || *radius <= 0) return usage_error(err, "--ball expects X,Y,Z,R with R > 0");
+  if (ball) {
     RefineParams params;
     params.method = method;
-    params.focus = Ball{*centre, *radius};
-    params.d_ref = 1.5 * 2.0 * *radius;  // paper 3.2: D_ref = 1.5 x tool diameter
-    if (const auto d = a.value("--dref")) {
-      const auto v = parse_double(*d);
-      if (!v) return usage_error(err, "--dref expects a number");
-      params.d_ref = *v;
-    }
-    if (const auto p = a.value("--p")) {
-      const auto v = parse_double(*p);
-      if (!v) return usage_error(err, "--p expects a number");
-      params.p = *v;
-    }
-    if (const auto m = a.value("--max-iterations")) {
-      const auto v = parse_uint(*m);
-      if (!v || *v > 1000) return usage_error(err, "--max-iterations expects an integer up to 1000");
-      params.max_iterations = static_cast<std::uint32_t>(*v);
-    }
-    if (const auto invalid = validate(params)) return usage_error(err, *invalid);
+    params.focus = *ball;
+    params.d_ref = 1.5 * 2.0 * ball->radius;  // paper 3.2: D_ref = 1.5 x tool diameter
+    if (a.dref) params.d_ref = *a.dref;
+    if (a.p) params.p = *a.p;
+    if (a.max_iterations) params.max_iterations = static_cast<std::uint32_t>(*a.max_iterations);
+    if (const auto invalid = validate(params)) return parser.usage_error(*invalid, err);
     // The tool query of a person's one-off command: a scan is fine here, not on the cut path.
     std::vector<TetId> hit, region;
     for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
@@ -127,14 +131,7 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
     report = refiner.refine(mesh, hit, params, region);
   } else {
     std::vector<Edge> edges;
-    if (a.has("--uniform")) {
-      edges = all_edges(mesh);
-    } else {
-      const auto n = parse_uint(a.value("--random-edges").value_or(""));
-      const auto seed = parse_uint(a.value("--seed").value_or("0"));
-      if (!n || !seed) return usage_error(err, "--random-edges N --seed S expect integers");
-      edges = random_edges(mesh, *n, *seed);
-    }
+    edges = a.uniform ? all_edges(mesh) : random_edges(mesh, *a.random_edges, a.seed.value_or(0));
     EdgeSplitter splitter;
     const SplitResult r = splitter.split(mesh, edges, method);
     report.iterations = r.ok() ? 1 : 0;
@@ -160,20 +157,16 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
   for (const invariants::Violation& v : verdict.violations)
     out << "violated " << invariants::id_string(v.id) << " (" << invariants::description(v.id) << "): " << v.detail << "\n";
 
-  const bool saved = save_mesh_and_report(*output, mesh, a.value("--report"), [&](JsonWriter& w) {
-    w.key("summary");
-    w.begin_object();
-    w.field("iterations", report.iterations);
-    w.field("edges_split", report.edges_split);
-    w.field("tets_created", report.tets_created);
-    w.field("tets_removed", report.tets_removed);
-    w.field("tets", mesh.num_tets());
-    w.field("min_radius_ratio", report.min_radius_ratio);
-    w.field("converged", report.converged);
-    w.field("valid", verdict.ok());
-    w.field("hash", hash);
-    w.end_object();
-  }, err);
+  const Json summary = {{"iterations", report.iterations},
+                        {"edges_split", report.edges_split},
+                        {"tets_created", report.tets_created},
+                        {"tets_removed", report.tets_removed},
+                        {"tets", mesh.num_tets()},
+                        {"min_radius_ratio", report.min_radius_ratio},
+                        {"converged", report.converged},
+                        {"valid", verdict.ok()},
+                        {"hash", hash}};
+  const bool saved = save_mesh_and_report(*a.output, mesh, a.report, Json{{"summary", summary}}, err);
   if (!saved) return 2;
   return verdict.ok() ? 0 : 1;
 }

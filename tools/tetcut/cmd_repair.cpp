@@ -5,8 +5,8 @@
 #include <ostream>
 #include <string>
 
-#include "args.hpp"
 #include "command.hpp"
+#include "command_parser.hpp"
 #include "mesh_input.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/generators/repair.hpp"
@@ -40,17 +40,18 @@ void print_change(const RepairChange& c, std::ostream& out) {
 }  // namespace
 
 int cmd_repair(Args args, std::ostream& out, std::ostream& err) {
-  static constexpr OptionSpec kOptions[] = {{"-o", true}, {"--out", true}, {"--verbose", false}};
-  const ArgParseResult parsed = parse_args(args, kOptions);
-  if (!parsed.ok()) return usage_error("repair", parsed.error, err);
-  const ParsedArgs& a = parsed.args;
-  if (a.positionals.size() != 1)
-    return usage_error("repair", a.positionals.empty() ? "needs IN" : "too many arguments", err);
-  auto out_path = a.value("-o");
-  if (!out_path) out_path = a.value("--out");
-  if (!out_path || (a.has("-o") && a.has("--out")))
-    return usage_error("repair", "needs exactly one output file: -o OUT", err);
-  const std::string& in = a.positionals[0];
+  std::optional<std::string> in_arg, out_path;
+  bool verbose = false;
+  CommandParser parser("repair", "tetcut repair IN -o OUT [--verbose]",
+                       "Makes a non-manifold or inverted mesh manifold and positively oriented with the smallest\n"
+                       "change it can, and reports what it changed.\n",
+                       "exit: 0, 1 the mesh could not be repaired, 2 unreadable input or bad usage");
+  CLI::App& app = parser.app();
+  opt::text(app, "IN", in_arg, "the mesh to repair", "")->required();
+  opt::text(app, "-o,--out", out_path, "the repaired mesh", "OUT")->required();
+  opt::flag(app, "--verbose", verbose, "list every change, not the first " + std::to_string(kListedChanges));
+  if (const auto code = parser.parse(args, out, err)) return *code;
+  const std::string& in = *in_arg;
 
   const std::optional<RawMesh> mesh = load_mesh(in, err);
   if (!mesh) return kExitBadInput;
@@ -66,7 +67,6 @@ int cmd_repair(Args args, std::ostream& out, std::ostream& err) {
         << ", singular vertices fixed: " << r.singular_vertices_fixed << " (" << r.rounds
         << " sweeps)\n";
   if (!r.dropped_vertices.empty()) out << "dropped vertices: " << r.dropped_vertices.size() << '\n';
-  const bool verbose = a.has("--verbose");
   const std::size_t listed = verbose ? r.changes.size() : std::min(r.changes.size(), kListedChanges);
   if (listed > 0) out << "changes (input tet indices):\n";
   for (std::size_t i = 0; i < listed; ++i) print_change(r.changes[i], out);

@@ -8,8 +8,8 @@
 #include <ostream>
 #include <string>
 
-#include "args.hpp"
 #include "command.hpp"
+#include "command_parser.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/scenario/scenario.hpp"
 
@@ -22,8 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr OptionSpec kSpecs[] = {{"--target", true}, {"--scenario-out", true}};
-
 // The scenario with its absolute mesh paths made relative to `dir`, where it will be written.
 std::string relocate(const std::string& text, const fs::path& dir) {
   std::string out;
@@ -32,14 +30,7 @@ std::string relocate(const std::string& text, const fs::path& dir) {
     std::size_t end = text.find('\n', begin);
     if (end == std::string::npos) end = text.size();
     std::string line = text.substr(begin, end - begin);
-    if (line.rfind("mesh /", 0) == 0) {
-      const fs::path mesh = fs::path(line.substr(5)).lexically_normal();
-      const fs::path base = fs::absolute(dir).lexically_normal();
-      const fs::path relative = mesh.lexically_relative(base);
-      // Relative when both lie in one tree (a checkout), so that the pair can move together.
-      const auto top = [](const fs::path& p) { return std::next(p.begin()) == p.end() ? fs::path() : *std::next(p.begin()); };
-      if (!relative.empty() && top(mesh) == top(base)) line = "mesh " + relative.generic_string();
-    }
+    if (line.rfind("mesh /", 0) == 0) line = "mesh " + scenario::mesh_path_from(line.substr(5), dir.string());
     out += line + "\n";
     begin = end + 1;
   }
@@ -49,12 +40,23 @@ std::string relocate(const std::string& text, const fs::path& dir) {
 }  // namespace
 
 int cmd_replay(Args args, std::ostream& out, std::ostream& err) {
-  const ArgParseResult parsed = parse_args(args, kSpecs);
-  if (!parsed.ok()) return usage_error("replay", parsed.error, err);
-  const ParsedArgs& a = parsed.args;
-  if (a.positionals.size() != 1) return usage_error("replay", "expected exactly one INPUT", err);
-  const auto target_name = a.value("--target");
-  if (!target_name) return usage_error("replay", "--target NAME is required", err);
+  std::optional<std::string> input, target_name, scenario_out;
+  CommandParser parser(
+      "replay", "tetcut replay INPUT --target NAME [--scenario-out FILE]",
+      "Decodes an input of a sequence fuzz target (removal_sequence, cut_sequence) into a scenario,\n"
+      "prints it, and runs it through the target's own entry point with every check the target\n"
+      "makes (local check after every operation, full checks, every request resolved under the\n"
+      "combined strategy, rolled back cuts leaving the mesh as it was). Names the first failing\n"
+      "operation and its scenario line, then says whether the scenario alone reproduces it under\n"
+      "`tetcut run` (the input of `tetcut minimize`).\n",
+      "exit: 0 the input passes, 1 an operation fails, 2 unreadable input, not the target's\n"
+      "input version, or bad usage");
+  CLI::App& app = parser.app();
+  opt::text(app, "INPUT", input, "the fuzz input", "")->required();
+  opt::text(app, "--target", target_name, "removal_sequence or cut_sequence", "NAME")->required();
+  opt::text(app, "--scenario-out", scenario_out, "also write the scenario (mesh paths relative to FILE's folder)",
+            "FILE");
+  if (const auto code = parser.parse(args, out, err)) return *code;
 #ifndef TETCUT_HAVE_FUZZ_DECODERS
   err << "tetcut: replay: this build has no fuzz decoders (fuzzer/FuzzedDataProvider.h was not found)\n";
   return kExitBadInput;
@@ -63,9 +65,9 @@ int cmd_replay(Args args, std::ostream& out, std::ostream& err) {
   if (target == nullptr) {
     std::string names;
     for (const fuzz::SequenceTarget& t : fuzz::sequence_targets()) names += std::string(names.empty() ? "" : ", ") + std::string(t.name);
-    return usage_error("replay", "unknown target '" + *target_name + "' (replayable: " + names + ")", err);
+    return parser.usage_error("--target: unknown target '" + *target_name + "' (replayable: " + names + ")", err);
   }
-  const std::string& input_path = a.positionals[0];
+  const std::string& input_path = *input;
   std::string bytes;
   if (const auto error = read_file(input_path, bytes)) {
     err << "tetcut: " << error->message() << "\n";
@@ -87,7 +89,7 @@ int cmd_replay(Args args, std::ostream& out, std::ostream& err) {
   }
   out << result.scenario;
 
-  if (const auto path = a.value("--scenario-out")) {
+  if (const auto& path = scenario_out) {
     const fs::path dir = fs::path(*path).parent_path().empty() ? fs::path(".") : fs::path(*path).parent_path();
     const WriteResult w = write_file_atomically(*path, relocate(result.scenario, dir));
     if (!w.ok) {

@@ -2,66 +2,42 @@
 // file (tools/scenario) and says which line failed, if any.
 #include <ostream>
 
-#include "args.hpp"
 #include "command.hpp"
-#include "cut_report_json.hpp"
-#include "tetcut/io.hpp"
+#include "command_parser.hpp"
+#include "run_report.hpp"
 #include "tetcut/scenario/scenario.hpp"
 
 namespace tetcut::cli {
-namespace {
-constexpr OptionSpec kSpecs[] = {{"--check", true}, {"--out", true}, {"--report", true}};
-}  // namespace
 
 int cmd_run(Args args, std::ostream& out, std::ostream& err) {
-  const ArgParseResult parsed = parse_args(args, kSpecs);
-  if (!parsed.ok() || parsed.args.positionals.size() != 1) {
-    err << "tetcut run: " << (parsed.ok() ? "expected exactly one SCENARIO" : parsed.error) << "\n"
-        << "usage: tetcut run SCENARIO [--check every|end|none] [--out M] [--report R.json]\n";
-    return 2;
+  std::optional<std::string> path;
+  std::optional<scenario::CheckMode> check;
+  RunOutputs outputs;
+  CommandParser parser(
+      "run", "tetcut run SCENARIO [--check every|end|none] [--out M] [--report R.json]",
+      "Runs a scenario file: one operation a line (mesh, diameter, strategy, cut, sweep, remove,\n"
+      "compact, check, expect hash|tets|unresolved|components), tets and tools addressed by points\n"
+      "so that scenarios survive changes of internal ids. See corpus/scenarios/ and\n"
+      "tools/scenario/include/tetcut/scenario/scenario.hpp.\n",
+      "exit: 0 passed, 1 a check or expectation failed (its line is named), 2 unusable input");
+  CLI::App& app = parser.app();
+  opt::text(app, "SCENARIO", path, "the scenario file", "")->required();
+  opt::check_mode(app, check, "the local check after every operation (default), the full one at the end, or none");
+  opt::text(app, "--out", outputs.mesh_path, "the final mesh (where the run stopped, if a check failed)", "M");
+  opt::text(app, "--report", outputs.report_path, "the cuts and their summary as JSON (see tetcut cut)", "R.json");
+  if (const auto code = parser.parse(args, out, err)) return *code;
+
+  const scenario::ParseResult parsed = scenario::parse_file(*path);
+  if (!parsed.scenario) {
+    err << "tetcut: " << parsed.error << "\n";
+    return kExitBadInput;
   }
-  const ParsedArgs& a = parsed.args;
   scenario::RunOptions options;
-  const std::string check = a.value("--check").value_or("every");
-  if (check == "every") options.check = scenario::CheckMode::kEvery;
-  else if (check == "end") options.check = scenario::CheckMode::kEnd;
-  else if (check == "none") options.check = scenario::CheckMode::kNone;
-  else {
-    err << "tetcut run: --check must be every, end or none\n";
-    return 2;
-  }
-  const scenario::ParseResult parsed_scenario = scenario::parse_file(a.positionals[0]);
-  if (!parsed_scenario.scenario) {
-    err << "tetcut: " << parsed_scenario.error << "\n";
-    return 2;
-  }
+  options.check = check.value_or(scenario::CheckMode::kEvery);
   TetMesh mesh;
-  const scenario::RunResult r = scenario::run(*parsed_scenario.scenario, options, &mesh);
-  out << r.cuts.size() << " cuts, " << r.removals << " tets removed, " << r.unresolved << " unresolved, " << r.tets
-      << " tets left\n";
-  if (!r.cuts.empty())
-    out << "per cut (all cuts): p50 " << percentile_us(r.cuts, 0.5) << " us, p99 " << percentile_us(r.cuts, 0.99)
-        << " us, max " << percentile_us(r.cuts, 1.0) << " us; first cut " << r.cuts.front().report.time.total_us << " us\n";
-  if (!r.ok) {
-    err << "tetcut: " << r.error << "\n";
-    return r.exit_code;
-  }
-  out << "hash " << r.hash << "\n";
-  if (const auto path = a.value("--out")) {
-    const WriteResult w = write_mesh(*path, mesh);
-    if (!w.ok) {
-      err << "tetcut: " << w.error << "\n";
-      return 2;
-    }
-  }
-  if (const auto path = a.value("--report")) {
-    const WriteResult w = write_file_atomically(*path, cut_report_json(r.cuts, r.hash, true));
-    if (!w.ok) {
-      err << "tetcut: " << w.error << "\n";
-      return 2;
-    }
-  }
-  return 0;
+  const scenario::RunResult r = scenario::run(*parsed.scenario, options, &mesh);
+  if (!r.ok) err << "tetcut: " << r.error << "\n";
+  return report_run(r, mesh, outputs, out, err);
 }
 
 }  // namespace tetcut::cli

@@ -2,8 +2,8 @@
 // strategy comparison, and the JSON and HTML reports (tools/stats).
 #include <ostream>
 
-#include "args.hpp"
 #include "command.hpp"
+#include "command_parser.hpp"
 #include "stats_json.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/stats/html_report.hpp"
@@ -13,9 +13,6 @@
 
 namespace tetcut::cli {
 namespace {
-constexpr OptionSpec kSpecs[] = {
-    {"--corpus", true}, {"--mesh", true}, {"--check", true}, {"--json", true}, {"--html", true}, {"--pictures", true}};
-
 // The command line as given, for the report's "reproduce with" line.
 std::string command_line(Args args) {
   std::string s = "tetcut stats";
@@ -25,21 +22,48 @@ std::string command_line(Args args) {
 }  // namespace
 
 int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
-  const ArgParseResult parsed = parse_args(args, kSpecs);
-  if (!parsed.ok()) return usage_error("stats", parsed.error, err);
-  const ParsedArgs& a = parsed.args;
-  if (!a.positionals.empty()) return usage_error("stats", "unexpected argument '" + a.positionals[0] + "'", err);
+  std::optional<std::string> corpus, mesh, json, html, pictures;
+  std::optional<scenario::CheckMode> check;
+  CommandParser parser(
+      "stats", "tetcut stats [--corpus DIR] [--mesh NAME] [--check every|end] [--json FILE] [--html FILE] [--pictures DIR]",
+      "Redoes the paper's experiment (section 3.6): five meshes of its kinds (cylinder, sheet, coarse\n"
+      "liver, finer liver, locally refined liver), each cut by the cautery scenario in\n"
+      "CORPUS/scenarios/paper/ with the combined strategy, and prints Tables 1 and 2 with the paper's\n"
+      "figures and the difference beside ours. Then compares the strategies (basic, neighbours,\n"
+      "combined; templates and bisection) on one of those scenarios, and runs the liver resection\n"
+      "(CORPUS/scenarios/liver-resection.scn) for the report's plots and pictures.\n"
+      "\n"
+      "Only the times (p50_us, p99_us, cut_us) vary between runs; every other figure is\n"
+      "deterministic.\n",
+      "exit: 0 done, 1 a scenario failed a check or the combined strategy left a tet unresolved,\n"
+      "2 unusable corpus or bad usage");
+  CLI::App& app = parser.app();
+  opt::text(app, "--corpus", corpus, "the corpus folder (default: corpus, as from the repository's root)", "DIR");
+  opt::text(app, "--mesh", mesh, "the strategy comparison's mesh (default liver-refined)", "NAME");
+  opt::check_mode(app, check, "the local checker after every cut (default) or the full one at the end");
+  opt::text(app, "--json", json,
+            "everything as JSON: keys table1, table2 (one row per mesh, with paper and diff), strategies (one "
+            "row per strategy), resection",
+            "FILE");
+  opt::text(app, "--html", html,
+            "a self-contained HTML report: tables, latency plot, quality histograms, the liver before and after "
+            "the resection as SVG",
+            "FILE");
+  opt::text(app, "--pictures", pictures,
+            "the report's pictures as DIR/latency-plot.svg, quality-histogram.svg, liver-before.svg and "
+            "liver-after.svg (DIR must exist)",
+            "DIR");
+  if (const auto code = parser.parse(args, out, err)) return *code;
 
   stats::StatsOptions options;
-  options.corpus_dir = a.value("--corpus").value_or("corpus");
-  options.comparison_mesh = a.value("--mesh").value_or("liver-refined");
+  options.corpus_dir = corpus.value_or("corpus");
+  options.comparison_mesh = mesh.value_or("liver-refined");
   bool known = false;
   for (const stats::PaperMesh& m : stats::paper_meshes()) known = known || options.comparison_mesh == m.name;
   if (!known)
-    return usage_error("stats", "--mesh: one of cylinder, sheet, liver-coarse, liver-refined, liver-local", err);
-  const std::string check = a.value("--check").value_or("every");
-  if (check != "every" && check != "end") return usage_error("stats", "--check must be every or end", err);
-  options.check_every_cut = check == "every";
+    return parser.usage_error("--mesh: one of cylinder, sheet, liver-coarse, liver-refined, liver-local", err);
+  if (check == scenario::CheckMode::kNone) return parser.usage_error("--check: must be every or end", err);
+  options.check_every_cut = check.value_or(scenario::CheckMode::kEvery) == scenario::CheckMode::kEvery;
 
   const stats::StatsResult result = stats::compute_stats(options);
   if (!result.report) {
@@ -49,14 +73,8 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   const stats::StatsReport& report = *result.report;
   out << stats::text_report(report);
 
-  if (const auto path = a.value("--json")) {
-    const WriteResult w = write_file_atomically(*path, stats_json(report));
-    if (!w.ok) {
-      err << "tetcut: " << w.error << "\n";
-      return kExitBadInput;
-    }
-  }
-  if (const auto path = a.value("--html")) {
+  if (json && !write_json_file(*json, stats_json(report), err)) return kExitBadInput;
+  if (const auto& path = html) {
     const WriteResult w = write_file_atomically(*path, stats::html_report(report, command_line(args)));
     if (!w.ok) {
       err << "tetcut: " << w.error << "\n";
@@ -64,7 +82,7 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
     }
   }
 
-  if (const auto dir = a.value("--pictures"); dir && report.resection) {
+  if (const auto& dir = pictures; dir && report.resection) {
     for (const stats::Picture& p : stats::resection_pictures(*report.resection)) {
       const WriteResult w = write_file_atomically(*dir + "/" + p.id + ".svg", p.svg + "\n");
       if (!w.ok) {

@@ -4,8 +4,9 @@
 //   usage (with a message on `err` naming the file, line and reason).
 //
 // Messages to `err` are one line each, "tetcut: FILE:LINE: reason" for bad input and
-// "tetcut: COMMAND: reason" (followed by the command's usage line) for bad usage.
-// `--help` / `-h` never reaches a command: main() prints the command's help itself.
+// "tetcut COMMAND: reason" (followed by the command's usage line) for bad usage.
+// Each command owns its help text and its parser (command_parser.hpp): `--help` / `-h` among its
+// arguments prints its help on `out` and returns 0; `tetcut help NAME` runs NAME with --help.
 #pragma once
 
 #include <iosfwd>
@@ -36,17 +37,12 @@ inline constexpr int kExitBadInput = 2;
 
 struct CommandInfo {
   std::string_view name;
-  std::string_view synopsis;  // "tetcut check MESH [--level local|full|exact] [--json]"
   std::string_view summary;   // one line for the command list
-  std::string_view help;      // the rest of `tetcut help NAME`, several lines
   int (*run)(Args, std::ostream&, std::ostream&);
 };
 
 // Every command, in the order `tetcut --help` lists them.
 std::span<const CommandInfo> commands();
 const CommandInfo* find_command(std::string_view name);
-
-// Prints "tetcut: COMMAND: message" and "usage: SYNOPSIS" to err; returns kExitBadInput.
-int usage_error(std::string_view command, std::string_view message, std::ostream& err);
 
 }  // namespace tetcut::cli

@@ -36,17 +36,10 @@ void print_usage(std::ostream& os) {
         "            2 unreadable input or bad usage\n";
 }
 
-void print_command_help(const CommandInfo& c, std::ostream& os) {
-  os << "usage: " << c.synopsis << "\n\n" << c.help;
-}
-
-// -h / --help among a command's arguments (before "--") asks for that command's help.
-bool asks_for_help(tetcut::cli::Args args) {
-  for (const std::string& a : args) {
-    if (a == "--") return false;
-    if (a == "--help" || a == "-h") return true;
-  }
-  return false;
+// Every command prints its own help (command_parser.hpp).
+int print_command_help(const CommandInfo& c) {
+  const std::string help = "--help";
+  return c.run(tetcut::cli::Args(&help, 1), std::cout, std::cerr);
 }
 
 int run(const std::vector<std::string>& argv) {
@@ -77,8 +70,7 @@ int run(const std::vector<std::string>& argv) {
       print_usage(std::cerr);
       return kExitBadInput;
     }
-    print_command_help(*c, std::cout);
-    return kExitOk;
+    return print_command_help(*c);
   }
   const CommandInfo* c = tetcut::cli::find_command(first);
   if (c == nullptr) {
@@ -87,12 +79,7 @@ int run(const std::vector<std::string>& argv) {
     print_usage(std::cerr);
     return kExitBadInput;
   }
-  const tetcut::cli::Args args(argv.data() + 1, argv.size() - 1);
-  if (asks_for_help(args)) {
-    print_command_help(*c, std::cout);
-    return kExitOk;
-  }
-  return c->run(args, std::cout, std::cerr);
+  return c->run(tetcut::cli::Args(argv.data() + 1, argv.size() - 1), std::cout, std::cerr);
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 #include "mesh_input.hpp"
 
-#include <sstream>
-
 #include <cstdint>
 #include <filesystem>
 #include <ostream>
@@ -78,25 +76,13 @@ std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err, boo
 }
 
 bool save_mesh_and_report(const std::string& mesh_path, const TetMesh& mesh, const std::optional<std::string>& report_path,
-                          const std::function<void(JsonWriter&)>& fill, std::ostream& err) {
+                          const Json& report, std::ostream& err) {
   const WriteResult written = write_mesh(mesh_path, mesh);
   if (!written.ok) {
     err << "tetcut: " << written.error << "\n";
     return false;
   }
-  if (!report_path) return true;
-  std::ostringstream json;
-  JsonWriter w(json);
-  w.begin_object();
-  fill(w);
-  w.end_object();
-  w.finish();
-  const WriteResult r = write_file_atomically(*report_path, json.str());
-  if (!r.ok) {
-    err << "tetcut: " << r.error << "\n";
-    return false;
-  }
-  return true;
+  return !report_path || write_json_file(*report_path, report, err);
 }
 
 }  // namespace tetcut::cli

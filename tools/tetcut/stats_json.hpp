@@ -2,12 +2,11 @@
 // paper's figures and the difference), strategies (one row per strategy), resection.
 #pragma once
 
-#include <string>
-
+#include "json_output.hpp"
 #include "tetcut/stats/paper_stats.hpp"
 
 namespace tetcut::cli {
 
-std::string stats_json(const stats::StatsReport& report);
+Json stats_json(const stats::StatsReport& report);
 
 }  // namespace tetcut::cli

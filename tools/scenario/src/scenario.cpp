@@ -1,7 +1,8 @@
 #include "tetcut/scenario/scenario.hpp"
 
-#include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 
@@ -21,28 +22,6 @@ std::vector<std::string> tokens_of(const std::string& line) {
   return out;
 }
 
-std::optional<double> number(const std::string& s) {
-  double v = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc{} || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
-std::optional<std::uint64_t> count(const std::string& s) {
-  std::uint64_t v = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc{} || end != s.data() + s.size()) return std::nullopt;
-  return v;
-}
-
-std::optional<Vec3> point(const std::string& s) {
-  const auto c1 = s.find(','), c2 = c1 == std::string::npos ? c1 : s.find(',', c1 + 1);
-  if (c2 == std::string::npos) return std::nullopt;
-  const auto x = number(s.substr(0, c1)), y = number(s.substr(c1 + 1, c2 - c1 - 1)), z = number(s.substr(c2 + 1));
-  if (!x || !y || !z) return std::nullopt;
-  return Vec3{*x, *y, *z};
-}
-
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
          w == "split";
@@ -52,19 +31,19 @@ bool is_param(const std::string& w) {
 std::optional<std::string> set_param(CutParams& params, const std::string& name, const std::string& value) {
   CutParams next = params;
   if (name == "strategy") {
-    const auto s = parse_removal_strategy(value);
+    const auto s = parse_strategy(value);
     if (!s) return "strategy must be basic, neighbours, combined or wide";
     next.strategy = *s;
   } else if (name == "split") {
-    if (value == "templates") next.split_method = SplitMethod::kTemplates;
-    else if (value == "bisection") next.split_method = SplitMethod::kBisection;
-    else return "split must be templates or bisection";
+    const auto m = parse_split_method(value);
+    if (!m) return "split must be templates or bisection";
+    next.split_method = *m;
   } else if (name == "depth" || name == "iterations") {
-    const auto n = count(value);
+    const auto n = parse_uint(value);
     if (!n || *n > 64) return name + " must be an integer between 1 and 64";
     (name == "depth" ? next.search_depth : next.max_refine_iterations) = static_cast<std::uint32_t>(*n);
   } else {
-    const auto v = number(value);
+    const auto v = parse_double(value);
     if (!v) return name + " must be a finite number";
     (name == "diameter" ? next.tool_diameter : name == "dref_factor" ? next.d_ref_factor : next.p) = *v;
   }
@@ -105,14 +84,14 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
       op.text = w;
       op.value = t[1];
     } else if (w == "cut" || w == "remove") {
-      const auto p = t.size() == 2 ? point(t[1]) : std::nullopt;
+      const auto p = t.size() == 2 ? parse_vec3(t[1]) : std::nullopt;
       if (!p) return fail("expected: " + w + " X,Y,Z with finite numbers");
       op.kind = w == "cut" ? OpKind::kCut : OpKind::kRemove;
       op.a = *p;
     } else if (w == "sweep") {
-      const auto a = t.size() == 4 ? point(t[1]) : std::nullopt;
-      const auto b = t.size() == 4 ? point(t[2]) : std::nullopt;
-      const auto step = t.size() == 4 ? number(t[3]) : std::nullopt;
+      const auto a = t.size() == 4 ? parse_vec3(t[1]) : std::nullopt;
+      const auto b = t.size() == 4 ? parse_vec3(t[2]) : std::nullopt;
+      const auto step = t.size() == 4 ? parse_double(t[3]) : std::nullopt;
       if (!a || !b || !step || *step <= 0) return fail("expected: sweep X,Y,Z X,Y,Z STEP with STEP > 0");
       if (norm(*b - *a) / *step > 100000) return fail("sweep of more than 100000 cuts");
       op.kind = OpKind::kSweep;
@@ -126,7 +105,7 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
       if (t.size() > 2) return fail("expected: check [local|full|exact]");
       op.kind = OpKind::kCheck;
       op.text = t.size() == 2 ? t[1] : "full";
-      if (op.text != "local" && op.text != "full" && op.text != "exact") return fail("check level must be local, full or exact");
+      if (!parse_check_level(op.text)) return fail("check level must be local, full or exact");
     } else if (w == "expect") {
       if (t.size() != 3) return fail("expected: expect hash HEX | tets N | unresolved N | components N");
       if (t[1] == "hash") {
@@ -135,7 +114,7 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
         op.kind = OpKind::kExpectHash;
         op.text = t[2];
       } else if (t[1] == "tets" || t[1] == "unresolved" || t[1] == "components") {
-        const auto c = count(t[2]);
+        const auto c = parse_uint(t[2]);
         if (!c) return fail("expected a non-negative integer");
         op.kind = t[1] == "tets" ? OpKind::kExpectTets : t[1] == "unresolved" ? OpKind::kExpectUnresolved : OpKind::kExpectComponents;
         op.count = *c;
@@ -160,6 +139,16 @@ ParseResult parse_file(const std::string& path) {
   return parse(text.str(), path, slash == std::string::npos ? "." : path.substr(0, slash));
 }
 
+std::string mesh_path_from(const std::string& mesh, const std::string& dir) {
+  namespace fs = std::filesystem;
+  const fs::path m = fs::path(mesh).lexically_normal();
+  const fs::path base = fs::absolute(dir).lexically_normal();
+  const fs::path relative = m.lexically_relative(base);
+  // The first component below the root: "/work/a/b" -> "work".
+  const auto top = [](const fs::path& p) { return std::next(p.begin()) == p.end() ? fs::path() : *std::next(p.begin()); };
+  return (relative.empty() || top(m) != top(base) ? m : relative).generic_string();
+}
+
 RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh_out) {
   RunResult result;
   TetMesh mesh;
@@ -171,6 +160,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     result.exit_code = code;
     result.failed_line = op.line;
     result.error = scenario.name + ":" + std::to_string(op.line) + ": " + why;
+    result.reason = why;
     result.tets = mesh.num_tets();
     if (cutter) result.removal += cutter->removal_report();
     if (mesh_out) *mesh_out = std::move(mesh);  // every caller returns right after
@@ -246,6 +236,12 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
             return result;
           }
           if (!after(op)) return result;
+          if (options.after_cut) {
+            if (auto bad = options.after_cut(mesh, result.cuts.size() - 1)) {
+              stop(op, 2, *bad);
+              return result;
+            }
+          }
         }
         break;
       }
@@ -270,7 +266,9 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         break;
       case OpKind::kCheck: {
         invariants::CheckOptions o;
-        o.level = op.text == "exact" ? invariants::CheckLevel::kExact : invariants::CheckLevel::kFull;
+        // `check local` in a file has no operation to look around: it checks the whole mesh.
+        o.level = *parse_check_level(op.text) == invariants::CheckLevel::kExact ? invariants::CheckLevel::kExact
+                                                                                 : invariants::CheckLevel::kFull;
         const invariants::CheckReport r = invariants::check_mesh(mesh.raw_view(), o);
         if (!r.ok()) {
           stop(op, 1, "check failed: " + violations(r));
@@ -313,7 +311,8 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     if (!r.ok()) {
       result.ok = false;
       result.exit_code = 1;
-      result.error = scenario.name + ": invariant violated at the end: " + violations(r);
+      result.reason = "invariant violated at the end: " + violations(r);
+      result.error = scenario.name + ": " + result.reason;
     }
   }
   if (cutter) result.removal += cutter->removal_report();

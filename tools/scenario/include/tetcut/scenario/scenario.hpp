@@ -22,11 +22,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "tetcut/cut.hpp"
+#include "tetcut/scenario/values.hpp"
 #include "tetcut/vec3.hpp"
 
 namespace tetcut::scenario {
@@ -60,7 +62,9 @@ struct ParseResult {
 ParseResult parse(const std::string& text, const std::string& name, const std::string& base_dir);
 ParseResult parse_file(const std::string& path);
 
-enum class CheckMode : std::uint8_t { kEvery, kEnd, kNone };
+// How a scenario written in folder `dir` names the mesh at absolute path `mesh`: relative when
+// both lie in one tree (a checkout), so that the pair can move together; absolute otherwise.
+std::string mesh_path_from(const std::string& mesh, const std::string& dir);
 
 struct CutRecord {
   std::uint32_t line = 0;  // the scenario line that made the cut
@@ -72,6 +76,7 @@ struct RunResult {
   bool ok = true;
   int exit_code = 0;       // 0 passed, 1 a check or expectation failed, 2 unusable input
   std::string error;       // "FILE:LINE: what failed"
+  std::string reason;      // "what failed" alone, for callers that name the place themselves
   std::uint32_t failed_line = 0;
   std::vector<CutRecord> cuts;
   std::uint64_t removals = 0;
@@ -87,6 +92,9 @@ struct RunOptions {
   // When non-zero, the run stops (exit 1) after a cut or removal that leaves more live tets:
   // a guard for comparisons that run a strategy known to refine without bound.
   std::uint64_t max_tets = 0;
+  // Called after every cut that succeeded and passed its check, with the cut's index in the run
+  // (`tetcut cut --frames` writes a snapshot). A message stops the run with exit 2.
+  std::function<std::optional<std::string>(const TetMesh&, std::size_t cut_index)> after_cut;
 };
 
 // Runs the scenario; the final mesh is left in `mesh_out` when given (when the run stops early,

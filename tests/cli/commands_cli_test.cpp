@@ -1,0 +1,243 @@
+// Every `tetcut` command owns its parser and its help (tools/tetcut/cmd_NAME.cpp): --help lists
+// the command's options, a bad number or an unknown option is one line naming it plus the usage,
+// exit 2. And the commands that share a runner agree with it: `tetcut cut` is the scenario
+// sweep `tetcut run` runs, `tetcut remove --at` removes the tet `remove X,Y,Z` does.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "cli_fixture.hpp"
+
+namespace tetcut::test {
+namespace {
+
+struct CommandCase {
+  std::string name;
+  std::vector<std::string> options;  // each must appear in the help
+  std::vector<std::string> bad_number;  // arguments with one malformed number; empty: none
+  std::string bad_option;              // the option the bad number is given to
+};
+
+// Arguments are completed by the test: "BOX" is a box mesh, "OUT" a path in the temp dir.
+const std::vector<CommandCase>& cases() {
+  static const std::vector<CommandCase> kCases = {
+      {"info", {"MESH", "--json"}, {}, ""},
+      {"check", {"MESH", "--level", "--min-radius-ratio", "--json"}, {"BOX", "--min-radius-ratio", "0.5x"}, "--min-radius-ratio"},
+      {"convert", {"IN", "OUT", "--format", "--binary", "--compress", "--reorient"}, {}, ""},
+      {"gen",
+       {"cylinder", "--radius", "--segments", "sheet", "--thickness", "box", "--spacing", "surface",
+        "--preserve-boundary", "liver", "--tets", "--seed", "-o"},
+       {"cylinder", "--radius", "nan", "-o", "OUT"},
+       "--radius"},
+      {"repair", {"IN", "-o", "--verbose"}, {}, ""},
+      {"refine",
+       {"MESH", "--uniform", "--random-edges", "--seed", "--ball", "--dref", "--p", "--max-iterations", "--strategy",
+        "-o", "--report"},
+       {"BOX", "--random-edges", "-1", "-o", "OUT"},
+       "--random-edges"},
+      {"remove",
+       {"MESH", "--at", "--random", "--seed", "--strategy", "--check", "-o", "--report"},
+       {"BOX", "--random", "all", "--seed", "1e3", "-o", "OUT"},
+       "--seed"},
+      {"cut",
+       {"MESH", "--diameter", "--from", "--to", "--step", "--strategy", "--split", "--dref-factor", "--p", "--depth",
+        "--check", "--out", "--report", "--frames"},
+       {"BOX", "--diameter", "1e3x", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"},
+       "--diameter"},
+      {"run", {"SCENARIO", "--check", "--out", "--report"}, {}, ""},
+      {"stats", {"--corpus", "--mesh", "--check", "--json", "--html", "--pictures"}, {}, ""},
+      {"replay", {"INPUT", "--target", "--scenario-out"}, {}, ""},
+      {"minimize", {"SCENARIO", "-o", "--max-runs"}, {"BOX", "-o", "OUT", "--max-runs", "inf"}, "--max-runs"},
+  };
+  return kCases;
+}
+
+// Two lines on stderr, "tetcut NAME: ..." naming `what`, then "usage: tetcut NAME ...".
+void expect_usage_error(const ProcessResult& r, const std::string& name, const std::string& what) {
+  EXPECT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_TRUE(r.err.starts_with("tetcut " + name + ": ")) << r.err;
+  EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\nusage: tetcut " + name), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
+}
+
+TEST_F(Cli, EveryCommandsHelpListsItsOptions) {
+  for (const CommandCase& c : cases()) {
+    SCOPED_TRACE(c.name);
+    const ProcessResult help = tetcut({c.name, "--help"});
+    EXPECT_EQ(help.exit_code, 0) << help.err;
+    EXPECT_TRUE(help.err.empty()) << help.err;
+    EXPECT_TRUE(help.out.starts_with("usage: tetcut " + c.name)) << help.out;
+    EXPECT_NE(help.out.find("exit: 0"), std::string::npos) << help.out;
+    for (const std::string& option : c.options) EXPECT_NE(help.out.find(option), std::string::npos) << option;
+    EXPECT_EQ(tetcut({"help", c.name}).out, help.out);
+  }
+}
+
+TEST_F(Cli, EveryCommandRefusesAnUnknownOptionInOneLine) {
+  for (const CommandCase& c : cases()) {
+    SCOPED_TRACE(c.name);
+    expect_usage_error(tetcut({c.name, "--no-such-option"}), c.name, "--no-such-option");
+  }
+}
+
+TEST_F(Cli, EveryCommandRefusesAMalformedNumberNamingTheOption) {
+  const std::string box = write_box("box.msh", 1, 1, 1);
+  for (const CommandCase& c : cases()) {
+    if (c.bad_number.empty()) continue;
+    SCOPED_TRACE(c.name);
+    std::vector<std::string> args = {c.name};
+    for (const std::string& a : c.bad_number) args.push_back(a == "BOX" ? box : a == "OUT" ? path("out.msh") : a);
+    expect_usage_error(tetcut(args), c.name, c.bad_option + ": expects");
+    EXPECT_FALSE(fs::exists(path("out.msh")));
+  }
+}
+
+TEST_F(Cli, CutRefusesNumbersThatAreNotWhatTheUserWrote) {
+  const std::string box = write_box("box.msh", 1, 1, 1);
+  for (const char* bad : {"nan", "inf", "", " 1", "0x10", "1e999", "1e3x"}) {
+    const ProcessResult r =
+        tetcut({"cut", box, "--diameter", bad, "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"});
+    expect_usage_error(r, "cut", std::string("--diameter: expects a finite number, not '") + bad + "'");
+  }
+  expect_usage_error(tetcut({"cut", box, "--diameter", "-1", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"}),
+                     "cut", "diameter");
+  expect_usage_error(tetcut({"cut", box, "--diameter", "0.5", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5",
+                             "--depth", "99999999999999999999"}),
+                     "cut", "--depth: expects a non-negative integer");
+}
+
+std::string read_text(const std::string& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A report file that is JSON with a summary, or nothing (with a failure saying why).
+std::optional<Json> report_summary(const std::string& p) {
+  const std::string text = read_text(p);
+  const auto json = parse_json(text);
+  EXPECT_TRUE(json && json->contains("summary")) << p << ":\n" << text;
+  return json && json->contains("summary") ? json : std::nullopt;
+}
+
+// The part of a run's report that does not depend on time.
+Json counts_of(const Json& report) {
+  Json s = report.at("summary");
+  for (const char* t : {"first_us", "p50_us", "p90_us", "p99_us", "max_us"}) s.erase(t);
+  return s;
+}
+
+TEST_F(Cli, CutIsTheScenarioSweepThatRunRuns) {
+  write_box("box.msh", 5, 5, 5);
+  const ProcessResult cut = tetcut({"cut", path("box.msh"), "--diameter", "0.3", "--from", "0.1,0.5,0.5", "--to",
+                                    "0.9,0.5,0.5", "--step", "0.2", "--strategy", "neighbours", "--split", "bisection",
+                                    "--out", path("cut.msh"), "--report", path("cut.json")});
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  write("sweep.scn",
+        "mesh box.msh\ndiameter 0.3\nstrategy neighbours\nsplit bisection\nsweep 0.1,0.5,0.5 0.9,0.5,0.5 0.2\n");
+  const ProcessResult run = tetcut({"run", path("sweep.scn"), "--out", path("run.msh"), "--report", path("run.json")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto cut_report = parse_json(read_text(path("cut.json")));
+  const auto run_report = parse_json(read_text(path("run.json")));
+  ASSERT_TRUE(cut_report && run_report);
+  EXPECT_EQ(counts_of(*cut_report), counts_of(*run_report));
+  EXPECT_EQ(cut_report->at("summary").at("cuts").get<int>(), 5);
+  EXPECT_GT(cut_report->at("summary").at("tets_removed").get<int>(), 0);
+  EXPECT_EQ(read_text(path("cut.msh")), read_text(path("run.msh")));
+}
+
+TEST_F(Cli, RemoveAtAPointRemovesTheTetTheScenarioRemoves) {
+  write_box("box.msh", 3, 3, 3);
+  // On a face and on a vertex shared by several tets: the one rule picks the same tet.
+  const std::vector<std::string> points = {"0.5,0.5,0.5", "0.3333333333333333,0.5,0.5", "0,0,0", "0.1,0.1,0.95"};
+  std::string scenario = "mesh box.msh\n";
+  std::vector<std::string> args = {"remove", path("box.msh"), "-o", path("removed.msh"), "--at", points[0]};
+  for (const std::string& p : points) scenario += "remove " + p + "\n";
+  args.insert(args.end(), points.begin() + 1, points.end());
+  const ProcessResult remove = tetcut(args);
+  ASSERT_EQ(remove.exit_code, 0) << remove.err;
+  write("remove.scn", scenario);
+  const ProcessResult run = tetcut({"run", path("remove.scn"), "--out", path("run.msh")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(read_text(path("removed.msh")), read_text(path("run.msh")));
+  EXPECT_NE(remove.out.find("removed "), std::string::npos) << remove.out;
+}
+
+// ---- refine, cut, run ---------------------------------------------------------------------
+
+TEST_F(Cli, RefineUniformGivesEightTimesTheTetsAndAReport) {
+  const std::string box = write_box("box.msh", 2, 2, 2);
+  const ProcessResult r = tetcut({"refine", box, "--uniform", "-o", path("fine.msh"), "--report", path("r.json")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = report_summary(path("r.json"));
+  ASSERT_TRUE(json);
+  const Json& summary = json->at("summary");
+  for (const char* key : {"iterations", "edges_split", "tets_created", "min_radius_ratio", "hash"})
+    EXPECT_TRUE(summary.contains(key)) << key;
+  EXPECT_EQ(summary.at("tets").get<double>(), 8 * 48);
+  EXPECT_EQ(tetcut({"check", path("fine.msh")}).exit_code, 0);
+}
+
+TEST_F(Cli, CutSweepReportsPercentilesAndLeavesAValidMesh) {
+  const std::string box = write_box("box.msh", 6, 6, 6);
+  const ProcessResult r = tetcut({"cut", box, "--diameter", "0.3", "--from", "0.1,0.5,0.5", "--to", "0.9,0.5,0.5", "--step",
+                                  "0.1", "--out", path("cut.msh"), "--report", path("cut.json")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = report_summary(path("cut.json"));
+  ASSERT_TRUE(json);
+  const Json& summary = json->at("summary");
+  for (const char* key : {"cuts", "first_us", "p50_us", "p90_us", "p99_us", "max_us", "tets_removed", "tets_created",
+                          "unresolved", "min_radius_ratio", "hash"})
+    ASSERT_TRUE(summary.contains(key)) << key;
+  // The first cut is reported on its own and counted in the percentiles (the max is over all).
+  EXPECT_EQ(summary.at("first_us").get<double>(), json->at("cuts").at(0).at("time_us").get<double>());
+  EXPECT_LE(summary.at("first_us").get<double>(), summary.at("max_us").get<double>());
+  EXPECT_EQ(summary.at("cuts").get<double>(), 9);
+  EXPECT_GT(summary.at("tets_removed").get<double>(), 0);
+  EXPECT_EQ(summary.at("unresolved").get<double>(), 0);
+  EXPECT_LE(summary.at("p50_us").get<double>(), summary.at("p99_us").get<double>());
+  ASSERT_TRUE(json->contains("cuts"));
+  EXPECT_EQ(json->at("cuts").size(), 9u);
+  EXPECT_EQ(tetcut({"check", path("cut.msh"), "--level", "exact"}).exit_code, 0);
+}
+
+TEST_F(Cli, CutRefusesBadParametersWithAMessage) {
+  const std::string box = write_box("box.msh", 2, 2, 2);
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"--diameter", "-1", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.1"},
+        std::vector<std::string>{"--diameter", "nan", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.1"},
+        std::vector<std::string>{"--diameter", "0.2", "--from", "0,0,0", "--to", "1,1,1", "--step", "0"},
+        std::vector<std::string>{"--diameter", "0.2", "--from", "0,0", "--to", "1,1,1", "--step", "0.1"},
+        std::vector<std::string>{"--diameter", "0.2", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.1", "--strategy", "x"}}) {
+    std::vector<std::string> args = {"cut", box};
+    args.insert(args.end(), bad.begin(), bad.end());
+    const ProcessResult r = tetcut(args);
+    EXPECT_TRUE(r.exited);
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_NE(r.err.find("tetcut cut:"), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(Cli, RunNamesTheLineOfAFailedExpectation) {
+  write_box("box.msh", 3, 3, 3);
+  const std::string scenario = write("s.scn",
+                                     "mesh box.msh\n"
+                                     "diameter 0.3\n"
+                                     "cut 0.5,0.5,0.5\n"
+                                     "expect tets 1\n");
+  const ProcessResult r = tetcut({"run", scenario});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("s.scn:4: expected 1 tets"), std::string::npos) << r.err;
+  const std::string broken = write("b.scn", "mesh box.msh\ncut 1,2\n");
+  const ProcessResult p = tetcut({"run", broken});
+  EXPECT_EQ(p.exit_code, 2);
+  EXPECT_NE(p.err.find("b.scn:2:"), std::string::npos) << p.err;
+}
+
+}  // namespace
+}  // namespace tetcut::test

@@ -1,0 +1,115 @@
+#include "run_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+#include "tetcut/canonical_hash.hpp"
+#include "tetcut/io.hpp"
+
+namespace tetcut::cli {
+
+double percentile_us(const std::vector<scenario::CutRecord>& cuts, double q) {
+  if (cuts.empty()) return 0.0;
+  std::vector<double> t;
+  t.reserve(cuts.size());
+  for (const auto& c : cuts) t.push_back(c.report.time.total_us);
+  std::sort(t.begin(), t.end());
+  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(t.size())));
+  return t[std::min(t.size() - 1, rank == 0 ? 0 : rank - 1)];
+}
+
+namespace {
+
+Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
+  const CutReport& r = c.report;
+  return Json{{"index", index},
+              {"line", c.line},
+              {"centre", {c.centre.x, c.centre.y, c.centre.z}},
+              {"ok", r.ok},
+              {"time_us", r.time.total_us},
+              {"locate_us", r.time.locate_us},
+              {"refine_us", r.time.refine_us},
+              {"select_us", r.time.select_us},
+              {"remove_us", r.time.remove_us},
+              {"tets_hit", r.tets_hit},
+              {"refine_iterations", r.refine_iterations},
+              {"edges_split", r.edges_split},
+              {"requested", r.requested},
+              {"requests", r.requests},
+              {"tets_removed", r.tets_removed},
+              {"tets_created", r.tets_created},
+              {"direct", r.direct},
+              {"vertex_singularities", r.vertex_singularities},
+              {"edge_singularities", r.edge_singularities},
+              {"resolved_by_neighbours", r.resolved_by_neighbours},
+              {"resolved_by_refinement", r.resolved_by_refinement},
+              {"resolved_by_fallback", r.resolved_by_fallback},
+              {"unresolved", r.unresolved},
+              {"min_radius_ratio", r.min_radius_ratio}};
+}
+
+struct Totals {
+  std::uint64_t removed = 0, created = 0, unresolved = 0;
+  double worst = 1.0;
+};
+
+Totals totals(const std::vector<scenario::CutRecord>& cuts) {
+  Totals t;
+  for (const auto& c : cuts) {
+    t.removed += c.report.tets_removed;
+    t.created += c.report.tets_created;
+    t.unresolved += c.report.unresolved;
+    t.worst = std::min(t.worst, c.report.min_radius_ratio);
+  }
+  return t;
+}
+
+}  // namespace
+
+Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::string& hash, bool valid) {
+  Json records = Json::array();
+  for (std::size_t i = 0; i < cuts.size(); ++i) records.push_back(cut_record_json(i, cuts[i]));
+  const Totals t = totals(cuts);
+  // The first cut on its own (what a simulator feels when the tool first touches the tissue);
+  // the percentiles are over every cut, the first included.
+  Json summary = {{"cuts", cuts.size()},
+                  {"first_us", cuts.empty() ? 0.0 : cuts.front().report.time.total_us},
+                  {"p50_us", percentile_us(cuts, 0.50)},
+                  {"p90_us", percentile_us(cuts, 0.90)},
+                  {"p99_us", percentile_us(cuts, 0.99)},
+                  {"max_us", percentile_us(cuts, 1.0)},
+                  {"tets_removed", t.removed},
+                  {"tets_created", t.created},
+                  {"unresolved", t.unresolved},
+                  {"min_radius_ratio", t.worst},
+                  {"valid", valid},
+                  {"hash", hash}};
+  return Json{{"cuts", std::move(records)}, {"summary", std::move(summary)}};
+}
+
+int report_run(const scenario::RunResult& r, const TetMesh& mesh, const RunOutputs& outputs, std::ostream& out,
+               std::ostream& err) {
+  const Totals t = totals(r.cuts);
+  out << r.cuts.size() << " cuts: " << r.removals << " tets removed, " << t.created << " created, " << r.unresolved
+      << " unresolved, " << mesh.num_tets() << " tets left\n";
+  if (!r.cuts.empty())
+    out << "per cut (all cuts): p50 " << percentile_us(r.cuts, 0.5) << " us, p90 " << percentile_us(r.cuts, 0.9)
+        << " us, p99 " << percentile_us(r.cuts, 0.99) << " us, max " << percentile_us(r.cuts, 1.0) << " us; first cut "
+        << r.cuts.front().report.time.total_us << " us\n";
+  if (r.exit_code == 2) return r.exit_code;  // unusable input: nothing worth writing
+  // A stopped run leaves no hash in `r`: the mesh where it stopped has one all the same.
+  const std::string hash = r.hash.empty() ? hash_to_hex(canonical_hash(mesh)) : r.hash;
+  out << "hash " << hash << "\n";
+  if (outputs.mesh_path) {
+    const WriteResult w = write_mesh(*outputs.mesh_path, mesh);
+    if (!w.ok) {
+      err << "tetcut: " << w.error << "\n";
+      return 2;
+    }
+  }
+  if (outputs.report_path && !write_json_file(*outputs.report_path, cut_report_json(r.cuts, hash, r.ok), err)) return 2;
+  return r.exit_code;
+}
+
+}  // namespace tetcut::cli

@@ -1,0 +1,35 @@
+// What `tetcut run` and `tetcut cut` (a scenario of one sweep) say about a scenario run: the
+// summary lines on stdout, the final mesh (--out) and the JSON report (--report): a `cuts` array
+// (one record per cut, its time in microseconds and its counts) and a `summary` with cuts,
+// first_us, p50_us, p90_us, p99_us, max_us, tets_removed, tets_created, unresolved,
+// min_radius_ratio, valid and hash.
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "json_output.hpp"
+#include "tetcut/scenario/scenario.hpp"
+
+namespace tetcut::cli {
+
+// Nearest-rank percentile (q in [0, 1]) of the cuts' total times; 0 when there are none.
+double percentile_us(const std::vector<scenario::CutRecord>& cuts, double q);
+
+Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::string& hash, bool valid);
+
+struct RunOutputs {
+  std::optional<std::string> mesh_path;    // --out
+  std::optional<std::string> report_path;  // --report
+};
+
+// Prints the summary of `r` (run on `mesh`, which holds the final mesh or the mesh where the run
+// stopped) and, when the run passed or a check failed (exit 0 or 1), writes the outputs. The
+// failure itself is the caller's to print. Returns the exit code: r's, or 2 if an output could
+// not be written.
+int report_run(const scenario::RunResult& r, const TetMesh& mesh, const RunOutputs& outputs, std::ostream& out,
+               std::ostream& err);
+
+}  // namespace tetcut::cli
