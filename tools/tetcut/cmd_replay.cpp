@@ -14,7 +14,7 @@
 #include "tetcut/scenario/scenario.hpp"
 
 #ifdef TETCUT_HAVE_FUZZ_DECODERS
-#include "sequence_support.hpp"
+#include "operations/sequence_support.hpp"
 #endif
 
 namespace tetcut::cli {

@@ -19,8 +19,8 @@
 #include <string_view>
 #include <vector>
 
-#include "fuzz_failure.hpp"
-#include "mesh_edits.hpp"
+#include "operations/mesh_edits.hpp"
+#include "support/fuzz_failure.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/vec3.hpp"
 

@@ -1,9 +1,9 @@
-#include "removal_sequence.hpp"
+#include "operations/removal_sequence_decoder.hpp"
 
 #include <algorithm>
 #include <vector>
 
-#include "sequence_session.hpp"
+#include "operations/sequence_session.hpp"
 #include "tetcut/removal.hpp"
 
 namespace tetcut::fuzz::removal_sequence {

@@ -1,4 +1,4 @@
-#include "sequence_session.hpp"
+#include "operations/sequence_session.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,10 +1,10 @@
-#include "reader_contract.hpp"
+#include "support/reader_contract.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "fuzz_failure.hpp"
-#include "planted_bug.hpp"
+#include "support/fuzz_failure.hpp"
+#include "support/planted_bug.hpp"
 
 namespace tetcut::fuzz {
 namespace {

@@ -1,6 +1,6 @@
-#include "cut_sequence.hpp"
-#include "removal_sequence.hpp"
-#include "sequence_support.hpp"
+#include "operations/cut_sequence_decoder.hpp"
+#include "operations/removal_sequence_decoder.hpp"
+#include "operations/sequence_support.hpp"
 
 namespace tetcut::fuzz {
 

@@ -1,9 +1,9 @@
-#include "cut_sequence.hpp"
+#include "operations/cut_sequence_decoder.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "sequence_session.hpp"
+#include "operations/sequence_session.hpp"
 #include "tetcut/removal.hpp"
 
 namespace tetcut::fuzz::cut_sequence {

@@ -1,4 +1,4 @@
-#include "sequence_support.hpp"
+#include "operations/sequence_support.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <string>
 
-#include "sequence_support.hpp"
+#include "operations/sequence_support.hpp"
 
 namespace tetcut::fuzz::cut_sequence {
 

@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "checked_mesh.hpp"
-#include "sequence_support.hpp"
+#include "operations/checked_mesh.hpp"
+#include "operations/sequence_support.hpp"
 #include "tetcut/cut.hpp"
 
 namespace tetcut::fuzz {

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <string>
 
-#include "sequence_support.hpp"
+#include "operations/sequence_support.hpp"
 
 namespace tetcut::fuzz::removal_sequence {
 
