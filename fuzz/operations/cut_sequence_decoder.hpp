@@ -1,7 +1,7 @@
 // The cut_sequence target's decoder and runner (fuzz/targets/cut_sequence.cpp is its libFuzzer
 // entry point; `tetcut replay --target cut_sequence` calls the same run()).
 //
-// Input: version byte (1, 2 or 3, sequence_support.hpp), then (FuzzedDataProvider) the mesh (version
+// Input: version byte (1, 2 or 3, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
 // 1: the bundled cylinder, sheet, liver-coarse; versions 2 and 3: their small fuzz versions), then up to
 // Limits::max_operations operations, each an opcode and its arguments:
 //   param       one of diameter (0.5..2 mean edge lengths), dref_factor (1..3), p (1.1..3),
@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <string>
 
-#include "operations/sequence_support.hpp"
+#include "operations/sequence_target.hpp"
 
 namespace tetcut::fuzz::cut_sequence {
 

@@ -1,7 +1,7 @@
 // The removal_sequence target's decoder and runner (fuzz/targets/removal_sequence.cpp is its
 // libFuzzer entry point; `tetcut replay --target removal_sequence` calls the same run()).
 //
-// Input: version byte (1, 2 or 3, sequence_support.hpp), then (FuzzedDataProvider) the mesh (version
+// Input: version byte (1, 2 or 3, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
 // 1: the bundled cylinder, sheet, liver-coarse; versions 2 and 3 (read as 2): their small fuzz versions), then up to
 // Limits::max_operations operations, each an opcode and its arguments:
 //   strategy S          basic | neighbours | combined (the initial strategy is combined)
@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <string>
 
-#include "operations/sequence_support.hpp"
+#include "operations/sequence_target.hpp"
 
 namespace tetcut::fuzz::removal_sequence {
 

@@ -25,8 +25,12 @@
 #include <string>
 #include <vector>
 
+#include <fuzzer/FuzzedDataProvider.h>
+
 #include "operations/checked_mesh.hpp"
-#include "operations/sequence_support.hpp"
+#include "operations/scenario_recorder.hpp"
+#include "operations/sequence_meshes.hpp"
+#include "operations/sequence_target.hpp"
 #include "tetcut/cut.hpp"
 
 namespace tetcut::fuzz {

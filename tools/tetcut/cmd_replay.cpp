@@ -14,7 +14,7 @@
 #include "tetcut/scenario/scenario.hpp"
 
 #ifdef TETCUT_HAVE_FUZZ_DECODERS
-#include "operations/sequence_support.hpp"
+#include "operations/sequence_target.hpp"
 #endif
 
 namespace tetcut::cli {

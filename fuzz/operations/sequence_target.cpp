@@ -1,6 +1,9 @@
+#include "operations/sequence_target.hpp"
+
+#include <cstdlib>
+
 #include "operations/cut_sequence_decoder.hpp"
 #include "operations/removal_sequence_decoder.hpp"
-#include "operations/sequence_support.hpp"
 
 namespace tetcut::fuzz {
 
@@ -17,6 +20,11 @@ const SequenceTarget* find_sequence_target(std::string_view name) {
   for (const SequenceTarget& t : kTargets)
     if (t.name == name) return &t;
   return nullptr;
+}
+
+bool legacy_versions_from_env() {
+  const char* env = std::getenv("TETCUT_FUZZ_CURRENT_VERSION_ONLY");
+  return env == nullptr || *env == '\0' || std::string_view(env) == "0";
 }
 
 }  // namespace tetcut::fuzz
