@@ -39,6 +39,17 @@ inline constexpr std::uint8_t kSequenceVersion = 3;
 inline bool is_sequence_version(std::uint8_t v) { return v >= kSequenceVersionBundled && v <= kSequenceVersion; }
 inline bool is_current_sequence_version(std::uint8_t v) { return v == kSequenceVersionSmall || v == kSequenceVersion; }
 
+// How much of an input a sequence target runs (each target's decoder has them per version): up to max_operations operations, with the full
+// check every full_check_every of them and at the end.
+struct SequenceLimits {
+  std::size_t max_operations;
+  std::size_t full_check_every;
+};
+// The sequence also ends once the mesh has grown beyond this many times its initial tets:
+// repeated refinement around small tools multiplies the tets (a cut on 45 000 tets took 50 s in
+// Release), and executions per second are what finds bugs. It ends the input as the scenario ends.
+inline constexpr std::uint32_t kMaxTetsFactor = 3;
+
 // What a sequence target does with an input.
 struct SequenceOptions {
   bool record_scenario = false;   // fill SequenceResult::scenario
@@ -68,7 +79,6 @@ struct SequenceResult {
 struct SequenceTarget {
   std::string_view name;
   SequenceResult (*run)(const std::uint8_t* data, std::size_t size, const SequenceOptions& options);
-  std::string (*decode_to_scenario)(const std::uint8_t* data, std::size_t size);
   std::string_view versions;  // the first bytes it accepts, for messages: "1 or 2"
 };
 
