@@ -25,7 +25,7 @@ build=$work/tetcut-fuzz-build
 default_targets="msh22 msh41 msh10 vtu vtk medit tetgen off stl obj mixed_ops checker_differential removal_sequence cut_sequence"
 read -r -a targets <<<"${TETCUT_FUZZ_TARGETS:-$default_targets}"
 
-# Limits per kind of input: a file, or an operation sequence (mesh_edits.hpp).
+# Limits per kind of input: a file, or an operation sequence (fuzz/operations/).
 max_len_of() {
   case $1 in
     mixed_ops | checker_differential | removal_sequence | cut_sequence) echo 1024 ;;
@@ -50,13 +50,13 @@ cmake --build "$build" -j "$(nproc)" --target "${targets[@]/#/tetcut_fuzz_}"
 
 mkdir -p "$OUT/lib"
 # The sequence targets start from bundled meshes (input version 1) or small fuzz meshes (2),
-# looked up next to the fuzzer when the source tree is not there (fuzz/sequence_support.cpp).
+# looked up next to the fuzzer when the source tree is not there (fuzz/operations/sequence_meshes.cpp).
 mkdir -p "$OUT/tetcut_meshes"
 cp "$src"/corpus/meshes/{cylinder,sheet,liver-coarse}.msh "$OUT/tetcut_meshes/"
 cp "$src"/corpus/fuzz/meshes/{cylinder,sheet,liver}-small.msh "$OUT/tetcut_meshes/"
 # A sequence target's seeds of an older input version (first byte 1) stay out of its seed
 # corpus: they replay in ctest, but fuzzing them is an order of magnitude slower (their meshes
-# are ten times larger; fuzz/sequence_support.hpp).
+# are ten times larger; fuzz/operations/sequence_target.hpp).
 legacy_seed() {
   case $1 in
     removal_sequence | cut_sequence) [[ $(head -c1 "$2" | od -An -tu1 | tr -d ' ') == 1 ]] ;;

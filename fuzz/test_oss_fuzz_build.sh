@@ -2,12 +2,15 @@
 # ctest fuzz.oss_fuzz_build: runs fuzz/oss_fuzz_build.sh as OSS-Fuzz would, with the variables
 # pointing at local folders, and checks what it must produce. Lean on purpose: the format targets
 # and mixed_ops, -O1, no sanitizer (the fuzz preset covers those); WORK persists in the build
-# tree so a rerun only relinks. Exit 77 (ctest SKIP_RETURN_CODE) when clang-14 is absent.
+# tree so a rerun only relinks. Exit 77 (ctest SKIP_RETURN_CODE) when the clang is absent:
+# TETCUT_CLANG / TETCUT_CLANGXX, default clang-14 / clang++-14 (what ci/deps installs).
 #   test_oss_fuzz_build.sh WORK_DIR
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-if ! command -v clang++-14 >/dev/null || ! command -v clang-14 >/dev/null; then
-  echo "SKIP: clang-14 not installed"
+cc=${TETCUT_CLANG:-clang-14}
+cxx=${TETCUT_CLANGXX:-clang++-14}
+if ! command -v "$cxx" >/dev/null || ! command -v "$cc" >/dev/null; then
+  echo "SKIP: $cc or $cxx not installed"
   exit 77
 fi
 work=${1:?usage: test_oss_fuzz_build.sh WORK_DIR}
@@ -16,7 +19,7 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
 targets="msh22 msh41 msh10 vtu vtk medit tetgen off stl obj mixed_ops"
-CC=clang-14 CXX=clang++-14 CFLAGS="-O1" CXXFLAGS="-O1" LIB_FUZZING_ENGINE=-fsanitize=fuzzer \
+CC=$cc CXX=$cxx CFLAGS="-O1" CXXFLAGS="-O1" LIB_FUZZING_ENGINE=-fsanitize=fuzzer \
   OUT="$out" WORK="$work" TETCUT_FUZZ_TARGETS="$targets" "$here/oss_fuzz_build.sh"
 
 status=0

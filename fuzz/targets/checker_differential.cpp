@@ -20,8 +20,8 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
-#include "fuzz_failure.hpp"
-#include "mesh_edits.hpp"
+#include "operations/mesh_edits.hpp"
+#include "support/fuzz_failure.hpp"
 #include "tetcut/change_log.hpp"
 #include "detail/edge_split.hpp"
 #include "tetcut/invariants/check.hpp"

@@ -15,9 +15,9 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
-#include "checked_mesh.hpp"
-#include "fuzz_failure.hpp"
-#include "mesh_edits.hpp"
+#include "operations/checked_mesh.hpp"
+#include "operations/mesh_edits.hpp"
+#include "support/fuzz_failure.hpp"
 #include "tetcut/attributes.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/change_log.hpp"

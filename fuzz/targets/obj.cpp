@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "reader_contract.hpp"
+#include "support/reader_contract.hpp"
 #include "tetcut/io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,10 +1,10 @@
-// Fuzz target removal_sequence: what an input means and what is checked is in fuzz/removal_sequence.hpp.
+// Fuzz target removal_sequence: what an input means and what is checked is in fuzz/operations/removal_sequence_decoder.hpp.
 // The decoding and the checks live there, shared with `tetcut replay --target removal_sequence`, which
 // prints the same input as a scenario.
 #include <cstddef>
 #include <cstdint>
 
-#include "removal_sequence.hpp"
+#include "operations/removal_sequence_decoder.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const tetcut::fuzz::SequenceOptions options{.legacy_versions = tetcut::fuzz::legacy_versions_from_env()};

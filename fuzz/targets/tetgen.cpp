@@ -6,8 +6,8 @@
 #include <string>
 #include <string_view>
 
-#include "fuzz_failure.hpp"
-#include "reader_contract.hpp"
+#include "support/fuzz_failure.hpp"
+#include "support/reader_contract.hpp"
 #include "tetcut/io.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 #   c1  the current tree, as it is (tracked files and new ones not ignored)
 #   c2  a note added          (nothing rebuilds)
 #   c3  a README line         (nothing rebuilds)
-#   c4  THE PLANTED BUG       (crash: fuzz/planted_bug.hpp switched on, one file rebuilds;
+#   c4  THE PLANTED BUG       (crash: fuzz/support/planted_bug.hpp on, one file rebuilds;
 #                              slowdown: extra work in each cut of bench/cut_instructions.cpp,
 #                              more instructions than the figure's budget)
 #   c5  a note changed        (nothing rebuilds)
@@ -55,7 +55,7 @@ echo "A README line." >>"$repo/README.md"
 c3=$(commit "c3: a README line")
 case $kind in
   crash)
-    file=fuzz/planted_bug.hpp
+    file=fuzz/support/planted_bug.hpp
     sed -i 's/inline constexpr bool kPlantedReaderBug = false;/inline constexpr bool kPlantedReaderBug = true;/' "$repo/$file" ;;
   slowdown)
     # At least 4 instructions per turn of the loop (volatile: load, add, store, compare and

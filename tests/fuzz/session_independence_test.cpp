@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "sequence_support.hpp"
+#include "operations/sequence_target.hpp"
 
 namespace {
 

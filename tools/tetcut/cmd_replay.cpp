@@ -1,8 +1,9 @@
 // `tetcut replay INPUT --target NAME [--scenario-out FILE]`: a fuzz input of a sequence target
-// (fuzz/removal_sequence.hpp, fuzz/cut_sequence.hpp) decoded into a scenario, printed, and run
-// through the target's own entry point with every check it makes; names the first failing
-// operation and its scenario line. The scenario is then also run as `tetcut run` would, to say
-// whether it reproduces the failure on its own (the input for `tetcut minimize`).
+// (fuzz/operations/removal_sequence_decoder.hpp, cut_sequence_decoder.hpp) decoded into a
+// scenario, printed, and run through the target's own entry point with every check it makes;
+// names the first failing operation and its scenario line. The scenario is then also run as
+// `tetcut run` would, to say whether it reproduces the failure on its own (the input for
+// `tetcut minimize`).
 #include <filesystem>
 #include <iterator>
 #include <ostream>
@@ -14,7 +15,7 @@
 #include "tetcut/scenario/scenario.hpp"
 
 #ifdef TETCUT_HAVE_FUZZ_DECODERS
-#include "sequence_support.hpp"
+#include "operations/sequence_target.hpp"
 #endif
 
 namespace tetcut::cli {

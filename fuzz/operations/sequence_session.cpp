@@ -1,4 +1,4 @@
-#include "sequence_session.hpp"
+#include "operations/sequence_session.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -143,6 +143,14 @@ void SequenceSession::full_check() {
   checked_.end({}, {}, 0.0);
   checked_.full_check();
   changed_since_full_check_ = false;
+}
+
+SequenceStart start_sequence(std::string_view target, std::uint8_t version, FuzzedDataProvider& input,
+                             ScenarioRecorder& recorder) {
+  const BundledMesh& bundled = sequence_mesh(version, input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshCount - 1));
+  recorder.add("# tetcut replay --target " + std::string(target) + " (input version " + std::to_string(version) + ")");
+  recorder.add("mesh " + bundled.path);
+  return {bundled, SequenceSession::start(bundled, recorder)};
 }
 
 SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,

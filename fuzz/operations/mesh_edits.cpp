@@ -1,4 +1,4 @@
-#include "mesh_edits.hpp"
+#include "operations/mesh_edits.hpp"
 
 #include <algorithm>
 #include <limits>

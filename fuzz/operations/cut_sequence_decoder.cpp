@@ -1,9 +1,9 @@
-#include "cut_sequence.hpp"
+#include "operations/cut_sequence_decoder.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "sequence_session.hpp"
+#include "operations/sequence_session.hpp"
 #include "detail/removal.hpp"
 
 namespace tetcut::fuzz::cut_sequence {
@@ -147,16 +147,11 @@ void sweep(SequenceSession& session, const Context& ctx, FuzzedDataProvider& inp
 
 void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& recorder) {
   const Limits& limits = version == kSequenceVersionBundled ? kLimitsV1 : kLimitsV2;
-  const BundledMesh& bundled = sequence_mesh(version, input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshCount - 1));
-  recorder.add("# tetcut replay --target cut_sequence (input version " + std::to_string(version) + ")");
-  recorder.add("mesh " + bundled.path);
-  SequenceSession& session = SequenceSession::start(bundled, recorder);
-  Context ctx{version, bundled, limits, session.cutter().params(), coordinate_quantum(bundled.box.diagonal(), 3)};
-  std::size_t since_check = 0;
-  const std::uint32_t max_tets = kMaxTetsFactor * bundled.mesh.num_tets();
-  for (std::size_t i = 0; i < limits.max_operations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&
-                          session.mesh().num_tets() <= max_tets;
-       ++i) {
+  const SequenceStart start = start_sequence("cut_sequence", version, input, recorder);
+  SequenceSession& session = start.session;
+  Context ctx{version, start.bundled, limits, session.cutter().params(),
+              coordinate_quantum(start.bundled.box.diagonal(), 3)};
+  run_operations(start, input, limits.sequence, [&] {
     const Op op = static_cast<Op>(input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(Op::kLast)));
     switch (op) {
       case Op::kParam: param(session, ctx, input); break;
@@ -164,25 +159,13 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
       case Op::kCutSurface: cut(session, point_near_surface(session, ctx, input), "cut"); break;
       case Op::kSweep: sweep(session, ctx, input); break;
     }
-    if (++since_check == limits.full_check_every) {
-      session.full_check_if_changed();
-      since_check = 0;
-    }
-  }
-  session.finish();
+  });
 }
 
 }  // namespace
 
 SequenceResult run(const std::uint8_t* data, std::size_t size, const SequenceOptions& options) {
   return run_sequence(data, size, options, body);
-}
-
-std::string decode_to_scenario(const std::uint8_t* data, std::size_t size) {
-  SequenceOptions options;
-  options.record_scenario = true;
-  options.capture_failures = true;
-  return run(data, size, options).scenario;
 }
 
 }  // namespace tetcut::fuzz::cut_sequence

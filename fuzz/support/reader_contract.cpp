@@ -1,10 +1,10 @@
-#include "reader_contract.hpp"
+#include "support/reader_contract.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "fuzz_failure.hpp"
-#include "planted_bug.hpp"
+#include "support/fuzz_failure.hpp"
+#include "support/planted_bug.hpp"
 
 namespace tetcut::fuzz {
 namespace {
@@ -78,7 +78,7 @@ void check_round_trip(std::string_view writer, const RawMesh& mesh, TetFormatter
 void fuzz_tet_reader(std::string_view reader_name, TetReader read, std::string_view text, TetFormatter format,
                      TetReader reread, TetFormatter binary_format) {
   if (kPlantedReaderBug && text.find(kPlantedBugMarker) != std::string_view::npos)
-    fail("planted-bug", kReadOperation, reader_name, "the input holds the planted marker (fuzz/planted_bug.hpp)");
+    fail("planted-bug", kReadOperation, reader_name, "the input holds the planted marker (fuzz/support/planted_bug.hpp)");
   const ReadResult result = read(text, "input");
   const RawMesh* mesh = check_read_result(reader_name, result);
   if (mesh == nullptr || reread == nullptr) return;

@@ -1,4 +1,4 @@
-#include "checked_mesh.hpp"
+#include "operations/checked_mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <utility>
 
-#include "fuzz_failure.hpp"
+#include "support/fuzz_failure.hpp"
 
 namespace tetcut::fuzz {
 

@@ -1,9 +1,9 @@
 // The removal_sequence target's decoder and runner (fuzz/targets/removal_sequence.cpp is its
 // libFuzzer entry point; `tetcut replay --target removal_sequence` calls the same run()).
 //
-// Input: version byte (1, 2 or 3, sequence_support.hpp), then (FuzzedDataProvider) the mesh (version
+// Input: version byte (1, 2 or 3, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
 // 1: the bundled cylinder, sheet, liver-coarse; versions 2 and 3 (read as 2): their small fuzz versions), then up to
-// Limits::max_operations operations, each an opcode and its arguments:
+// Limits::sequence.max_operations operations, each an opcode and its arguments:
 //   strategy S          basic | neighbours | combined (the initial strategy is combined)
 //   remove boundary     the first live tet with a boundary face at or after a chosen id
 //   remove any          the first live tet at or after a chosen id (interior ones included)
@@ -12,7 +12,7 @@
 //                       requested one after the other
 // Tets are written into the scenario as their centroid; the request removes the tet containing
 // that point (Cutter::tet_containing, as `tetcut run` does). After every request: the local
-// check; under combined, the request resolved. The full check every Limits::full_check_every
+// check; under combined, the request resolved. The full check every Limits::sequence.full_check_every
 // operations and at the end.
 #pragma once
 
@@ -20,26 +20,22 @@
 #include <cstdint>
 #include <string>
 
-#include "sequence_support.hpp"
+#include "operations/sequence_target.hpp"
 
 namespace tetcut::fuzz::removal_sequence {
 
 struct Limits {
-  std::size_t max_operations;
-  std::size_t full_check_every;
+  SequenceLimits sequence;
   std::uint32_t max_set_size;
 };
 // Version 1 as it was found; version 2 bounds an input's cost (executions per second are what
 // find bugs): most of an input's time is in the requests themselves once the mesh is small.
-inline constexpr Limits kLimitsV1{24, 16, 6};
-inline constexpr Limits kLimitsV2{8, 8, 4};
-// The sequence ends once the mesh has grown beyond this many times its initial tets: repeated
-// refinement around small tools multiplies the tets (a cut on 45 000 tets took 50 s in Release),
-// and executions per second are what finds bugs. It ends the input as the scenario ends.
-inline constexpr std::uint32_t kMaxTetsFactor = 3;
+// The mesh may grow to kMaxTetsFactor times its tets (sequence_target.hpp).
+inline constexpr Limits kLimitsV1{{24, 16}, 6};
+inline constexpr Limits kLimitsV2{{8, 8}, 4};
 
+// Runs the input; with options.record_scenario, SequenceResult::scenario is the input as a
+// scenario (up to and including the operation that fails, if one does).
 SequenceResult run(const std::uint8_t* data, std::size_t size, const SequenceOptions& options);
-// The input as a scenario (up to and including the operation that fails, if one does).
-std::string decode_to_scenario(const std::uint8_t* data, std::size_t size);
 
 }  // namespace tetcut::fuzz::removal_sequence

@@ -1,9 +1,9 @@
-#include "removal_sequence.hpp"
+#include "operations/removal_sequence_decoder.hpp"
 
 #include <algorithm>
 #include <vector>
 
-#include "sequence_session.hpp"
+#include "operations/sequence_session.hpp"
 #include "detail/removal.hpp"
 
 namespace tetcut::fuzz::removal_sequence {
@@ -51,18 +51,13 @@ void request_set(SequenceSession& session, FuzzedDataProvider& input, std::uint3
 
 void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& recorder) {
   const Limits& limits = version == kSequenceVersionBundled ? kLimitsV1 : kLimitsV2;
-  const BundledMesh& bundled = sequence_mesh(version, input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshCount - 1));
-  recorder.add("# tetcut replay --target removal_sequence (input version " + std::to_string(version) + ")");
-  recorder.add("mesh " + bundled.path);
-  SequenceSession& session = SequenceSession::start(bundled, recorder);
+  const SequenceStart start = start_sequence("removal_sequence", version, input, recorder);
+  SequenceSession& session = start.session;
+  const BundledMesh& bundled = start.bundled;
   CutParams params = session.cutter().params();
   const double quantum = coordinate_quantum(bundled.box.diagonal(), 3);
   const Vec3 margin = 0.1 * (bundled.box.hi - bundled.box.lo);
-  std::size_t since_check = 0;
-  const std::uint32_t max_tets = kMaxTetsFactor * bundled.mesh.num_tets();
-  for (std::size_t i = 0; i < limits.max_operations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&
-                          session.mesh().num_tets() <= max_tets;
-       ++i) {
+  run_operations(start, input, limits.sequence, [&] {
     const Op op = static_cast<Op>(input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(Op::kLast)));
     const TetMesh& mesh = session.mesh();
     switch (op) {
@@ -86,25 +81,13 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
       }
       case Op::kRemoveSet: request_set(session, input, limits.max_set_size); break;
     }
-    if (++since_check == limits.full_check_every) {
-      session.full_check_if_changed();
-      since_check = 0;
-    }
-  }
-  session.finish();
+  });
 }
 
 }  // namespace
 
 SequenceResult run(const std::uint8_t* data, std::size_t size, const SequenceOptions& options) {
   return run_sequence(data, size, options, body);
-}
-
-std::string decode_to_scenario(const std::uint8_t* data, std::size_t size) {
-  SequenceOptions options;
-  options.record_scenario = true;
-  options.capture_failures = true;
-  return run(data, size, options).scenario;
 }
 
 }  // namespace tetcut::fuzz::removal_sequence

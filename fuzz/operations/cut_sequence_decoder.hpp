@@ -1,9 +1,9 @@
 // The cut_sequence target's decoder and runner (fuzz/targets/cut_sequence.cpp is its libFuzzer
 // entry point; `tetcut replay --target cut_sequence` calls the same run()).
 //
-// Input: version byte (1, 2 or 3, sequence_support.hpp), then (FuzzedDataProvider) the mesh (version
+// Input: version byte (1, 2 or 3, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
 // 1: the bundled cylinder, sheet, liver-coarse; versions 2 and 3: their small fuzz versions), then up to
-// Limits::max_operations operations, each an opcode and its arguments:
+// Limits::sequence.max_operations operations, each an opcode and its arguments:
 //   param       one of diameter (0.5..2 mean edge lengths), dref_factor (1..3), p (1.1..3),
 //               depth (1..16), iterations (1..8), strategy, split; rounded so scenarios read well.
 //               Version 3, log-uniform: diameter 0.01..10^4 mean edges, dref_factor
@@ -15,36 +15,31 @@
 // Every cut goes through Cutter::cut, followed by the local check; under combined every tet it
 // selects is resolved; a rolled back cut leaves the canonical hash as it was (and is written
 // into the scenario as a comment, since the mesh is as if it had not happened). The full check
-// every Limits::full_check_every operations and at the end.
+// every Limits::sequence.full_check_every operations and at the end.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
-#include "sequence_support.hpp"
+#include "operations/sequence_target.hpp"
 
 namespace tetcut::fuzz::cut_sequence {
 
 struct Limits {
-  std::size_t max_operations;
-  std::size_t full_check_every;
+  SequenceLimits sequence;
   std::uint64_t max_sweep_steps;
 };
 // Version 1 as it was found; version 2 bounds an input's cost (executions per second are what
-// find bugs).
-inline constexpr Limits kLimitsV1{24, 16, 8};
-inline constexpr Limits kLimitsV2{8, 8, 4};
-// The sequence ends once the mesh has grown beyond this many times its initial tets: repeated
-// refinement around small tools multiplies the tets (a cut on 45 000 tets took 50 s in Release),
-// and executions per second are what finds bugs. It ends the input as the scenario ends.
-inline constexpr std::uint32_t kMaxTetsFactor = 3;
+// find bugs). The mesh may grow to kMaxTetsFactor times its tets (sequence_target.hpp).
+inline constexpr Limits kLimitsV1{{24, 16}, 8};
+inline constexpr Limits kLimitsV2{{8, 8}, 4};
 // A sweep is cut into 1..kSweepPieces pieces (then steps are doubled until there are at most
 // Limits::max_sweep_steps).
 inline constexpr std::uint32_t kSweepPieces = 8;
 
+// Runs the input; with options.record_scenario, SequenceResult::scenario is the input as a
+// scenario (up to and including the operation that fails, if one does).
 SequenceResult run(const std::uint8_t* data, std::size_t size, const SequenceOptions& options);
-// The input as a scenario (up to and including the operation that fails, if one does).
-std::string decode_to_scenario(const std::uint8_t* data, std::size_t size);
 
 }  // namespace tetcut::fuzz::cut_sequence

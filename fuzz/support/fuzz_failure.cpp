@@ -1,4 +1,4 @@
-#include "fuzz_failure.hpp"
+#include "support/fuzz_failure.hpp"
 
 #include <cstdio>
 #include <cstdlib>

@@ -23,10 +23,15 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "checked_mesh.hpp"
-#include "sequence_support.hpp"
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include "operations/checked_mesh.hpp"
+#include "operations/scenario_recorder.hpp"
+#include "operations/sequence_meshes.hpp"
+#include "operations/sequence_target.hpp"
 #include "tetcut/cut.hpp"
 
 namespace tetcut::fuzz {
@@ -96,5 +101,36 @@ class SequenceSession {
 // operations.
 SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,
                             const std::function<void(std::uint8_t, FuzzedDataProvider&, ScenarioRecorder&)>& body);
+
+// The start of every sequence input: the mesh it chooses (its first value, sequence_meshes.hpp),
+// the scenario's first lines ("# tetcut replay --target NAME ...", "mesh PATH"), and the session
+// on a fresh copy of that mesh.
+struct SequenceStart {
+  const BundledMesh& bundled;
+  SequenceSession& session;
+};
+SequenceStart start_sequence(std::string_view target, std::uint8_t version, FuzzedDataProvider& input,
+                             ScenarioRecorder& recorder);
+
+// The operation loop of every sequence target: `operation()` decodes and runs one operation,
+// while `limits` allow, input remains and the mesh has tets but not kMaxTetsFactor times its
+// initial ones; the periodic full checks; then finish().
+template <class Operation>
+void run_operations(const SequenceStart& start, FuzzedDataProvider& input, const SequenceLimits& limits,
+                    Operation&& operation) {
+  SequenceSession& session = start.session;
+  const std::uint32_t max_tets = kMaxTetsFactor * start.bundled.mesh.num_tets();
+  std::size_t since_check = 0;
+  for (std::size_t i = 0; i < limits.max_operations && input.remaining_bytes() > 0 && session.mesh().num_tets() > 0 &&
+                          session.mesh().num_tets() <= max_tets;
+       ++i) {
+    operation();
+    if (++since_check == limits.full_check_every) {
+      session.full_check_if_changed();
+      since_check = 0;
+    }
+  }
+  session.finish();
+}
 
 }  // namespace tetcut::fuzz
