@@ -1,5 +1,6 @@
 // What the three Gmsh readers (1.0, 2.2, 4.1) share: the element-type table, section skipping,
-// and turning one element's node-id tokens into a tet (or an ignored element).
+// turning one element's node-id tokens into a tet (or an ignored element), and the state and
+// line-based steps of a reader (GmshReader).
 #pragma once
 
 #include <array>
@@ -49,5 +50,37 @@ struct GmshElementSink {
 // Parses "id x y z" tokens (exactly 4) into the map and positions.
 bool add_gmsh_node(ErrorSink& sink, std::uint64_t line, const std::vector<std::string_view>& tokens,
                    NodeIdMap& ids, std::vector<Vec3>& positions);
+
+// Parses an element type (any integer: unknown types are ignored, not refused).
+bool parse_gmsh_type(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& type);
+
+// What every Gmsh reader holds while it reads one file (the lines, the first error, the mesh, its
+// node-id map and the element sink wired to both, the current line's tokens) and the steps its
+// counted ASCII sections share.
+class GmshReader {
+ public:
+  GmshReader(const GmshReader&) = delete;
+  GmshReader& operator=(const GmshReader&) = delete;
+
+ protected:
+  GmshReader(std::string_view text, std::string_view name);
+  ~GmshReader() = default;
+
+  // The line after a section header that holds only a count. Errors: "unexpected end of file:
+  // missing <missing>", "expected <expected>, got '<line>'", and parse_count's.
+  bool read_count_line(std::string_view missing, std::string_view expected, std::uint64_t& count);
+  // Entry `i` of the `count` entries of `section` (what it counts: `noun`), split into tokens_;
+  // a "$" line ends the section too early.
+  bool next_entry(std::string_view section, std::string_view noun, std::uint64_t i, std::uint64_t count);
+  // The mesh or the first error, with notices of the elements read as corners or ignored.
+  ReadResult result();
+
+  LineReader lines_;
+  ErrorSink sink_;
+  RawMesh mesh_;
+  NodeIdMap ids_;
+  GmshElementSink elements_;
+  std::vector<std::string_view> tokens_;
+};
 
 }  // namespace tetcut::io_detail

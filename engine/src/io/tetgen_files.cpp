@@ -62,10 +62,7 @@ bool read_node_file(std::string_view text, ErrorSink& sink, NodeIdMap& ids, RawM
     }
     std::int64_t id = 0;
     Vec3 p;
-    if (!parse_id(sink, line, tokens[0], id) || !parse_coordinate(sink, line, tokens[1], p.x) ||
-        !parse_coordinate(sink, line, tokens[2], p.y) || !parse_coordinate(sink, line, tokens[3], p.z)) {
-      return false;
-    }
+    if (!parse_id(sink, line, tokens[0], id) || !parse_point(sink, line, tokens.data() + 1, p)) return false;
     if (!ids.insert(id, static_cast<std::uint32_t>(mesh.positions.size()))) {
       return sink.fail(line, "duplicate point id " + std::to_string(id));
     }
@@ -147,13 +144,7 @@ std::string format_tetgen_node(const RawMesh& mesh) {
   // 1-based, as TetGen writes by default.
   append_uint(out, mesh.positions.size());
   out += " 3 0 0\n";
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-    const Vec3& p = mesh.positions[i];
-    append_uint(out, i + 1);
-    out += ' ';
-    append_point(out, p);
-    out += '\n';
-  }
+  append_numbered_points(out, mesh.positions);
   out += "# written by tetcut\n";
   return out;
 }
@@ -163,14 +154,7 @@ std::string format_tetgen_ele(const RawMesh& mesh) {
   out.reserve(64 + mesh.tets.size() * 48);
   append_uint(out, mesh.tets.size());
   out += " 4 0\n";
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    append_uint(out, t + 1);
-    for (std::uint32_t v : mesh.tets[t]) {
-      out += ' ';
-      append_uint(out, static_cast<std::uint64_t>(v) + 1);
-    }
-    out += '\n';
-  }
+  append_numbered_tets(out, mesh.tets);
   out += "# written by tetcut\n";
   return out;
 }
