@@ -54,17 +54,40 @@ bool add_gmsh_node(ErrorSink& sink, std::uint64_t line, const std::vector<std::s
 // Parses an element type (any integer: unknown types are ignored, not refused).
 bool parse_gmsh_type(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& type);
 
+// MSH 4.1 entity blocks, ASCII or binary: a block of `n` more entries must fit in the `total` its
+// section header declared (`seen` so far), and the blocks must add up to it. `noun`: "node",
+// "element".
+bool check_block_fits(ErrorSink& sink, std::uint64_t line, std::string_view noun, std::uint64_t seen,
+                      std::uint64_t n, std::uint64_t total);
+bool check_blocks_add_up(ErrorSink& sink, std::uint64_t line, std::string_view noun, std::uint64_t seen,
+                         std::uint64_t total);
+
 // What every Gmsh reader holds while it reads one file (the lines, the first error, the mesh, its
 // node-id map and the element sink wired to both, the current line's tokens) and the steps its
-// counted ASCII sections share.
+// sections share. Every version has one node section and one element section after it.
 class GmshReader {
  public:
   GmshReader(const GmshReader&) = delete;
   GmshReader& operator=(const GmshReader&) = delete;
 
  protected:
-  GmshReader(std::string_view text, std::string_view name);
-  ~GmshReader() = default;
+  // `nodes`, `elements`: the headers of the version's two sections ("$Nodes", "$NOD").
+  GmshReader(std::string_view text, std::string_view name, std::string_view nodes, std::string_view elements);
+  virtual ~GmshReader() = default;
+
+  // Each is called on its section's header line and reads up to its end marker.
+  virtual void read_nodes() = 0;
+  virtual void read_elements() = 0;
+  // On the node or element section's header: reads it, unless it is a second one or (elements)
+  // comes before the nodes.
+  void on_nodes_header();
+  void on_elements_header();
+  // At the end of the file: fails unless both sections were there.
+  void require_nodes_and_elements();
+
+  // `count` "id x y z" node lines (MSH 1.0 and 2.2) of `section`, then its `end_marker`.
+  void read_node_lines(std::uint64_t count, std::string_view section, std::string_view noun,
+                       std::string_view end_marker);
 
   // The line after a section header that holds only a count. Errors: "unexpected end of file:
   // missing <missing>", "expected <expected>, got '<line>'", and parse_count's.
@@ -81,6 +104,12 @@ class GmshReader {
   NodeIdMap ids_;
   GmshElementSink elements_;
   std::vector<std::string_view> tokens_;
+
+ private:
+  std::string_view nodes_header_;
+  std::string_view elements_header_;
+  bool have_nodes_ = false;
+  bool have_elements_ = false;
 };
 
 }  // namespace tetcut::io_detail

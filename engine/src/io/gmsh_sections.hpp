@@ -16,13 +16,10 @@ class GmshSectionReader : public GmshReader {
   ReadResult read();
 
  protected:
-  GmshSectionReader(std::string_view text, std::string_view name) : GmshReader(text, name) {}
-  virtual ~GmshSectionReader() = default;
+  GmshSectionReader(std::string_view text, std::string_view name) : GmshReader(text, name, "$Nodes", "$Elements") {}
 
-  // Each is called on its section's header line and reads up to its $End marker.
+  // Called on the $MeshFormat line; reads up to $EndMeshFormat.
   virtual void read_format() = 0;
-  virtual void read_nodes() = 0;
-  virtual void read_elements() = 0;
 
   GmshBinaryReader binary_reader_{lines_, sink_, mesh_, ids_, elements_};
   bool binary_ = false;  // the format line said file-type 1

@@ -14,49 +14,33 @@ using namespace io_detail;
 
 class Msh10Reader : public GmshReader {
  public:
-  Msh10Reader(std::string_view text, std::string_view name) : GmshReader(text, name) {}
+  Msh10Reader(std::string_view text, std::string_view name) : GmshReader(text, name, "$NOD", "$ELM") {}
 
   ReadResult read() {
     std::string_view line;
-    bool have_nodes = false;
-    bool have_elements = false;
     while (!sink_.failed() && lines_.next_nonblank(line)) {
       const std::string_view header = trim(line);
       if (header == "$NOD") {
-        if (have_nodes) sink_.fail(lines_.line_number(), "second $NOD section");
-        else read_nodes();
-        have_nodes = true;
+        on_nodes_header();
       } else if (header == "$ELM") {
-        if (have_elements) sink_.fail(lines_.line_number(), "second $ELM section");
-        else if (!have_nodes) sink_.fail(lines_.line_number(), "$ELM before $NOD");
-        else read_elements();
-        have_elements = true;
+        on_elements_header();
       } else if (header == "$Comments" || header == "$COMMENTS") {
         skip_gmsh_section(lines_, sink_, header.substr(1));
       } else {
         sink_.fail(lines_.line_number(), "expected $NOD or $ELM, got " + quote(header));
       }
     }
-    if (!sink_.failed()) {
-      if (!have_nodes) sink_.fail(lines_.line_number(), "missing $NOD section");
-      else if (!have_elements) sink_.fail(lines_.line_number(), "missing $ELM section");
-    }
+    if (!sink_.failed()) require_nodes_and_elements();
     return result();
   }
 
  private:
-  void read_nodes() {
+  void read_nodes() override {
     std::uint64_t count = 0;
-    if (!read_count_line("count in $NOD", "a count", count)) return;
-    mesh_.positions.reserve(count);
-    for (std::uint64_t i = 0; i < count; ++i) {
-      if (!next_entry("$NOD", "entries", i, count)) return;
-      if (!add_gmsh_node(sink_, lines_.line_number(), tokens_, ids_, mesh_.positions)) return;
-    }
-    expect_gmsh_marker(lines_, sink_, "$ENDNOD", "the last node");
+    if (read_count_line("count in $NOD", "a count", count)) read_node_lines(count, "$NOD", "entries", "$ENDNOD");
   }
 
-  void read_elements() {
+  void read_elements() override {
     std::uint64_t count = 0;
     if (!read_count_line("count in $ELM", "a count", count)) return;
     mesh_.tets.reserve(count);

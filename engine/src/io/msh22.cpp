@@ -62,12 +62,7 @@ class Msh22Reader : public GmshSectionReader {
       }
       return;
     }
-    mesh_.positions.reserve(count);
-    for (std::uint64_t i = 0; i < count; ++i) {
-      if (!next_entry("$Nodes", "nodes", i, count)) return;
-      if (!add_gmsh_node(sink_, lines_.line_number(), tokens_, ids_, mesh_.positions)) return;
-    }
-    expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node");
+    read_node_lines(count, "$Nodes", "nodes", "$EndNodes");
   }
 
   void read_elements() override {

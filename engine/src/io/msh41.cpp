@@ -87,7 +87,6 @@ class Msh41Reader : public GmshSectionReader {
     std::uint64_t total = 0;
     if (!read_header("$Nodes", blocks, total)) return;
     mesh_.positions.reserve(total);
-    std::vector<std::int64_t> block_ids;
     for (std::uint64_t b = 0; b < blocks; ++b) {
       if (!next_record("$Nodes block header") ||
           !expect_tokens(4, "'entityDim entityTag parametric numNodesInBlock'")) {
@@ -100,12 +99,7 @@ class Msh41Reader : public GmshSectionReader {
         return;
       }
       if (!parse_count(sink_, lines_.line_number(), tokens_[3], lines_.remaining_bytes(), n)) return;
-      if (mesh_.positions.size() + n > total) {
-        sink_.fail(lines_.line_number(), "node blocks hold more than the " + std::to_string(total) + " nodes declared");
-        return;
-      }
-      block_ids.clear();
-      block_ids.reserve(n);
+      if (!check_block_fits(sink_, lines_.line_number(), "node", mesh_.positions.size(), n, total)) return;
       for (std::uint64_t i = 0; i < n; ++i) {
         if (!next_record("$Nodes (node tags)") || !expect_tokens(1, "one node tag")) return;
         std::int64_t id = 0;
@@ -127,12 +121,9 @@ class Msh41Reader : public GmshSectionReader {
         mesh_.positions.push_back(p);
       }
     }
-    if (mesh_.positions.size() != total) {
-      sink_.fail(lines_.line_number(), "node blocks hold " + std::to_string(mesh_.positions.size()) +
-                                           " nodes, the header declares " + std::to_string(total));
-      return;
+    if (check_blocks_add_up(sink_, lines_.line_number(), "node", mesh_.positions.size(), total)) {
+      expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node block");
     }
-    expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node block");
   }
 
   void read_elements() override {
@@ -156,10 +147,7 @@ class Msh41Reader : public GmshSectionReader {
       std::uint64_t n = 0;
       if (!parse_gmsh_type(sink_, lines_.line_number(), tokens_[2], type)) return;
       if (!parse_count(sink_, lines_.line_number(), tokens_[3], lines_.remaining_bytes(), n)) return;
-      if (seen + n > total) {
-        sink_.fail(lines_.line_number(), "element blocks hold more than the " + std::to_string(total) + " elements declared");
-        return;
-      }
+      if (!check_block_fits(sink_, lines_.line_number(), "element", seen, n, total)) return;
       for (std::uint64_t i = 0; i < n; ++i) {
         if (!next_record("$Elements")) return;
         std::int64_t id = 0;
@@ -168,14 +156,10 @@ class Msh41Reader : public GmshSectionReader {
       }
       seen += n;
     }
-    if (seen != total) {
-      sink_.fail(lines_.line_number(), "element blocks hold " + std::to_string(seen) +
-                                           " elements, the header declares " + std::to_string(total));
-      return;
+    if (check_blocks_add_up(sink_, lines_.line_number(), "element", seen, total)) {
+      expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element block");
     }
-    expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element block");
   }
-
 };
 
 // The bounding box of every position ({0,0,0}, {0,0,0} for none), for the volume entity.
