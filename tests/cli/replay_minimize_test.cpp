@@ -13,39 +13,25 @@
 #include <string>
 #include <vector>
 
-#include "run_process.hpp"
-#include "tetcut/box_mesh.hpp"
-#include "tetcut/io.hpp"
+#include "cli_fixture.hpp"
 
 namespace tetcut::test {
 namespace {
 
-namespace fs = std::filesystem;
-
 const std::string kMeshDir = std::string(TETCUT_CORPUS_DIR) + "/meshes";
 
-class ReplayMinimize : public ::testing::Test {
+// The command-line fixture, with the bundled meshes where a fuzz input names them and no
+// planted failure unless a test asks for one.
+class ReplayMinimize : public Cli {
  protected:
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("tetcut_replay_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    Cli::SetUp();
     ::setenv("TETCUT_MESH_DIR", kMeshDir.c_str(), 1);
     ::unsetenv("TETCUT_FUZZ_FAIL_AT");
   }
   void TearDown() override {
     ::unsetenv("TETCUT_FUZZ_FAIL_AT");
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& contents) const {
-    const std::string p = path(name);
-    std::ofstream(p, std::ios::binary) << contents;
-    return p;
+    Cli::TearDown();
   }
 
   std::string write_bytes(const std::string& name, const std::vector<unsigned char>& bytes) const {
@@ -56,12 +42,6 @@ class ReplayMinimize : public ::testing::Test {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
-
-  ProcessResult tetcut(const std::vector<std::string>& args) const {
-    return run_process(TETCUT_EXE, args, dir_.string());
-  }
-
-  fs::path dir_;
 };
 
 // Operation lines of a scenario: neither blank nor comments.

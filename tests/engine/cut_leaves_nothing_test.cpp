@@ -172,11 +172,7 @@ std::vector<SweepCase> cases() {
 }
 
 INSTANTIATE_TEST_SUITE_P(BundledMeshes, CutLeavesNothing, ::testing::ValuesIn(cases()), [](const auto& info) {
-  std::string name = std::string(info.param.mesh);
-  name = name.substr(0, name.find('.')) + "_" + to_string(info.param.strategy);
-  for (char& c : name)
-    if (c == '-') c = '_';
-  return name;
+  return test_name_of_mesh(info.param.mesh) + "_" + to_string(info.param.strategy);
 });
 
 // The cuts the issue reported: one basic cut into the bundled liver left 15 (and 8) tets in the

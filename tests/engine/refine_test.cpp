@@ -72,24 +72,25 @@ TEST(Refine, RefinesUntilEveryEdgeOfTheNewTetsIsShorterThanDref) {
   }
 }
 
-TEST(Refine, NothingToDoWhenTheTetsAreAlreadySmall) {
+// A request on the tets near the centre of a 2x2x2 box.
+class RefineTheCentreOfABox : public ::testing::Test {
+ protected:
+  void SetUp() override { ASSERT_FALSE(hit.empty()); }
+
   TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
   const std::vector<TetId> hit = tets_near(mesh, {0.5, 0.5, 0.5}, 0.5);
-  ASSERT_FALSE(hit.empty());
   Refiner refiner;
   std::vector<TetId> region;
+};
+
+TEST_F(RefineTheCentreOfABox, NothingToDoWhenTheTetsAreAlreadySmall) {
   const RefineReport r = refiner.refine(mesh, hit, {.d_ref = 10.0}, region);
   EXPECT_EQ(r.iterations, 0u);
   EXPECT_EQ(r.tets_created, 0u);
   EXPECT_EQ(region.size(), hit.size());
 }
 
-TEST(Refine, IterationBoundStopsTheLoop) {
-  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
-  const std::vector<TetId> hit = tets_near(mesh, {0.5, 0.5, 0.5}, 0.5);
-  ASSERT_FALSE(hit.empty());
-  Refiner refiner;
-  std::vector<TetId> region;
+TEST_F(RefineTheCentreOfABox, IterationBoundStopsTheLoop) {
   const RefineReport r = refiner.refine(mesh, hit, {.d_ref = 0.01, .max_iterations = 1}, region);
   EXPECT_EQ(r.iterations, 1u);
   EXPECT_FALSE(r.converged);

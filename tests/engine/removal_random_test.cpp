@@ -156,13 +156,7 @@ TEST_P(CorpusRemoval, CombinedResolvesEveryRequest) {
 INSTANTIATE_TEST_SUITE_P(Bundled, CorpusRemoval,
                          ::testing::Values("cylinder.msh", "sheet.msh", "liver-coarse.msh",
                                            "liver-refined.msh", "liver.msh"),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           name = name.substr(0, name.find('.'));
-                           for (char& c : name)
-                             if (c == '-') c = '_';
-                           return name;
-                         });
+                         [](const auto& info) { return test_name_of_mesh(info.param); });
 
 TEST(RandomRemoval, StatisticsAndResultAreDeterministic) {
   const std::string path = std::string(TETCUT_CORPUS_DIR) + "/meshes/cylinder.msh";

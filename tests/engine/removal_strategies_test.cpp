@@ -26,40 +26,25 @@ void expect_region_gone(const TetMesh& mesh, const Vec3& centre, double volume_b
   EXPECT_LE(mesh.total_volume(), volume_before - tet_volume * (1 - 1e-12));
 }
 
-// A vertex singularity: in a 3x3x3 box, an interior tet (no boundary face) with a vertex on the
-// surface.
-TEST(RemovalStrategies, AVertexSingularityIsResolvedByEachStrategy) {
-  for (RemovalStrategy strategy : kAll) {
-    SCOPED_TRACE(to_string(strategy));
-    TetMesh mesh = box(3, 3, 3);
-    const TetId t = first_singular(mesh, SingularityKind::kVertex);
-    ASSERT_TRUE(t.valid());
-    const Vec3 centre = centroid(mesh, t);
-    const double before = mesh.total_volume(), vol = mesh.volume(t);
-    invariants::LocalChecker local(mesh.raw_view());
-    Remover remover({.strategy = strategy});
-    RemovalResult result;
-    ASSERT_TRUE(remove_checked(remover, mesh, t, local, &result));
-    EXPECT_EQ(result.first.kind, SingularityKind::kVertex);
-    EXPECT_EQ(result.outcome, strategy == RemovalStrategy::kBasic ? RemovalOutcome::kRefinement
-                                                                   : RemovalOutcome::kNeighbours);
-    EXPECT_GT(result.tets_removed, 1u);
-    EXPECT_TRUE(mesh_is_valid(mesh));
-    expect_region_gone(mesh, centre, before, vol);
-    EXPECT_EQ(remover.report().vertex_singularities, 1u);
-    EXPECT_EQ(remover.report().removed, 1u);
-  }
+// A mesh with a singularity of `kind`. Vertex: a 3x3x3 box, where an interior tet (no boundary
+// face) has a vertex on the surface. Edge: one cube of six tets around its diagonal, one tet
+// gone; the tet facing the gap would leave the diagonal with a run of tets on each side.
+TetMesh mesh_with_singularity(SingularityKind kind) {
+  if (kind == SingularityKind::kVertex) return box(3, 3, 3);
+  TetMesh mesh = box(1, 1, 1);
+  const TetId gap[1] = {TetId{0}};
+  mesh.remove_tets(gap);
+  return mesh;
 }
 
-// An edge singularity: one cube of six tets around its diagonal, one tet gone; the tet facing
-// the gap would leave the diagonal with a run of tets on each side.
-TEST(RemovalStrategies, AnEdgeSingularityIsResolvedByEachStrategy) {
+class ASingularity : public ::testing::TestWithParam<SingularityKind> {};
+
+TEST_P(ASingularity, IsResolvedByEachStrategy) {
+  const SingularityKind kind = GetParam();
   for (RemovalStrategy strategy : kAll) {
     SCOPED_TRACE(to_string(strategy));
-    TetMesh mesh = box(1, 1, 1);
-    const TetId gap[1] = {TetId{0}};
-    mesh.remove_tets(gap);
-    const TetId t = first_singular(mesh, SingularityKind::kEdge);
+    TetMesh mesh = mesh_with_singularity(kind);
+    const TetId t = first_singular(mesh, kind);
     ASSERT_TRUE(t.valid());
     const Vec3 centre = centroid(mesh, t);
     const double before = mesh.total_volume(), vol = mesh.volume(t);
@@ -67,20 +52,31 @@ TEST(RemovalStrategies, AnEdgeSingularityIsResolvedByEachStrategy) {
     Remover remover({.strategy = strategy});
     RemovalResult result;
     ASSERT_TRUE(remove_checked(remover, mesh, t, local, &result));
-    EXPECT_EQ(result.first.kind, SingularityKind::kEdge);
+    EXPECT_EQ(result.first.kind, kind);
     EXPECT_EQ(result.outcome, strategy == RemovalStrategy::kBasic ? RemovalOutcome::kRefinement
                                                                    : RemovalOutcome::kNeighbours);
     EXPECT_TRUE(mesh_is_valid(mesh));
     expect_region_gone(mesh, centre, before, vol);
-    EXPECT_EQ(remover.report().edge_singularities, 1u);
-    if (strategy != RemovalStrategy::kBasic) {
-      // T with the smaller of its left and right sets: at most 3 of the 5 tets.
-      EXPECT_GE(result.tets_removed, 2u);
-      EXPECT_LE(result.tets_removed, 3u);
-      EXPECT_DOUBLE_EQ(remover.report().mean_cardinality(), double(result.tets_removed));
+    const auto& report = remover.report();
+    if (kind == SingularityKind::kVertex) {
+      EXPECT_GT(result.tets_removed, 1u);
+      EXPECT_EQ(report.vertex_singularities, 1u);
+      EXPECT_EQ(report.removed, 1u);
+    } else {
+      EXPECT_EQ(report.edge_singularities, 1u);
+      if (strategy != RemovalStrategy::kBasic) {
+        // T with the smaller of its left and right sets: at most 3 of the 5 tets.
+        EXPECT_GE(result.tets_removed, 2u);
+        EXPECT_LE(result.tets_removed, 3u);
+        EXPECT_DOUBLE_EQ(report.mean_cardinality(), double(result.tets_removed));
+      }
     }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(RemovalStrategies, ASingularity,
+                         ::testing::Values(SingularityKind::kVertex, SingularityKind::kEdge),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
 
 TEST(RemovalStrategies, EdgeSingularitiesInABoxAreResolvedWithValidMeshes) {
   // Edge singularities away from a hand-built corner: hollow a 3x3x2 box by repeated requests

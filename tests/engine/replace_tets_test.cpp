@@ -122,9 +122,7 @@ TEST(ReplaceTets, SplittingInnerAndBoundaryEdgesGluesChildrenAndKeepsVolume) {
   SplitMix64 rng(11);
   std::vector<TetId> created;
   for (int step = 0; step < 60; ++step) {
-    TetId t;
-    do t = TetId{rng.below(mesh.tet_capacity())};
-    while (!mesh.is_live(t));
+    const TetId t = testing::random_live_tet(mesh, rng);
     const int e = static_cast<int>(rng.below(6));
     std::vector<TetId> shell;
     mesh.edge_shell(t, e, shell);

@@ -72,9 +72,7 @@ TEST(SpatialIndex, QueriesMatchAScanThroughSplitsAndRemovals) {
     // Change the mesh: split a few edges, or remove a tet with three boundary faces... any
     // boundary tet will do for the index, which does not care about manifoldness.
     ChangeLog log;
-    TetId t;
-    do t = TetId{rng.below(mesh.tet_capacity())};
-    while (!mesh.is_live(t));
+    const TetId t = testing::random_live_tet(mesh, rng);
     if (round % 3 == 2) {
       mesh.remove_tets(std::span<const TetId>(&t, 1));
       log.removed.push_back(t);

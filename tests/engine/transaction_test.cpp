@@ -34,9 +34,7 @@ void expect_identical(const TetMesh& a, const TetMesh& b) {
 void random_operation(TetMesh& mesh, SplitMix64& rng, EdgeSplitter& splitter) {
   std::vector<Edge> edges;
   for (int i = 0; i < 3; ++i) {
-    TetId t;
-    do t = TetId{rng.below(mesh.tet_capacity())};
-    while (!mesh.is_live(t));
+    const TetId t = testing::random_live_tet(mesh, rng);
     const int e = static_cast<int>(rng.below(6));
     edges.push_back({mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])});
   }
@@ -50,14 +48,20 @@ void random_operation(TetMesh& mesh, SplitMix64& rng, EdgeSplitter& splitter) {
     }
 }
 
-TEST(Transaction, RollbackRestoresTheMeshBitForBit) {
+// A 3x3x3 box with a vertex channel (so attributes are restored too) and some history first, so
+// that its free lists are not empty.
+TetMesh box_with_history(SplitMix64& rng, EdgeSplitter& splitter) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
   const auto tag = *mesh.attributes().add_channel("tag", 1);
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = v;
+  for (int i = 0; i < 5; ++i) random_operation(mesh, rng, splitter);
+  return mesh;
+}
+
+TEST(Transaction, RollbackRestoresTheMeshBitForBit) {
   SplitMix64 rng(17);
   EdgeSplitter splitter;
-  // Some history first, so that free lists are not empty.
-  for (int i = 0; i < 5; ++i) random_operation(mesh, rng, splitter);
+  TetMesh mesh = box_with_history(rng, splitter);
   for (int round = 0; round < 20; ++round) {
     const TetMesh before = mesh;
     mesh.begin_transaction();
@@ -89,12 +93,9 @@ TEST(Transaction, CommitKeepsTheChanges) {
 }
 
 TEST(Transaction, SavepointsRollBackBitForBitAndNest) {
-  TetMesh mesh = testing::build_or_fail(make_box_mesh(3, 3, 3));
-  const auto tag = *mesh.attributes().add_channel("tag", 1);
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = v;
   SplitMix64 rng(23);
   EdgeSplitter splitter;
-  for (int i = 0; i < 5; ++i) random_operation(mesh, rng, splitter);
+  TetMesh mesh = box_with_history(rng, splitter);
   const TetMesh start = mesh;
   mesh.begin_transaction();
   random_operation(mesh, rng, splitter);

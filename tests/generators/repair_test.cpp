@@ -99,18 +99,10 @@ TEST(Repair, ASingularEdgeKeepsTheLargerComponentOfItsShell) {
 }
 
 TEST(Repair, APinchedLinkIsOpenedByRemovingPartOfTheShell) {
-  RawMesh box = make_box_mesh(2, 2, 2, {0, 0, 0}, {2, 2, 2});
-  const auto centre = vertex_at(box, {1, 1, 1});
-  const auto top = vertex_at(box, {1, 1, 2});
-  const auto bottom = vertex_at(box, {1, 1, 0});
-  RawMesh pinched;
-  pinched.positions = box.positions;
+  const RawMesh pinched = test::pinched_box();
+  const auto centre = vertex_at(pinched, {1, 1, 1});
   std::uint32_t shell = 0;
-  for (const auto& t : box.tets) {
-    if (test::contains(t, centre) && (test::contains(t, top) || test::contains(t, bottom))) continue;
-    pinched.tets.push_back(t);
-    shell += test::contains(t, centre) ? 1 : 0;
-  }
+  for (const auto& t : pinched.tets) shell += test::contains(t, centre) ? 1 : 0;
   const RepairResult r = repair_mesh(pinched);
   expect_manifold(r);
   EXPECT_GT(r.report.removed_tets(), 0u);

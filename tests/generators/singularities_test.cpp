@@ -36,24 +36,8 @@ TEST(Singularities, TwoBoxesSharingAnEdgeMakeASingularEdgeAndItsEnds) {
   ASSERT_EQ(s.vertices.size(), 2u);
 }
 
-// A 2x2x2 box whose centre is reached by two conical holes, from the top and from the bottom:
-// the centre's shell stays face-connected but its link is an annulus (design I5).
-RawMesh pinched_box() {
-  RawMesh box = make_box_mesh(2, 2, 2, {0, 0, 0}, {2, 2, 2});
-  const auto centre = vertex_at(box, {1, 1, 1});
-  const auto top = vertex_at(box, {1, 1, 2});
-  const auto bottom = vertex_at(box, {1, 1, 0});
-  RawMesh out;
-  out.positions = box.positions;
-  for (const auto& t : box.tets) {
-    const bool on_axis = test::contains(t, centre) && (test::contains(t, top) || test::contains(t, bottom));
-    if (!on_axis) out.tets.push_back(t);
-  }
-  return out;
-}
-
 TEST(Singularities, APinchedTunnelIsFoundThoughTheShellIsConnected) {
-  const RawMesh m = pinched_box();
+  const RawMesh m = test::pinched_box();
   const Singularities s = find_singularities(m);
   const auto centre = vertex_at(m, {1, 1, 1});
   const SingularVertex* found = nullptr;

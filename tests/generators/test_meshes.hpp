@@ -33,4 +33,20 @@ inline bool contains(const std::array<std::uint32_t, 4>& t, std::uint32_t v) {
   return t[0] == v || t[1] == v || t[2] == v || t[3] == v;
 }
 
+// A 2x2x2 box whose centre (1,1,1) is reached by two conical holes, from the top and from the
+// bottom: the centre's shell stays face-connected but its link is an annulus (design I5).
+inline RawMesh pinched_box() {
+  RawMesh box = make_box_mesh(2, 2, 2, {0, 0, 0}, {2, 2, 2});
+  const auto centre = vertex_at(box, {1, 1, 1});
+  const auto top = vertex_at(box, {1, 1, 2});
+  const auto bottom = vertex_at(box, {1, 1, 0});
+  RawMesh out;
+  out.positions = box.positions;
+  for (const auto& t : box.tets) {
+    const bool on_axis = contains(t, centre) && (contains(t, top) || contains(t, bottom));
+    if (!on_axis) out.tets.push_back(t);
+  }
+  return out;
+}
+
 }  // namespace tetcut::test

@@ -24,22 +24,25 @@ bool closed(const SurfaceMesh& s) {
   return true;
 }
 
-TEST(Surface, OffQuadsBecomeTriangleFans) {
-  const SurfaceReadResult r = read_surface(test::corpus_file("cube_quads.off"));
-  ASSERT_TRUE(r.surface.has_value()) << (r.error ? r.error->message() : "");
+// cube_quads.off and .obj: a unit cube of 8 corners and 6 quads, read as 12 triangles.
+SurfaceReadResult read_closed_cube(const std::string& name) {
+  SurfaceReadResult r = read_surface(test::corpus_file(name));
+  EXPECT_TRUE(r.surface.has_value()) << (r.error ? r.error->message() : "");
+  if (!r.surface) return r;
   EXPECT_EQ(r.surface->positions.size(), 8u);
   EXPECT_EQ(r.surface->triangles.size(), 12u);
   EXPECT_TRUE(closed(*r.surface));
+  return r;
+}
+
+TEST(Surface, OffQuadsBecomeTriangleFans) {
+  const SurfaceReadResult r = read_closed_cube("cube_quads.off");
   ASSERT_EQ(r.notices.size(), 1u);
   EXPECT_NE(r.notices[0].find("split 6 polygons"), std::string::npos);
 }
 
 TEST(Surface, ObjWithSlashedCornersRelativeIndicesAndGroups) {
-  const SurfaceReadResult r = read_surface(test::corpus_file("cube_quads.obj"));
-  ASSERT_TRUE(r.surface.has_value()) << (r.error ? r.error->message() : "");
-  EXPECT_EQ(r.surface->positions.size(), 8u);
-  EXPECT_EQ(r.surface->triangles.size(), 12u);
-  EXPECT_TRUE(closed(*r.surface));
+  read_closed_cube("cube_quads.obj");
 }
 
 TEST(Surface, StlAsciiAndBinaryWeldToTheSameTetrahedron) {

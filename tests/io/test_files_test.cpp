@@ -1,6 +1,8 @@
 // Files as other tools write them (corpus/test-files): each holds the two tets ABCD / BCDE with
 // the quirks of its format, and each must read as exactly that mesh.
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 #include "io_test_support.hpp"
 #include "tetcut/canonical_hash.hpp"
@@ -26,83 +28,56 @@ void expect_two_tets(const ReadResult& r) {
   EXPECT_EQ(canonical_hash(*r.mesh), canonical_hash(test::two_tets()));
 }
 
-TEST(TestFiles, Msh22SparseUnorderedIdsTagsCommentsAndMixedElements) {
-  const ReadResult r = read_test_file("two_tets_msh22_quirks.msh");
+// A file with the quirks of its format, and the notices reading it must give.
+struct QuirkyFile {
+  const char* test_name;
+  const char* file;
+  std::vector<const char*> notices;
+};
+
+const QuirkyFile kQuirkyFiles[] = {
+    {"Msh22SparseUnorderedIdsTagsCommentsAndMixedElements", "two_tets_msh22_quirks.msh",
+     {"ignored 3 elements of type 2 (triangle)", "ignored 1 elements of type 1 (line)",
+      "ignored 1 elements of type 15 (point)"}},
+    {"Msh41EntityBlocksParametricNodesAndPhysicalTags", "two_tets_msh41_quirks.msh",
+     {"ignored 1 elements of type 2 (triangle)"}},
+    {"Msh10NodAndElmSections", "two_tets_msh10.msh", {"ignored 1 elements of type 2 (triangle)"}},
+    {"LegacyVtk3WithFieldDataMixedCellsAndFreeFormatPoints", "two_tets_v3.vtk",
+     {"ignored 1 cells of VTK type 5 (triangle)", "ignored 1 cells of VTK type 1 (vertex)"}},
+    {"LegacyVtk51OffsetsConnectivityAndMetadata", "two_tets_v51.vtk", {"ignored 1 cells of VTK type 5 (triangle)"}},
+    {"VtuAsciiWithPointAndCellData", "two_tets_ascii.vtu", {"ignored 1 cells of VTK type 5 (triangle)"}},
+    {"VtuInlineBinaryWithUInt32Headers", "two_tets_binary_uint32.vtu", {}},
+    {"VtuInlineBinaryWithUInt64Headers", "two_tets_binary_uint64.vtu", {}},
+    {"VtuAppendedRaw", "two_tets_appended_raw.vtu", {}},
+    {"VtuAppendedBase64", "two_tets_appended_base64.vtu", {}},
+    {"MeditCommentsSplitKeywordAndExtraSections", "two_tets_quirks.mesh",
+     {"ignored 2 entries of Triangles", "ignored 2 entries of Corners"}},
+    {"TetgenZeroBasedWithAttributesMarkersAndComments", "two_tets_zero_based.node", {}},
+    {"TetgenOneBased", "two_tets_one_based.ele", {}},
+};
+
+class QuirkyTestFile : public ::testing::TestWithParam<QuirkyFile> {};
+
+TEST_P(QuirkyTestFile, ReadsAsTheTwoTetsWithItsNotices) {
+  const ReadResult r = read_test_file(GetParam().file);
   expect_two_tets(r);
-  EXPECT_TRUE(has_notice(r, "ignored 3 elements of type 2 (triangle)"));
-  EXPECT_TRUE(has_notice(r, "ignored 1 elements of type 1 (line)"));
-  EXPECT_TRUE(has_notice(r, "ignored 1 elements of type 15 (point)"));
+  for (const char* notice : GetParam().notices) EXPECT_TRUE(has_notice(r, notice)) << notice;
 }
 
-TEST(TestFiles, Msh22WithCrlfLineEndsReadsTheSame) {
-  const ReadResult lf = read_test_file("two_tets_msh22_quirks.msh");
-  const ReadResult crlf = read_test_file("two_tets_msh22_crlf.msh");
-  ASSERT_TRUE(lf.mesh && crlf.mesh);
-  EXPECT_TRUE(test::identical(*lf.mesh, *crlf.mesh));
-}
+INSTANTIATE_TEST_SUITE_P(CorpusTestFiles, QuirkyTestFile, ::testing::ValuesIn(kQuirkyFiles),
+                         [](const auto& info) { return std::string(info.param.test_name); });
 
-TEST(TestFiles, Msh41EntityBlocksParametricNodesAndPhysicalTags) {
-  const ReadResult r = read_test_file("two_tets_msh41_quirks.msh");
-  expect_two_tets(r);
-  EXPECT_TRUE(has_notice(r, "ignored 1 elements of type 2 (triangle)"));
-}
-
-TEST(TestFiles, Msh10NodAndElmSections) {
-  const ReadResult r = read_test_file("two_tets_msh10.msh");
-  expect_two_tets(r);
-  EXPECT_TRUE(has_notice(r, "ignored 1 elements of type 2 (triangle)"));
-}
-
-TEST(TestFiles, LegacyVtk3WithFieldDataMixedCellsAndFreeFormatPoints) {
-  const ReadResult r = read_test_file("two_tets_v3.vtk");
-  expect_two_tets(r);
-  EXPECT_TRUE(has_notice(r, "ignored 1 cells of VTK type 5 (triangle)"));
-  EXPECT_TRUE(has_notice(r, "ignored 1 cells of VTK type 1 (vertex)"));
-}
-
-TEST(TestFiles, LegacyVtk51OffsetsConnectivityAndMetadata) {
-  const ReadResult r = read_test_file("two_tets_v51.vtk");
-  expect_two_tets(r);
-  EXPECT_TRUE(has_notice(r, "ignored 1 cells of VTK type 5 (triangle)"));
-}
-
-TEST(TestFiles, VtuAsciiWithPointAndCellData) {
-  const ReadResult r = read_test_file("two_tets_ascii.vtu");
-  expect_two_tets(r);
-  EXPECT_TRUE(has_notice(r, "ignored 1 cells of VTK type 5 (triangle)"));
-}
-
-TEST(TestFiles, VtuInlineBinaryWithUInt32AndUInt64Headers) {
-  for (const char* name : {"two_tets_binary_uint32.vtu", "two_tets_binary_uint64.vtu"}) {
-    SCOPED_TRACE(name);
-    ASSERT_NO_FATAL_FAILURE(expect_two_tets(read_test_file(name)));
+TEST(TestFiles, CrlfLineEndsAndTetgenNumberingReadTheSame) {
+  const std::pair<const char*, const char*> alike[] = {{"two_tets_msh22_quirks.msh", "two_tets_msh22_crlf.msh"},
+                                                       {"two_tets_quirks.mesh", "two_tets_crlf.mesh"},
+                                                       {"two_tets_zero_based.node", "two_tets_one_based.ele"}};
+  for (const auto& [first, second] : alike) {
+    SCOPED_TRACE(second);
+    const ReadResult a = read_test_file(first);
+    const ReadResult b = read_test_file(second);
+    ASSERT_TRUE(a.mesh && b.mesh);
+    EXPECT_TRUE(test::identical(*a.mesh, *b.mesh));
   }
-}
-
-TEST(TestFiles, VtuAppendedRawAndBase64) {
-  for (const char* name : {"two_tets_appended_raw.vtu", "two_tets_appended_base64.vtu"}) {
-    SCOPED_TRACE(name);
-    ASSERT_NO_FATAL_FAILURE(expect_two_tets(read_test_file(name)));
-  }
-}
-
-TEST(TestFiles, MeditCommentsSplitKeywordAndExtraSections) {
-  const ReadResult r = read_test_file("two_tets_quirks.mesh");
-  expect_two_tets(r);
-  EXPECT_TRUE(has_notice(r, "ignored 2 entries of Triangles"));
-  EXPECT_TRUE(has_notice(r, "ignored 2 entries of Corners"));
-  const ReadResult crlf = read_test_file("two_tets_crlf.mesh");
-  ASSERT_TRUE(crlf.mesh && r.mesh);
-  EXPECT_TRUE(test::identical(*r.mesh, *crlf.mesh));
-}
-
-TEST(TestFiles, TetgenZeroAndOneBasedWithAttributesMarkersAndComments) {
-  const ReadResult zero = read_test_file("two_tets_zero_based.node");
-  const ReadResult one = read_test_file("two_tets_one_based.ele");
-  expect_two_tets(zero);
-  expect_two_tets(one);
-  ASSERT_TRUE(zero.mesh && one.mesh);
-  EXPECT_TRUE(test::identical(*zero.mesh, *one.mesh));
 }
 
 TEST(TestFiles, SecondOrderTetsAreReadAsTheirCorners) {

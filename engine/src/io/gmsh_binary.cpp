@@ -104,13 +104,23 @@ bool GmshBinaryReader::msh22_elements(std::uint64_t count, std::uint64_t line) {
   return true;
 }
 
-bool GmshBinaryReader::msh41_nodes(std::uint64_t line) {
+bool GmshBinaryReader::msh41_section_header(std::string_view section, std::string_view noun,
+                                            std::uint64_t entry_bytes, std::uint64_t line, std::uint64_t& blocks,
+                                            std::uint64_t& total) {
   const std::uint64_t s = size_bytes_;
   std::string_view header;
-  if (!take(4 * s, "$Nodes header", line, header)) return false;
-  const std::uint64_t blocks = size_at(bytes_of(header));
-  const std::uint64_t total = size_at(bytes_of(header) + s);
-  if (!check_count(blocks, 12 + s, "node blocks", line) || !check_count(total, s + 24, "nodes", line)) return false;
+  if (!take(4 * s, std::string(section) + " header", line, header)) return false;
+  blocks = size_at(bytes_of(header));
+  total = size_at(bytes_of(header) + s);
+  return check_count(blocks, 12 + s, std::string(noun) + " blocks", line) &&
+         check_count(total, entry_bytes, std::string(noun) + "s", line);
+}
+
+bool GmshBinaryReader::msh41_nodes(std::uint64_t line) {
+  const std::uint64_t s = size_bytes_;
+  std::uint64_t blocks = 0;
+  std::uint64_t total = 0;
+  if (!msh41_section_header("$Nodes", "node", s + 24, line, blocks, total)) return false;
   mesh_.positions.reserve(total);
   for (std::uint64_t b = 0; b < blocks; ++b) {
     std::string_view block;
@@ -121,9 +131,7 @@ bool GmshBinaryReader::msh41_nodes(std::uint64_t line) {
     if (parametric != 0 && parametric != 1) return sink_.fail(line, "parametric must be 0 or 1, got " + std::to_string(parametric));
     if (dim < 0 || dim > 3) return sink_.fail(line, "entity dimension must be 0 to 3, got " + std::to_string(dim));
     const std::uint64_t values = 3 + (parametric == 1 ? static_cast<std::uint64_t>(dim) : 0);
-    if (n > total - mesh_.positions.size()) {
-      return sink_.fail(line, "node blocks hold more than the " + std::to_string(total) + " nodes declared");
-    }
+    if (!check_block_fits(sink_, line, "node", mesh_.positions.size(), n, total)) return false;
     std::string_view tags;
     std::string_view coordinates;
     if (!take(n * s, "$Nodes tags", line, tags) || !take(n * 8 * values, "$Nodes coordinates", line, coordinates)) return false;
@@ -139,20 +147,14 @@ bool GmshBinaryReader::msh41_nodes(std::uint64_t line) {
       mesh_.positions.push_back(x);
     }
   }
-  if (mesh_.positions.size() != total) {
-    return sink_.fail(line, "node blocks hold " + std::to_string(mesh_.positions.size()) + " nodes, the header declares " +
-                                std::to_string(total));
-  }
-  return true;
+  return check_blocks_add_up(sink_, line, "node", mesh_.positions.size(), total);
 }
 
 bool GmshBinaryReader::msh41_elements(std::uint64_t line) {
   const std::uint64_t s = size_bytes_;
-  std::string_view header;
-  if (!take(4 * s, "$Elements header", line, header)) return false;
-  const std::uint64_t blocks = size_at(bytes_of(header));
-  const std::uint64_t total = size_at(bytes_of(header) + s);
-  if (!check_count(blocks, 12 + s, "element blocks", line) || !check_count(total, 2 * s, "elements", line)) return false;
+  std::uint64_t blocks = 0;
+  std::uint64_t total = 0;
+  if (!msh41_section_header("$Elements", "element", 2 * s, line, blocks, total)) return false;
   std::uint64_t seen = 0;
   std::int64_t ids[10];
   for (std::uint64_t b = 0; b < blocks; ++b) {
@@ -162,9 +164,7 @@ bool GmshBinaryReader::msh41_elements(std::uint64_t line) {
     const std::uint64_t n = size_at(bytes_of(block) + 12);
     const std::size_t nodes = gmsh_type_nodes(type);
     if (nodes == 0) return sink_.fail(line, "unknown element type " + std::to_string(type) + " in binary $Elements");
-    if (n > total - seen) {
-      return sink_.fail(line, "element blocks hold more than the " + std::to_string(total) + " elements declared");
-    }
+    if (!check_block_fits(sink_, line, "element", seen, n, total)) return false;
     const std::uint64_t record = s * (1 + nodes);
     std::string_view data;
     if (!take(n * record, "$Elements block", line, data)) return false;
@@ -183,11 +183,7 @@ bool GmshBinaryReader::msh41_elements(std::uint64_t line) {
     }
     seen += n;
   }
-  if (seen != total) {
-    return sink_.fail(line, "element blocks hold " + std::to_string(seen) + " elements, the header declares " +
-                                std::to_string(total));
-  }
-  return true;
+  return check_blocks_add_up(sink_, line, "element", seen, total);
 }
 
 }  // namespace tetcut::io_detail

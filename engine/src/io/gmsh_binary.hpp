@@ -36,6 +36,10 @@ class GmshBinaryReader {
   // `what` at `line`.
   bool take(std::uint64_t n, std::string_view what, std::uint64_t line, std::string_view& bytes);
   bool check_count(std::uint64_t count, std::uint64_t record_bytes, std::string_view what, std::uint64_t line);
+  // MSH 4.1's section header "numEntityBlocks total minTag maxTag" (sizes), each count checked
+  // against the bytes left (a block header takes 12 + size bytes, an entry `entry_bytes`).
+  bool msh41_section_header(std::string_view section, std::string_view noun, std::uint64_t entry_bytes,
+                            std::uint64_t line, std::uint64_t& blocks, std::uint64_t& total);
   [[nodiscard]] std::uint64_t size_at(const unsigned char* p) const { return load_uint(p, size_bytes_, order_); }
   [[nodiscard]] std::int64_t int_at(const unsigned char* p) const { return load_int(p, 4, order_); }
 

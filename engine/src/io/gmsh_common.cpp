@@ -152,15 +152,104 @@ bool add_gmsh_node(ErrorSink& sink, std::uint64_t line, const std::vector<std::s
   }
   std::int64_t id = 0;
   Vec3 p;
-  if (!parse_id(sink, line, tokens[0], id) || !parse_coordinate(sink, line, tokens[1], p.x) ||
-      !parse_coordinate(sink, line, tokens[2], p.y) || !parse_coordinate(sink, line, tokens[3], p.z)) {
-    return false;
-  }
+  if (!parse_id(sink, line, tokens[0], id) || !parse_point(sink, line, tokens.data() + 1, p)) return false;
   if (!ids.insert(id, static_cast<std::uint32_t>(positions.size()))) {
     return sink.fail(line, "duplicate node id " + std::to_string(id));
   }
   positions.push_back(p);
   return true;
+}
+
+bool parse_gmsh_type(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& type) {
+  if (!parse_i64(token, type)) return sink.fail(line, "expected an element type, got " + quote(token));
+  return true;
+}
+
+bool check_block_fits(ErrorSink& sink, std::uint64_t line, std::string_view noun, std::uint64_t seen,
+                      std::uint64_t n, std::uint64_t total) {
+  if (n <= total - seen) return true;
+  return sink.fail(line, std::string(noun) + " blocks hold more than the " + std::to_string(total) + " " +
+                             std::string(noun) + "s declared");
+}
+
+bool check_blocks_add_up(ErrorSink& sink, std::uint64_t line, std::string_view noun, std::uint64_t seen,
+                         std::uint64_t total) {
+  if (seen == total) return true;
+  return sink.fail(line, std::string(noun) + " blocks hold " + std::to_string(seen) + " " + std::string(noun) +
+                             "s, the header declares " + std::to_string(total));
+}
+
+GmshReader::GmshReader(std::string_view text, std::string_view name, std::string_view nodes,
+                       std::string_view elements)
+    : lines_(text), sink_(name), nodes_header_(nodes), elements_header_(elements) {
+  elements_.nodes = &ids_;
+  elements_.tets = &mesh_.tets;
+}
+
+void GmshReader::on_nodes_header() {
+  if (have_nodes_) sink_.fail(lines_.line_number(), "second " + std::string(nodes_header_) + " section");
+  else read_nodes();
+  have_nodes_ = true;
+}
+
+void GmshReader::on_elements_header() {
+  if (have_elements_) {
+    sink_.fail(lines_.line_number(), "second " + std::string(elements_header_) + " section");
+  } else if (!have_nodes_) {
+    sink_.fail(lines_.line_number(), std::string(elements_header_) + " before " + std::string(nodes_header_));
+  } else {
+    read_elements();
+  }
+  have_elements_ = true;
+}
+
+void GmshReader::require_nodes_and_elements() {
+  if (!have_nodes_) sink_.fail(lines_.line_number(), "missing " + std::string(nodes_header_) + " section");
+  else if (!have_elements_) sink_.fail(lines_.line_number(), "missing " + std::string(elements_header_) + " section");
+}
+
+void GmshReader::read_node_lines(std::uint64_t count, std::string_view section, std::string_view noun,
+                                 std::string_view end_marker) {
+  mesh_.positions.reserve(count);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    if (!next_entry(section, noun, i, count)) return;
+    if (!add_gmsh_node(sink_, lines_.line_number(), tokens_, ids_, mesh_.positions)) return;
+  }
+  expect_gmsh_marker(lines_, sink_, end_marker, "the last node");
+}
+
+bool GmshReader::read_count_line(std::string_view missing, std::string_view expected, std::uint64_t& count) {
+  std::string_view line;
+  if (!lines_.next_nonblank(line)) {
+    return sink_.fail(lines_.line_number(), "unexpected end of file: missing " + std::string(missing));
+  }
+  split_tokens(line, tokens_);
+  if (tokens_.size() != 1) {
+    return sink_.fail(lines_.line_number(), "expected " + std::string(expected) + ", got " + quote(trim(line)));
+  }
+  return parse_count(sink_, lines_.line_number(), tokens_[0], lines_.remaining_bytes(), count);
+}
+
+bool GmshReader::next_entry(std::string_view section, std::string_view noun, std::uint64_t i,
+                            std::uint64_t count) {
+  std::string_view line;
+  if (!lines_.next_nonblank(line)) {
+    return sink_.fail(lines_.line_number(), "unexpected end of file in " + std::string(section) + ": expected " +
+                                                std::to_string(count) + " " + std::string(noun) + ", got " +
+                                                std::to_string(i));
+  }
+  split_tokens(line, tokens_);
+  if (tokens_[0][0] == '$') {
+    return sink_.fail(lines_.line_number(), "section ended after " + std::to_string(i) + " of " +
+                                                std::to_string(count) + " " + std::string(noun));
+  }
+  return true;
+}
+
+ReadResult GmshReader::result() {
+  std::vector<std::string> notices;
+  elements_.emit_notices(notices);
+  return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
 }
 
 }  // namespace tetcut::io_detail

@@ -1,5 +1,6 @@
 // What the three Gmsh readers (1.0, 2.2, 4.1) share: the element-type table, section skipping,
-// and turning one element's node-id tokens into a tet (or an ignored element).
+// turning one element's node-id tokens into a tet (or an ignored element), and the state and
+// line-based steps of a reader (GmshReader).
 #pragma once
 
 #include <array>
@@ -49,5 +50,66 @@ struct GmshElementSink {
 // Parses "id x y z" tokens (exactly 4) into the map and positions.
 bool add_gmsh_node(ErrorSink& sink, std::uint64_t line, const std::vector<std::string_view>& tokens,
                    NodeIdMap& ids, std::vector<Vec3>& positions);
+
+// Parses an element type (any integer: unknown types are ignored, not refused).
+bool parse_gmsh_type(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& type);
+
+// MSH 4.1 entity blocks, ASCII or binary: a block of `n` more entries must fit in the `total` its
+// section header declared (`seen` so far), and the blocks must add up to it. `noun`: "node",
+// "element".
+bool check_block_fits(ErrorSink& sink, std::uint64_t line, std::string_view noun, std::uint64_t seen,
+                      std::uint64_t n, std::uint64_t total);
+bool check_blocks_add_up(ErrorSink& sink, std::uint64_t line, std::string_view noun, std::uint64_t seen,
+                         std::uint64_t total);
+
+// What every Gmsh reader holds while it reads one file (the lines, the first error, the mesh, its
+// node-id map and the element sink wired to both, the current line's tokens) and the steps its
+// sections share. Every version has one node section and one element section after it.
+class GmshReader {
+ public:
+  GmshReader(const GmshReader&) = delete;
+  GmshReader& operator=(const GmshReader&) = delete;
+
+ protected:
+  // `nodes`, `elements`: the headers of the version's two sections ("$Nodes", "$NOD").
+  GmshReader(std::string_view text, std::string_view name, std::string_view nodes, std::string_view elements);
+  virtual ~GmshReader() = default;
+
+  // Each is called on its section's header line and reads up to its end marker.
+  virtual void read_nodes() = 0;
+  virtual void read_elements() = 0;
+  // On the node or element section's header: reads it, unless it is a second one or (elements)
+  // comes before the nodes.
+  void on_nodes_header();
+  void on_elements_header();
+  // At the end of the file: fails unless both sections were there.
+  void require_nodes_and_elements();
+
+  // `count` "id x y z" node lines (MSH 1.0 and 2.2) of `section`, then its `end_marker`.
+  void read_node_lines(std::uint64_t count, std::string_view section, std::string_view noun,
+                       std::string_view end_marker);
+
+  // The line after a section header that holds only a count. Errors: "unexpected end of file:
+  // missing <missing>", "expected <expected>, got '<line>'", and parse_count's.
+  bool read_count_line(std::string_view missing, std::string_view expected, std::uint64_t& count);
+  // Entry `i` of the `count` entries of `section` (what it counts: `noun`), split into tokens_;
+  // a "$" line ends the section too early.
+  bool next_entry(std::string_view section, std::string_view noun, std::uint64_t i, std::uint64_t count);
+  // The mesh or the first error, with notices of the elements read as corners or ignored.
+  ReadResult result();
+
+  LineReader lines_;
+  ErrorSink sink_;
+  RawMesh mesh_;
+  NodeIdMap ids_;
+  GmshElementSink elements_;
+  std::vector<std::string_view> tokens_;
+
+ private:
+  std::string_view nodes_header_;
+  std::string_view elements_header_;
+  bool have_nodes_ = false;
+  bool have_elements_ = false;
+};
 
 }  // namespace tetcut::io_detail

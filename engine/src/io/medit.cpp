@@ -130,10 +130,7 @@ class MeditReader {
         return;
       }
       Vec3 p;
-      if (!parse_coordinate(sink_, at, tokens_[0], p.x) || !parse_coordinate(sink_, at, tokens_[1], p.y) ||
-          !parse_coordinate(sink_, at, tokens_[2], p.z)) {
-        return;
-      }
+      if (!parse_point(sink_, at, tokens_.data(), p)) return;
       if (tokens_.size() == 4) {
         std::int64_t ref = 0;
         if (!parse_i64(tokens_[3], ref)) {
@@ -209,10 +206,7 @@ std::string format_medit(const RawMesh& mesh) {
   out += "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n";
   append_uint(out, mesh.positions.size());
   out += '\n';
-  for (const Vec3& p : mesh.positions) {
-    append_point(out, p);
-    out += " 0\n";
-  }
+  append_point_lines(out, mesh.positions, "", " 0\n");
   out += "\nTetrahedra\n";
   append_uint(out, mesh.tets.size());
   out += '\n';

@@ -12,87 +12,40 @@ namespace {
 
 using namespace io_detail;
 
-class Msh10Reader {
+class Msh10Reader : public GmshReader {
  public:
-  Msh10Reader(std::string_view text, std::string_view name) : lines_(text), sink_(name) {}
+  Msh10Reader(std::string_view text, std::string_view name) : GmshReader(text, name, "$NOD", "$ELM") {}
 
   ReadResult read() {
     std::string_view line;
-    bool have_nodes = false;
-    bool have_elements = false;
     while (!sink_.failed() && lines_.next_nonblank(line)) {
       const std::string_view header = trim(line);
       if (header == "$NOD") {
-        if (have_nodes) sink_.fail(lines_.line_number(), "second $NOD section");
-        else read_nodes();
-        have_nodes = true;
+        on_nodes_header();
       } else if (header == "$ELM") {
-        if (have_elements) sink_.fail(lines_.line_number(), "second $ELM section");
-        else if (!have_nodes) sink_.fail(lines_.line_number(), "$ELM before $NOD");
-        else read_elements();
-        have_elements = true;
+        on_elements_header();
       } else if (header == "$Comments" || header == "$COMMENTS") {
         skip_gmsh_section(lines_, sink_, header.substr(1));
       } else {
         sink_.fail(lines_.line_number(), "expected $NOD or $ELM, got " + quote(header));
       }
     }
-    if (!sink_.failed()) {
-      if (!have_nodes) sink_.fail(lines_.line_number(), "missing $NOD section");
-      else if (!have_elements) sink_.fail(lines_.line_number(), "missing $ELM section");
-    }
-    std::vector<std::string> notices;
-    elements_.emit_notices(notices);
-    return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
+    if (!sink_.failed()) require_nodes_and_elements();
+    return result();
   }
 
  private:
-  bool read_count(std::string_view section, std::uint64_t& count) {
-    std::string_view line;
-    if (!lines_.next_nonblank(line)) {
-      return sink_.fail(lines_.line_number(), "unexpected end of file: missing count in " + std::string(section));
-    }
-    split_tokens(line, tokens_);
-    if (tokens_.size() != 1) {
-      return sink_.fail(lines_.line_number(), "expected a count, got " + quote(trim(line)));
-    }
-    return parse_count(sink_, lines_.line_number(), tokens_[0], lines_.remaining_bytes(), count);
-  }
-
-  bool next_entry(std::string_view section, std::uint64_t i, std::uint64_t count) {
-    std::string_view line;
-    if (!lines_.next_nonblank(line)) {
-      return sink_.fail(lines_.line_number(), "unexpected end of file in " + std::string(section) +
-                                                  ": expected " + std::to_string(count) + " entries, got " +
-                                                  std::to_string(i));
-    }
-    split_tokens(line, tokens_);
-    if (tokens_[0][0] == '$') {
-      return sink_.fail(lines_.line_number(), "section ended after " + std::to_string(i) + " of " +
-                                                  std::to_string(count) + " entries");
-    }
-    return true;
-  }
-
-  void read_nodes() {
+  void read_nodes() override {
     std::uint64_t count = 0;
-    if (!read_count("$NOD", count)) return;
-    mesh_.positions.reserve(count);
-    for (std::uint64_t i = 0; i < count; ++i) {
-      if (!next_entry("$NOD", i, count)) return;
-      if (!add_gmsh_node(sink_, lines_.line_number(), tokens_, ids_, mesh_.positions)) return;
-    }
-    expect_gmsh_marker(lines_, sink_, "$ENDNOD", "the last node");
+    if (read_count_line("count in $NOD", "a count", count)) read_node_lines(count, "$NOD", "entries", "$ENDNOD");
   }
 
-  void read_elements() {
+  void read_elements() override {
     std::uint64_t count = 0;
-    if (!read_count("$ELM", count)) return;
+    if (!read_count_line("count in $ELM", "a count", count)) return;
     mesh_.tets.reserve(count);
-    elements_.nodes = &ids_;
-    elements_.tets = &mesh_.tets;
     for (std::uint64_t i = 0; i < count; ++i) {
-      if (!next_entry("$ELM", i, count)) return;
+      if (!next_entry("$ELM", "entries", i, count)) return;
       const std::uint64_t at = lines_.line_number();
       if (tokens_.size() < 5) {
         sink_.fail(at, "expected 'id type reg-phys reg-elem num-nodes node...', got " +
@@ -102,11 +55,7 @@ class Msh10Reader {
       std::int64_t id = 0;
       std::int64_t type = 0;
       std::int64_t num_nodes = 0;
-      if (!parse_id(sink_, at, tokens_[0], id)) return;
-      if (!parse_i64(tokens_[1], type)) {
-        sink_.fail(at, "expected an element type, got " + quote(tokens_[1]));
-        return;
-      }
+      if (!parse_id(sink_, at, tokens_[0], id) || !parse_gmsh_type(sink_, at, tokens_[1], type)) return;
       if (!parse_i64(tokens_[4], num_nodes) || num_nodes < 0 ||
           static_cast<std::uint64_t>(num_nodes) != tokens_.size() - 5) {
         sink_.fail(at, "element declares " + quote(tokens_[4]) + " nodes but lists " +
@@ -117,13 +66,6 @@ class Msh10Reader {
     }
     expect_gmsh_marker(lines_, sink_, "$ENDELM", "the last element");
   }
-
-  LineReader lines_;
-  ErrorSink sink_;
-  RawMesh mesh_;
-  NodeIdMap ids_;
-  GmshElementSink elements_;
-  std::vector<std::string_view> tokens_;
 };
 
 }  // namespace

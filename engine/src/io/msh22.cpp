@@ -3,11 +3,9 @@
 // records between count and marker are raw (gmsh_binary.hpp). Node ids are arbitrary (mapped);
 // tags (physical, elementary, partitions) are skipped; unknown sections ($Comments,
 // $PhysicalNames, $NodeData, ...) are skipped to their $End marker.
-#include <algorithm>
 #include <string>
 
-#include "gmsh_binary.hpp"
-#include "gmsh_common.hpp"
+#include "gmsh_sections.hpp"
 #include "tetcut/io.hpp"
 
 namespace tetcut {
@@ -16,55 +14,12 @@ namespace {
 
 using namespace io_detail;
 
-
-class Msh22Reader {
+class Msh22Reader : public GmshSectionReader {
  public:
-  Msh22Reader(std::string_view text, std::string_view name) : lines_(text), sink_(name) {}
-
-  ReadResult read() {
-    std::string_view line;
-    bool have_format = false;
-    bool have_nodes = false;
-    bool have_elements = false;
-    while (!sink_.failed() && lines_.next_nonblank(line)) {
-      const std::string_view header = trim(line);
-      if (header.empty() || header[0] != '$') {
-        sink_.fail(lines_.line_number(), "expected a section header such as $Nodes, got " + quote(header));
-        break;
-      }
-      const std::string_view section = header.substr(1);
-      if (!have_format && section != "MeshFormat" && section != "Comments") {
-        sink_.fail(lines_.line_number(), "expected $MeshFormat first, got " + quote(header));
-      } else if (section == "MeshFormat") {
-        read_format();
-        have_format = true;
-      } else if (section == "Nodes") {
-        if (have_nodes) sink_.fail(lines_.line_number(), "second $Nodes section");
-        else read_nodes();
-        have_nodes = true;
-      } else if (section == "Elements") {
-        if (have_elements) sink_.fail(lines_.line_number(), "second $Elements section");
-        else if (!have_nodes) sink_.fail(lines_.line_number(), "$Elements before $Nodes");
-        else read_elements();
-        have_elements = true;
-      } else if (section.substr(0, 3) == "End") {
-        sink_.fail(lines_.line_number(), "unexpected " + quote(header) + " outside its section");
-      } else {
-        skip_gmsh_section(lines_, sink_, section);
-      }
-    }
-    if (!sink_.failed()) {
-      if (!have_format) sink_.fail(std::max<std::uint64_t>(1, lines_.line_number()), "empty file: no $MeshFormat section");
-      else if (!have_nodes) sink_.fail(lines_.line_number(), "missing $Nodes section");
-      else if (!have_elements) sink_.fail(lines_.line_number(), "missing $Elements section");
-    }
-    std::vector<std::string> notices;
-    elements_.emit_notices(notices);
-    return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
-  }
+  Msh22Reader(std::string_view text, std::string_view name) : GmshSectionReader(text, name) {}
 
  private:
-  void read_format() {
+  void read_format() override {
     std::string_view line;
     if (!lines_.next_nonblank(line)) {
       sink_.fail(lines_.line_number(), "unexpected end of file in $MeshFormat");
@@ -98,59 +53,22 @@ class Msh22Reader {
     expect_gmsh_marker(lines_, sink_, "$EndMeshFormat", "the format line");
   }
 
-  void read_nodes() {
-    std::string_view line;
-    if (!lines_.next_nonblank(line)) {
-      sink_.fail(lines_.line_number(), "unexpected end of file: missing node count in $Nodes");
-      return;
-    }
-    split_tokens(line, tokens_);
+  void read_nodes() override {
     std::uint64_t count = 0;
-    if (tokens_.size() != 1) {
-      sink_.fail(lines_.line_number(), "expected the number of nodes, got " + quote(trim(line)));
-      return;
-    }
-    if (!parse_count(sink_, lines_.line_number(), tokens_[0], lines_.remaining_bytes(), count)) return;
+    if (!read_count_line("node count in $Nodes", "the number of nodes", count)) return;
     if (binary_) {
       if (binary_reader_.msh22_nodes(count, lines_.line_number())) {
         expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node");
       }
       return;
     }
-    mesh_.positions.reserve(count);
-    for (std::uint64_t i = 0; i < count; ++i) {
-      if (!lines_.next_nonblank(line)) {
-        sink_.fail(lines_.line_number(), "unexpected end of file in $Nodes: expected " +
-                                             std::to_string(count) + " nodes, got " + std::to_string(i));
-        return;
-      }
-      split_tokens(line, tokens_);
-      if (!tokens_.empty() && tokens_[0].substr(0, 1) == "$") {
-        sink_.fail(lines_.line_number(), "section ended after " + std::to_string(i) + " of " +
-                                             std::to_string(count) + " nodes");
-        return;
-      }
-      if (!add_gmsh_node(sink_, lines_.line_number(), tokens_, ids_, mesh_.positions)) return;
-    }
-    expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node");
+    read_node_lines(count, "$Nodes", "nodes", "$EndNodes");
   }
 
-  void read_elements() {
-    std::string_view line;
-    if (!lines_.next_nonblank(line)) {
-      sink_.fail(lines_.line_number(), "unexpected end of file: missing element count in $Elements");
-      return;
-    }
-    split_tokens(line, tokens_);
+  void read_elements() override {
     std::uint64_t count = 0;
-    if (tokens_.size() != 1) {
-      sink_.fail(lines_.line_number(), "expected the number of elements, got " + quote(trim(line)));
-      return;
-    }
-    if (!parse_count(sink_, lines_.line_number(), tokens_[0], lines_.remaining_bytes(), count)) return;
+    if (!read_count_line("element count in $Elements", "the number of elements", count)) return;
     mesh_.tets.reserve(count);
-    elements_.nodes = &ids_;
-    elements_.tets = &mesh_.tets;
     if (binary_) {
       if (binary_reader_.msh22_elements(count, lines_.line_number())) {
         expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element");
@@ -158,17 +76,8 @@ class Msh22Reader {
       return;
     }
     for (std::uint64_t i = 0; i < count; ++i) {
-      if (!lines_.next_nonblank(line)) {
-        sink_.fail(lines_.line_number(), "unexpected end of file in $Elements: expected " +
-                                             std::to_string(count) + " elements, got " + std::to_string(i));
-        return;
-      }
+      if (!next_entry("$Elements", "elements", i, count)) return;
       const std::uint64_t at = lines_.line_number();
-      split_tokens(line, tokens_);
-      if (!tokens_.empty() && tokens_[0].substr(0, 1) == "$") {
-        sink_.fail(at, "section ended after " + std::to_string(i) + " of " + std::to_string(count) + " elements");
-        return;
-      }
       if (tokens_.size() < 3) {
         sink_.fail(at, "expected 'id type num-tags ...', got " + std::to_string(tokens_.size()) + " values");
         return;
@@ -176,11 +85,7 @@ class Msh22Reader {
       std::int64_t id = 0;
       std::int64_t type = 0;
       std::int64_t num_tags = 0;
-      if (!parse_id(sink_, at, tokens_[0], id)) return;
-      if (!parse_i64(tokens_[1], type)) {
-        sink_.fail(at, "expected an element type, got " + quote(tokens_[1]));
-        return;
-      }
+      if (!parse_id(sink_, at, tokens_[0], id) || !parse_gmsh_type(sink_, at, tokens_[1], type)) return;
       if (!parse_i64(tokens_[2], num_tags) || num_tags < 0 ||
           static_cast<std::uint64_t>(num_tags) > tokens_.size() - 3) {
         sink_.fail(at, "bad number of tags " + quote(tokens_[2]) + " for a line of " +
@@ -192,15 +97,6 @@ class Msh22Reader {
     }
     expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element");
   }
-
-  LineReader lines_;
-  ErrorSink sink_;
-  RawMesh mesh_;
-  NodeIdMap ids_;
-  GmshElementSink elements_;
-  std::vector<std::string_view> tokens_;
-  GmshBinaryReader binary_reader_{lines_, sink_, mesh_, ids_, elements_};
-  bool binary_ = false;
 };
 
 }  // namespace
@@ -215,26 +111,12 @@ std::string format_msh22(const RawMesh& mesh) {
   out += "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n";
   append_uint(out, mesh.positions.size());
   out += '\n';
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-    const Vec3& p = mesh.positions[i];
-    append_uint(out, i + 1);
-    out += ' ';
-    append_point(out, p);
-    out += '\n';
-  }
+  append_numbered_points(out, mesh.positions);
   out += "$EndNodes\n$Elements\n";
   append_uint(out, mesh.tets.size());
   out += '\n';
   // Every tet in physical group 1 and elementary entity 1, as Gmsh writes a single volume.
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    append_uint(out, t + 1);
-    out += " 4 2 1 1";
-    for (std::uint32_t v : mesh.tets[t]) {
-      out += ' ';
-      append_uint(out, static_cast<std::uint64_t>(v) + 1);
-    }
-    out += '\n';
-  }
+  append_numbered_tets(out, mesh.tets, " 4 2 1 1");
   out += "$EndElements\n";
   return out;
 }

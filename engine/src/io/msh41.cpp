@@ -9,8 +9,7 @@
 #include <array>
 #include <string>
 
-#include "gmsh_binary.hpp"
-#include "gmsh_common.hpp"
+#include "gmsh_sections.hpp"
 #include "tetcut/io.hpp"
 
 namespace tetcut {
@@ -19,52 +18,9 @@ namespace {
 
 using namespace io_detail;
 
-
-class Msh41Reader {
+class Msh41Reader : public GmshSectionReader {
  public:
-  Msh41Reader(std::string_view text, std::string_view name) : lines_(text), sink_(name) {}
-
-  ReadResult read() {
-    std::string_view line;
-    bool have_format = false;
-    bool have_nodes = false;
-    bool have_elements = false;
-    while (!sink_.failed() && lines_.next_nonblank(line)) {
-      const std::string_view header = trim(line);
-      if (header[0] != '$') {
-        sink_.fail(lines_.line_number(), "expected a section header such as $Nodes, got " + quote(header));
-        break;
-      }
-      const std::string_view section = header.substr(1);
-      if (!have_format && section != "MeshFormat" && section != "Comments") {
-        sink_.fail(lines_.line_number(), "expected $MeshFormat first, got " + quote(header));
-      } else if (section == "MeshFormat") {
-        read_format();
-        have_format = true;
-      } else if (section == "Nodes") {
-        if (have_nodes) sink_.fail(lines_.line_number(), "second $Nodes section");
-        else read_nodes();
-        have_nodes = true;
-      } else if (section == "Elements") {
-        if (have_elements) sink_.fail(lines_.line_number(), "second $Elements section");
-        else if (!have_nodes) sink_.fail(lines_.line_number(), "$Elements before $Nodes");
-        else read_elements();
-        have_elements = true;
-      } else if (section.substr(0, 3) == "End") {
-        sink_.fail(lines_.line_number(), "unexpected " + quote(header) + " outside its section");
-      } else {
-        skip_gmsh_section(lines_, sink_, section);
-      }
-    }
-    if (!sink_.failed()) {
-      if (!have_format) sink_.fail(std::max<std::uint64_t>(1, lines_.line_number()), "empty file: no $MeshFormat section");
-      else if (!have_nodes) sink_.fail(lines_.line_number(), "missing $Nodes section");
-      else if (!have_elements) sink_.fail(lines_.line_number(), "missing $Elements section");
-    }
-    std::vector<std::string> notices;
-    elements_.emit_notices(notices);
-    return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
-  }
+  Msh41Reader(std::string_view text, std::string_view name) : GmshSectionReader(text, name) {}
 
  private:
   // The next non-blank line split into tokens_, which must not be a section marker.
@@ -88,7 +44,7 @@ class Msh41Reader {
     return true;
   }
 
-  void read_format() {
+  void read_format() override {
     if (!next_record("$MeshFormat") || !expect_tokens(3, "'version file-type data-size'")) return;
     if (tokens_[0] != "4.1") {
       sink_.fail(lines_.line_number(), "unsupported MSH version " + quote(tokens_[0]) + " (this reader reads 4.1)");
@@ -120,7 +76,7 @@ class Msh41Reader {
            parse_count(sink_, at, tokens_[1], lines_.remaining_bytes(), total);
   }
 
-  void read_nodes() {
+  void read_nodes() override {
     if (binary_) {
       if (binary_reader_.msh41_nodes(lines_.line_number())) {
         expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node block");
@@ -131,7 +87,6 @@ class Msh41Reader {
     std::uint64_t total = 0;
     if (!read_header("$Nodes", blocks, total)) return;
     mesh_.positions.reserve(total);
-    std::vector<std::int64_t> block_ids;
     for (std::uint64_t b = 0; b < blocks; ++b) {
       if (!next_record("$Nodes block header") ||
           !expect_tokens(4, "'entityDim entityTag parametric numNodesInBlock'")) {
@@ -144,12 +99,7 @@ class Msh41Reader {
         return;
       }
       if (!parse_count(sink_, lines_.line_number(), tokens_[3], lines_.remaining_bytes(), n)) return;
-      if (mesh_.positions.size() + n > total) {
-        sink_.fail(lines_.line_number(), "node blocks hold more than the " + std::to_string(total) + " nodes declared");
-        return;
-      }
-      block_ids.clear();
-      block_ids.reserve(n);
+      if (!check_block_fits(sink_, lines_.line_number(), "node", mesh_.positions.size(), n, total)) return;
       for (std::uint64_t i = 0; i < n; ++i) {
         if (!next_record("$Nodes (node tags)") || !expect_tokens(1, "one node tag")) return;
         std::int64_t id = 0;
@@ -167,25 +117,16 @@ class Msh41Reader {
           return;
         }
         Vec3 p;
-        const std::uint64_t at = lines_.line_number();
-        if (!parse_coordinate(sink_, at, tokens_[0], p.x) || !parse_coordinate(sink_, at, tokens_[1], p.y) ||
-            !parse_coordinate(sink_, at, tokens_[2], p.z)) {
-          return;
-        }
+        if (!parse_point(sink_, lines_.line_number(), tokens_.data(), p)) return;
         mesh_.positions.push_back(p);
       }
     }
-    if (mesh_.positions.size() != total) {
-      sink_.fail(lines_.line_number(), "node blocks hold " + std::to_string(mesh_.positions.size()) +
-                                           " nodes, the header declares " + std::to_string(total));
-      return;
+    if (check_blocks_add_up(sink_, lines_.line_number(), "node", mesh_.positions.size(), total)) {
+      expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node block");
     }
-    expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node block");
   }
 
-  void read_elements() {
-    elements_.nodes = &ids_;
-    elements_.tets = &mesh_.tets;
+  void read_elements() override {
     if (binary_) {
       if (binary_reader_.msh41_elements(lines_.line_number())) {
         expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element block");
@@ -204,15 +145,9 @@ class Msh41Reader {
       }
       std::int64_t type = 0;
       std::uint64_t n = 0;
-      if (!parse_i64(tokens_[2], type)) {
-        sink_.fail(lines_.line_number(), "expected an element type, got " + quote(tokens_[2]));
-        return;
-      }
+      if (!parse_gmsh_type(sink_, lines_.line_number(), tokens_[2], type)) return;
       if (!parse_count(sink_, lines_.line_number(), tokens_[3], lines_.remaining_bytes(), n)) return;
-      if (seen + n > total) {
-        sink_.fail(lines_.line_number(), "element blocks hold more than the " + std::to_string(total) + " elements declared");
-        return;
-      }
+      if (!check_block_fits(sink_, lines_.line_number(), "element", seen, n, total)) return;
       for (std::uint64_t i = 0; i < n; ++i) {
         if (!next_record("$Elements")) return;
         std::int64_t id = 0;
@@ -221,22 +156,10 @@ class Msh41Reader {
       }
       seen += n;
     }
-    if (seen != total) {
-      sink_.fail(lines_.line_number(), "element blocks hold " + std::to_string(seen) +
-                                           " elements, the header declares " + std::to_string(total));
-      return;
+    if (check_blocks_add_up(sink_, lines_.line_number(), "element", seen, total)) {
+      expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element block");
     }
-    expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element block");
   }
-
-  LineReader lines_;
-  ErrorSink sink_;
-  RawMesh mesh_;
-  NodeIdMap ids_;
-  GmshElementSink elements_;
-  std::vector<std::string_view> tokens_;
-  GmshBinaryReader binary_reader_{lines_, sink_, mesh_, ids_, elements_};
-  bool binary_ = false;
 };
 
 // The bounding box of every position ({0,0,0}, {0,0,0} for none), for the volume entity.
@@ -251,6 +174,38 @@ std::array<double, 6> bounding_box(const RawMesh& mesh) {
     }
   }
   return {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
+}
+
+// The writers put all `n` nodes (or elements) of a section in one block of the volume entity,
+// tagged 1 to n: the section header "numEntityBlocks n minTag maxTag" and, when n > 0, the
+// block header "entityDim(3) entityTag(1) <kind> n", kind = parametric flag (0) or element type.
+void append_single_block_headers(std::string& out, std::uint64_t n, std::uint64_t kind) {
+  const std::uint64_t blocks = n > 0 ? 1 : 0;
+  for (std::uint64_t v : {blocks, n, blocks}) {
+    append_uint(out, v);
+    out += ' ';
+  }
+  append_uint(out, n);
+  out += '\n';
+  if (n == 0) return;
+  out += "3 1 ";
+  append_uint(out, kind);
+  out += ' ';
+  append_uint(out, n);
+  out += '\n';
+}
+
+// The same headers in a binary file: sizes are 8 bytes, dimension, tag and kind 4-byte ints.
+constexpr auto kBinaryOrder = ByteOrder::kLittle;
+void put_int(std::string& out, std::uint64_t v) { store_uint(out, v, 4, kBinaryOrder); }
+void put_size(std::string& out, std::uint64_t v) { store_uint(out, v, 8, kBinaryOrder); }
+
+void store_single_block_headers(std::string& out, std::uint64_t n, std::uint64_t kind) {
+  const std::uint64_t blocks = n > 0 ? 1 : 0;
+  for (std::uint64_t v : {blocks, n, blocks, n}) put_size(out, v);
+  if (n == 0) return;
+  for (std::uint64_t v : {std::uint64_t{3}, std::uint64_t{1}, kind}) put_int(out, v);
+  put_size(out, n);
 }
 
 }  // namespace
@@ -270,53 +225,20 @@ std::string format_msh41(const RawMesh& mesh) {
     out += ' ';
   }
   out += "0 0\n$EndEntities\n$Nodes\n";
-  const std::uint64_t nv = mesh.positions.size();
-  out += nv > 0 ? "1 " : "0 ";
-  append_uint(out, nv);
-  out += nv > 0 ? " 1 " : " 0 ";
-  append_uint(out, nv);
-  out += '\n';
-  if (nv > 0) {
-    out += "3 1 0 ";
-    append_uint(out, nv);
+  append_single_block_headers(out, mesh.positions.size(), 0);
+  for (std::uint64_t i = 0; i < mesh.positions.size(); ++i) {
+    append_uint(out, i + 1);
     out += '\n';
-    for (std::uint64_t i = 0; i < nv; ++i) {
-      append_uint(out, i + 1);
-      out += '\n';
-    }
-    for (const Vec3& p : mesh.positions) {
-      append_point(out, p);
-      out += '\n';
-    }
   }
+  append_point_lines(out, mesh.positions);
   out += "$EndNodes\n$Elements\n";
-  const std::uint64_t nt = mesh.tets.size();
-  out += nt > 0 ? "1 " : "0 ";
-  append_uint(out, nt);
-  out += nt > 0 ? " 1 " : " 0 ";
-  append_uint(out, nt);
-  out += '\n';
-  if (nt > 0) {
-    out += "3 1 4 ";
-    append_uint(out, nt);
-    out += '\n';
-    for (std::uint64_t t = 0; t < nt; ++t) {
-      append_uint(out, t + 1);
-      for (std::uint32_t v : mesh.tets[t]) {
-        out += ' ';
-        append_uint(out, static_cast<std::uint64_t>(v) + 1);
-      }
-      out += '\n';
-    }
-  }
+  append_single_block_headers(out, mesh.tets.size(), kGmshTet4);
+  append_numbered_tets(out, mesh.tets);
   out += "$EndElements\n";
   return out;
 }
 
 std::string format_msh41_binary(const RawMesh& mesh) {
-  constexpr auto kOrder = ByteOrder::kLittle;
-  const auto put_int = [](std::string& out, std::uint64_t v) { store_uint(out, v, 4, kOrder); };
-  const auto put_size = [](std::string& out, std::uint64_t v) { store_uint(out, v, 8, kOrder); };
   std::string out;
   out.reserve(256 + mesh.positions.size() * 32 + mesh.tets.size() * 40);
   out += "$MeshFormat\n4.1 1 8\n";
@@ -326,32 +248,20 @@ std::string format_msh41_binary(const RawMesh& mesh) {
   // and no bounding surfaces.
   for (std::uint64_t n : {0, 0, 0, 1}) put_size(out, n);
   put_int(out, 1);
-  for (double c : bounding_box(mesh)) store_f64(out, c, kOrder);
+  for (double c : bounding_box(mesh)) store_f64(out, c, kBinaryOrder);
   put_size(out, 0);
   put_size(out, 0);
   out += "\n$EndEntities\n$Nodes\n";
-  const std::uint64_t nv = mesh.positions.size();
-  const std::uint64_t node_blocks = nv > 0 ? 1 : 0;
-  for (std::uint64_t v : {node_blocks, nv, node_blocks, nv}) put_size(out, v);
-  if (nv > 0) {
-    for (std::uint64_t v : {3, 1, 0}) put_int(out, v);
-    put_size(out, nv);
-    for (std::uint64_t i = 0; i < nv; ++i) put_size(out, i + 1);
-    for (const Vec3& p : mesh.positions) {
-      for (double c : {p.x, p.y, p.z}) store_f64(out, c, kOrder);
-    }
+  store_single_block_headers(out, mesh.positions.size(), 0);
+  for (std::uint64_t i = 0; i < mesh.positions.size(); ++i) put_size(out, i + 1);
+  for (const Vec3& p : mesh.positions) {
+    for (double c : {p.x, p.y, p.z}) store_f64(out, c, kBinaryOrder);
   }
   out += "\n$EndNodes\n$Elements\n";
-  const std::uint64_t nt = mesh.tets.size();
-  const std::uint64_t element_blocks = nt > 0 ? 1 : 0;
-  for (std::uint64_t v : {element_blocks, nt, element_blocks, nt}) put_size(out, v);
-  if (nt > 0) {
-    for (std::uint64_t v : {3, 1, kGmshTet4}) put_int(out, v);
-    put_size(out, nt);
-    for (std::uint64_t t = 0; t < nt; ++t) {
-      put_size(out, t + 1);
-      for (std::uint32_t v : mesh.tets[t]) put_size(out, std::uint64_t{v} + 1);
-    }
+  store_single_block_headers(out, mesh.tets.size(), kGmshTet4);
+  for (std::uint64_t t = 0; t < mesh.tets.size(); ++t) {
+    put_size(out, t + 1);
+    for (std::uint32_t v : mesh.tets[t]) put_size(out, std::uint64_t{v} + 1);
   }
   out += "\n$EndElements\n";
   return out;

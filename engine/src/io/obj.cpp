@@ -3,20 +3,19 @@
 // (vn, vt, g, o, s, usemtl, mtllib, l, p) are skipped. '#' comments.
 #include <string>
 
+#include "surface_reader.hpp"
 #include "tetcut/io.hpp"
-#include "text_reader.hpp"
 
 namespace tetcut {
 
 using namespace io_detail;
 
 SurfaceReadResult read_obj(std::string_view text, std::string_view name) {
-  ErrorSink sink(name);
-  SurfaceMesh surface;
-  std::vector<std::string> notices;
+  SurfaceReaderState state(name);
+  ErrorSink& sink = state.sink;
+  const std::vector<Vec3>& positions = state.surface.positions;
   LineReader lines(text);
   std::vector<std::string_view> tokens;
-  std::uint64_t polygons_split = 0;
   std::uint64_t skipped_lines = 0;
   // Faces may name vertices defined later; resolve once all vertices are known.
   std::vector<std::int64_t> face_ids;
@@ -29,12 +28,7 @@ SurfaceReadResult read_obj(std::string_view text, std::string_view name) {
         if (tokens.size() < 4 || tokens.size() > 7) {  // x y z, then w or an r g b colour
           return sink.fail(line, "expected 3 coordinates after 'v', got " + std::to_string(tokens.size() - 1));
         }
-        Vec3 p;
-        if (!parse_coordinate(sink, line, tokens[1], p.x) || !parse_coordinate(sink, line, tokens[2], p.y) ||
-            !parse_coordinate(sink, line, tokens[3], p.z)) {
-          return false;
-        }
-        surface.positions.push_back(p);
+        if (!state.add_point(line, tokens.data() + 1)) return false;
       } else if (tokens[0] == "f") {
         if (tokens.size() < 4) {
           return sink.fail(line, "a face needs at least 3 vertices, got " + std::to_string(tokens.size() - 1));
@@ -46,7 +40,7 @@ SurfaceReadResult read_obj(std::string_view text, std::string_view name) {
           if (id == 0) return sink.fail(line, "vertex index 0 (OBJ indices start at 1)");
           if (id < 0) {
             // Relative to the vertices defined so far.
-            const std::int64_t resolved = static_cast<std::int64_t>(surface.positions.size()) + id + 1;
+            const std::int64_t resolved = static_cast<std::int64_t>(positions.size()) + id + 1;
             if (resolved < 1) return sink.fail(line, "relative vertex index " + std::to_string(id) + " not defined");
             id = resolved;
           }
@@ -67,20 +61,21 @@ SurfaceReadResult read_obj(std::string_view text, std::string_view name) {
       corners.clear();
       for (std::size_t k = 0; k < face_sizes[f]; ++k) {
         const std::int64_t id = face_ids[at++];
-        if (static_cast<std::uint64_t>(id) > surface.positions.size()) {
+        if (static_cast<std::uint64_t>(id) > positions.size()) {
           ok = sink.fail(face_lines[f], "vertex index " + std::to_string(id) + " not defined (" +
-                                            std::to_string(surface.positions.size()) + " vertices)");
+                                            std::to_string(positions.size()) + " vertices)");
           break;
         }
         corners.push_back(static_cast<std::uint32_t>(id - 1));
       }
-      if (ok) add_polygon(surface, corners, polygons_split);
+      if (ok) state.add_face(corners);
     }
   }
-  if (ok && surface.triangles.empty()) sink.fail(lines.line_number(), "no faces in the file");
-  polygon_notice(polygons_split, notices);
-  if (skipped_lines > 0) notices.push_back("ignored " + std::to_string(skipped_lines) + " non-geometry lines");
-  return make_surface_result(sink, std::move(surface), std::move(notices));
+  if (ok && state.surface.triangles.empty()) sink.fail(lines.line_number(), "no faces in the file");
+  if (skipped_lines > 0) state.ignored.add("non-geometry lines", skipped_lines);
+  std::vector<std::string> notices;
+  state.emit_notices(notices);
+  return state.result(std::move(notices));
 }
 
 }  // namespace tetcut

@@ -2,20 +2,18 @@
 // "x y z [colour...]", face lines "n i0 .. i(n-1) [colour...]" with 0-based ids. '#' comments.
 #include <string>
 
+#include "surface_reader.hpp"
 #include "tetcut/io.hpp"
-#include "text_reader.hpp"
 
 namespace tetcut {
 
 using namespace io_detail;
 
 SurfaceReadResult read_off(std::string_view text, std::string_view name) {
-  ErrorSink sink(name);
-  SurfaceMesh surface;
-  std::vector<std::string> notices;
+  SurfaceReaderState state(name);
+  ErrorSink& sink = state.sink;
   LineReader lines(text);
   std::vector<std::string_view> tokens;
-  std::uint64_t polygons_split = 0;
   [&] {
     if (!next_tokens(lines, tokens, '#')) return sink.fail(lines.line_number(), "empty file");
     const std::string_view magic = tokens[0];
@@ -44,7 +42,7 @@ SurfaceReadResult read_off(std::string_view text, std::string_view name) {
         !parse_count(sink, at, counts[1], lines.remaining_bytes(), nf)) {
       return false;
     }
-    surface.positions.reserve(nv);
+    state.surface.positions.reserve(nv);
     for (std::uint64_t i = 0; i < nv; ++i) {
       if (!next_tokens(lines, tokens, '#')) {
         return sink.fail(lines.line_number(), "unexpected end of file: expected " + std::to_string(nv) +
@@ -52,12 +50,7 @@ SurfaceReadResult read_off(std::string_view text, std::string_view name) {
       }
       const std::uint64_t line = lines.line_number();
       if (tokens.size() < 3) return sink.fail(line, "expected 3 coordinates, got " + std::to_string(tokens.size()));
-      Vec3 p;
-      if (!parse_coordinate(sink, line, tokens[0], p.x) || !parse_coordinate(sink, line, tokens[1], p.y) ||
-          !parse_coordinate(sink, line, tokens[2], p.z)) {
-        return false;
-      }
-      surface.positions.push_back(p);
+      if (!state.add_point(line, tokens.data())) return false;
     }
     std::vector<std::uint32_t> corners;
     for (std::uint64_t f = 0; f < nf; ++f) {
@@ -82,12 +75,13 @@ SurfaceReadResult read_off(std::string_view text, std::string_view name) {
         }
         corners.push_back(static_cast<std::uint32_t>(id));
       }
-      add_polygon(surface, corners, polygons_split);
+      state.add_face(corners);
     }
     return true;
   }();
-  polygon_notice(polygons_split, notices);
-  return make_surface_result(sink, std::move(surface), std::move(notices));
+  std::vector<std::string> notices;
+  state.emit_notices(notices);
+  return state.result(std::move(notices));
 }
 
 }  // namespace tetcut

@@ -8,8 +8,8 @@
 #include <map>
 #include <string>
 
+#include "surface_reader.hpp"
 #include "tetcut/io.hpp"
-#include "text_reader.hpp"
 
 namespace tetcut {
 
@@ -107,9 +107,9 @@ bool read_ascii(std::string_view text, ErrorSink& sink, SurfaceMesh& surface) {
 }  // namespace
 
 SurfaceReadResult read_stl(std::string_view bytes, std::string_view name) {
-  ErrorSink sink(name);
-  SurfaceMesh surface;
-  std::vector<std::string> notices;
+  SurfaceReaderState state(name);
+  ErrorSink& sink = state.sink;
+  SurfaceMesh& surface = state.surface;
   if (trim(bytes).empty()) {
     sink.fail(bytes.empty() ? 0 : 1, "empty file");
   } else {
@@ -135,7 +135,7 @@ SurfaceReadResult read_stl(std::string_view bytes, std::string_view name) {
     }
     if (!sink.failed() && surface.triangles.empty()) sink.fail(0, "no triangles in the file");
   }
-  return make_surface_result(sink, std::move(surface), std::move(notices));
+  return state.result({});
 }
 
 }  // namespace tetcut

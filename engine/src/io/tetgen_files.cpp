@@ -25,6 +25,22 @@ bool read_header(LineReader& lines, ErrorSink& sink, std::vector<std::string_vie
   return true;
 }
 
+// Record `i` of the `count` records (`noun`) the header declared, split into `tokens`.
+bool next_record(LineReader& lines, ErrorSink& sink, std::vector<std::string_view>& tokens, std::uint64_t i,
+                 std::uint64_t count, std::string_view noun) {
+  if (next_tokens(lines, tokens, '#')) return true;
+  return sink.fail(lines.line_number(), "unexpected end of file: expected " + std::to_string(count) + " " +
+                                            std::string(noun) + ", got " + std::to_string(i));
+}
+
+// Only comments may follow the declared records.
+bool expect_no_more_records(LineReader& lines, ErrorSink& sink, std::vector<std::string_view>& tokens,
+                            std::uint64_t count, std::string_view noun) {
+  if (!next_tokens(lines, tokens, '#')) return true;
+  return sink.fail(lines.line_number(),
+                   "unexpected data after the " + std::to_string(count) + " declared " + std::string(noun));
+}
+
 bool small_count(ErrorSink& sink, std::uint64_t line, std::string_view token, std::uint64_t max,
                  std::string_view what, std::uint64_t& value) {
   if (!parse_u64(token, value) || value > max) {
@@ -50,10 +66,7 @@ bool read_node_file(std::string_view text, ErrorSink& sink, NodeIdMap& ids, RawM
   const std::size_t expected = 4 + attributes + markers;
   mesh.positions.reserve(count);
   for (std::uint64_t i = 0; i < count; ++i) {
-    if (!next_tokens(lines, tokens, '#')) {
-      return sink.fail(lines.line_number(), "unexpected end of file: expected " + std::to_string(count) +
-                                                " points, got " + std::to_string(i));
-    }
+    if (!next_record(lines, sink, tokens, i, count, "points")) return false;
     const std::uint64_t line = lines.line_number();
     if (tokens.size() != expected) {
       return sink.fail(line, "expected " + std::to_string(expected) + " values for a point (id, x, y, z, " +
@@ -62,19 +75,13 @@ bool read_node_file(std::string_view text, ErrorSink& sink, NodeIdMap& ids, RawM
     }
     std::int64_t id = 0;
     Vec3 p;
-    if (!parse_id(sink, line, tokens[0], id) || !parse_coordinate(sink, line, tokens[1], p.x) ||
-        !parse_coordinate(sink, line, tokens[2], p.y) || !parse_coordinate(sink, line, tokens[3], p.z)) {
-      return false;
-    }
+    if (!parse_id(sink, line, tokens[0], id) || !parse_point(sink, line, tokens.data() + 1, p)) return false;
     if (!ids.insert(id, static_cast<std::uint32_t>(mesh.positions.size()))) {
       return sink.fail(line, "duplicate point id " + std::to_string(id));
     }
     mesh.positions.push_back(p);
   }
-  if (next_tokens(lines, tokens, '#')) {
-    return sink.fail(lines.line_number(), "unexpected data after the " + std::to_string(count) + " declared points");
-  }
-  return true;
+  return expect_no_more_records(lines, sink, tokens, count, "points");
 }
 
 bool read_ele_file(std::string_view text, ErrorSink& sink, const NodeIdMap& ids, RawMesh& mesh,
@@ -95,10 +102,7 @@ bool read_ele_file(std::string_view text, ErrorSink& sink, const NodeIdMap& ids,
   const std::size_t expected = 1 + per_tet + attributes;
   mesh.tets.reserve(count);
   for (std::uint64_t i = 0; i < count; ++i) {
-    if (!next_tokens(lines, tokens, '#')) {
-      return sink.fail(lines.line_number(), "unexpected end of file: expected " + std::to_string(count) +
-                                                " tetrahedra, got " + std::to_string(i));
-    }
+    if (!next_record(lines, sink, tokens, i, count, "tetrahedra")) return false;
     const std::uint64_t line = lines.line_number();
     if (tokens.size() != expected) {
       return sink.fail(line, "expected " + std::to_string(per_tet) + " node ids for a tetrahedron (after its id, with " +
@@ -118,9 +122,7 @@ bool read_ele_file(std::string_view text, ErrorSink& sink, const NodeIdMap& ids,
     }
     mesh.tets.push_back(tet);
   }
-  if (next_tokens(lines, tokens, '#')) {
-    return sink.fail(lines.line_number(), "unexpected data after the " + std::to_string(count) + " declared tetrahedra");
-  }
+  if (!expect_no_more_records(lines, sink, tokens, count, "tetrahedra")) return false;
   if (per_tet == 10 && count > 0) {
     notices.push_back("read " + std::to_string(count) + " 10-node tetrahedra as their 4 corner nodes");
   }
@@ -147,13 +149,7 @@ std::string format_tetgen_node(const RawMesh& mesh) {
   // 1-based, as TetGen writes by default.
   append_uint(out, mesh.positions.size());
   out += " 3 0 0\n";
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-    const Vec3& p = mesh.positions[i];
-    append_uint(out, i + 1);
-    out += ' ';
-    append_point(out, p);
-    out += '\n';
-  }
+  append_numbered_points(out, mesh.positions);
   out += "# written by tetcut\n";
   return out;
 }
@@ -163,14 +159,7 @@ std::string format_tetgen_ele(const RawMesh& mesh) {
   out.reserve(64 + mesh.tets.size() * 48);
   append_uint(out, mesh.tets.size());
   out += " 4 0\n";
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    append_uint(out, t + 1);
-    for (std::uint32_t v : mesh.tets[t]) {
-      out += ' ';
-      append_uint(out, static_cast<std::uint64_t>(v) + 1);
-    }
-    out += '\n';
-  }
+  append_numbered_tets(out, mesh.tets);
   out += "# written by tetcut\n";
   return out;
 }

@@ -170,6 +170,11 @@ bool parse_coordinate(ErrorSink& sink, std::uint64_t line, std::string_view toke
   return true;
 }
 
+bool parse_point(ErrorSink& sink, std::uint64_t line, const std::string_view* xyz, Vec3& p) {
+  return parse_coordinate(sink, line, xyz[0], p.x) && parse_coordinate(sink, line, xyz[1], p.y) &&
+         parse_coordinate(sink, line, xyz[2], p.z);
+}
+
 bool parse_id(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& value) {
   if (!parse_i64(token, value)) {
     return sink.fail(line, "expected an integer id, got " + quote(token));
@@ -307,6 +312,37 @@ void append_uint(std::string& out, std::uint64_t value) {
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, value);
   out.append(buf, r.ptr);
+}
+
+void append_point_lines(std::string& out, const std::vector<Vec3>& positions, std::string_view prefix,
+                        std::string_view suffix) {
+  for (const Vec3& p : positions) {
+    out += prefix;
+    append_point(out, p);
+    out += suffix;
+  }
+}
+
+void append_numbered_points(std::string& out, const std::vector<Vec3>& positions) {
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    append_uint(out, i + 1);
+    out += ' ';
+    append_point(out, positions[i]);
+    out += '\n';
+  }
+}
+
+void append_numbered_tets(std::string& out, const std::vector<std::array<std::uint32_t, 4>>& tets,
+                          std::string_view fields) {
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    append_uint(out, t + 1);
+    out += fields;
+    for (std::uint32_t v : tets[t]) {
+      out += ' ';
+      append_uint(out, std::uint64_t{v} + 1);
+    }
+    out += '\n';
+  }
 }
 
 }  // namespace tetcut::io_detail

@@ -3,6 +3,7 @@
 // formats whose ids are arbitrary, and a first-error sink. Internal to the engine (not installed).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -128,6 +129,8 @@ bool parse_count(ErrorSink& sink, std::uint64_t line, std::string_view token,
                  std::size_t remaining_bytes, std::uint64_t& count);
 // Parses a finite coordinate.
 bool parse_coordinate(ErrorSink& sink, std::uint64_t line, std::string_view token, double& value);
+// Parses the three coordinates xyz[0..2] of a point.
+bool parse_point(ErrorSink& sink, std::uint64_t line, const std::string_view* xyz, Vec3& p);
 // Parses an integer id, any sign allowed by the caller's range check.
 bool parse_id(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& value);
 
@@ -189,5 +192,14 @@ void append_double(std::string& out, double value);
 // "x y z", each coordinate as append_double writes it.
 void append_point(std::string& out, const Vec3& p);
 void append_uint(std::string& out, std::uint64_t value);
+// One "x y z" line a position, each between `prefix` and `suffix` (an indent, a reference).
+void append_point_lines(std::string& out, const std::vector<Vec3>& positions, std::string_view prefix = {},
+                        std::string_view suffix = "\n");
+// One "n x y z" line a position, numbered from 1 (Gmsh 2.2 $Nodes, TetGen .node).
+void append_numbered_points(std::string& out, const std::vector<Vec3>& positions);
+// One "n<fields> a b c d" line a tet, numbered from 1, with 1-based vertex ids (Gmsh elements,
+// TetGen .ele); `fields`: what the format puts between number and ids (Gmsh 2.2: type, tags).
+void append_numbered_tets(std::string& out, const std::vector<std::array<std::uint32_t, 4>>& tets,
+                          std::string_view fields = {});
 
 }  // namespace tetcut::io_detail

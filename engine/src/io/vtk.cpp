@@ -105,10 +105,7 @@ std::string format_vtk(const RawMesh& mesh) {
   std::string out;
   out.reserve(128 + mesh.positions.size() * 60 + mesh.tets.size() * 40);
   append_header(out, mesh, false);
-  for (const Vec3& p : mesh.positions) {
-    append_point(out, p);
-    out += '\n';
-  }
+  append_point_lines(out, mesh.positions);
   append_cells_line(out, mesh);
   for (const auto& tet : mesh.tets) {
     out += '4';

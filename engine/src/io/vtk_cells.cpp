@@ -136,11 +136,4 @@ bool vtk_faces_to_triangles(ErrorSink& sink, const VtkCells& cells, std::uint64_
   return true;
 }
 
-void surface_notices(std::uint64_t polygons_split, std::uint64_t strips_split, const IgnoredTally& ignored,
-                     std::vector<std::string>& notices) {
-  polygon_notice(polygons_split, notices);
-  if (strips_split > 0) notices.push_back("split " + std::to_string(strips_split) + " triangle strips into triangles");
-  ignored.emit(notices);
-}
-
 }  // namespace tetcut::io_detail

@@ -47,8 +47,4 @@ bool vtk_faces_to_triangles(ErrorSink& sink, const VtkCells& cells, std::uint64_
                             std::uint64_t line, bool strips, SurfaceMesh& surface,
                             std::uint64_t& polygons_split, std::uint64_t& strips_split);
 
-// The notices of a VTK surface: polygons and strips split, cells ignored.
-void surface_notices(std::uint64_t polygons_split, std::uint64_t strips_split, const IgnoredTally& ignored,
-                     std::vector<std::string>& notices);
-
 }  // namespace tetcut::io_detail

@@ -3,8 +3,8 @@
 // are ignored with a notice; FIELD and METADATA are skipped; POINT_DATA / CELL_DATA end it.
 #include <string>
 
+#include "surface_reader.hpp"
 #include "tetcut/io.hpp"
-#include "text_reader.hpp"
 #include "vtk_cells.hpp"
 #include "vtk_legacy.hpp"
 
@@ -16,12 +16,12 @@ using namespace io_detail;
 
 class VtkPolydataReader {
  public:
-  VtkPolydataReader(std::string_view text, std::string_view name) : sink_(name), stream_(text, sink_) {}
+  VtkPolydataReader(std::string_view text, std::string_view name) : state_(name), stream_(text, sink_) {}
 
   SurfaceReadResult read() {
     std::vector<std::string> notices;
     if (stream_.read_header("POLYDATA")) read_body(notices);
-    return make_surface_result(sink_, std::move(surface_), std::move(notices));
+    return state_.result(std::move(notices));
   }
 
  private:
@@ -34,11 +34,11 @@ class VtkPolydataReader {
     VtkCells cells;
     if (!stream_.read_cell_list(keyword, cells)) return false;
     if (kind == Kind::kIgnored) {
-      ignored_.add(std::string(keyword) + " cells", cells.offsets.size() - 1);
+      state_.ignored.add(std::string(keyword) + " cells", cells.offsets.size() - 1);
       return true;
     }
     return vtk_faces_to_triangles(sink_, cells, surface_.positions.size(), line, kind == Kind::kStrips, surface_,
-                                  polygons_split_, strips_);
+                                  state_.polygons_split, state_.strips_split);
   }
 
   void read_body(std::vector<std::string>& notices) {
@@ -70,16 +70,14 @@ class VtkPolydataReader {
       sink_.fail(stream_.line(), "no POLYGONS or TRIANGLE_STRIPS: the file holds no surface");
       return;
     }
-    surface_notices(polygons_split_, strips_, ignored_, notices);
+    state_.emit_notices(notices);
   }
 
-  ErrorSink sink_;
+  SurfaceReaderState state_;
+  ErrorSink& sink_ = state_.sink;
+  SurfaceMesh& surface_ = state_.surface;
   VtkLegacyStream stream_;
-  SurfaceMesh surface_;
-  IgnoredTally ignored_;
   bool have_points_ = false;
-  std::uint64_t polygons_split_ = 0;
-  std::uint64_t strips_ = 0;
 };
 
 }  // namespace

@@ -3,8 +3,8 @@
 // (vtk_xml_arrays.hpp); Verts and Lines are ignored with a notice.
 #include <string>
 
+#include "surface_reader.hpp"
 #include "tetcut/io.hpp"
-#include "text_reader.hpp"
 #include "vtk_cells.hpp"
 #include "vtk_xml.hpp"
 #include "vtk_xml_arrays.hpp"
@@ -17,7 +17,7 @@ using namespace io_detail;
 
 class VtpReader {
  public:
-  VtpReader(std::string_view text, std::string_view name) : text_(text), sink_(name), arrays_(text, file_, sink_) {}
+  VtpReader(std::string_view text, std::string_view name) : text_(text), state_(name), arrays_(text, file_, sink_) {}
 
   SurfaceReadResult read() {
     std::vector<std::string> notices;
@@ -29,8 +29,8 @@ class VtpReader {
     if (!sink_.failed() && surface_.triangles.empty()) {
       sink_.fail(file_.pieces.empty() ? 1 : file_.pieces.front().line, "no Polys or Strips: the file holds no surface");
     }
-    if (!sink_.failed()) surface_notices(polygons_split_, strips_, ignored_, notices);
-    return make_surface_result(sink_, std::move(surface_), std::move(notices));
+    if (!sink_.failed()) state_.emit_notices(notices);
+    return state_.result(std::move(notices));
   }
 
  private:
@@ -64,8 +64,8 @@ class VtpReader {
         !count(piece, "NumberOfLines", lines)) {
       return false;
     }
-    if (verts > 0) ignored_.add("Verts cells", verts);
-    if (lines > 0) ignored_.add("Lines cells", lines);
+    if (verts > 0) state_.ignored.add("Verts cells", verts);
+    if (lines > 0) state_.ignored.add("Lines cells", lines);
     if (points == 0) return true;
     const VtkDataArray* coordinates = piece.find("Points", "");
     if (coordinates == nullptr) return sink_.fail(piece.line, "Piece has no Points DataArray");
@@ -80,7 +80,8 @@ class VtpReader {
       if ((is_strips ? strips : polys) == 0) continue;
       VtkCells cells;
       if (!read_cells(piece, is_strips ? "Strips" : "Polys", is_strips ? strips : polys, cells) ||
-          !vtk_faces_to_triangles(sink_, cells, points, piece.line, is_strips, piece_surface, polygons_split_, strips_)) {
+          !vtk_faces_to_triangles(sink_, cells, points, piece.line, is_strips, piece_surface, state_.polygons_split,
+                                  state_.strips_split)) {
         return false;
       }
     }
@@ -95,13 +96,11 @@ class VtpReader {
   }
 
   std::string_view text_;
-  ErrorSink sink_;
+  SurfaceReaderState state_;
+  ErrorSink& sink_ = state_.sink;
+  SurfaceMesh& surface_ = state_.surface;
   VtkXmlFile file_;
   VtkArrayDecoder arrays_;
-  SurfaceMesh surface_;
-  IgnoredTally ignored_;
-  std::uint64_t polygons_split_ = 0;
-  std::uint64_t strips_ = 0;
 };
 
 }  // namespace

@@ -140,11 +140,7 @@ std::string format_vtu(const RawMesh& mesh) {
   out.reserve(512 + mesh.positions.size() * 60 + mesh.tets.size() * 48);
   open_piece(out, mesh, "");
   out += "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const Vec3& p : mesh.positions) {
-    out += "          ";
-    append_point(out, p);
-    out += '\n';
-  }
+  append_point_lines(out, mesh.positions, "          ");
   out += "        </DataArray>\n      </Points>\n      <Cells>\n"
          "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (const auto& tet : mesh.tets) {
