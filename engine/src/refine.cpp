@@ -8,16 +8,12 @@
 
 #include "detail/local_tables.hpp"
 #include "detail/reserve_touched.hpp"
+#include "detail/spatial_index.hpp"
 
 namespace tetcut {
 namespace {
 
 double length(const TetMesh& mesh, VertId a, VertId b) { return norm(mesh.position(b) - mesh.position(a)); }
-
-bool meets(const TetMesh& mesh, TetId t, const Ball& ball) {
-  const auto v = mesh.tet(t);
-  return intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
 
 }  // namespace
 
@@ -173,7 +169,7 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
     report.min_radius_ratio = std::min(report.min_radius_ratio, split.min_radius_ratio);
     region.insert(region.end(), created_.begin(), created_.end());
     if (params.focus)
-      created_.erase(std::remove_if(created_.begin(), created_.end(), [&](TetId t) { return !meets(mesh, t, *params.focus); }),
+      created_.erase(std::remove_if(created_.begin(), created_.end(), [&](TetId t) { return !tet_meets_ball(mesh, t, *params.focus); }),
                      created_.end());
     current_.swap(created_);
   }

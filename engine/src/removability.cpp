@@ -24,26 +24,22 @@ Removability removability(const TetMesh& mesh, TetId t) {
 
   Removability r;
   r.paper_case = static_cast<std::uint8_t>(n >= 3 ? 4 : n + 1);
+  // Whether removing t would leave v a singular vertex: v is on the boundary but none of t's
+  // boundary faces holds it (cases 1 and 2 of paper 3.3).
+  auto singular_at = [&](VertId v) {
+    if (!mesh.is_boundary_vertex(v)) return false;
+    r.kind = SingularityKind::kVertex;
+    r.vertex = v;
+    return true;
+  };
   switch (n) {
     case 0:
-      for (int i = 0; i < 4; ++i) {
-        const VertId v = mesh.vertex(t, i);
-        if (mesh.is_boundary_vertex(v)) {
-          r.kind = SingularityKind::kVertex;
-          r.vertex = v;
-          return r;
-        }
-      }
+      for (int i = 0; i < 4; ++i)
+        if (singular_at(mesh.vertex(t, i))) return r;
       break;
-    case 1: {
-      const VertId v = mesh.vertex(t, faces[0]);  // face i is opposite vertex i
-      if (mesh.is_boundary_vertex(v)) {
-        r.kind = SingularityKind::kVertex;
-        r.vertex = v;
-        return r;
-      }
+    case 1:
+      if (singular_at(mesh.vertex(t, faces[0]))) return r;  // face i is opposite vertex i
       break;
-    }
     case 2: {
       // Faces f1 and f2 omit vertices f1 and f2 respectively: the edge joining those two is
       // contained in neither face.

@@ -69,6 +69,19 @@ void SetRemovalWorkspace::collect_shell(const TetMesh& mesh, VertId v, TetId see
   }
 }
 
+template <class Visit>
+void SetRemovalWorkspace::visit_fresh_shell_neighbours(const TetMesh& mesh, VertId v, TetId cur, std::uint32_t g,
+                                                       Visit&& visit) {
+  const int lv = mesh.local_index(cur, v);
+  for (int f = 0; f < 4; ++f) {
+    if (f == lv) continue;
+    const FaceRef n = mesh.neighbour(cur, f);
+    if (!n.valid() || marked(n.tet) || visit_stamp_[n.tet.value] == g) continue;
+    visit_stamp_[n.tet.value] = g;
+    visit(n.tet);
+  }
+}
+
 // The link of v is a disk (v on the surface) or a sphere; the set's tets at v are triangles of
 // it. Once every edge of the set has passed edge_ok(), the kept and the removed triangles each
 // form one fan around every link vertex, so the interface between what stays and what goes
@@ -212,17 +225,8 @@ void SetRemovalWorkspace::remaining_components(const TetMesh& mesh, VertId v, Te
     const std::size_t begin = tets.size();
     tets.push_back(start);
     visit_stamp_[start.value] = g;
-    for (std::size_t i = begin; i < tets.size(); ++i) {
-      const TetId cur = tets[i];
-      const int lv = mesh.local_index(cur, v);
-      for (int f = 0; f < 4; ++f) {
-        if (f == lv) continue;
-        const FaceRef n = mesh.neighbour(cur, f);
-        if (!n.valid() || marked(n.tet) || visit_stamp_[n.tet.value] == g) continue;
-        visit_stamp_[n.tet.value] = g;
-        tets.push_back(n.tet);
-      }
-    }
+    for (std::size_t i = begin; i < tets.size(); ++i)
+      visit_fresh_shell_neighbours(mesh, v, tets[i], g, [&](TetId n) { tets.push_back(n); });
     sizes.push_back(static_cast<std::uint32_t>(tets.size() - begin));
   }
 }
@@ -258,16 +262,11 @@ bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId se
       return true;
     }
     if (d >= max_depth) continue;
-    const int lv = mesh.local_index(cur, v);
-    for (int f = 0; f < 4; ++f) {
-      if (f == lv) continue;
-      const FaceRef n = mesh.neighbour(cur, f);
-      if (!n.valid() || marked(n.tet) || visit_stamp_[n.tet.value] == g) continue;
-      visit_stamp_[n.tet.value] = g;
-      parent_[n.tet.value] = cur.value;
-      queue_.push_back(n.tet);
+    visit_fresh_shell_neighbours(mesh, v, cur, g, [&](TetId n) {
+      parent_[n.value] = cur.value;
+      queue_.push_back(n);
       depth_.push_back(static_cast<std::uint8_t>(d + 1));
-    }
+    });
   }
   return false;
 }

@@ -237,12 +237,20 @@ void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ba
       const TetId t{entry.tet};
       if (!mesh.is_live(t)) continue;
       const double inner = ball.radius + entry.inner;
-      const auto v = mesh.tet(t);
-      if (d2 <= inner * inner ||
-          intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
-        out.push_back(t);
+      if (d2 <= inner * inner || tet_meets_ball(mesh, t, ball)) out.push_back(t);
     }
   }
+}
+
+bool tet_meets_ball(const TetMesh& mesh, TetId t, const Ball& ball) {
+  const auto v = mesh.tet(t);
+  return intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+}
+
+void scan_tets_meeting(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out) {
+  out.clear();
+  for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i)
+    if (mesh.is_live(TetId{i}) && tet_meets_ball(mesh, TetId{i}, ball)) out.push_back(TetId{i});
 }
 
 }  // namespace tetcut

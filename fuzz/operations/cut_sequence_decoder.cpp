@@ -9,12 +9,18 @@
 namespace tetcut::fuzz::cut_sequence {
 namespace {
 
+// max_operation_size: the most steps of a sweep.
+constexpr VersionedLimits kLimits{{24, 16, 8}, {8, 8, 4}};
+// A sweep is cut into 1..kSweepPieces pieces (then steps are doubled until there are at most
+// max_operation_size).
+constexpr std::uint32_t kSweepPieces = 8;
+
 enum class Op : std::uint8_t { kParam, kCutPoint, kCutSurface, kSweep, kLast = kSweep };
 
 struct Context {
   std::uint8_t version;
   const BundledMesh& bundled;
-  const Limits& limits;
+  const SequenceLimits& limits;
   CutParams params;
   double quantum;  // of coordinates
 };
@@ -115,7 +121,7 @@ void sweep(SequenceSession& session, const Context& ctx, FuzzedDataProvider& inp
   const double actual = norm(b - a);
   double step = round_to(actual / pieces, ctx.quantum);
   if (!(step > 0)) step = ctx.quantum;
-  while (actual > 0 && std::floor(actual / step) > static_cast<double>(ctx.limits.max_sweep_steps)) step *= 2;
+  while (actual > 0 && std::floor(actual / step) > static_cast<double>(ctx.limits.max_operation_size)) step *= 2;
   const std::string text = "sweep " + format_point(a) + " " + format_point(b) + " " + format_number(step);
   ScenarioRecorder& recorder = session.recorder();
   const std::uint32_t line = recorder.add(text);
@@ -146,12 +152,12 @@ void sweep(SequenceSession& session, const Context& ctx, FuzzedDataProvider& inp
 }
 
 void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& recorder) {
-  const Limits& limits = version == kSequenceVersionBundled ? kLimitsV1 : kLimitsV2;
+  const SequenceLimits& limits = kLimits.of(version);
   const SequenceStart start = start_sequence("cut_sequence", version, input, recorder);
   SequenceSession& session = start.session;
   Context ctx{version, start.bundled, limits, session.cutter().params(),
               coordinate_quantum(start.bundled.box.diagonal(), 3)};
-  run_operations(start, input, limits.sequence, [&] {
+  run_operations(start, input, limits, [&] {
     const Op op = static_cast<Op>(input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(Op::kLast)));
     switch (op) {
       case Op::kParam: param(session, ctx, input); break;

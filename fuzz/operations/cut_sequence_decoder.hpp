@@ -3,7 +3,7 @@
 //
 // Input: version byte (1, 2 or 3, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
 // 1: the bundled cylinder, sheet, liver-coarse; versions 2 and 3: their small fuzz versions), then up to
-// Limits::sequence.max_operations operations, each an opcode and its arguments:
+// max_operations operations, each an opcode and its arguments:
 //   param       one of diameter (0.5..2 mean edge lengths), dref_factor (1..3), p (1.1..3),
 //               depth (1..16), iterations (1..8), strategy, split; rounded so scenarios read well.
 //               Version 3, log-uniform: diameter 0.01..10^4 mean edges, dref_factor
@@ -11,11 +11,12 @@
 //   cut point   a point of the bounding box grown by 10 %
 //   cut surface a boundary tet's centroid moved by up to a tool radius on each axis
 //   sweep       from such a point along a direction, 0.5..4 diameters long, 1..8 steps (at
-//               most Limits::max_sweep_steps + 1 cuts)
+//               most max_operation_size + 1 cuts)
 // Every cut goes through Cutter::cut, followed by the local check; under combined every tet it
 // selects is resolved; a rolled back cut leaves the canonical hash as it was (and is written
 // into the scenario as a comment, since the mesh is as if it had not happened). The full check
-// every Limits::sequence.full_check_every operations and at the end.
+// every full_check_every operations and at the end.
+// The limits per input version (SequenceLimits) are kLimits in cut_sequence_decoder.cpp.
 #pragma once
 
 #include <cstddef>
@@ -25,18 +26,6 @@
 #include "operations/sequence_target.hpp"
 
 namespace tetcut::fuzz::cut_sequence {
-
-struct Limits {
-  SequenceLimits sequence;
-  std::uint64_t max_sweep_steps;
-};
-// Version 1 as it was found; version 2 bounds an input's cost (executions per second are what
-// find bugs). The mesh may grow to kMaxTetsFactor times its tets (sequence_target.hpp).
-inline constexpr Limits kLimitsV1{{24, 16}, 8};
-inline constexpr Limits kLimitsV2{{8, 8}, 4};
-// A sweep is cut into 1..kSweepPieces pieces (then steps are doubled until there are at most
-// Limits::max_sweep_steps).
-inline constexpr std::uint32_t kSweepPieces = 8;
 
 // Runs the input; with options.record_scenario, SequenceResult::scenario is the input as a
 // scenario (up to and including the operation that fails, if one does).

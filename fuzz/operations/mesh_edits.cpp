@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 
+#include "support/fuzz_failure.hpp"
 #include "tetcut/box_mesh.hpp"
+#include "tetcut/mesh_builder.hpp"
 #include "detail/local_tables.hpp"
 
 namespace tetcut::fuzz {
@@ -20,6 +23,12 @@ RawMesh consume_box_mesh(FuzzedDataProvider& input, std::uint32_t max_cells) {
   const std::uint32_t nz = input.ConsumeIntegralInRange<std::uint32_t>(1, max_cells);
   const Vec3 size{consume_in(input, 0.25, 4.0), consume_in(input, 0.25, 4.0), consume_in(input, 0.25, 4.0)};
   return make_box_mesh(nx, ny, nz, Vec3{0, 0, 0}, size);
+}
+
+TetMesh consume_built_box_mesh(FuzzedDataProvider& input, std::uint32_t max_cells) {
+  BuildResult built = build_mesh(consume_box_mesh(input, max_cells));
+  if (!built.ok()) fail("build", 0, "build box", "make_box_mesh gave a mesh build_mesh refuses");
+  return std::move(*built.mesh);
 }
 
 TetId consume_live_tet(const TetMesh& mesh, FuzzedDataProvider& input) {
@@ -73,16 +82,6 @@ Ball consume_ball(FuzzedDataProvider& input, const Box& box, double min_fraction
   return ball;
 }
 
-void tets_meeting(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out) {
-  out.clear();
-  for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
-    const TetId t{i};
-    if (!mesh.is_live(t)) continue;
-    const auto v = mesh.tet(t);
-    if (intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
-      out.push_back(t);
-  }
-}
 
 bool removable_by_paper_rule(const TetMesh& mesh, TetId t) {
   int boundary_faces[4];

@@ -12,6 +12,8 @@
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include "detail/edge_split.hpp"
+#include "detail/refine.hpp"
+#include "tetcut/change_log.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/raw_mesh.hpp"
@@ -29,6 +31,17 @@ inline constexpr std::uint8_t kInputVersion = 1;
 // True iff the input starts with kInputVersion; the provider then gets the bytes after it.
 inline bool has_version(const std::uint8_t* data, std::size_t size) { return size > 0 && data[0] == kInputVersion; }
 
+// What an operation target keeps between its edits so that they do not allocate afresh: the
+// engine's workspaces, the log of the last edit, and scratch lists (mixed_ops,
+// checker_differential).
+struct EditWorkspace {
+  EdgeSplitter splitter;
+  Refiner refiner;
+  ChangeLog log;
+  std::vector<Edge> edges;
+  std::vector<TetId> tets, region;
+};
+
 // A value in [0, 1] from 16 bits: coarse enough for libFuzzer to steer, fine enough to land
 // anywhere that matters.
 double consume_unit(FuzzedDataProvider& input);
@@ -38,6 +51,8 @@ double consume_in(FuzzedDataProvider& input, double lo, double hi);
 // A small box mesh, 1..max_cells cells per axis, each side 0.25..4 long: the starting point of
 // the operation targets.
 RawMesh consume_box_mesh(FuzzedDataProvider& input, std::uint32_t max_cells);
+// That box, built; a box the builder refuses is a finding (fuzz::fail), not a rejected input.
+TetMesh consume_built_box_mesh(FuzzedDataProvider& input, std::uint32_t max_cells);
 
 // A live tet: the first live one at or after a chosen id, wrapping around. kNoTet when none.
 TetId consume_live_tet(const TetMesh& mesh, FuzzedDataProvider& input);
@@ -71,8 +86,6 @@ Box bounding_box(const TetMesh& mesh);
 // min_fraction and max_fraction of the box diagonal.
 Ball consume_ball(FuzzedDataProvider& input, const Box& box, double min_fraction, double max_fraction);
 
-// The live tets that meet the ball (O(#T): the targets' meshes are small).
-void tets_meeting(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out);
 
 // Paper 3.3, written here from the paper independently of the engine's removability(), so that
 // the two can be compared: removing t keeps the mesh manifold iff it has 3 or 4 boundary faces,

@@ -3,17 +3,18 @@
 //
 // Input: version byte (1, 2 or 3, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
 // 1: the bundled cylinder, sheet, liver-coarse; versions 2 and 3 (read as 2): their small fuzz versions), then up to
-// Limits::sequence.max_operations operations, each an opcode and its arguments:
+// max_operations operations, each an opcode and its arguments:
 //   strategy S          basic | neighbours | combined (the initial strategy is combined)
 //   remove boundary     the first live tet with a boundary face at or after a chosen id
 //   remove any          the first live tet at or after a chosen id (interior ones included)
 //   remove point        the tet containing a point of the bounding box (often none: a no-op)
-//   remove set          a boundary tet and up to Limits::max_set_size - 1 face neighbours,
+//   remove set          a boundary tet and up to max_operation_size - 1 face neighbours,
 //                       requested one after the other
 // Tets are written into the scenario as their centroid; the request removes the tet containing
 // that point (Cutter::tet_containing, as `tetcut run` does). After every request: the local
-// check; under combined, the request resolved. The full check every Limits::sequence.full_check_every
+// check; under combined, the request resolved. The full check every full_check_every
 // operations and at the end.
+// The limits per input version (SequenceLimits) are kLimits in removal_sequence_decoder.cpp.
 #pragma once
 
 #include <cstddef>
@@ -23,16 +24,6 @@
 #include "operations/sequence_target.hpp"
 
 namespace tetcut::fuzz::removal_sequence {
-
-struct Limits {
-  SequenceLimits sequence;
-  std::uint32_t max_set_size;
-};
-// Version 1 as it was found; version 2 bounds an input's cost (executions per second are what
-// find bugs): most of an input's time is in the requests themselves once the mesh is small.
-// The mesh may grow to kMaxTetsFactor times its tets (sequence_target.hpp).
-inline constexpr Limits kLimitsV1{{24, 16}, 6};
-inline constexpr Limits kLimitsV2{{8, 8}, 4};
 
 // Runs the input; with options.record_scenario, SequenceResult::scenario is the input as a
 // scenario (up to and including the operation that fails, if one does).

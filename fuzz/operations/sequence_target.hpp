@@ -39,11 +39,23 @@ inline constexpr std::uint8_t kSequenceVersion = 3;
 inline bool is_sequence_version(std::uint8_t v) { return v >= kSequenceVersionBundled && v <= kSequenceVersion; }
 inline bool is_current_sequence_version(std::uint8_t v) { return v == kSequenceVersionSmall || v == kSequenceVersion; }
 
-// How much of an input a sequence target runs (each target's decoder has them per version): up to max_operations operations, with the full
-// check every full_check_every of them and at the end.
+// How much of an input a sequence target runs: up to max_operations operations, with the full
+// check every full_check_every of them and at the end, and the target's own bound on one
+// operation (removal_sequence: the tets of a set; cut_sequence: the cuts of a sweep).
 struct SequenceLimits {
   std::size_t max_operations;
   std::size_t full_check_every;
+  std::uint32_t max_operation_size;
+};
+// A target's limits per input version. Version 1 as it was found; version 2 bounds an input's
+// cost (executions per second are what find bugs). The mesh may also grow to kMaxTetsFactor
+// times its tets.
+struct VersionedLimits {
+  SequenceLimits bundled;  // kSequenceVersionBundled
+  SequenceLimits small;    // the later versions
+  [[nodiscard]] constexpr const SequenceLimits& of(std::uint8_t version) const {
+    return version == kSequenceVersionBundled ? bundled : small;
+  }
 };
 // The sequence also ends once the mesh has grown beyond this many times its initial tets:
 // repeated refinement around small tools multiplies the tets (a cut on 45 000 tets took 50 s in

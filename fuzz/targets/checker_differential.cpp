@@ -27,6 +27,7 @@
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mesh_builder.hpp"
 #include "detail/refine.hpp"
+#include "detail/spatial_index.hpp"
 
 namespace {
 
@@ -52,12 +53,9 @@ const char* edit_name(Edit edit) {
   return "?";
 }
 
-struct Workspace {
-  EdgeSplitter splitter;
-  Refiner refiner;
-  ChangeLog log;
-  std::vector<Edge> edges;
-  std::vector<TetId> removed, created, tets, region;
+// Also the net change of the last edit, for the local checker.
+struct Workspace : fuzz::EditWorkspace {
+  std::vector<TetId> removed, created;
   std::vector<std::uint8_t> live_before;
 };
 
@@ -98,9 +96,7 @@ bool has(const inv::CheckReport& report, inv::Invariant id) { return report.find
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (!fuzz::has_version(data, size)) return 0;
   FuzzedDataProvider input(data + 1, size - 1);
-  BuildResult built = build_mesh(fuzz::consume_box_mesh(input, kMaxBoxCells));
-  if (!built.ok()) fuzz::fail("build", 0, "build box", "make_box_mesh gave a mesh build_mesh refuses");
-  TetMesh mesh = std::move(*built.mesh);
+  TetMesh mesh = fuzz::consume_built_box_mesh(input, kMaxBoxCells);
   inv::LocalChecker local(mesh.raw_view());
   Workspace ws;
   // As in CheckedMesh: TETCUT_FUZZ_TRACE=1 prints each edit and the verdict, for triage.
@@ -141,7 +137,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         params.d_ref = 3.0 * ball.radius;
         params.max_iterations = input.ConsumeIntegralInRange<std::uint32_t>(1, 4);
         params.focus = ball;
-        fuzz::tets_meeting(mesh, ball, ws.tets);
+        scan_tets_meeting(mesh, ball, ws.tets);  // O(#T): the targets' meshes are small
         if (mesh.num_tets() <= kMaxTetsToRefine) ws.refiner.refine(mesh, ws.tets, params, ws.region, &ws.log);
         net_change(mesh, ws);
         break;

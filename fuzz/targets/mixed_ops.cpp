@@ -26,6 +26,7 @@
 #include "detail/random.hpp"
 #include "detail/refine.hpp"
 #include "detail/removability.hpp"
+#include "detail/spatial_index.hpp"
 
 namespace {
 
@@ -60,13 +61,7 @@ const char* op_name(Op op) {
   return "?";
 }
 
-struct Workspace {
-  EdgeSplitter splitter;
-  Refiner refiner;
-  ChangeLog log;
-  std::vector<Edge> edges;
-  std::vector<TetId> tets, region;
-};
+using Workspace = fuzz::EditWorkspace;
 
 bool close(double got, double want, double scale) { return std::fabs(got - want) <= 1e-12 * scale; }
 
@@ -135,7 +130,7 @@ void refine(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input) {
                      std::to_string(params.p) + " iterations " + std::to_string(params.max_iterations) +
                      (params.method == SplitMethod::kBisection ? " bisection" : " templates") +
                      (params.focus ? " focus" : ""));
-  fuzz::tets_meeting(mesh, ball, ws.tets);
+  scan_tets_meeting(mesh, ball, ws.tets);  // O(#T): the targets' meshes are small
   ws.log.clear();
   if (mesh.num_tets() <= kMaxTetsToRefine) ws.refiner.refine(mesh, ws.tets, params, ws.region, &ws.log);
   checked.end(ws.log, 0.0);
@@ -273,9 +268,7 @@ void full_check(CheckedMesh& checked) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (!fuzz::has_version(data, size)) return 0;
   FuzzedDataProvider input(data + 1, size - 1);
-  BuildResult built = build_mesh(fuzz::consume_box_mesh(input, kMaxBoxCells));
-  if (!built.ok()) fuzz::fail("build", 0, "build box", "make_box_mesh gave a mesh build_mesh refuses");
-  CheckedMesh checked(std::move(*built.mesh));
+  CheckedMesh checked(fuzz::consume_built_box_mesh(input, kMaxBoxCells));
   Workspace ws;
   for (std::size_t i = 0; i < kMaxOperations && input.remaining_bytes() > 0 && checked.mesh().num_tets() > 0; ++i) {
     const Op op = static_cast<Op>(input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(Op::kLast)));

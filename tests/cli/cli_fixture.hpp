@@ -66,6 +66,14 @@ class Cli : public ::testing::Test {
     return run_process(TETCUT_EXE, args, dir_.string());
   }
 
+  // `tetcut convert INPUT OUTPUT [options...]` with `output` = {file name in the test's
+  // directory, options...}: the convert tests' table rows.
+  ProcessResult convert(const std::string& input, const std::vector<std::string>& output) const {
+    std::vector<std::string> args = {"convert", input, path(output.at(0))};
+    args.insert(args.end(), output.begin() + 1, output.end());
+    return tetcut(args);
+  }
+
   // Runs tetcut with --json and parses its stdout.
   Json tetcut_json(const std::vector<std::string>& args, int expected_exit) const {
     const ProcessResult r = tetcut(args);

@@ -325,9 +325,7 @@ TEST_F(Cli, ConvertRoundTripsThroughEveryFormatKeepingTheHash) {
       {"a.vtu"}, {"a.vtk"}, {"a.mesh"}, {"a.node"}, {"a41.msh", "--format", "msh41"}};
   for (const auto& output : outputs) {
     SCOPED_TRACE(output[0]);
-    std::vector<std::string> args = {"convert", box, path(output[0])};
-    args.insert(args.end(), output.begin() + 1, output.end());
-    const ProcessResult r = tetcut(args);
+    const ProcessResult r = convert(box, output);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     // And back, so the reader of each format is exercised by the command line too.
     const std::string back = path("back_" + output[0] + ".msh");

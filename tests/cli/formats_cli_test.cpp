@@ -77,9 +77,7 @@ TEST_F(Cli, BinaryAndCompressedOutputsReadBackWithTheSameHash) {
       {"b.vtu", "--binary"},   {"z.vtu", "--compress", "zlib"},              {"x.vtu", "--compress", "lzma"}};
   for (const auto& output : outputs) {
     SCOPED_TRACE(output[0]);
-    std::vector<std::string> args = {"convert", box, path(output[0])};
-    args.insert(args.end(), output.begin() + 1, output.end());
-    const ProcessResult r = tetcut(args);
+    const ProcessResult r = convert(box, output);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find(hash), std::string::npos) << r.out;
     EXPECT_EQ(tetcut_json({"info", path(output[0]), "--json"}, 0).at("hash").get<std::string>(), hash);

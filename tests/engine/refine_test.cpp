@@ -8,6 +8,7 @@
 #include "tetcut/canonical_hash.hpp"
 #include "detail/local_tables.hpp"
 #include "detail/refine.hpp"
+#include "detail/spatial_index.hpp"
 
 namespace tetcut {
 namespace {
@@ -63,9 +64,7 @@ TEST(Refine, RefinesUntilEveryEdgeOfTheNewTetsIsShorterThanDref) {
     std::vector<TetId> in_tool;
     for (TetId t : region) {
       EXPECT_TRUE(mesh.is_live(t));
-      const auto v = mesh.tet(t);
-      if (intersects(*params.focus, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
-        in_tool.push_back(t);
+      if (tet_meets_ball(mesh, t, *params.focus)) in_tool.push_back(t);
     }
     EXPECT_FALSE(in_tool.empty());
     EXPECT_LE(longest_edge(mesh, in_tool), 0.1);

@@ -14,12 +14,7 @@ namespace {
 
 std::vector<TetId> brute_force(const TetMesh& mesh, const Ball& ball) {
   std::vector<TetId> out;
-  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
-    if (!mesh.is_live(TetId{t})) continue;
-    const auto v = mesh.tet(TetId{t});
-    if (intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
-      out.push_back(TetId{t});
-  }
+  scan_tets_meeting(mesh, ball, out);
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
 #include "detail/refine.hpp"
+#include "detail/spatial_index.hpp"
 #include "detail/tool_ball.hpp"
 
 namespace tetcut {
@@ -76,12 +77,7 @@ TEST(Corpus, TheLocallyRefinedLiverIsTheCoarseLiverRefinedByOurOwnLoop) {
   params.d_ref = 10;
   params.p = 3;
   std::vector<TetId> hit, region;
-  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
-    if (!mesh.is_live(TetId{t})) continue;
-    const auto v = mesh.tet(TetId{t});
-    if (intersects(*params.focus, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
-      hit.push_back(TetId{t});
-  }
+  scan_tets_meeting(mesh, *params.focus, hit);
   Refiner refiner;
   const RefineReport report = refiner.refine(mesh, hit, params, region);
   EXPECT_TRUE(report.converged);

@@ -17,6 +17,7 @@
 #include "tetcut/mesh_builder.hpp"
 #include "detail/random.hpp"
 #include "detail/refine.hpp"
+#include "detail/spatial_index.hpp"
 
 namespace tetcut::cli {
 namespace {
@@ -121,12 +122,7 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
     if (const auto invalid = validate(params)) return parser.usage_error(*invalid, err);
     // The tool query of a person's one-off command: a scan is fine here, not on the cut path.
     std::vector<TetId> hit, region;
-    for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
-      if (!mesh.is_live(TetId{t})) continue;
-      const auto v = mesh.tet(TetId{t});
-      if (intersects(*params.focus, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])))
-        hit.push_back(TetId{t});
-    }
+    scan_tets_meeting(mesh, *params.focus, hit);
     Refiner refiner;
     report = refiner.refine(mesh, hit, params, region);
   } else {

@@ -76,6 +76,10 @@ class SetRemovalWorkspace {
   void grow(const TetMesh& mesh);
   // The whole shell of v into shell_, stamped with shell_gen_.
   void collect_shell(const TetMesh& mesh, VertId v, TetId seed);
+  // The breadth-first step both shell walks take: each unmarked neighbour of `cur` across a face
+  // through v that visit generation g has not seen yet is stamped and handed to `visit`.
+  template <class Visit>
+  void visit_fresh_shell_neighbours(const TetMesh& mesh, VertId v, TetId cur, std::uint32_t g, Visit&& visit);
   // The set's tets at v are `removed_at_v` (marked, distinct).
   bool vertex_ok(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v);
   bool edge_ok(const TetMesh& mesh, TetId t, int local_edge);

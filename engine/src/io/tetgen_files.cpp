@@ -5,6 +5,7 @@
 // The .ele refers to the ids of the .node file, mapped like Gmsh ids.
 #include <algorithm>
 #include <string>
+#include <string_view>
 
 #include "tetcut/io.hpp"
 #include "text_reader.hpp"
@@ -143,25 +144,32 @@ ReadResult read_tetgen(std::string_view node_text, std::string_view node_name,
   return make_result(ele_sink, std::move(mesh), std::move(notices));
 }
 
-std::string format_tetgen_node(const RawMesh& mesh) {
+namespace {
+
+// Both files have one shape: "COUNT REST-OF-HEADER", the rows numbered from 1 (as TetGen writes
+// by default), a closing comment.
+template <class Rows, class AppendRows>
+std::string format_tetgen_file(const Rows& rows, std::string_view header_rest, std::size_t bytes_per_row,
+                               AppendRows append_rows) {
   std::string out;
-  out.reserve(64 + mesh.positions.size() * 64);
-  // 1-based, as TetGen writes by default.
-  append_uint(out, mesh.positions.size());
-  out += " 3 0 0\n";
-  append_numbered_points(out, mesh.positions);
+  out.reserve(64 + rows.size() * bytes_per_row);
+  append_uint(out, rows.size());
+  out += header_rest;
+  append_rows(out, rows);
   out += "# written by tetcut\n";
   return out;
 }
 
+}  // namespace
+
+std::string format_tetgen_node(const RawMesh& mesh) {
+  return format_tetgen_file(mesh.positions, " 3 0 0\n", 64,
+                            [](std::string& out, const auto& rows) { append_numbered_points(out, rows); });
+}
+
 std::string format_tetgen_ele(const RawMesh& mesh) {
-  std::string out;
-  out.reserve(64 + mesh.tets.size() * 48);
-  append_uint(out, mesh.tets.size());
-  out += " 4 0\n";
-  append_numbered_tets(out, mesh.tets);
-  out += "# written by tetcut\n";
-  return out;
+  return format_tetgen_file(mesh.tets, " 4 0\n", 48,
+                            [](std::string& out, const auto& rows) { append_numbered_tets(out, rows); });
 }
 
 }  // namespace tetcut

@@ -55,27 +55,24 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
     }
   }
   if (!t_split) set_.push_back(t);
-  if (ctx.with_selected_children(set_, split_log_, larger_)) {
-    const SetRemovalCheck larger_check = ctx.ws.check(ctx.mesh, larger_);
-    if (larger_check.ok) {
-      ctx.remove_set(larger_);
-      return static_cast<std::uint32_t>(larger_.size());
-    }
-    if (search_.find(ctx.mesh, ctx.ws, larger_, larger_check, repair, repaired_)) {
-      ctx.remove_set(repaired_);
-      return static_cast<std::uint32_t>(repaired_.size());
-    }
-  }
-  const SetRemovalCheck check = ctx.ws.check(ctx.mesh, set_);
+  if (ctx.with_selected_children(set_, split_log_, larger_))
+    if (const std::uint32_t n = remove_or_repair(ctx, larger_, repair)) return n;
+  if (const std::uint32_t n = remove_or_repair(ctx, set_, repair)) return n;
+  ctx.rollback_to(before);
+  return 0;
+}
+
+std::uint32_t RefinementStrategies::remove_or_repair(RemovalContext& ctx, const std::vector<TetId>& set,
+                                                     const WideSearchLimits& repair) {
+  const SetRemovalCheck check = ctx.ws.check(ctx.mesh, set);
   if (check.ok) {
-    ctx.remove_set(set_);
-    return static_cast<std::uint32_t>(set_.size());
+    ctx.remove_set(set);
+    return static_cast<std::uint32_t>(set.size());
   }
-  if (search_.find(ctx.mesh, ctx.ws, set_, check, repair, repaired_)) {
+  if (search_.find(ctx.mesh, ctx.ws, set, check, repair, repaired_)) {
     ctx.remove_set(repaired_);
     return static_cast<std::uint32_t>(repaired_.size());
   }
-  ctx.rollback_to(before);
   return 0;
 }
 

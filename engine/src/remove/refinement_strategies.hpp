@@ -44,6 +44,9 @@ class RefinementStrategies {
   // vertex of `at`, if removable; otherwise rolls back.
   std::uint32_t split_and_remove(RemovalContext& ctx, TetId t, std::span<const VertId> at,
                                  const WideSearchLimits& repair);
+  // Removes `set` if removable, else its repair by the wide search if one is found; returns the
+  // size removed, 0 for neither (the mesh untouched).
+  std::uint32_t remove_or_repair(RemovalContext& ctx, const std::vector<TetId>& set, const WideSearchLimits& repair);
 
   WideSearch search_;
   std::vector<Edge> edges_;
