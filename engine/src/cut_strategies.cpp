@@ -20,4 +20,18 @@ std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text) {
   return std::nullopt;
 }
 
+const char* to_string(SplitMethod method) {
+  switch (method) {
+    case SplitMethod::kTemplates: return "templates";
+    case SplitMethod::kBisection: return "bisection";
+  }
+  return "?";
+}
+
+std::optional<SplitMethod> parse_split_method(std::string_view text) {
+  if (text == "templates") return SplitMethod::kTemplates;
+  if (text == "bisection") return SplitMethod::kBisection;
+  return std::nullopt;
+}
+
 }  // namespace tetcut

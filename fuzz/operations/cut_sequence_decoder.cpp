@@ -74,7 +74,7 @@ void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
       break;
     default:
       p.split_method = input.ConsumeBool() ? SplitMethod::kBisection : SplitMethod::kTemplates;
-      name = "split", value = p.split_method == SplitMethod::kBisection ? "bisection" : "templates";
+      name = "split", value = to_string(p.split_method);
       break;
   }
   session.set_param(name, value, p);

@@ -123,7 +123,7 @@ CLI::Option* strategy(CLI::App& app, const std::string& name, std::optional<Remo
 CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<SplitMethod>& target,
                           const std::string& help) {
   return parsed(app, name, target, help, "templates|bisection",
-                [](const std::string& s) { return scenario::parse_split_method(s); },
+                [](const std::string& s) { return parse_split_method(s); },
                 "must be templates or bisection");
 }
 

@@ -95,7 +95,7 @@ Json table2_row(const stats::MeshStats& m) {
 Json strategy_row(const stats::StrategyRow& r, const std::string& mesh) {
   Json row = {{"name", r.name},
               {"strategy", to_string(r.strategy)},
-              {"split", scenario::to_string(r.split)},
+              {"split", tetcut::to_string(r.split)},
               {"mesh", mesh},
               {"cuts", r.cuts},
               {"requests", r.requests},

@@ -26,4 +26,8 @@ std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text);
 // kBisection: one edge at a time across its whole shell (the baseline the templates beat).
 enum class SplitMethod : std::uint8_t { kTemplates, kBisection };
 
+const char* to_string(SplitMethod method);
+// "templates", "bisection".
+std::optional<SplitMethod> parse_split_method(std::string_view text);
+
 }  // namespace tetcut

@@ -48,16 +48,6 @@ std::optional<Vec3> parse_vec3(std::string_view text) {
   return Vec3{xyz[0], xyz[1], xyz[2]};
 }
 
-std::optional<SplitMethod> parse_split_method(std::string_view text) {
-  if (text == "templates") return SplitMethod::kTemplates;
-  if (text == "bisection") return SplitMethod::kBisection;
-  return std::nullopt;
-}
-
-const char* to_string(SplitMethod method) {
-  return method == SplitMethod::kBisection ? "bisection" : "templates";
-}
-
 std::optional<CheckMode> parse_check_mode(std::string_view text) {
   if (text == "every") return CheckMode::kEvery;
   if (text == "end") return CheckMode::kEnd;

@@ -31,9 +31,8 @@ std::optional<Vec3> parse_vec3(std::string_view text);
 // named here so that every value of this file is found in one place.
 inline std::optional<RemovalStrategy> parse_strategy(std::string_view text) { return parse_removal_strategy(text); }
 
-// templates | bisection (paper 3.2: the 10 split configurations, or sequential bisection).
-std::optional<SplitMethod> parse_split_method(std::string_view text);
-const char* to_string(SplitMethod method);
+// templates | bisection (paper 3.2: the 10 split configurations, or sequential bisection):
+// the engine's parse_split_method and to_string(SplitMethod), cut_strategies.hpp.
 
 // When the independent checker runs during a sequence of operations: the local checker after
 // every operation, the full one once at the end, or not at all.
