@@ -1,37 +1,47 @@
 #include "tetcut/cut_strategies.hpp"
 
-namespace tetcut {
+#include <utility>
 
-const char* to_string(RemovalStrategy strategy) {
-  switch (strategy) {
-    case RemovalStrategy::kBasic: return "basic";
-    case RemovalStrategy::kNeighbours: return "neighbours";
-    case RemovalStrategy::kCombined: return "combined";
-    case RemovalStrategy::kWide: return "wide";
-  }
+namespace tetcut {
+namespace {
+
+// Each choice's spellings in one table, read both ways; the first spelling of a value is the one
+// printed, the later ones are accepted aliases.
+template <class Enum>
+using Spellings = std::pair<std::string_view, Enum>;
+
+constexpr Spellings<RemovalStrategy> kStrategyNames[] = {{"basic", RemovalStrategy::kBasic},
+                                                         {"neighbours", RemovalStrategy::kNeighbours},
+                                                         {"neighbors", RemovalStrategy::kNeighbours},
+                                                         {"combined", RemovalStrategy::kCombined},
+                                                         {"wide", RemovalStrategy::kWide}};
+constexpr Spellings<SplitMethod> kSplitMethodNames[] = {{"templates", SplitMethod::kTemplates},
+                                                        {"bisection", SplitMethod::kBisection}};
+
+template <class Enum, std::size_t N>
+const char* name_of(const Spellings<Enum> (&names)[N], Enum value) {
+  for (const auto& [name, v] : names)
+    if (v == value) return name.data();  // the literals are NUL-terminated
   return "?";
 }
+
+template <class Enum, std::size_t N>
+std::optional<Enum> value_of(const Spellings<Enum> (&names)[N], std::string_view text) {
+  for (const auto& [name, v] : names)
+    if (name == text) return v;
+  return std::nullopt;
+}
+
+}  // namespace
+
+const char* to_string(RemovalStrategy strategy) { return name_of(kStrategyNames, strategy); }
 
 std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text) {
-  if (text == "basic") return RemovalStrategy::kBasic;
-  if (text == "neighbours" || text == "neighbors") return RemovalStrategy::kNeighbours;
-  if (text == "combined") return RemovalStrategy::kCombined;
-  if (text == "wide") return RemovalStrategy::kWide;
-  return std::nullopt;
+  return value_of(kStrategyNames, text);
 }
 
-const char* to_string(SplitMethod method) {
-  switch (method) {
-    case SplitMethod::kTemplates: return "templates";
-    case SplitMethod::kBisection: return "bisection";
-  }
-  return "?";
-}
+const char* to_string(SplitMethod method) { return name_of(kSplitMethodNames, method); }
 
-std::optional<SplitMethod> parse_split_method(std::string_view text) {
-  if (text == "templates") return SplitMethod::kTemplates;
-  if (text == "bisection") return SplitMethod::kBisection;
-  return std::nullopt;
-}
+std::optional<SplitMethod> parse_split_method(std::string_view text) { return value_of(kSplitMethodNames, text); }
 
 }  // namespace tetcut
