@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <map>
 #include <new>
+#include <vector>
 
 #include "bench_meshes.hpp"
 #include "tetcut/cut.hpp"
@@ -105,15 +106,31 @@ struct SweepResult {
   std::uint64_t removed = 0, created = 0, unresolved = 0, allocations = 0, counted_cuts = 0;
 };
 
+// Writes and reads back 64 MiB, more than any cache of the CI machine holds, so that nothing of
+// the mesh or the Cutter is left in them.
+void evict_caches() {
+  static std::vector<unsigned char> buffer(std::size_t{64} << 20);
+  unsigned sum = 0;
+  for (std::size_t i = 0; i < buffer.size(); i += 64) {
+    buffer[i] = static_cast<unsigned char>(buffer[i] + 1);
+    sum += buffer[i];
+  }
+  benchmark::DoNotOptimize(sum);
+}
+
 // One sweep on a fresh copy of the liver at `level`, every cut timed and its heap allocations
 // counted: the Cutter is constructed (and so prepared) before the first cut, and a simulator
-// feels the first cut like any other (issue 18: no warm-up is dropped).
+// feels the first cut like any other (issue 18: no warm-up is dropped). The first cut starts
+// with the caches emptied, as a simulator's does after loading and rendering; without that it
+// depended on what the previous repetition left in them (5-8 us warm against 12-20 us cold in
+// one process, and the gate's median of three repetitions mixed the two).
 void run_sweep(int level, SweepResult& out) {
   const tetcut::TetMesh& base = level >= 0 ? liver_at(level) : replicated_liver();
   level = std::max(level, 0);
   static const std::vector<tetcut::Vec3> centres = sweep_centres();
   tetcut::TetMesh mesh = base;
   tetcut::Cutter cutter(mesh, {.tool_diameter = 8.0 / (1 << level)});
+  evict_caches();
   for (std::size_t i = 0; i < centres.size(); ++i) {
     const std::uint64_t before = g_allocations.load(std::memory_order_relaxed);
     const auto t0 = std::chrono::steady_clock::now();
