@@ -45,7 +45,7 @@ void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
   std::string value;
   // Version 3: the ranges a user reaches by mistake (a tool in micrometres, a factor off by a
   // hundred, p a hair above 1); up to 10^4 mean edges is a thousand times a fuzz mesh's size.
-  const bool wide = ctx.version >= kSequenceVersion;
+  const bool wide = ctx.version >= kSequenceVersionWideParams;
   switch (input.ConsumeIntegralInRange<int>(0, 6)) {
     case 0:
       p.tool_diameter = round_significant(ctx.bundled.mean_edge * (wide ? consume_log_uniform(input, -2.0, 4.0)
@@ -69,7 +69,7 @@ void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
       name = "iterations", value = std::to_string(p.max_refine_iterations);
       break;
     case 5:
-      p.strategy = static_cast<RemovalStrategy>(input.ConsumeIntegralInRange<std::uint8_t>(0, 2));
+      p.strategy = consume_strategy(ctx.version, input);
       name = "strategy", value = to_string(p.strategy);
       break;
     default:

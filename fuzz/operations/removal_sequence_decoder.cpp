@@ -66,7 +66,7 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
     const TetMesh& mesh = session.mesh();
     switch (op) {
       case Op::kStrategy:
-        params.strategy = static_cast<RemovalStrategy>(input.ConsumeIntegralInRange<std::uint8_t>(0, 2));
+        params.strategy = consume_strategy(version, input);
         session.set_param("strategy", to_string(params.strategy), params);
         break;
       case Op::kRemoveBoundary:

@@ -1,10 +1,11 @@
 // The removal_sequence target's decoder and runner (fuzz/targets/removal_sequence.cpp is its
 // libFuzzer entry point; `tetcut replay --target removal_sequence` calls the same run()).
 //
-// Input: version byte (1, 2 or 3, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
-// 1: the bundled cylinder, sheet, liver-coarse; versions 2 and 3 (read as 2): their small fuzz versions), then up to
-// max_operations operations, each an opcode and its arguments:
-//   strategy S          basic | neighbours | combined (the initial strategy is combined)
+// Input: version byte (1 to 4, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
+// 1: the bundled cylinder, sheet, liver-coarse; versions 2 to 4: their small fuzz versions; 3
+// reads as 2), then up to max_operations operations, each an opcode and its arguments:
+//   strategy S          basic | neighbours | combined, and from version 4 wide (the initial
+//                       strategy is combined)
 //   remove boundary     the first live tet with a boundary face at or after a chosen id
 //   remove any          the first live tet at or after a chosen id (interior ones included)
 //   remove point        the tet containing a point of the bounding box (often none: a no-op)

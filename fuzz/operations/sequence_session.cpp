@@ -153,6 +153,12 @@ SequenceStart start_sequence(std::string_view target, std::uint8_t version, Fuzz
   return {bundled, SequenceSession::start(bundled, recorder)};
 }
 
+RemovalStrategy consume_strategy(std::uint8_t version, FuzzedDataProvider& input) {
+  const auto last = static_cast<std::uint8_t>(version >= kSequenceVersionAllStrategies ? RemovalStrategy::kWide
+                                                                                       : RemovalStrategy::kCombined);
+  return static_cast<RemovalStrategy>(input.ConsumeIntegralInRange<std::uint8_t>(0, last));
+}
+
 SequenceResult run_sequence(const std::uint8_t* data, std::size_t size, const SequenceOptions& options,
                             const std::function<void(std::uint8_t, FuzzedDataProvider&, ScenarioRecorder&)>& body) {
   SequenceResult result;

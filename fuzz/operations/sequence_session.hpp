@@ -112,6 +112,10 @@ struct SequenceStart {
 SequenceStart start_sequence(std::string_view target, std::uint8_t version, FuzzedDataProvider& input,
                              ScenarioRecorder& recorder);
 
+// The removal strategy an input chooses: versions 1-3 among basic, neighbours and combined (as
+// they were found), kSequenceVersionAllStrategies and later among all four, `wide` included.
+RemovalStrategy consume_strategy(std::uint8_t version, FuzzedDataProvider& input);
+
 // The operation loop of every sequence target: `operation()` decodes and runs one operation,
 // while `limits` allow, input remains and the mesh has tets but not kMaxTetsFactor times its
 // initial ones; the periodic full checks; then finish().

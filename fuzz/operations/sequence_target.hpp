@@ -32,12 +32,16 @@ namespace tetcut::fuzz {
 //      log-uniform ranges, as users mistype them (issue 16: a 1e6 tool or a D_ref factor of 0.01
 //      hung a cut, and the narrow ranges of version 2 never tried them). removal_sequence,
 //      which sets none of them, reads 3 as 2.
-// The fuzzers run versions 2 and 3 (is_current_sequence_version); 1 only replays.
+//   4  as 3, but both targets draw the removal strategy among all four: `wide` too (the
+//      extension of paper 3.5 in remove/wide_search.cpp), which versions 1-3 never drew.
+// The fuzzers run versions 2 to 4 (is_current_sequence_version); 1 only replays.
 inline constexpr std::uint8_t kSequenceVersionBundled = 1;
 inline constexpr std::uint8_t kSequenceVersionSmall = 2;
-inline constexpr std::uint8_t kSequenceVersion = 3;
+inline constexpr std::uint8_t kSequenceVersionWideParams = 3;
+inline constexpr std::uint8_t kSequenceVersionAllStrategies = 4;
+inline constexpr std::uint8_t kSequenceVersion = kSequenceVersionAllStrategies;  // the newest
 inline bool is_sequence_version(std::uint8_t v) { return v >= kSequenceVersionBundled && v <= kSequenceVersion; }
-inline bool is_current_sequence_version(std::uint8_t v) { return v == kSequenceVersionSmall || v == kSequenceVersion; }
+inline bool is_current_sequence_version(std::uint8_t v) { return v >= kSequenceVersionSmall && v <= kSequenceVersion; }
 
 // How much of an input a sequence target runs: up to max_operations operations, with the full
 // check every full_check_every of them and at the end, and the target's own bound on one
