@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "operations/sequence_target.hpp"
+#include "sequence_target_param.hpp"
 
 namespace {
 
@@ -23,10 +24,8 @@ struct Tally {
   std::string first_finding;
 };
 
-Tally run_random_inputs(std::string_view name, std::uint8_t version, std::size_t count) {
-  const tetcut::fuzz::SequenceTarget* target = tetcut::fuzz::find_sequence_target(name);
+Tally run_random_inputs(const tetcut::fuzz::SequenceTarget& target, std::uint8_t version, std::size_t count) {
   Tally tally;
-  if (target == nullptr) return tally;
   std::mt19937 random(20261124);  // the same bytes for every version
   std::uniform_int_distribution<int> byte(0, 255);
   SequenceOptions options;
@@ -36,7 +35,7 @@ Tally run_random_inputs(std::string_view name, std::uint8_t version, std::size_t
     std::vector<std::uint8_t> input(48);
     for (std::uint8_t& b : input) b = static_cast<std::uint8_t>(byte(random));
     input[0] = version;
-    const SequenceResult r = target->run(input.data(), input.size(), options);
+    const SequenceResult r = target.run(input.data(), input.size(), options);
     tally.accepted += r.accepted ? 1 : 0;
     if (r.scenario.find("\nstrategy wide\n") != std::string::npos) ++tally.wide;
     if (r.finding) {
@@ -46,10 +45,14 @@ Tally run_random_inputs(std::string_view name, std::uint8_t version, std::size_t
   return tally;
 }
 
-void expect_wide_only_from_version_4(std::string_view name) {
+// Every sequence target (sequence_targets()).
+class SequenceVersions : public testing::TestWithParam<tetcut::fuzz::SequenceTarget> {};
+
+TEST_P(SequenceVersions, Version4DrawsWideAndVersion3DecodesAsFound) {
+  const std::string_view name = GetParam().name;
   constexpr std::size_t kInputs = 400;
-  const Tally v3 = run_random_inputs(name, 3, kInputs);
-  const Tally v4 = run_random_inputs(name, 4, kInputs);
+  const Tally v3 = run_random_inputs(GetParam(), 3, kInputs);
+  const Tally v4 = run_random_inputs(GetParam(), 4, kInputs);
   EXPECT_EQ(v3.accepted, kInputs) << name;
   EXPECT_EQ(v4.accepted, kInputs) << name;
   EXPECT_EQ(v3.wide, 0u) << name << ": a version 3 input chose the wide strategy, so it no longer decodes as found";
@@ -57,8 +60,6 @@ void expect_wide_only_from_version_4(std::string_view name) {
   EXPECT_EQ(v3.findings + v4.findings, 0u) << name << ": first finding:\n" << v3.first_finding << v4.first_finding;
 }
 
-TEST(SequenceVersions, RemovalSequenceDrawsWideFromVersion4) { expect_wide_only_from_version_4("removal_sequence"); }
-
-TEST(SequenceVersions, CutSequenceDrawsWideFromVersion4) { expect_wide_only_from_version_4("cut_sequence"); }
+INSTANTIATE_TEST_SUITE_P(Targets, SequenceVersions, testing::ValuesIn(tetcut::fuzz::sequence_targets()), sequence_target_name);
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "operations/sequence_target.hpp"
+#include "sequence_target_param.hpp"
 
 namespace {
 
@@ -55,16 +56,19 @@ Outcome run(const SequenceTarget& target, const std::vector<std::uint8_t>& input
   return {r.accepted, r.scenario, r.finding ? to_string(*r.finding) : std::string(), r.final_hash};
 }
 
-void expect_independent_of_order(std::string_view name) {
-  const SequenceTarget* target = tetcut::fuzz::find_sequence_target(name);
-  ASSERT_NE(target, nullptr);
+// Every sequence target (sequence_targets()).
+class SequenceSession : public testing::TestWithParam<tetcut::fuzz::SequenceTarget> {};
+
+TEST_P(SequenceSession, StoredInputsEndTheSameInAnyOrder) {
+  const SequenceTarget& target = GetParam();
+  const std::string_view name = target.name;
   const auto inputs = stored_inputs(name);
   ASSERT_GE(inputs.size(), 10u) << "too few stored inputs of " << name << " to mean anything";
   std::vector<Outcome> forward;
-  for (const auto& input : inputs) forward.push_back(run(*target, input));
+  for (const auto& input : inputs) forward.push_back(run(target, input));
   std::size_t ran = 0;
   for (std::size_t i = inputs.size(); i-- > 0;) {
-    const Outcome backward = run(*target, inputs[i]);
+    const Outcome backward = run(target, inputs[i]);
     EXPECT_TRUE(backward == forward[i]) << name << " input " << i << " ends differently after other inputs:\n"
                                         << "forward: " << forward[i].finding << " hash " << forward[i].final_hash
                                         << "\nbackward: " << backward.finding << " hash " << backward.final_hash;
@@ -74,8 +78,6 @@ void expect_independent_of_order(std::string_view name) {
   EXPECT_GE(ran, inputs.size() / 2) << name << ": most inputs were not run to a final mesh";
 }
 
-TEST(SequenceSession, RemovalSequenceInputsEndTheSameInAnyOrder) { expect_independent_of_order("removal_sequence"); }
-
-TEST(SequenceSession, CutSequenceInputsEndTheSameInAnyOrder) { expect_independent_of_order("cut_sequence"); }
+INSTANTIATE_TEST_SUITE_P(Targets, SequenceSession, testing::ValuesIn(tetcut::fuzz::sequence_targets()), sequence_target_name);
 
 }  // namespace
