@@ -92,6 +92,11 @@ def calibrate_instructions(budgets, results):
 DRIFT = 1.5
 
 
+def names(prefixes, figure):
+    """Whether one of the prefixes (--redefined) starts the figure's name."""
+    return any(figure["name"].startswith(p) for p in prefixes)
+
+
 def calibrate_times(budgets, runs, redefined=()):
     from scipy import stats  # python3-scipy
 
@@ -113,7 +118,7 @@ def calibrate_times(budgets, runs, redefined=()):
         # neighbour on the host): never closer than DRIFT to the slowest run seen.
         bound = round_up(max(predicted, DRIFT * max(values)))
         old = figure["max"]
-        is_redefined = any(figure["name"].startswith(r) for r in redefined)
+        is_redefined = names(redefined, figure)
         if bound > old and not is_redefined:
             # Calibration tightens, never loosens: a bound above the one in the file (an issue's
             # goal, or an earlier sitting's) would let the slowdown it was set against through.
@@ -142,7 +147,7 @@ def main(argv):
         while len(args) >= 2 and args[0] == "--redefined":
             redefined.append(args[1])
             args = args[2:]
-        unknown = [r for r in redefined if not any(f["name"].startswith(r) for f in budgets["figures"])]
+        unknown = [r for r in redefined if not any(names([r], f) for f in budgets["figures"])]
         if unknown:
             sys.exit(f"calibrate_budgets: --redefined names no figure: {', '.join(unknown)}")
         calibrate_times(budgets, [load(p) for p in args], redefined)

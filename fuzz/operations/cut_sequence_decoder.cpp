@@ -45,19 +45,19 @@ void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
   std::string value;
   // Version 3: the ranges a user reaches by mistake (a tool in micrometres, a factor off by a
   // hundred, p a hair above 1); up to 10^4 mean edges is a thousand times a fuzz mesh's size.
-  const bool wide = ctx.version >= kSequenceVersionWideParams;
+  const bool wide_ranges = ctx.version >= kSequenceVersionWideParams;
   switch (input.ConsumeIntegralInRange<int>(0, 6)) {
     case 0:
-      p.tool_diameter = round_significant(ctx.bundled.mean_edge * (wide ? consume_log_uniform(input, -2.0, 4.0)
+      p.tool_diameter = round_significant(ctx.bundled.mean_edge * (wide_ranges ? consume_log_uniform(input, -2.0, 4.0)
                                                                          : consume_in(input, 0.5, 2.0)));
       name = "diameter", value = format_number(p.tool_diameter);
       break;
     case 1:
-      p.d_ref_factor = wide ? round_significant(consume_log_uniform(input, -2.5, 1.0)) : round_to(consume_in(input, 1.0, 3.0), 0.01);
+      p.d_ref_factor = wide_ranges ? round_significant(consume_log_uniform(input, -2.5, 1.0)) : round_to(consume_in(input, 1.0, 3.0), 0.01);
       name = "dref_factor", value = format_number(p.d_ref_factor);
       break;
     case 2:
-      p.p = wide ? 1.0 + round_significant(consume_log_uniform(input, -3.0, 1.0)) : round_to(consume_in(input, 1.1, 3.0), 0.01);
+      p.p = wide_ranges ? 1.0 + round_significant(consume_log_uniform(input, -3.0, 1.0)) : round_to(consume_in(input, 1.1, 3.0), 0.01);
       name = "p", value = format_number(p.p);
       break;
     case 3:

@@ -9,8 +9,8 @@ namespace tetcut::fuzz {
 
 namespace {
 constexpr SequenceTarget kTargets[] = {
-    {"removal_sequence", &removal_sequence::run, "1 to 4"},
-    {"cut_sequence", &cut_sequence::run, "1 to 4"},
+    {"removal_sequence", &removal_sequence::run},
+    {"cut_sequence", &cut_sequence::run},
 };
 }  // namespace
 

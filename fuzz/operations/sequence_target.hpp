@@ -95,7 +95,6 @@ struct SequenceResult {
 struct SequenceTarget {
   std::string_view name;
   SequenceResult (*run)(const std::uint8_t* data, std::size_t size, const SequenceOptions& options);
-  std::string_view versions;  // the first bytes it accepts, for messages: "1 or 2"
 };
 
 std::span<const SequenceTarget> sequence_targets();

@@ -85,7 +85,7 @@ int cmd_replay(Args args, std::ostream& out, std::ostream& err) {
   }
   if (!result.accepted) {
     err << "tetcut: " << input_path << ":1: not a " << target->name << " input (the first byte must be the input version "
-        << target->versions << ")\n";
+        << int{fuzz::kSequenceVersionBundled} << " to " << int{fuzz::kSequenceVersion} << ")\n";
     return kExitBadInput;
   }
   out << result.scenario;
