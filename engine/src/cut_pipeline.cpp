@@ -210,6 +210,7 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   refine.method = params_.split_method;
   refine.focus = tool;
   refine.max_tets_created = params_.max_tets_created;  // checked before each round (net)
+  refine.measure_quality = false;  // finish() reports the worst net new tet
   refine_log_.clear();
   const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_, &refine_log_);
   if (refined.refusal != SplitRefusal::kNone)
@@ -367,11 +368,7 @@ void Cutter::Pipeline::finish(CutReport& report, ChangeLog* log) {
   mesh_.commit();
   for (TetId t : net_removed_) index_.erase(t);
   for (TetId t : net_created_) index_.insert(mesh_, t);
-  for (TetId t : net_created_) {
-    const auto v = mesh_.tet(t);
-    report.min_radius_ratio = std::min(
-        report.min_radius_ratio, radius_ratio(mesh_.position(v[0]), mesh_.position(v[1]), mesh_.position(v[2]), mesh_.position(v[3])));
-  }
+  report.min_radius_ratio = min_radius_ratio(mesh_, net_created_);
   report.tets_created = static_cast<std::uint32_t>(net_created_.size());
   if (log) {
     log->removed.insert(log->removed.end(), net_removed_.begin(), net_removed_.end());

@@ -4,7 +4,6 @@
 #include <tuple>
 
 #include "detail/local_tables.hpp"
-#include "detail/quality.hpp"
 #include "detail/reserve_touched.hpp"
 #include "detail/split_templates.hpp"
 #include "tetcut/predicates.hpp"
@@ -184,7 +183,6 @@ SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std:
         result.refusal = SplitRefusal::kDegenerateChild;
         return result;
       }
-      result.min_radius_ratio = std::min(result.min_radius_ratio, radius_ratio(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
       all_labels_.push_back(c);
     }
     children_per_parent_.push_back(static_cast<std::uint8_t>(labels_.size()));

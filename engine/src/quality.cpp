@@ -49,4 +49,13 @@ double min_dihedral_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const
   return smallest;
 }
 
+double min_radius_ratio(const TetMesh& mesh, std::span<const TetId> tets) {
+  double worst = 1.0;
+  for (TetId t : tets) {
+    const TetMesh::TetVerts v = mesh.tet(t);
+    worst = std::min(worst, radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])));
+  }
+  return worst;
+}
+
 }  // namespace tetcut

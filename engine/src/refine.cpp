@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "detail/local_tables.hpp"
+#include "detail/quality.hpp"
 #include "detail/reserve_touched.hpp"
 #include "detail/spatial_index.hpp"
 
@@ -166,7 +167,7 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
     report.edges_split += split.edges_split;
     report.tets_created += split.tets_created;
     report.tets_removed += split.tets_removed;
-    report.min_radius_ratio = std::min(report.min_radius_ratio, split.min_radius_ratio);
+    if (params.measure_quality) report.min_radius_ratio = std::min(report.min_radius_ratio, min_radius_ratio(mesh, created_));
     region.insert(region.end(), created_.begin(), created_.end());
     if (params.focus)
       created_.erase(std::remove_if(created_.begin(), created_.end(), [&](TetId t) { return !tet_meets_ball(mesh, t, *params.focus); }),

@@ -276,11 +276,13 @@ TEST(EdgeSplit, QualityTableTemplatesAgainstBisection) {
         TetMesh& mesh = *built.mesh;
         const double parent = radius_ratio(regular[0], regular[1], regular[2], regular[3]);
         EdgeSplitter splitter;
-        const SplitResult r = splitter.split(mesh, edges_of_mask(mesh, TetId{0}, mask), method);
+        std::vector<TetId> children;
+        const SplitResult r = splitter.split(mesh, edges_of_mask(mesh, TetId{0}, mask), method, &children);
         ASSERT_TRUE(r.ok());
+        ASSERT_EQ(children.size(), r.tets_created);
         auto& slot = worst.try_emplace(configuration(mask), 1.0, 1.0).first->second;
         double& w = method == SplitMethod::kTemplates ? slot.first : slot.second;
-        w = std::min(w, r.min_radius_ratio / parent);
+        w = std::min(w, min_radius_ratio(mesh, children) / parent);
       }
     } while (std::next_permutation(perm.begin(), perm.end()));
   }

@@ -59,6 +59,7 @@ TEST(Refine, RefinesUntilEveryEdgeOfTheNewTetsIsShorterThanDref) {
     EXPECT_LE(r.iterations, 6u);
     EXPECT_GT(r.tets_created, 0u);
     EXPECT_GT(r.min_radius_ratio, 0.0);
+    EXPECT_LT(r.min_radius_ratio, 1.0) << "the box's tets and their children are not regular";
     EXPECT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kFull, volume));
     // Every live tet of the region that meets the tool is short; the region holds only live tets.
     std::vector<TetId> in_tool;
@@ -69,6 +70,25 @@ TEST(Refine, RefinesUntilEveryEdgeOfTheNewTetsIsShorterThanDref) {
     EXPECT_FALSE(in_tool.empty());
     EXPECT_LE(longest_edge(mesh, in_tool), 0.1);
   }
+}
+
+TEST(Refine, TheQualityFigureIsOnlyMeasuredWhenAskedAndChangesNothing) {
+  auto refine = [](bool measure, TetMesh& mesh) {
+    const std::vector<TetId> hit = tets_near(mesh, {0.5, 0.5, 0.5}, 0.2);
+    Refiner refiner;
+    std::vector<TetId> region;
+    RefineParams params{.d_ref = 0.1, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}};
+    params.measure_quality = measure;
+    return refiner.refine(mesh, hit, params, region);
+  };
+  TetMesh measured = testing::build_or_fail(make_box_mesh(4, 4, 4));
+  TetMesh unmeasured = measured;
+  const RefineReport with = refine(true, measured);
+  const RefineReport without = refine(false, unmeasured);
+  EXPECT_LT(with.min_radius_ratio, 1.0);
+  EXPECT_EQ(without.min_radius_ratio, 1.0) << "not measured: the documented neutral value";
+  EXPECT_EQ(with.tets_created, without.tets_created);
+  EXPECT_EQ(canonical_hash(measured), canonical_hash(unmeasured));
 }
 
 // A request on the tets near the centre of a 2x2x2 box.

@@ -14,6 +14,7 @@
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "detail/local_tables.hpp"
+#include "detail/quality.hpp"
 #include "tetcut/mesh_builder.hpp"
 #include "detail/random.hpp"
 #include "detail/refine.hpp"
@@ -129,12 +130,13 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
     std::vector<Edge> edges;
     edges = a.uniform ? all_edges(mesh) : random_edges(mesh, *a.random_edges, a.seed.value_or(0));
     EdgeSplitter splitter;
-    const SplitResult r = splitter.split(mesh, edges, method);
+    std::vector<TetId> created;
+    const SplitResult r = splitter.split(mesh, edges, method, &created);
     report.iterations = r.ok() ? 1 : 0;
     report.edges_split = r.edges_split;
     report.tets_created = r.tets_created;
     report.tets_removed = r.tets_removed;
-    report.min_radius_ratio = r.min_radius_ratio;
+    report.min_radius_ratio = min_radius_ratio(mesh, created);
     report.refusal = r.refusal;
   }
   if (report.refusal != SplitRefusal::kNone) {

@@ -40,6 +40,10 @@ struct RefineParams {
   SplitMethod method = SplitMethod::kTemplates;
   std::optional<Ball> focus;        // when set, only new tets meeting it are refined further
   std::uint32_t max_tets_created = UINT32_MAX;  // net tets the loop may make; must be positive
+  // RefineReport::min_radius_ratio over every child made. The cut leaves it off: it reports the
+  // worst of its net new tets instead, and measuring every intermediate child is work on the
+  // per-cut path that nobody reads.
+  bool measure_quality = true;
 };
 
 // A message when a parameter is not finite, not positive, or p <= 1; nullopt when valid.
@@ -73,7 +77,7 @@ struct RefineReport {
   std::uint32_t tets_created = 0;    // children made, including children later split again
   std::uint32_t tets_removed = 0;    // parents replaced
   std::uint32_t net_tets_created = 0;  // children still live: what max_tets_created bounds
-  double min_radius_ratio = 1.0;     // worst child created (1 when none)
+  double min_radius_ratio = 1.0;     // worst child created (1 when none or not measured)
   bool converged = true;             // false when max_iterations stopped the loop
   // A split refused for degeneracy stops the loop; so does the budget (kOverBudget: the round
   // that would have passed it was planned, not applied).
