@@ -43,16 +43,18 @@ Parsed parse(const std::vector<std::string>& args) {
 }
 
 // "tetcut demo: ..." naming `what`, then the usage line: two lines, exit 2.
-void expect_refusal(const std::vector<std::string>& args, const std::string& what) {
+::testing::AssertionResult refused(const std::vector<std::string>& args, const std::string& what) {
   std::string joined;
   for (const auto& a : args) joined += a + " ";
   const Parsed p = parse(args);
-  ASSERT_EQ(p.code, 2) << joined;
-  EXPECT_TRUE(p.err.starts_with("tetcut demo: ")) << joined << p.err;
-  EXPECT_NE(p.err.find(what), std::string::npos) << joined << p.err;
-  EXPECT_NE(p.err.find("\nusage: tetcut demo MESH"), std::string::npos) << joined << p.err;
-  EXPECT_EQ(std::count(p.err.begin(), p.err.end(), '\n'), 2) << "one line and the usage: " << joined << p.err;
-  EXPECT_TRUE(p.out.empty());
+  auto failure = [&](const std::string& why) { return ::testing::AssertionFailure() << joined << ": " << why << "\n" << p.err; };
+  if (p.code != 2) return failure("exit code not 2");
+  if (!p.err.starts_with("tetcut demo: ")) return failure("not prefixed with the command");
+  if (p.err.find(what) == std::string::npos) return failure("does not name '" + what + "'");
+  if (p.err.find("\nusage: tetcut demo MESH") == std::string::npos) return failure("no usage line");
+  if (std::count(p.err.begin(), p.err.end(), '\n') != 2) return failure("not one line and the usage");
+  if (!p.out.empty()) return failure("wrote to stdout");
+  return ::testing::AssertionSuccess();
 }
 
 TEST(CommandParser, ReadsOptionsBothWaysAndNegativeNumbersAsValues) {
@@ -80,23 +82,23 @@ TEST(CommandParser, DoubleDashEndsTheOptions) {
 
 TEST(CommandParser, RefusesNumbersCli11WouldAcceptWithOneLine) {
   for (const char* bad : {"1e3x", "nan", "inf", "-inf", "", " 1", "1 ", "0x10", "1e999", "1,5", "++1"})
-    expect_refusal({"m.msh", "--diameter", bad}, std::string("--diameter: expects a finite number, not '") + bad + "'");
+    EXPECT_TRUE(refused({"m.msh", "--diameter", bad}, std::string("--diameter: expects a finite number, not '") + bad + "'"));
   for (const char* bad : {"-1", "1.0", "18446744073709551616", "x", ""})
-    expect_refusal({"m.msh", "--depth", bad}, "--depth: expects a non-negative integer");
-  for (const char* bad : {"1,2", "1,2,nan", "1,,3"}) expect_refusal({"m.msh", "--from", bad}, "--from: expects X,Y,Z");
-  expect_refusal({"m.msh", "--strategy", "fast"}, "--strategy: must be basic, neighbours, combined or wide, not 'fast'");
-  expect_refusal({"m.msh", "--check", "always"}, "--check: must be every, end or none, not 'always'");
+    EXPECT_TRUE(refused({"m.msh", "--depth", bad}, "--depth: expects a non-negative integer"));
+  for (const char* bad : {"1,2", "1,2,nan", "1,,3"}) EXPECT_TRUE(refused({"m.msh", "--from", bad}, "--from: expects X,Y,Z"));
+  EXPECT_TRUE(refused({"m.msh", "--strategy", "fast"}, "--strategy: must be basic, neighbours, combined or wide, not 'fast'"));
+  EXPECT_TRUE(refused({"m.msh", "--check", "always"}, "--check: must be every, end or none, not 'always'"));
 }
 
 TEST(CommandParser, RefusesUnknownOptionsMissingValuesRepetitionAndExtras) {
-  expect_refusal({"m.msh", "--diamter", "1"}, "--diamter");
-  expect_refusal({"m.msh", "--diameter"}, "--diameter");
-  expect_refusal({"m.msh", "--diameter", "1", "--diameter=2"}, "--diameter");
-  expect_refusal({"m.msh", "--json", "--json"}, "--json");
-  expect_refusal({"m.msh", "--json=yes"}, "json");
-  expect_refusal({"m.msh", "n.msh"}, "n.msh");
-  expect_refusal({}, "MESH");
-  expect_refusal({"m.msh", "--diameter", "a\nb"}, "--diameter");  // a newline in a value stays on its line
+  EXPECT_TRUE(refused({"m.msh", "--diamter", "1"}, "--diamter"));
+  EXPECT_TRUE(refused({"m.msh", "--diameter"}, "--diameter"));
+  EXPECT_TRUE(refused({"m.msh", "--diameter", "1", "--diameter=2"}, "--diameter"));
+  EXPECT_TRUE(refused({"m.msh", "--json", "--json"}, "--json"));
+  EXPECT_TRUE(refused({"m.msh", "--json=yes"}, "json"));
+  EXPECT_TRUE(refused({"m.msh", "n.msh"}, "n.msh"));
+  EXPECT_TRUE(refused({}, "MESH"));
+  EXPECT_TRUE(refused({"m.msh", "--diameter", "a\nb"}, "--diameter"));  // a newline in a value stays on its line
 }
 
 TEST(CommandParser, HelpListsEveryOptionOnStdoutAndExitsZero) {

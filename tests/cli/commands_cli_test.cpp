@@ -56,14 +56,16 @@ const std::vector<CommandCase>& cases() {
   return kCases;
 }
 
-// Two lines on stderr, "tetcut NAME: ..." naming `what`, then "usage: tetcut NAME ...".
-void expect_usage_error(const ProcessResult& r, const std::string& name, const std::string& what) {
-  EXPECT_TRUE(r.exited);
-  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_TRUE(r.err.starts_with("tetcut " + name + ": ")) << r.err;
-  EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("\nusage: tetcut " + name), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
+// Two lines on stderr, "tetcut NAME: ..." naming `what`, then "usage: tetcut NAME ...", exit 2.
+::testing::AssertionResult usage_error(const ProcessResult& r, const std::string& name, const std::string& what) {
+  auto failure = [&](const std::string& why) { return ::testing::AssertionFailure() << "tetcut " << name << ": " << why << "\n" << r.out << r.err; };
+  if (!r.exited) return failure("did not exit");
+  if (r.exit_code != 2) return failure("exit code " + std::to_string(r.exit_code) + ", not 2");
+  if (!r.err.starts_with("tetcut " + name + ": ")) return failure("not prefixed with the command");
+  if (r.err.find(what) == std::string::npos) return failure("does not name '" + what + "'");
+  if (r.err.find("\nusage: tetcut " + name) == std::string::npos) return failure("no usage line");
+  if (std::count(r.err.begin(), r.err.end(), '\n') != 2) return failure("not one line and the usage");
+  return ::testing::AssertionSuccess();
 }
 
 TEST_F(Cli, EveryCommandsHelpListsItsOptions) {
@@ -82,7 +84,7 @@ TEST_F(Cli, EveryCommandsHelpListsItsOptions) {
 TEST_F(Cli, EveryCommandRefusesAnUnknownOptionInOneLine) {
   for (const CommandCase& c : cases()) {
     SCOPED_TRACE(c.name);
-    expect_usage_error(tetcut({c.name, "--no-such-option"}), c.name, "--no-such-option");
+    EXPECT_TRUE(usage_error(tetcut({c.name, "--no-such-option"}), c.name, "--no-such-option"));
   }
 }
 
@@ -93,7 +95,7 @@ TEST_F(Cli, EveryCommandRefusesAMalformedNumberNamingTheOption) {
     SCOPED_TRACE(c.name);
     std::vector<std::string> args = {c.name};
     for (const std::string& a : c.bad_number) args.push_back(a == "BOX" ? box : a == "OUT" ? path("out.msh") : a);
-    expect_usage_error(tetcut(args), c.name, c.bad_option + ": expects");
+    EXPECT_TRUE(usage_error(tetcut(args), c.name, c.bad_option + ": expects"));
     EXPECT_FALSE(fs::exists(path("out.msh")));
   }
 }
@@ -103,13 +105,13 @@ TEST_F(Cli, CutRefusesNumbersThatAreNotWhatTheUserWrote) {
   for (const char* bad : {"nan", "inf", "", " 1", "0x10", "1e999", "1e3x"}) {
     const ProcessResult r =
         tetcut({"cut", box, "--diameter", bad, "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"});
-    expect_usage_error(r, "cut", std::string("--diameter: expects a finite number, not '") + bad + "'");
+    EXPECT_TRUE(usage_error(r, "cut", std::string("--diameter: expects a finite number, not '") + bad + "'"));
   }
-  expect_usage_error(tetcut({"cut", box, "--diameter", "-1", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"}),
-                     "cut", "diameter");
-  expect_usage_error(tetcut({"cut", box, "--diameter", "0.5", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5",
-                             "--depth", "99999999999999999999"}),
-                     "cut", "--depth: expects a non-negative integer");
+  EXPECT_TRUE(usage_error(tetcut({"cut", box, "--diameter", "-1", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"}),
+                          "cut", "diameter"));
+  EXPECT_TRUE(usage_error(tetcut({"cut", box, "--diameter", "0.5", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5",
+                                  "--depth", "99999999999999999999"}),
+                          "cut", "--depth: expects a non-negative integer"));
 }
 
 std::string read_text(const std::string& p) {
