@@ -136,7 +136,7 @@ void BM_RemovalByStrategy(benchmark::State& state) {
     // growth of the mesh's arrays (2 ms once) is not a request's cost.
     mesh.reserve(mesh.tet_capacity() * 2, mesh.vertex_capacity() * 2);
     tetcut::Remover remover({.strategy = strategy});
-    remover.reserve(mesh.tet_capacity() * 2);
+    remover.reserve(mesh.tet_capacity() * 2, mesh.vertex_capacity() * 2);
     tetcut::BoundaryTetPicker picker(mesh, 2002);
     state.ResumeTiming();
     for (int i = 0; i < 2000; ++i) {

@@ -44,7 +44,7 @@ void Cutter::Pipeline::prepare() {
   const std::uint32_t vertices = mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024;
   mesh_.reserve(tets, vertices);
   refiner_.reserve(tets);
-  remover_.reserve(tets);
+  remover_.reserve(tets, vertices);
   for (auto* marks : {&made_, &selected_, &tissue_, &tried_, &queued_})
     if (marks->size() < tets) marks->resize(tets, 0);
   if (origin_.size() < tets) origin_.resize(tets, kNoTet);

@@ -56,14 +56,14 @@ Remover::~Remover() = default;
 Remover::Remover(Remover&&) noexcept = default;
 Remover& Remover::operator=(Remover&&) noexcept = default;
 
-void Remover::reserve(std::uint32_t tets) {
+void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
   // The working size of one request's lists: a larger request grows them once.
   using detail::reserve_touched;
   for (auto* v : {&ws_->log.removed, &ws_->net_removed, &ws_->net_created, &ws_->exposed}) reserve_touched(*v, 4096);
   reserve_touched(ws_->log.created, 4096);
   reserve_touched(ws_->log.vertices, 4096);
   reserve_touched(ws_->set, 1024);
-  ws_->set_test.reserve(tets);
+  ws_->set_test.reserve(tets, vertices);
   ws_->splitter.reserve(tets);
   ws_->neighbours.reserve();
   ws_->wide.reserve();

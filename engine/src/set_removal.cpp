@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <utility>
 
 #include "detail/local_tables.hpp"
 #include "detail/reserve_touched.hpp"
@@ -29,19 +30,30 @@ void SetRemovalWorkspace::grow(const TetMesh& mesh) {
     visit_stamp_.resize(n, 0);
     parent_.resize(n, 0);
   }
+  if (circle_stamp_.size() < mesh.vertex_capacity()) {
+    const std::size_t n = mesh.vertex_capacity() + mesh.vertex_capacity() / 4 + 16;
+    circle_stamp_.resize(n, 0);
+    vertex_stamp_.resize(n, 0);
+    vertex_slot_.resize(n, 0);
+  }
 }
 
-void SetRemovalWorkspace::reserve(std::uint32_t tets) {
+void SetRemovalWorkspace::reserve(std::uint32_t tets, std::uint32_t vertices) {
   if (set_stamp_.size() < tets) {
     set_stamp_.resize(tets, 0);
     shell_stamp_.resize(tets, 0);
     visit_stamp_.resize(tets, 0);
     parent_.resize(tets, 0);
   }
-  for (auto* v : {&shell_, &queue_, &ring_, &group_}) detail::reserve_touched(*v, 512);
+  if (circle_stamp_.size() < vertices) {
+    circle_stamp_.resize(vertices, 0);
+    vertex_stamp_.resize(vertices, 0);
+    vertex_slot_.resize(vertices, 0);
+  }
+  for (auto* v : {&shell_, &queue_, &ring_, &distinct_, &at_vertex_}) detail::reserve_touched(*v, 2048);
   detail::reserve_touched(depth_, 512);
-  detail::reserve_touched(at_vertex_, 2048);
-  edges_seen_.reserve(4096);
+  detail::reserve_touched(set_vertices_, 2048);
+  detail::reserve_touched(vertex_begin_, 2048);
 }
 
 void SetRemovalWorkspace::mark(const TetMesh& mesh, std::span<const TetId> set) {
@@ -83,15 +95,19 @@ void SetRemovalWorkspace::visit_fresh_shell_neighbours(const TetMesh& mesh, Vert
 }
 
 // The link of v is a disk (v on the surface) or a sphere; the set's tets at v are triangles of
-// it. Once every edge of the set has passed edge_ok(), the kept and the removed triangles each
-// form one fan around every link vertex, so the interface between what stays and what goes
+// it, the kept tets at v the kept region K of the link. The interface between K and what goes
 // (the boundary faces of the mesh count as "goes": the link's own border is glued to a removed
-// cell) is a union of disjoint circles, and by Jordan's theorem what stays is a disk iff there
-// is exactly one circle, or nothing stays iff there is none. So the test follows one circle
-// and compares its length with the number of interface edges, both of which are local: the
-// faces at v of the set's tets with a kept tet behind them, and the boundary faces at v of kept
-// tets (the vertex's boundary face count minus the set's). It never walks the whole shell.
-bool SetRemovalWorkspace::vertex_ok(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v) {
+// cell) is the boundary of K. Both I5 at v and I6 at every edge (v, w) hold after the removal
+// iff K is empty or a disk: the kept tets around (v, w) are the triangles of K at the link
+// vertex w, one run iff one fan. The test walks the boundary of K from one interface edge,
+// keeping K on one hand, and accepts iff the walk comes back having followed every interface
+// edge and passed no link vertex twice: then the boundary is one simple closed curve, and by
+// Jordan-Schoenflies K is a disk (docs/removal-proof.md, "The set test"). A link vertex met
+// twice is a pinch of K, that is two runs of kept tets around the edge (v, w): it is reported
+// as that edge. Everything is local: the set's faces at v, the vertex's boundary face count,
+// and the turns of one walk; never the whole shell.
+SetRemovalWorkspace::VertexVerdict SetRemovalWorkspace::vertex_ok(const TetMesh& mesh, VertId v,
+                                                                  std::span<const TetId> removed_at_v) {
   std::uint32_t inner = 0, removed_boundary = 0;
   TetId start{};
   int start_face = 0;
@@ -112,11 +128,11 @@ bool SetRemovalWorkspace::vertex_ok(const TetMesh& mesh, VertId v, std::span<con
   }
   const std::uint32_t kept_boundary = mesh.boundary_face_count(v) - removed_boundary;
   // No interface inside the link: nothing stays (a kept part would border the removed one).
-  if (inner == 0) return kept_boundary == 0;
+  if (inner == 0) return {kept_boundary == 0, VertId{}};
   const std::uint32_t interface = inner + kept_boundary;
 
-  // Walk the circle through the start edge, keeping the removed side on one hand. State: kept
-  // tet u, the link edge (from, pivot) just followed; turn around the mesh edge (v, pivot)
+  // Walk the boundary of K through the start edge, keeping the removed side on one hand. State:
+  // kept tet u, the link edge (from, pivot) just followed; turn around the mesh edge (v, pivot)
   // through kept tets until the next face at v has a removed tet or nothing behind it.
   const std::array<VertId, 4> sv = mesh.tet(start);
   VertId from{}, pivot{};
@@ -124,92 +140,96 @@ bool SetRemovalWorkspace::vertex_ok(const TetMesh& mesh, VertId v, std::span<con
     if (i == start_face || sv[i] == v) continue;
     (from.valid() ? pivot : from) = sv[i];
   }
+  // Every link vertex the walk reaches is stamped when it becomes the pivot; `from` becomes the
+  // pivot last, the one whose turn leads back onto the start edge.
+  const std::uint32_t g = next_gen(circle_stamp_, circle_gen_);
+  circle_stamp_[pivot.value] = g;
   TetId u = start;
   std::uint32_t followed = 1;
-  // A valid mesh closes the circle within a few turns per edge; the bound only guards the loop.
+  // A valid mesh closes the walk within a few turns per edge; the bound only guards the loop.
   for (std::uint32_t steps = 0; steps < 64u * interface + 1024u; ++steps) {
-    const int face = mesh.local_index(u, from);  // the face of u at v and pivot, away from `from`
+    const TetMesh::TetVerts uv = mesh.tet(u);
+    int face = 0;  // the face of u at v and pivot, away from `from`
+    while (face < 3 && uv[face] != from) ++face;
+    // u's fourth vertex besides v, pivot and from (all four are distinct): on the interface the
+    // next link vertex, else the vertex of the entry face that takes `from`'s place.
+    const VertId fourth{uv[0].value ^ uv[1].value ^ uv[2].value ^ uv[3].value ^ v.value ^ pivot.value ^ from.value};
     const FaceRef n = mesh.neighbour(u, face);
     if (!n.valid() || marked(n.tet)) {
-      // An interface edge (pivot, next): follow it.
-      if (u == start && face == start_face) return followed == interface;
+      // An interface edge (pivot, fourth): follow it.
+      if (u == start && face == start_face) return {followed == interface, VertId{}};
       ++followed;
-      VertId next{};
-      for (int i = 0; i < 4; ++i) {
-        const VertId w = mesh.vertex(u, i);
-        if (w != v && w != pivot && w != from) next = w;
-      }
+      if (circle_stamp_[fourth.value] == g) return {false, fourth};  // K pinched there
+      circle_stamp_[fourth.value] = g;
       from = pivot;
-      pivot = next;
+      pivot = fourth;
       continue;
     }
-    // Kept tet behind: turn into it around (v, pivot); the face we entered by holds `from`'s
-    // replacement, the vertex of the entry face other than v and pivot.
-    VertId entry_other{};
-    for (int i = 0; i < 4; ++i) {
-      if (i == face) continue;
-      const VertId w = mesh.vertex(u, i);
-      if (w != v && w != pivot) entry_other = w;
-    }
+    // Kept tet behind: turn into it around (v, pivot), entering by the face (v, pivot, fourth).
     u = n.tet;
-    from = entry_other;
+    from = fourth;
   }
-  return false;
-}
-
-bool SetRemovalWorkspace::edge_ok(const TetMesh& mesh, TetId t, int local_edge) {
-  const bool open = mesh.edge_shell(t, local_edge, ring_);
-  const std::size_t n = ring_.size();
-  // Count runs of unmarked tets: a run starts at an unmarked tet whose predecessor is marked
-  // (or, on an open ring, at the first tet).
-  int runs = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (marked(ring_[i])) continue;
-    const bool starts = open ? (i == 0 || marked(ring_[i - 1])) : marked(ring_[(i + n - 1) % n]);
-    runs += starts;
-  }
-  return runs <= 1;
+  return {false, VertId{}};
 }
 
 SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const TetId> set) {
-  mark(mesh, set);
-  SetRemovalCheck result;
-
-  edges_seen_.clear();
+  // Marks the set and groups its tets by vertex in two linear passes (a bucket per vertex, in
+  // the order the set first names them): a sort of (vertex, tet) pairs was a quarter of the test.
+  grow(mesh);
+  const std::uint32_t g = next_gen(set_stamp_, set_gen_);
+  const std::uint32_t vg = next_gen(vertex_stamp_, vertex_gen_);
+  distinct_.clear();
+  set_vertices_.clear();
+  vertex_begin_.clear();
   for (TetId t : set) {
-    for (int e = 0; e < 6; ++e) {
-      const VertId a = mesh.vertex(t, kEdgeVerts[e][0]), b = mesh.vertex(t, kEdgeVerts[e][1]);
-      if (!edges_seen_.insert(a, b)) continue;
-      if (!edge_ok(mesh, t, e)) {
-        result.ok = false;
-        result.kind = SingularityKind::kEdge;
-        result.edge = {a, b};
-        result.tet = t;
-        result.local_edge = static_cast<std::uint8_t>(e);
-        return result;
+    if (set_stamp_[t.value] == g) continue;  // a tet listed twice counts once
+    set_stamp_[t.value] = g;
+    distinct_.push_back(t);
+    for (VertId v : mesh.tet(t)) {
+      if (vertex_stamp_[v.value] != vg) {
+        vertex_stamp_[v.value] = vg;
+        vertex_slot_[v.value] = static_cast<std::uint32_t>(set_vertices_.size());
+        set_vertices_.push_back(v);
+        vertex_begin_.push_back(0);
       }
+      ++vertex_begin_[vertex_slot_[v.value]];  // a count for now
     }
   }
-
-  // Vertex by vertex, with the set's tets at each (a tet listed twice counts once).
-  at_vertex_.clear();
-  for (TetId t : set)
-    for (int i = 0; i < 4; ++i) at_vertex_.push_back({mesh.vertex(t, i).value, t.value});
-  std::sort(at_vertex_.begin(), at_vertex_.end());
-  at_vertex_.erase(std::unique(at_vertex_.begin(), at_vertex_.end()), at_vertex_.end());
-  for (std::size_t i = 0; i < at_vertex_.size();) {
-    std::size_t j = i;
-    group_.clear();
-    while (j < at_vertex_.size() && at_vertex_[j].first == at_vertex_[i].first) group_.push_back(TetId{at_vertex_[j++].second});
-    const VertId v{at_vertex_[i].first};
-    if (!vertex_ok(mesh, v, group_)) {
-      result.ok = false;
+  std::uint32_t offset = 0;
+  for (std::uint32_t& b : vertex_begin_) offset += std::exchange(b, offset);
+  vertex_begin_.push_back(offset);
+  at_vertex_.resize(offset);
+  for (TetId t : distinct_)
+    for (VertId v : mesh.tet(t)) at_vertex_[vertex_begin_[vertex_slot_[v.value]]++] = t;
+  // Each begin now holds its end; the first vertex begins at 0.
+  SetRemovalCheck result;
+  for (std::size_t i = 0; i < set_vertices_.size(); ++i) {
+    const std::uint32_t begin = i == 0 ? 0 : vertex_begin_[i - 1];
+    const std::span<const TetId> group(at_vertex_.data() + begin, vertex_begin_[i] - begin);
+    const VertId v = set_vertices_[i];
+    const VertexVerdict verdict = vertex_ok(mesh, v, group);
+    if (verdict.ok) continue;
+    result.ok = false;
+    result.tet = group.front();
+    if (!verdict.pinched.valid()) {
       result.kind = SingularityKind::kVertex;
       result.vertex = v;
-      result.tet = group_.front();
       return result;
     }
-    i = j;
+    // Two runs of kept tets around (v, pinched): named from a removed tet on that edge (there is
+    // one, or its ring would be whole: one run).
+    result.kind = SingularityKind::kEdge;
+    for (TetId t : group) {
+      const int lw = mesh.local_index(t, verdict.pinched);
+      if (lw < 0) continue;
+      const int e = kEdgeIndex[mesh.local_index(t, v)][lw];
+      result.tet = t;
+      result.local_edge = static_cast<std::uint8_t>(e);
+      result.edge = {mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])};
+      return result;
+    }
+    assert(false && "a pinched link vertex lies on a removed tet at v");
+    return result;
   }
   return result;
 }

@@ -80,21 +80,26 @@ INSTANTIATE_TEST_SUITE_P(RemovalStrategies, ASingularity,
 
 TEST(RemovalStrategies, EdgeSingularitiesInABoxAreResolvedWithValidMeshes) {
   // Edge singularities away from a hand-built corner: hollow a 3x3x2 box by repeated requests
-  // until one shows up, for each strategy; every request leaves a valid mesh.
+  // until one shows up, for each strategy (a few pick orders, as a box can also be emptied
+  // without meeting one); every request leaves a valid mesh.
   for (RemovalStrategy strategy : kAll) {
     SCOPED_TRACE(to_string(strategy));
-    TetMesh mesh = box(3, 3, 2);
-    invariants::LocalChecker local(mesh.raw_view());
-    Remover remover({.strategy = strategy});
-    BoundaryTetPicker picker(mesh, 11);
-    for (int i = 0; i < 400 && remover.report().edge_singularities == 0; ++i) {
-      const TetId t = picker.pick(mesh);
-      ASSERT_TRUE(t.valid());
-      ASSERT_TRUE(remove_checked(remover, mesh, t, local));
-      picker.add(remover.last_exposed());
+    std::uint32_t met = 0;
+    for (std::uint64_t seed = 11; seed < 19 && met == 0; ++seed) {
+      TetMesh mesh = box(3, 3, 2);
+      invariants::LocalChecker local(mesh.raw_view());
+      Remover remover({.strategy = strategy});
+      BoundaryTetPicker picker(mesh, seed);
+      for (int i = 0; i < 400 && remover.report().edge_singularities == 0; ++i) {
+        const TetId t = picker.pick(mesh);
+        if (!t.valid()) break;  // emptied
+        ASSERT_TRUE(remove_checked(remover, mesh, t, local));
+        picker.add(remover.last_exposed());
+      }
+      met = remover.report().edge_singularities;
+      EXPECT_TRUE(mesh_is_valid(mesh));
     }
-    EXPECT_GT(remover.report().edge_singularities, 0u);
-    EXPECT_TRUE(mesh_is_valid(mesh));
+    EXPECT_GT(met, 0u);
   }
 }
 

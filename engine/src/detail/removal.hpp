@@ -109,8 +109,8 @@ class Remover {
   RemovalResult remove(TetMesh& mesh, TetId t, ChangeLog* log = nullptr, const RequestLimits& limits = {});
 
   [[nodiscard]] const RemovalReport& report() const { return report_; }
-  // Sizes all per-tet scratch for meshes up to this capacity (see Cutter).
-  void reserve(std::uint32_t tets);
+  // Sizes all per-tet and per-vertex scratch for meshes up to these capacities (see Cutter).
+  void reserve(std::uint32_t tets, std::uint32_t vertices);
   void reset_report() { report_ = {}; }
   // For another mesh (or the same one assigned anew): the report and every per-tet mark of the
   // old one are cleared; the workspaces keep their memory, so nothing is reallocated.

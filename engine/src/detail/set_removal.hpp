@@ -4,13 +4,13 @@
 //
 // After the set goes, every vertex it touches must keep either no tet at all, or one
 // face-connected shell whose link is a disk; every edge it touches must keep either no tet or
-// one contiguous run of tets around it. The edges are tested first (they name the edge, which
-// is what the neighbour strategy needs); once they pass, the vertex test needs only the
-// interface between kept and removed tets in the vertex's link, which is a union of circles:
-// what stays is a disk iff there is exactly one (set_removal.cpp says why). The test follows
-// one circle from the set's own faces, so it costs what the set touches, not whole shells.
+// one contiguous run of tets around it. One walk per vertex answers both: in the vertex's link,
+// the kept region must be empty or a disk, i.e. the interface between kept and removed tets one
+// simple closed curve; a link vertex the curve passes twice is an edge with two runs of kept
+// tets, and is reported as that edge (set_removal.cpp and docs/removal-proof.md say why). The
+// walk starts from the set's own faces, so it costs what the set touches, not whole shells.
 //
-// Everything is local: O(set x edge rings + the interface's turns), no scan of the mesh, no
+// Everything is local: O(the set's faces + the interface's turns), no scan of the mesh, no
 // allocation once the workspace has grown (stamps, never cleared arrays).
 #pragma once
 
@@ -19,7 +19,6 @@
 #include <utility>
 #include <vector>
 
-#include "detail/edge_key_set.hpp"
 #include "detail/edge_split.hpp"
 #include "detail/removability.hpp"
 #include "tetcut/ids.hpp"
@@ -47,7 +46,9 @@ class SetRemovalWorkspace {
   void mark(const TetMesh& mesh, std::span<const TetId> set);
   [[nodiscard]] bool marked(TetId t) const { return t.value < set_stamp_.size() && set_stamp_[t.value] == set_gen_; }
 
-  // The test on `set` (marks it first). Edges are tested before vertices.
+  // The test on `set` (marks it first), vertex by vertex in the order the set first names them;
+  // the first vertex whose link fails names the offence: that vertex, or the edge at it with two
+  // runs of kept tets.
   SetRemovalCheck check(const TetMesh& mesh, std::span<const TetId> set);
 
   // The unmarked tets around v, split into face-connected components (connected through faces
@@ -68,9 +69,9 @@ class SetRemovalWorkspace {
   void remaining_runs(const TetMesh& mesh, TetId seed, int local_edge, std::vector<TetId>& tets,
                       std::vector<std::uint32_t>& sizes);
 
-  // Sizes the per-tet scratch for meshes up to this capacity now, rather than in the middle of
-  // the first operation that needs it.
-  void reserve(std::uint32_t tets);
+  // Sizes the per-tet and per-vertex scratch for meshes up to these capacities now, rather
+  // than in the middle of the first operation that needs it.
+  void reserve(std::uint32_t tets, std::uint32_t vertices);
 
  private:
   void grow(const TetMesh& mesh);
@@ -80,23 +81,33 @@ class SetRemovalWorkspace {
   // through v that visit generation g has not seen yet is stamped and handed to `visit`.
   template <class Visit>
   void visit_fresh_shell_neighbours(const TetMesh& mesh, VertId v, TetId cur, std::uint32_t g, Visit&& visit);
-  // The set's tets at v are `removed_at_v` (marked, distinct).
-  bool vertex_ok(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v);
-  bool edge_ok(const TetMesh& mesh, TetId t, int local_edge);
+  // The set's tets at v are `removed_at_v` (marked, distinct). Not ok with `pinched` valid:
+  // the edge (v, pinched) keeps two runs of tets; with `pinched` invalid: v itself is singular.
+  struct VertexVerdict {
+    bool ok;
+    VertId pinched;
+  };
+  VertexVerdict vertex_ok(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v);
 
   std::vector<std::uint32_t> set_stamp_;    // per tet: == set_gen_ when marked
   std::vector<std::uint32_t> shell_stamp_;  // per tet: == shell_gen_ when in shell_
   std::vector<std::uint32_t> visit_stamp_;  // per tet: BFS visits
   std::vector<std::uint32_t> parent_;       // per tet: BFS parent (valid where visited)
-  std::uint32_t set_gen_ = 0, shell_gen_ = 0, visit_gen_ = 0;
+  std::vector<std::uint32_t> circle_stamp_; // per vertex: == circle_gen_ when the walk passed it
+  std::uint32_t set_gen_ = 0, shell_gen_ = 0, visit_gen_ = 0, circle_gen_ = 0, vertex_gen_ = 0;
 
   std::vector<TetId> shell_;
   std::vector<TetId> queue_;
   std::vector<std::uint8_t> depth_;
   std::vector<TetId> ring_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> at_vertex_;  // (vertex, tet) of the set
-  std::vector<TetId> group_;
-  EdgeKeySet edges_seen_;
+  // The set's tets grouped by vertex (check): the set without repeats, its vertices in order of
+  // first appearance, and for each the range of at_vertex_ holding its tets.
+  std::vector<TetId> distinct_;
+  std::vector<VertId> set_vertices_;
+  std::vector<std::uint32_t> vertex_begin_;
+  std::vector<TetId> at_vertex_;
+  std::vector<std::uint32_t> vertex_stamp_;  // per vertex: == vertex_gen_ when in set_vertices_
+  std::vector<std::uint32_t> vertex_slot_;   // per vertex: its index in set_vertices_
 };
 
 // Convenience: the test with a given workspace.
