@@ -154,6 +154,52 @@ TEST(SetRemoval, AgreesWithTheCheckerOnRandomConnectedSets) {
   EXPECT_GT(not_removable, 20);
 }
 
+TEST(SetRemoval, ATestedPrefixGivesTheVerdictOfAFullTest) {
+  // The searches test a failing set extended by a few tets and tell the test what the failing
+  // set's own test found (TestedPrefix), so that the vertices that passed and that no added tet
+  // touches are not walked again. The answer, offence and all, must be the full test's.
+  for (const char* name : {"liver-small.msh", "cylinder-small.msh"}) {
+    ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/fuzz/meshes/" + name);
+    ASSERT_TRUE(read.mesh.has_value()) << name;
+    const TetMesh mesh = build_or_fail(*read.mesh);
+    SetRemovalWorkspace ws;
+    SplitMix64 rng(404);
+    std::vector<TetId> set;
+    int reused = 0, became_removable = 0, still_failing = 0;
+    auto grow = [&](std::size_t want) {
+      for (int step = 0; step < 200 && set.size() < want; ++step) {
+        const TetId from = set[rng.below(static_cast<std::uint32_t>(set.size()))];
+        const FaceRef n = mesh.neighbour(from, static_cast<int>(rng.below(4)));
+        if (n.valid() && std::find(set.begin(), set.end(), n.tet) == set.end()) set.push_back(n.tet);
+      }
+    };
+    for (int trial = 0; trial < 600; ++trial) {
+      set.assign(1, TetId{rng.below(mesh.tet_capacity())});
+      grow(2 + rng.below(12));
+      const SetRemovalCheck base = ws.check(mesh, set);
+      if (base.ok) continue;
+      const TestedPrefix prefix{static_cast<std::uint32_t>(set.size()), base.vertices_passed};
+      grow(set.size() + 1 + rng.below(6));
+      const SetRemovalCheck full = ws.check(mesh, set);
+      const SetRemovalCheck quick = ws.check(mesh, set, prefix);
+      ASSERT_EQ(quick.ok, full.ok) << name << " trial " << trial;
+      EXPECT_EQ(quick.vertices_passed, full.vertices_passed) << name << " trial " << trial;
+      if (!full.ok) {
+        EXPECT_EQ(quick.kind, full.kind) << name << " trial " << trial;
+        EXPECT_EQ(quick.tet, full.tet) << name << " trial " << trial;
+        EXPECT_EQ(quick.vertex, full.vertex) << name << " trial " << trial;
+        EXPECT_EQ(quick.local_edge, full.local_edge) << name << " trial " << trial;
+      }
+      reused += prefix.vertices > 0;
+      (full.ok ? became_removable : still_failing) += 1;
+    }
+    // The reuse happened, and both verdicts occur.
+    EXPECT_GT(reused, 50) << name;
+    EXPECT_GT(became_removable, 10) << name;
+    EXPECT_GT(still_failing, 50) << name;
+  }
+}
+
 TEST(SetRemoval, APathThatPinchesAVertexIsRefusedByTheEulerTest) {
   // Any two of the six tets around the cube's diagonal: two opposite ones leave the diagonal
   // with two separate runs of tets (a singular edge), which the checker names; the local test

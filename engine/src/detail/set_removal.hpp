@@ -35,6 +35,17 @@ struct SetRemovalCheck {
   // where a search that wants to repair the offence starts.
   TetId tet;
   std::uint8_t local_edge = 0;
+  // How many of the set's vertices, in the order the test visits them, passed before the
+  // offence (all of them when ok): what a test of a larger set starting with this one reuses.
+  std::uint32_t vertices_passed = 0;
+};
+
+// What an earlier test tells the test of a set that begins with the same tets, in the same
+// order: the verdict at a vertex depends only on the set's tets at it, so a vertex that passed
+// then and that none of the added tets contains passes again, and is not walked twice.
+struct TestedPrefix {
+  std::uint32_t tets = 0;      // the set begins with the tets of the set tested before
+  std::uint32_t vertices = 0;  // that test's vertices_passed
 };
 
 // Caller-owned scratch for set_removable() and for the searches of the removal strategies,
@@ -49,7 +60,7 @@ class SetRemovalWorkspace {
   // The test on `set` (marks it first), vertex by vertex in the order the set first names them;
   // the first vertex whose link fails names the offence: that vertex, or the edge at it with two
   // runs of kept tets.
-  SetRemovalCheck check(const TetMesh& mesh, std::span<const TetId> set);
+  SetRemovalCheck check(const TetMesh& mesh, std::span<const TetId> set, TestedPrefix prefix = {});
 
   // The unmarked tets around v, split into face-connected components (connected through faces
   // containing v): appended to `tets` component after component, each size appended to
@@ -105,6 +116,7 @@ class SetRemovalWorkspace {
   std::vector<TetId> distinct_;
   std::vector<VertId> set_vertices_;
   std::vector<std::uint32_t> vertex_begin_;
+  std::vector<std::uint8_t> vertex_changed_;  // per set vertex: a tet beyond the tested prefix has it
   std::vector<TetId> at_vertex_;
   std::vector<std::uint32_t> vertex_stamp_;  // per vertex: == vertex_gen_ when in set_vertices_
   std::vector<std::uint32_t> vertex_slot_;   // per vertex: its index in set_vertices_

@@ -29,12 +29,13 @@ void NeighbourSearch::reserve() {
 }
 
 void NeighbourSearch::consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> base,
-                               std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out) {
+                               std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out,
+                               TestedPrefix tested) {
   const std::size_t size = base.size() + extra.size();
   if (size > max_set_size || (!out.empty() && size >= out.size())) return;
   candidate_.assign(base.begin(), base.end());
   candidate_.insert(candidate_.end(), extra.begin(), extra.end());
-  if (ws.check(mesh, candidate_).ok) out.swap(candidate_);
+  if (ws.check(mesh, candidate_, tested).ok) out.swap(candidate_);
 }
 
 bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first,
@@ -73,7 +74,8 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
   if (sizes_.size() < 2) return false;
   std::size_t offset = 0;
   for (std::uint32_t n : sizes_) {
-    consider(mesh, ws, base_, std::span<const TetId>(parts_.data() + offset, n), max_set_size, out);
+    consider(mesh, ws, base_, std::span<const TetId>(parts_.data() + offset, n), max_set_size, out,
+             {static_cast<std::uint32_t>(base_.size()), check.vertices_passed});
     offset += n;
   }
   return !out.empty();

@@ -37,8 +37,10 @@ class NeighbourSearch {
 
  private:
   // Tests base + extra; keeps it in `out` when removable and smaller than what `out` holds.
+  // `tested`: what a test of base alone found, if there was one.
   void consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> base,
-                std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out);
+                std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out,
+                TestedPrefix tested = {});
   std::vector<TetId> base_, candidate_, parts_;
   std::vector<std::uint32_t> sizes_;
 };

@@ -20,12 +20,13 @@ constexpr std::size_t kFrontierWidth = 4;
 
 }  // namespace
 
-void WideSearch::add_candidate(std::uint32_t begin, std::uint32_t size, std::span<const TetId> extra,
-                               std::uint32_t max_set_size) {
-  if (extra.empty() || size + extra.size() > max_set_size) return;
+void WideSearch::add_candidate(const Candidate& from, std::span<const TetId> extra, std::uint32_t max_set_size) {
+  if (extra.empty() || from.size + extra.size() > max_set_size) return;
+  const std::uint32_t begin = from.begin, size = from.size;
   Candidate c;
   c.begin = static_cast<std::uint32_t>(pool_.size());
   c.size = size + static_cast<std::uint32_t>(extra.size());
+  c.prefix = {size, from.offence.vertices_passed};
   for (std::uint32_t i = begin; i < begin + size; ++i) {
     const TetId x = pool_[i];  // a copy: push_back may reallocate pool_
     pool_.push_back(x);
@@ -46,24 +47,24 @@ void WideSearch::expand(const TetMesh& mesh, SetRemovalWorkspace& ws, const Cand
     ws.remaining_runs(mesh, off.tet, off.local_edge, tmp_tets_, tmp_sizes_);
     std::size_t offset = 0;
     for (std::uint32_t n : tmp_sizes_) {
-      add_candidate(from.begin, from.size, part(offset, n), limits.max_set_size);
+      add_candidate(from, part(offset, n), limits.max_set_size);
       offset += n;
     }
-    if (tmp_sizes_.size() >= 2) add_candidate(from.begin, from.size, part(0, tmp_tets_.size()), limits.max_set_size);
+    if (tmp_sizes_.size() >= 2) add_candidate(from, part(0, tmp_tets_.size()), limits.max_set_size);
   } else if (off.kind == SingularityKind::kVertex) {
     ws.remaining_components(mesh, off.vertex, off.tet, tmp_tets_, tmp_sizes_);
     if (tmp_sizes_.size() >= 2) {
       std::size_t offset = 0;
       for (std::uint32_t n : tmp_sizes_) {
-        add_candidate(from.begin, from.size, part(offset, n), limits.max_set_size);
+        add_candidate(from, part(offset, n), limits.max_set_size);
         offset += n;
       }
     }
     tmp_path_.clear();
     if (ws.path_to_border(mesh, off.vertex, off.tet, limits.max_path_depth, tmp_path_))
-      add_candidate(from.begin, from.size, tmp_path_, limits.max_set_size);
+      add_candidate(from, tmp_path_, limits.max_set_size);
     // The vertex goes entirely (beyond the paper).
-    add_candidate(from.begin, from.size, part(0, tmp_tets_.size()), limits.max_set_size);
+    add_candidate(from, part(0, tmp_tets_.size()), limits.max_set_size);
   }
 }
 
@@ -88,7 +89,7 @@ bool WideSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<co
     for (Candidate& c : candidates_) {
       if (evaluations >= limits.max_evaluations) return false;
       const std::span<const TetId> set(pool_.data() + c.begin, c.size);
-      const SetRemovalCheck check = ws.check(mesh, set);
+      const SetRemovalCheck check = ws.check(mesh, set, c.prefix);
       ++evaluations;
       if (check.ok) {
         out.assign(set.begin(), set.end());

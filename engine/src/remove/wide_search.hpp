@@ -35,10 +35,11 @@ class WideSearch {
  private:
   struct Candidate {
     std::uint32_t begin = 0, size = 0;  // in pool_
+    TestedPrefix prefix;                // the candidate it extends, and what its test found
     SetRemovalCheck offence;
   };
   void expand(const TetMesh& mesh, SetRemovalWorkspace& ws, const Candidate& from, const WideSearchLimits& limits);
-  void add_candidate(std::uint32_t begin, std::uint32_t size, std::span<const TetId> extra, std::uint32_t max_set_size);
+  void add_candidate(const Candidate& from, std::span<const TetId> extra, std::uint32_t max_set_size);
 
   std::vector<TetId> pool_;
   std::vector<Candidate> candidates_, frontier_, next_frontier_;
