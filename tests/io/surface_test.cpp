@@ -42,7 +42,13 @@ TEST(Surface, OffQuadsBecomeTriangleFans) {
 }
 
 TEST(Surface, ObjWithSlashedCornersRelativeIndicesAndGroups) {
-  read_closed_cube("cube_quads.obj");
+  // The cube of cube_quads.off, written with v/vt/vn and v//vn corners, a relative face (the
+  // last one, -8 -4 -1 -5), groups, smoothing and materials: it reads to the same triangles.
+  const SurfaceReadResult obj = read_closed_cube("cube_quads.obj");
+  const SurfaceReadResult off = read_surface(test::corpus_file("cube_quads.off"));
+  ASSERT_TRUE(obj.surface.has_value() && off.surface.has_value());
+  EXPECT_EQ(obj.surface->positions, off.surface->positions);
+  EXPECT_EQ(obj.surface->triangles, off.surface->triangles);
 }
 
 TEST(Surface, StlAsciiAndBinaryWeldToTheSameTetrahedron) {
