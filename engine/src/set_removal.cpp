@@ -30,9 +30,8 @@ void SetRemovalWorkspace::grow(const TetMesh& mesh) {
     visit_stamp_.resize(n, 0);
     parent_.resize(n, 0);
   }
-  if (circle_stamp_.size() < mesh.vertex_capacity()) {
+  if (vertex_stamp_.size() < mesh.vertex_capacity()) {
     const std::size_t n = mesh.vertex_capacity() + mesh.vertex_capacity() / 4 + 16;
-    circle_stamp_.resize(n, 0);
     vertex_stamp_.resize(n, 0);
     vertex_slot_.resize(n, 0);
   }
@@ -45,8 +44,7 @@ void SetRemovalWorkspace::reserve(std::uint32_t tets, std::uint32_t vertices) {
     visit_stamp_.resize(tets, 0);
     parent_.resize(tets, 0);
   }
-  if (circle_stamp_.size() < vertices) {
-    circle_stamp_.resize(vertices, 0);
+  if (vertex_stamp_.size() < vertices) {
     vertex_stamp_.resize(vertices, 0);
     vertex_slot_.resize(vertices, 0);
   }
@@ -143,8 +141,8 @@ SetRemovalWorkspace::VertexVerdict SetRemovalWorkspace::vertex_ok(const TetMesh&
   }
   // Every link vertex the walk reaches is stamped when it becomes the pivot; `from` becomes the
   // pivot last, the one whose turn leads back onto the start edge.
-  const std::uint32_t g = next_gen(circle_stamp_, circle_gen_);
-  circle_stamp_[pivot.value] = g;
+  const std::uint32_t g = next_gen(vertex_stamp_, vertex_gen_);
+  vertex_stamp_[pivot.value] = g;
   TetId u = start;
   std::uint32_t followed = 1;
   // A valid mesh closes the walk within a few turns per edge; the bound only guards the loop.
@@ -160,8 +158,8 @@ SetRemovalWorkspace::VertexVerdict SetRemovalWorkspace::vertex_ok(const TetMesh&
       // An interface edge (pivot, fourth): follow it.
       if (u == start && face == start_face) return {followed == interface, VertId{}};
       ++followed;
-      if (circle_stamp_[fourth.value] == g) return {false, fourth};  // K pinched there
-      circle_stamp_[fourth.value] = g;
+      if (vertex_stamp_[fourth.value] == g) return {false, fourth};  // K pinched there
+      vertex_stamp_[fourth.value] = g;
       from = pivot;
       pivot = fourth;
       continue;
@@ -204,7 +202,6 @@ SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const 
   }
   std::uint32_t offset = 0;
   for (std::uint32_t& b : vertex_begin_) offset += std::exchange(b, offset);
-  vertex_begin_.push_back(offset);
   at_vertex_.resize(offset);
   for (TetId t : distinct_)
     for (VertId v : mesh.tet(t)) at_vertex_[vertex_begin_[vertex_slot_[v.value]]++] = t;

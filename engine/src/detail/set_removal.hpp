@@ -104,8 +104,9 @@ class SetRemovalWorkspace {
   std::vector<std::uint32_t> shell_stamp_;  // per tet: == shell_gen_ when in shell_
   std::vector<std::uint32_t> visit_stamp_;  // per tet: BFS visits
   std::vector<std::uint32_t> parent_;       // per tet: BFS parent (valid where visited)
-  std::vector<std::uint32_t> circle_stamp_; // per vertex: == circle_gen_ when the walk passed it
-  std::uint32_t set_gen_ = 0, shell_gen_ = 0, visit_gen_ = 0, circle_gen_ = 0, vertex_gen_ = 0;
+  // per vertex: == vertex_gen_ when the current pass met it (check's grouping, then each walk)
+  std::vector<std::uint32_t> vertex_stamp_;
+  std::uint32_t set_gen_ = 0, shell_gen_ = 0, visit_gen_ = 0, vertex_gen_ = 0;
 
   std::vector<TetId> shell_;
   std::vector<TetId> queue_;
@@ -118,7 +119,6 @@ class SetRemovalWorkspace {
   std::vector<std::uint32_t> vertex_begin_;
   std::vector<std::uint8_t> vertex_changed_;  // per set vertex: a tet beyond the tested prefix has it
   std::vector<TetId> at_vertex_;
-  std::vector<std::uint32_t> vertex_stamp_;  // per vertex: == vertex_gen_ when in set_vertices_
   std::vector<std::uint32_t> vertex_slot_;   // per vertex: its index in set_vertices_
 };
 
