@@ -206,7 +206,6 @@ SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const 
   for (TetId t : distinct_)
     for (VertId v : mesh.tet(t)) at_vertex_[vertex_begin_[vertex_slot_[v.value]]++] = t;
   // Each begin now holds its end; the first vertex begins at 0.
-  SetRemovalCheck result;
   for (std::size_t i = 0; i < set_vertices_.size(); ++i) {
     const std::uint32_t begin = i == 0 ? 0 : vertex_begin_[i - 1];
     const std::span<const TetId> group(at_vertex_.data() + begin, vertex_begin_[i] - begin);
@@ -217,30 +216,55 @@ SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const 
     }
     const VertexVerdict verdict = vertex_ok(mesh, v, group);
     if (verdict.ok) continue;
-    result.ok = false;
+    SetRemovalCheck result = offence(mesh, v, group, verdict);
     result.vertices_passed = static_cast<std::uint32_t>(i);
-    result.tet = group.front();
-    if (!verdict.pinched.valid()) {
-      result.kind = SingularityKind::kVertex;
-      result.vertex = v;
-      return result;
-    }
-    // Two runs of kept tets around (v, pinched): named from a removed tet on that edge (there is
-    // one, or its ring would be whole: one run).
-    result.kind = SingularityKind::kEdge;
-    for (TetId t : group) {
-      const int lw = mesh.local_index(t, verdict.pinched);
-      if (lw < 0) continue;
-      const int e = kEdgeIndex[mesh.local_index(t, v)][lw];
-      result.tet = t;
-      result.local_edge = static_cast<std::uint8_t>(e);
-      result.edge = {mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])};
-      return result;
-    }
-    assert(false && "a pinched link vertex lies on a removed tet at v");
     return result;
   }
+  SetRemovalCheck result;
   result.vertices_passed = static_cast<std::uint32_t>(set_vertices_.size());
+  return result;
+}
+
+SetRemovalCheck SetRemovalWorkspace::offence(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v,
+                                             const VertexVerdict& verdict) {
+  SetRemovalCheck result;
+  result.ok = false;
+  result.tet = removed_at_v.front();
+  if (!verdict.pinched.valid()) {
+    result.kind = SingularityKind::kVertex;
+    result.vertex = v;
+    return result;
+  }
+  // Two runs of kept tets around (v, pinched): named from a removed tet on that edge (there is
+  // one, or its ring would be whole: one run).
+  result.kind = SingularityKind::kEdge;
+  for (TetId t : removed_at_v) {
+    const int lw = mesh.local_index(t, verdict.pinched);
+    if (lw < 0) continue;
+    const int e = kEdgeIndex[mesh.local_index(t, v)][lw];
+    result.tet = t;
+    result.local_edge = static_cast<std::uint8_t>(e);
+    result.edge = {mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])};
+    return result;
+  }
+  assert(false && "a pinched link vertex lies on a removed tet at v");
+  return result;
+}
+
+SetRemovalCheck SetRemovalWorkspace::check_at(const TetMesh& mesh, std::span<const TetId> set, VertId v) {
+  mark(mesh, set);
+  // The set's distinct tets at v (visit stamps: a tet listed twice counts once).
+  const std::uint32_t g = next_gen(visit_stamp_, visit_gen_);
+  at_vertex_.clear();
+  for (TetId t : set)
+    if (visit_stamp_[t.value] != g && mesh.local_index(t, v) >= 0) {
+      visit_stamp_[t.value] = g;
+      at_vertex_.push_back(t);
+    }
+  SetRemovalCheck result;
+  if (at_vertex_.empty()) return result;
+  const VertexVerdict verdict = vertex_ok(mesh, v, at_vertex_);
+  if (!verdict.ok) result = offence(mesh, v, at_vertex_, verdict);
   return result;
 }
 

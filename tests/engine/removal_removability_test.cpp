@@ -10,6 +10,7 @@
 #include "tetcut/io.hpp"
 #include "detail/local_tables.hpp"
 #include "detail/random.hpp"
+#include "detail/edge_split.hpp"
 #include "detail/set_removal.hpp"
 
 namespace tetcut::testing {
@@ -197,6 +198,103 @@ TEST(SetRemoval, ATestedPrefixGivesTheVerdictOfAFullTest) {
     EXPECT_GT(reused, 50) << name;
     EXPECT_GT(became_removable, 10) << name;
     EXPECT_GT(still_failing, 50) << name;
+  }
+}
+
+// Random face-connected sets on the small fuzz meshes (irregular, with slivers near the surface).
+template <class Body>
+void for_random_sets(const char* name, std::uint64_t seed, int trials, Body&& body) {
+  ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/fuzz/meshes/" + name);
+  ASSERT_TRUE(read.mesh.has_value()) << name;
+  const TetMesh mesh = build_or_fail(*read.mesh);
+  SplitMix64 rng(seed);
+  std::vector<TetId> set;
+  for (int trial = 0; trial < trials; ++trial) {
+    set.assign(1, TetId{rng.below(mesh.tet_capacity())});
+    const std::size_t want = 1 + rng.below(10);
+    for (int step = 0; step < 200 && set.size() < want; ++step) {
+      const TetId from = set[rng.below(static_cast<std::uint32_t>(set.size()))];
+      const FaceRef n = mesh.neighbour(from, static_cast<int>(rng.below(4)));
+      if (n.valid() && std::find(set.begin(), set.end(), n.tet) == set.end()) set.push_back(n.tet);
+    }
+    body(mesh, set, rng, trial);
+  }
+}
+
+TEST(SetRemoval, TheTestAtOneVertexIsTheFullTestThere) {
+  // check_at(set, v) is what 3.7 plans with: the set passes the full test iff it passes at each
+  // of its vertices, and where the full test names an offence the test at that vertex names
+  // the same one.
+  for (const char* name : {"liver-small.msh", "cylinder-small.msh"}) {
+    int failing = 0, passing = 0;
+    for_random_sets(name, 505, 500, [&](const TetMesh& mesh, const std::vector<TetId>& set, SplitMix64&, int trial) {
+      SetRemovalWorkspace ws;
+      const SetRemovalCheck full = ws.check(mesh, set);
+      std::set<std::uint32_t> vertices;
+      for (TetId t : set)
+        for (VertId v : mesh.tet(t)) vertices.insert(v.value);
+      bool all_pass = true;
+      for (std::uint32_t v : vertices) all_pass = all_pass && ws.check_at(mesh, set, VertId{v}).ok;
+      ASSERT_EQ(all_pass, full.ok) << name << " trial " << trial;
+      (full.ok ? passing : failing) += 1;
+      if (full.ok) return;
+      if (full.kind == SingularityKind::kVertex) {
+        const SetRemovalCheck there = ws.check_at(mesh, set, full.vertex);
+        ASSERT_FALSE(there.ok) << name << " trial " << trial;
+        EXPECT_EQ(there.kind, full.kind) << name << " trial " << trial;
+        EXPECT_EQ(there.vertex, full.vertex) << name << " trial " << trial;
+        EXPECT_EQ(there.tet, full.tet) << name << " trial " << trial;
+        return;
+      }
+      // An edge with two runs is found by the walk at one of its ends: that end names it alike.
+      bool named = false;
+      for (VertId end : {full.edge.a, full.edge.b}) {
+        const SetRemovalCheck there = ws.check_at(mesh, set, end);
+        named = named || (!there.ok && there.kind == SingularityKind::kEdge && there.tet == full.tet &&
+                          there.local_edge == full.local_edge);
+      }
+      EXPECT_TRUE(named) << name << " trial " << trial;
+    });
+    EXPECT_GT(failing, 50) << name;
+    EXPECT_GT(passing, 50) << name;
+  }
+}
+
+TEST(SetRemoval, SplittingAtAVertexKeepsTheVerdictThere) {
+  // The lemma 3.7's plan rests on (docs/removal-proof.md, "3.7, planned"): split every edge from
+  // v to the other vertices of a group G of tets at v; the corners of G (their children at v)
+  // pass the test at v after the split iff G passes at v before it. Groups are random
+  // face-connected sets of tets around a random vertex, on a surface vertex and off it.
+  for (const char* name : {"liver-small.msh", "cylinder-small.msh"}) {
+    int agree_pass = 0, agree_fail = 0;
+    for_random_sets(name, 606, 300, [&](const TetMesh& base, const std::vector<TetId>& set, SplitMix64& rng,
+                                         int trial) {
+      const VertId v = base.vertex(set.front(), static_cast<int>(rng.below(4)));
+      std::vector<TetId> group;
+      for (TetId t : set)
+        if (base.local_index(t, v) >= 0) group.push_back(t);
+      SetRemovalWorkspace ws;
+      const bool before = ws.check_at(base, group, v).ok;
+      TetMesh mesh = base;
+      std::vector<Edge> edges;
+      for (TetId t : group)
+        for (VertId w : mesh.tet(t))
+          if (w != v) edges.push_back({v, w, t});
+      EdgeSplitter splitter;
+      ChangeLog log;
+      const SplitResult split = splitter.split(mesh, edges, SplitMethod::kTemplates, nullptr, &log);
+      if (!split.ok()) return;  // a degenerate child refused: nothing to compare
+      std::vector<TetId> corners;
+      for (const CreatedTet& c : log.created)
+        if (std::find(group.begin(), group.end(), c.parent) != group.end() && mesh.local_index(c.tet, v) >= 0)
+          corners.push_back(c.tet);
+      ASSERT_EQ(corners.size(), group.size()) << name << " trial " << trial << ": one corner per tet of G";
+      const bool after = ws.check_at(mesh, corners, v).ok;
+      ASSERT_EQ(after, before) << name << " trial " << trial;
+      (before ? agree_pass : agree_fail) += 1;
+    });
+    EXPECT_GT(agree_pass, 30) << name;
+    EXPECT_GT(agree_fail, 30) << name;
   }
 }
 

@@ -62,6 +62,11 @@ class SetRemovalWorkspace {
   // runs of kept tets.
   SetRemovalCheck check(const TetMesh& mesh, std::span<const TetId> set, TestedPrefix prefix = {});
 
+  // The same test at one vertex v only (marks the set first): the verdict check() would give
+  // at v, with the same offence when it fails. What a refinement that isolates v's corner
+  // tets needs to know before it splits (refinement_strategies.hpp).
+  SetRemovalCheck check_at(const TetMesh& mesh, std::span<const TetId> set, VertId v);
+
   // The unmarked tets around v, split into face-connected components (connected through faces
   // containing v): appended to `tets` component after component, each size appended to
   // `sizes`. `seed` is any tet containing v (marked or not).
@@ -99,6 +104,9 @@ class SetRemovalWorkspace {
     VertId pinched;
   };
   VertexVerdict vertex_ok(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v);
+  // The offence a failing verdict at v names, from the set's tets at v.
+  static SetRemovalCheck offence(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v,
+                                 const VertexVerdict& verdict);
 
   std::vector<std::uint32_t> set_stamp_;    // per tet: == set_gen_ when marked
   std::vector<std::uint32_t> shell_stamp_;  // per tet: == shell_gen_ when in shell_

@@ -21,6 +21,7 @@ void RefinementStrategies::reserve() {
   search_.reserve();
   reserve_touched(edges_, 512);
   for (auto* v : {&parents_, &sides_, &set_, &larger_, &repaired_}) reserve_touched(*v, 512);
+  groups_.reserve(8);  // T has four vertices
   reserve_touched(sizes_, 64);
   reserve_touched(split_log_.removed, 512);
   reserve_touched(split_log_.created, 2048);
@@ -38,10 +39,10 @@ void RefinementStrategies::add_edges_from(const TetMesh& mesh, VertId from, std:
     }
 }
 
-std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId t, std::span<const VertId> at,
-                                                     const WideSearchLimits& repair) {
+std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId t, const WideSearchLimits& repair) {
   const RemovalContext::Mark before = ctx.mark();
-  std::sort(parents_.begin(), parents_.end());
+  for (const CornerGroup& g : groups_)
+    std::sort(parents_.begin() + g.begin, parents_.begin() + g.begin + g.size);
   if (!ctx.split(edges_, split_log_)) return 0;
   set_.clear();
   bool t_split = false;
@@ -50,8 +51,14 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
     if (c.parent == t) {
       t_split = true;
       set_.push_back(c.tet);
-    } else if (std::binary_search(parents_.begin(), parents_.end(), c.parent) && contains_all(ctx.mesh, c.tet, at)) {
-      set_.push_back(c.tet);
+      continue;
+    }
+    for (const CornerGroup& g : groups_) {
+      const auto begin = parents_.begin() + g.begin, end = begin + g.size;
+      if (std::binary_search(begin, end, c.parent) && contains_all(ctx.mesh, c.tet, std::span<const VertId>(g.at.data(), g.count))) {
+        set_.push_back(c.tet);
+        break;
+      }
     }
   }
   if (!t_split) set_.push_back(t);
@@ -82,27 +89,71 @@ std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t, const Re
   if (first.kind == SingularityKind::kVertex) {
     ctx.mesh.vertex_shell(first.vertex, parents_);
     add_edges_from(ctx.mesh, first.vertex, parents_, {});
-    const VertId at[1] = {first.vertex};
-    return split_and_remove(ctx, t, at, repair);
+    groups_.assign(1, CornerGroup{{first.vertex, VertId{}}, 1, 0, static_cast<std::uint32_t>(parents_.size())});
+    return split_and_remove(ctx, t, repair);
   }
   const VertId ends[2] = {first.edge.a, first.edge.b};
   const int local_edge = kEdgeIndex[ctx.mesh.local_index(t, ends[0])][ctx.mesh.local_index(t, ends[1])];
   ctx.mesh.edge_shell(t, local_edge, parents_);
   for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
-  return split_and_remove(ctx, t, ends, repair);
+  groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 2, 0, static_cast<std::uint32_t>(parents_.size())});
+  return split_and_remove(ctx, t, repair);
+}
+
+bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v, const WideSearchLimits& limits) {
+  const auto group_begin = static_cast<std::uint32_t>(parents_.size());
+  if (!shortest_path_to_border(ctx.mesh, ctx.ws, t, v, limits.max_path_depth, sides_)) return false;
+  parents_.push_back(t);
+  parents_.insert(parents_.end(), sides_.begin(), sides_.end());
+  const std::span<const TetId> path(parents_.data() + group_begin, parents_.size() - group_begin);
+  const SetRemovalCheck at_v = ctx.ws.check_at(ctx.mesh, path, v);
+  if (!at_v.ok) {
+    // 3.5's extension, decided at v alone: each piece the path leaves around v (or around the
+    // pinched edge at v), smallest first. The pieces are listed while the path is still marked.
+    sides_.clear();
+    sizes_.clear();
+    if (at_v.kind == SingularityKind::kVertex) {
+      ctx.ws.remaining_components(ctx.mesh, v, at_v.tet, sides_, sizes_);
+    } else {
+      ctx.ws.remaining_runs(ctx.mesh, at_v.tet, at_v.local_edge, sides_, sizes_);
+    }
+    const std::size_t path_end = parents_.size();
+    std::uint32_t best_begin = 0, best_size = 0;
+    for (std::uint32_t k = 0, begin = 0; k < sizes_.size(); begin += sizes_[k++]) {
+      const std::uint32_t n = sizes_[k];
+      if ((best_size != 0 && n >= best_size) || path_end - group_begin + n > limits.max_set_size) continue;
+      parents_.resize(path_end);
+      parents_.insert(parents_.end(), sides_.begin() + begin, sides_.begin() + begin + n);
+      const std::span<const TetId> extended(parents_.data() + group_begin, parents_.size() - group_begin);
+      if (ctx.ws.check_at(ctx.mesh, extended, v).ok) {
+        best_begin = begin;
+        best_size = n;
+      }
+    }
+    parents_.resize(path_end);
+    if (best_size == 0) return false;
+    parents_.insert(parents_.end(), sides_.begin() + best_begin, sides_.begin() + best_begin + best_size);
+  }
+  groups_.push_back({{v, VertId{}}, 1, group_begin, static_cast<std::uint32_t>(parents_.size()) - group_begin});
+  return true;
 }
 
 std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, const Removability& first,
                                               const WideSearchLimits& repair) {
   if (first.kind == SingularityKind::kVertex) {
-    // Along the shortest path from T to the border of v's shell (paper 3.7, figure 4).
-    if (!shortest_path_to_border(ctx.mesh, ctx.ws, t, first.vertex, repair.max_path_depth, sides_)) return 0;
-    parents_.assign(1, t);
-    parents_.insert(parents_.end(), sides_.begin(), sides_.end());
+    // Along the shortest path from T to the border of v's shell (paper 3.7, figure 4), and
+    // likewise at each other vertex of T where T alone would leave a singularity: T goes whole,
+    // so each of its vertices needs its own path (planned_at_vertex, before any split).
+    parents_.clear();
+    groups_.clear();
+    if (!plan_at_vertex(ctx, t, first.vertex, repair)) return 0;
+    const TetId one[1] = {t};
+    for (VertId x : ctx.mesh.tet(t))
+      if (x != first.vertex && !ctx.ws.check_at(ctx.mesh, one, x).ok && !plan_at_vertex(ctx, t, x, repair)) return 0;
     edges_.clear();
-    add_edges_from(ctx.mesh, first.vertex, parents_, {});
-    const VertId at[1] = {first.vertex};
-    return split_and_remove(ctx, t, at, repair);
+    for (const CornerGroup& g : groups_)
+      add_edges_from(ctx.mesh, g.at[0], std::span<const TetId>(parents_.data() + g.begin, g.size), {});
+    return split_and_remove(ctx, t, repair);
   }
   // One side of T around the edge, the smaller first (paper 3.7: "the rightmost or leftmost").
   const VertId ends[2] = {first.edge.a, first.edge.b};
@@ -116,7 +167,8 @@ std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, cons
     parents_.insert(parents_.end(), begin, begin + (take_first ? sizes_[0] : sizes_[1]));
     edges_.clear();
     for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
-    if (const std::uint32_t n = split_and_remove(ctx, t, ends, repair)) return n;
+    groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 2, 0, static_cast<std::uint32_t>(parents_.size())});
+    if (const std::uint32_t n = split_and_remove(ctx, t, repair)) return n;
     if (ctx.over_budget) return 0;
   }
   return 0;
