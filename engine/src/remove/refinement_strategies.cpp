@@ -55,7 +55,8 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
     }
     for (const CornerGroup& g : groups_) {
       const auto begin = parents_.begin() + g.begin, end = begin + g.size;
-      if (std::binary_search(begin, end, c.parent) && contains_all(ctx.mesh, c.tet, std::span<const VertId>(g.at.data(), g.count))) {
+      const std::span<const VertId> at(g.at.data(), g.count);
+      if (std::binary_search(begin, end, c.parent) && contains_all(ctx.mesh, c.tet, at)) {
         set_.push_back(c.tet);
         break;
       }
@@ -143,7 +144,7 @@ std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, cons
   if (first.kind == SingularityKind::kVertex) {
     // Along the shortest path from T to the border of v's shell (paper 3.7, figure 4), and
     // likewise at each other vertex of T where T alone would leave a singularity: T goes whole,
-    // so each of its vertices needs its own path (planned_at_vertex, before any split).
+    // so each of its vertices needs its own path (plan_at_vertex, before any split).
     parents_.clear();
     groups_.clear();
     if (!plan_at_vertex(ctx, t, first.vertex, repair)) return 0;
