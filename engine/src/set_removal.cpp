@@ -285,6 +285,15 @@ void SetRemovalWorkspace::remaining_components(const TetMesh& mesh, VertId v, Te
   }
 }
 
+void SetRemovalWorkspace::remaining_pieces(const TetMesh& mesh, const SetRemovalCheck& offence,
+                                           std::vector<TetId>& tets, std::vector<std::uint32_t>& sizes) {
+  if (offence.kind == SingularityKind::kVertex) {
+    remaining_components(mesh, offence.vertex, offence.tet, tets, sizes);
+  } else if (offence.kind == SingularityKind::kEdge) {
+    remaining_runs(mesh, offence.tet, offence.local_edge, tets, sizes);
+  }
+}
+
 bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId seed, int max_depth,
                                          std::vector<TetId>& out) {
   grow(mesh);

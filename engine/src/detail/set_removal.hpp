@@ -73,6 +73,12 @@ class SetRemovalWorkspace {
   void remaining_components(const TetMesh& mesh, VertId v, TetId seed, std::vector<TetId>& tets,
                             std::vector<std::uint32_t>& sizes);
 
+  // The pieces the marked set leaves at a failing test's offence, appended as by the two
+  // above: the components of the offending vertex's remaining shell, or the runs of kept tets
+  // around the offending edge. Nothing for a passing test. What every search extends by.
+  void remaining_pieces(const TetMesh& mesh, const SetRemovalCheck& offence, std::vector<TetId>& tets,
+                        std::vector<std::uint32_t>& sizes);
+
   // Paper 3.5, figure 4: breadth-first from the marked tets around v, through unmarked tets
   // around v, to the nearest unmarked tet with a boundary face containing v (the shell's
   // border). Appends that path (without the marked start) to `out`, nearest-to-the-set first.

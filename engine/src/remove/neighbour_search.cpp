@@ -66,11 +66,7 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
   // each piece (ws still has base_ marked from the check).
   parts_.clear();
   sizes_.clear();
-  if (check.kind == SingularityKind::kVertex) {
-    ws.remaining_components(mesh, check.vertex, check.tet, parts_, sizes_);
-  } else {
-    ws.remaining_runs(mesh, check.tet, check.local_edge, parts_, sizes_);
-  }
+  ws.remaining_pieces(mesh, check, parts_, sizes_);
   if (sizes_.size() < 2) return false;
   std::size_t offset = 0;
   for (std::uint32_t n : sizes_) {

@@ -55,8 +55,7 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
     }
     for (const CornerGroup& g : groups_) {
       const auto begin = parents_.begin() + g.begin, end = begin + g.size;
-      const std::span<const VertId> at(g.at.data(), g.count);
-      if (std::binary_search(begin, end, c.parent) && contains_all(ctx.mesh, c.tet, at)) {
+      if (std::binary_search(begin, end, c.parent) && contains_all(ctx.mesh, c.tet, g.vertices())) {
         set_.push_back(c.tet);
         break;
       }
@@ -90,14 +89,14 @@ std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t, const Re
   if (first.kind == SingularityKind::kVertex) {
     ctx.mesh.vertex_shell(first.vertex, parents_);
     add_edges_from(ctx.mesh, first.vertex, parents_, {});
-    groups_.assign(1, CornerGroup{{first.vertex, VertId{}}, 1, 0, static_cast<std::uint32_t>(parents_.size())});
+    groups_.assign(1, CornerGroup{{first.vertex, VertId{}}, 0, static_cast<std::uint32_t>(parents_.size())});
     return split_and_remove(ctx, t, repair);
   }
   const VertId ends[2] = {first.edge.a, first.edge.b};
   const int local_edge = kEdgeIndex[ctx.mesh.local_index(t, ends[0])][ctx.mesh.local_index(t, ends[1])];
   ctx.mesh.edge_shell(t, local_edge, parents_);
   for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
-  groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 2, 0, static_cast<std::uint32_t>(parents_.size())});
+  groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 0, static_cast<std::uint32_t>(parents_.size())});
   return split_and_remove(ctx, t, repair);
 }
 
@@ -113,11 +112,7 @@ bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v
     // pinched edge at v), smallest first. The pieces are listed while the path is still marked.
     sides_.clear();
     sizes_.clear();
-    if (at_v.kind == SingularityKind::kVertex) {
-      ctx.ws.remaining_components(ctx.mesh, v, at_v.tet, sides_, sizes_);
-    } else {
-      ctx.ws.remaining_runs(ctx.mesh, at_v.tet, at_v.local_edge, sides_, sizes_);
-    }
+    ctx.ws.remaining_pieces(ctx.mesh, at_v, sides_, sizes_);
     const std::size_t path_end = parents_.size();
     std::uint32_t best_begin = 0, best_size = 0;
     for (std::uint32_t k = 0, begin = 0; k < sizes_.size(); begin += sizes_[k++]) {
@@ -135,7 +130,7 @@ bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v
     if (best_size == 0) return false;
     parents_.insert(parents_.end(), sides_.begin() + best_begin, sides_.begin() + best_begin + best_size);
   }
-  groups_.push_back({{v, VertId{}}, 1, group_begin, static_cast<std::uint32_t>(parents_.size()) - group_begin});
+  groups_.push_back({{v, VertId{}}, group_begin, static_cast<std::uint32_t>(parents_.size()) - group_begin});
   return true;
 }
 
@@ -168,7 +163,7 @@ std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, cons
     parents_.insert(parents_.end(), begin, begin + (take_first ? sizes_[0] : sizes_[1]));
     edges_.clear();
     for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
-    groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 2, 0, static_cast<std::uint32_t>(parents_.size())});
+    groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 0, static_cast<std::uint32_t>(parents_.size())});
     if (const std::uint32_t n = split_and_remove(ctx, t, repair)) return n;
     if (ctx.over_budget) return 0;
   }

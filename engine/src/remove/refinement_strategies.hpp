@@ -66,9 +66,9 @@ class RefinementStrategies {
   // A range of parents_ whose children containing `at` (one vertex, or both ends of an edge)
   // join the set: their corners once the edges from `at` to the rest of each parent are split.
   struct CornerGroup {
-    std::array<VertId, 2> at{};
-    std::uint8_t count = 1;
+    std::array<VertId, 2> at{};  // at[1] invalid for a vertex
     std::uint32_t begin = 0, size = 0;
+    [[nodiscard]] std::span<const VertId> vertices() const { return {at.data(), at[1].valid() ? 2u : 1u}; }
   };
 
   WideSearch search_;

@@ -42,9 +42,9 @@ void WideSearch::expand(const TetMesh& mesh, SetRemovalWorkspace& ws, const Cand
   tmp_tets_.clear();
   tmp_sizes_.clear();
   auto part = [&](std::size_t offset, std::size_t n) { return std::span<const TetId>(tmp_tets_.data() + offset, n); };
+  ws.remaining_pieces(mesh, off, tmp_tets_, tmp_sizes_);
   if (off.kind == SingularityKind::kEdge) {
     // Around the edge the remaining tets form several runs: remove all but one of them, or all.
-    ws.remaining_runs(mesh, off.tet, off.local_edge, tmp_tets_, tmp_sizes_);
     std::size_t offset = 0;
     for (std::uint32_t n : tmp_sizes_) {
       add_candidate(from, part(offset, n), limits.max_set_size);
@@ -52,7 +52,6 @@ void WideSearch::expand(const TetMesh& mesh, SetRemovalWorkspace& ws, const Cand
     }
     if (tmp_sizes_.size() >= 2) add_candidate(from, part(0, tmp_tets_.size()), limits.max_set_size);
   } else if (off.kind == SingularityKind::kVertex) {
-    ws.remaining_components(mesh, off.vertex, off.tet, tmp_tets_, tmp_sizes_);
     if (tmp_sizes_.size() >= 2) {
       std::size_t offset = 0;
       for (std::uint32_t n : tmp_sizes_) {
