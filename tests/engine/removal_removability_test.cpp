@@ -118,6 +118,16 @@ TEST(Removability, AgreesWithTheCheckerOnThinAndDentedBoxes) {
   for (int c = 1; c <= 3; ++c) EXPECT_TRUE(seen.count({c, false})) << "case " << c;
 }
 
+// Grows `set` to `want` tets (at most `steps` tries) by random face neighbours of its tets: a
+// random face-connected set.
+void grow_connected(const TetMesh& mesh, std::vector<TetId>& set, std::size_t want, SplitMix64& rng, int steps) {
+  for (int step = 0; step < steps && set.size() < want; ++step) {
+    const TetId from = set[rng.below(static_cast<std::uint32_t>(set.size()))];
+    const FaceRef n = mesh.neighbour(from, static_cast<int>(rng.below(4)));
+    if (n.valid() && std::find(set.begin(), set.end(), n.tet) == set.end()) set.push_back(n.tet);
+  }
+}
+
 TEST(SetRemoval, AgreesWithTheCheckerOnRandomConnectedSets) {
   // Random face-connected sets of 2..8 tets grown from random tets, near the surface and deep
   // inside: the local test says "removable" exactly when the checker finds the mesh without
@@ -129,12 +139,7 @@ TEST(SetRemoval, AgreesWithTheCheckerOnRandomConnectedSets) {
   std::vector<TetId> set;
   for (int trial = 0; trial < 400; ++trial) {
     set.assign(1, TetId{rng.below(mesh.tet_capacity())});
-    const std::uint32_t want = 2 + rng.below(7);
-    for (int grow = 0; grow < 40 && set.size() < want; ++grow) {
-      const TetId from = set[rng.below(static_cast<std::uint32_t>(set.size()))];
-      const FaceRef n = mesh.neighbour(from, static_cast<int>(rng.below(4)));
-      if (n.valid() && std::find(set.begin(), set.end(), n.tet) == set.end()) set.push_back(n.tet);
-    }
+    grow_connected(mesh, set, 2 + rng.below(7), rng, 40);
     const SetRemovalCheck check = ws.check(mesh, set);
     EXPECT_EQ(check.ok, still_valid_without(mesh, set)) << "trial " << trial;
     if (check.ok) {
@@ -167,13 +172,7 @@ TEST(SetRemoval, ATestedPrefixGivesTheVerdictOfAFullTest) {
     SplitMix64 rng(404);
     std::vector<TetId> set;
     int reused = 0, became_removable = 0, still_failing = 0;
-    auto grow = [&](std::size_t want) {
-      for (int step = 0; step < 200 && set.size() < want; ++step) {
-        const TetId from = set[rng.below(static_cast<std::uint32_t>(set.size()))];
-        const FaceRef n = mesh.neighbour(from, static_cast<int>(rng.below(4)));
-        if (n.valid() && std::find(set.begin(), set.end(), n.tet) == set.end()) set.push_back(n.tet);
-      }
-    };
+    auto grow = [&](std::size_t want) { grow_connected(mesh, set, want, rng, 200); };
     for (int trial = 0; trial < 600; ++trial) {
       set.assign(1, TetId{rng.below(mesh.tet_capacity())});
       grow(2 + rng.below(12));
@@ -211,12 +210,7 @@ void for_random_sets(const char* name, std::uint64_t seed, int trials, Body&& bo
   std::vector<TetId> set;
   for (int trial = 0; trial < trials; ++trial) {
     set.assign(1, TetId{rng.below(mesh.tet_capacity())});
-    const std::size_t want = 1 + rng.below(10);
-    for (int step = 0; step < 200 && set.size() < want; ++step) {
-      const TetId from = set[rng.below(static_cast<std::uint32_t>(set.size()))];
-      const FaceRef n = mesh.neighbour(from, static_cast<int>(rng.below(4)));
-      if (n.valid() && std::find(set.begin(), set.end(), n.tet) == set.end()) set.push_back(n.tet);
-    }
+    grow_connected(mesh, set, 1 + rng.below(10), rng, 200);
     body(mesh, set, rng, trial);
   }
 }
