@@ -203,17 +203,18 @@ SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std:
   for (std::size_t k = 0; k < affected_.size(); ++k) {
     const TetMesh::TetVerts v = mesh.tet(affected_[k].tet);
     parents_.push_back(affected_[k].tet);
+    // The parent's labels: its corners, then the midpoints of its split edges (looked up once
+    // per parent, not once per child that uses them).
+    VertId label_vertex[10];
+    for (int i = 0; i < 4; ++i) label_vertex[i] = v[i];
+    for (int e = 0; e < 6; ++e)
+      if ((affected_[k].mask >> e) & 1) {
+        const VertId x = v[kEdgeVerts[e][0]], y = v[kEdgeVerts[e][1]];
+        label_vertex[4 + e] = edges_[static_cast<std::size_t>(find_edge(std::min(x.value, y.value), std::max(x.value, y.value)))].midpoint;
+      }
     for (int c = 0; c < children_per_parent_[k]; ++c, ++next) {
       TetMesh::TetVerts child;
-      for (int i = 0; i < 4; ++i) {
-        const std::uint8_t l = all_labels_[next][i];
-        if (l < 4) {
-          child[i] = v[l];
-        } else {
-          const VertId x = v[kEdgeVerts[l - 4][0]], y = v[kEdgeVerts[l - 4][1]];
-          child[i] = edges_[static_cast<std::size_t>(find_edge(std::min(x.value, y.value), std::max(x.value, y.value)))].midpoint;
-        }
-      }
+      for (int i = 0; i < 4; ++i) child[i] = label_vertex[all_labels_[next][i]];
       children_.push_back(child);
     }
   }

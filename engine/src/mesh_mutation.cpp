@@ -183,7 +183,8 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
         face_table_[h] = i;
         break;
       }
-      if (scratch_faces_[other].key == k) {
+      const auto& o = scratch_faces_[other].key;
+      if (o[0] == k[0] && o[1] == k[1] && o[2] == k[2]) {  // not std::array's ==: a memcmp call
         assert(scratch_faces_[other].partner == kNoSlot && "a face would be shared by more than two tets");
         scratch_faces_[other].partner = i;
         slot.partner = other;
