@@ -62,6 +62,7 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
     }
   }
   if (!t_split) set_.push_back(t);
+  close_pinched_midpoints(ctx, repair.max_set_size);
   if (ctx.with_selected_children(set_, split_log_, larger_))
     if (const std::uint32_t n = remove_or_repair(ctx, larger_, repair)) return n;
   if (const std::uint32_t n = remove_or_repair(ctx, set_, repair)) return n;
@@ -100,6 +101,30 @@ std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t, const Re
   return split_and_remove(ctx, t, repair);
 }
 
+bool RefinementStrategies::extend_at(RemovalContext& ctx, std::vector<TetId>& set, std::size_t begin, VertId v,
+                                     const SetRemovalCheck& offence, std::uint32_t max_set_size) {
+  // The pieces are listed while the set is still marked (check_at marked it).
+  sides_.clear();
+  sizes_.clear();
+  ctx.ws.remaining_pieces(ctx.mesh, offence, sides_, sizes_);
+  const std::size_t end = set.size();
+  std::uint32_t best_begin = 0, best_size = 0;
+  for (std::uint32_t k = 0, first = 0; k < sizes_.size(); first += sizes_[k++]) {
+    const std::uint32_t n = sizes_[k];
+    if ((best_size != 0 && n >= best_size) || end - begin + n > max_set_size) continue;
+    set.resize(end);
+    set.insert(set.end(), sides_.begin() + first, sides_.begin() + first + n);
+    if (ctx.ws.check_at(ctx.mesh, std::span<const TetId>(set.data() + begin, set.size() - begin), v).ok) {
+      best_begin = first;
+      best_size = n;
+    }
+  }
+  set.resize(end);
+  if (best_size == 0) return false;
+  set.insert(set.end(), sides_.begin() + best_begin, sides_.begin() + best_begin + best_size);
+  return true;
+}
+
 bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v, const WideSearchLimits& limits) {
   const auto group_begin = static_cast<std::uint32_t>(parents_.size());
   if (!shortest_path_to_border(ctx.mesh, ctx.ws, t, v, limits.max_path_depth, sides_)) return false;
@@ -107,31 +132,23 @@ bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v
   parents_.insert(parents_.end(), sides_.begin(), sides_.end());
   const std::span<const TetId> path(parents_.data() + group_begin, parents_.size() - group_begin);
   const SetRemovalCheck at_v = ctx.ws.check_at(ctx.mesh, path, v);
-  if (!at_v.ok) {
-    // 3.5's extension, decided at v alone: each piece the path leaves around v (or around the
-    // pinched edge at v), smallest first. The pieces are listed while the path is still marked.
-    sides_.clear();
-    sizes_.clear();
-    ctx.ws.remaining_pieces(ctx.mesh, at_v, sides_, sizes_);
-    const std::size_t path_end = parents_.size();
-    std::uint32_t best_begin = 0, best_size = 0;
-    for (std::uint32_t k = 0, begin = 0; k < sizes_.size(); begin += sizes_[k++]) {
-      const std::uint32_t n = sizes_[k];
-      if ((best_size != 0 && n >= best_size) || path_end - group_begin + n > limits.max_set_size) continue;
-      parents_.resize(path_end);
-      parents_.insert(parents_.end(), sides_.begin() + begin, sides_.begin() + begin + n);
-      const std::span<const TetId> extended(parents_.data() + group_begin, parents_.size() - group_begin);
-      if (ctx.ws.check_at(ctx.mesh, extended, v).ok) {
-        best_begin = begin;
-        best_size = n;
-      }
-    }
-    parents_.resize(path_end);
-    if (best_size == 0) return false;
-    parents_.insert(parents_.end(), sides_.begin() + best_begin, sides_.begin() + best_begin + best_size);
-  }
+  // 3.5's extension, decided at v alone: each piece the path leaves around v (or around the
+  // pinched edge at v), smallest first.
+  if (!at_v.ok && !extend_at(ctx, parents_, group_begin, v, at_v, limits.max_set_size)) return false;
   groups_.push_back({{v, VertId{}}, group_begin, static_cast<std::uint32_t>(parents_.size()) - group_begin});
   return true;
+}
+
+void RefinementStrategies::close_pinched_midpoints(RemovalContext& ctx, std::uint32_t max_set_size) {
+  if (groups_.size() < 2) return;
+  auto planned = [&](VertId x) {
+    return std::any_of(groups_.begin(), groups_.end(), [&](const CornerGroup& g) { return g.at[0] == x || g.at[1] == x; });
+  };
+  for (const CreatedVertex& m : split_log_.vertices) {
+    if (!planned(m.a) || !planned(m.b)) continue;
+    const SetRemovalCheck at_m = ctx.ws.check_at(ctx.mesh, set_, m.vertex);
+    if (!at_m.ok) extend_at(ctx, set_, 0, m.vertex, at_m, max_set_size);
+  }
 }
 
 std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, const Removability& first,
