@@ -114,6 +114,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const Requ
   }
 
   // 3.5 (or the wide search): a set of neighbours, no mesh change until it is removed.
+  std::span<const TetId> searched_path;  // 3.5's shortest path, which 3.7 refines along
   if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kBasic) {
     bool found = false;
     if (options_.strategy == RemovalStrategy::kWide) {
@@ -132,6 +133,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const Requ
       found = w.wide.find(mesh, w.set_test, one, offence, wide, w.set);
     } else {
       found = w.neighbours.find(mesh, w.set_test, t, first, options_.max_path_depth, options_.max_set_size, w.set);
+      searched_path = w.neighbours.path();
     }
     if (found) {
       result.selected_removed = count_selected(w.set);
@@ -146,7 +148,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const Requ
     const bool optimized = options_.strategy != RemovalStrategy::kBasic;
     const detail::WideSearchLimits repair{options_.max_path_depth, options_.wide_rounds, options_.wide_evaluations,
                                           options_.max_set_size};
-    const std::uint32_t n = optimized ? w.refinement.optimized(ctx, t, first, repair) : w.refinement.basic(ctx, t, first, repair);
+    const std::uint32_t n = optimized ? w.refinement.optimized(ctx, t, first, repair, searched_path) : w.refinement.basic(ctx, t, first, repair);
     if (n > 0) {
       result.outcome = RemovalOutcome::kRefinement;
       result.optimized_refinement = optimized;

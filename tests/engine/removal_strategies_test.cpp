@@ -3,8 +3,10 @@
 // bookkeeping a simulator relies on (change log, atomicity, statistics).
 #include <gtest/gtest.h>
 
+#include "remove/neighbour_search.hpp"
 #include "removal_test_support.hpp"
 #include "tetcut/canonical_hash.hpp"
+#include "tetcut/io.hpp"
 
 namespace tetcut::testing {
 namespace {
@@ -198,6 +200,42 @@ TEST(RemovalStrategies, DirectRemovalsAgreeWithTheSetTest) {
   EXPECT_EQ(mesh.num_tets(), 0u);
   EXPECT_EQ(remover.report().unresolved, 0u);
   EXPECT_GT(remover.report().direct, 0u);
+}
+
+TEST(RemovalStrategies, TheNeighbourSearchKeepsThePathThat37RefinesAlong) {
+  // Paper 3.7: "we also store the shortest path connecting the tetrahedron T to the shell
+  // border"; the refinement reuses 3.5's instead of searching again. After a search on a vertex
+  // singularity, path() must be T followed by exactly the shortest path (none: empty); after one
+  // on an edge singularity, empty. Requests follow a hollowing of a small liver, where both kinds
+  // occur.
+  ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/fuzz/meshes/liver-small.msh");
+  ASSERT_TRUE(read.mesh);
+  TetMesh mesh = build_or_fail(*read.mesh);
+  BoundaryTetPicker picker(mesh, 37);
+  Remover remover({.strategy = RemovalStrategy::kCombined});
+  detail::NeighbourSearch search;
+  SetRemovalWorkspace ws;
+  std::vector<TetId> found, path;
+  int with_path = 0, edges = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const TetId t = picker.pick(mesh);
+    if (!t.valid()) break;
+    const Removability first = removability(mesh, t);
+    if (!first.removable) {
+      search.find(mesh, ws, t, first, 10, 64, found);
+      path.clear();
+      if (first.kind == SingularityKind::kVertex && detail::shortest_path_to_border(mesh, ws, t, first.vertex, 10, path)) {
+        path.insert(path.begin(), t);
+        ++with_path;
+      }
+      edges += first.kind == SingularityKind::kEdge ? 1 : 0;
+      ASSERT_EQ(std::vector<TetId>(search.path().begin(), search.path().end()), path) << "request " << i;
+    }
+    remover.remove(mesh, t);
+    picker.add(remover.last_exposed());
+  }
+  EXPECT_GT(with_path, 20);
+  EXPECT_GT(edges, 0);
 }
 
 TEST(RemovalStrategies, NamesRoundTrip) {

@@ -41,6 +41,7 @@ void NeighbourSearch::consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std
 bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first,
                            int max_depth, std::uint32_t max_set_size, std::vector<TetId>& out) {
   out.clear();
+  path_found_ = false;
   if (first.kind == SingularityKind::kEdge) {
     sides_of_edge(mesh, ws, t, first.edge.a, first.edge.b, parts_, sizes_);
     const TetId one[1] = {t};
@@ -57,6 +58,7 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
   base_.assign(1, t);
   if (!shortest_path_to_border(mesh, ws, t, first.vertex, max_depth, parts_)) return false;
   base_.insert(base_.end(), parts_.begin(), parts_.end());
+  path_found_ = true;
   const SetRemovalCheck check = ws.check(mesh, base_);
   if (check.ok) {
     out = base_;

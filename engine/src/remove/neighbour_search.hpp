@@ -32,6 +32,10 @@ class NeighbourSearch {
   // candidates all fail. `first` is the O(1) test's verdict on t (not removable).
   bool find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first, int max_depth,
             std::uint32_t max_set_size, std::vector<TetId>& out);
+  // After find() on a vertex singularity: T followed by the shortest path it tested, which
+  // 3.7 refines along ("we also store the shortest path ... eventually used for the optimized
+  // local refinement"); empty when find() found none or met an edge singularity.
+  [[nodiscard]] std::span<const TetId> path() const { return path_found_ ? std::span<const TetId>(base_) : std::span<const TetId>(); }
   // Working sizes, allocated and touched now (a larger search grows them once).
   void reserve();
 
@@ -42,6 +46,7 @@ class NeighbourSearch {
                 std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out,
                 TestedPrefix tested = {});
   std::vector<TetId> base_, candidate_, parts_;
+  bool path_found_ = false;  // base_ is T and its shortest path
   std::vector<std::uint32_t> sizes_;
 };
 

@@ -125,11 +125,16 @@ bool RefinementStrategies::extend_at(RemovalContext& ctx, std::vector<TetId>& se
   return true;
 }
 
-bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v, const WideSearchLimits& limits) {
+bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v, const WideSearchLimits& limits,
+                                          std::span<const TetId> searched_path) {
   const auto group_begin = static_cast<std::uint32_t>(parents_.size());
-  if (!shortest_path_to_border(ctx.mesh, ctx.ws, t, v, limits.max_path_depth, sides_)) return false;
-  parents_.push_back(t);
-  parents_.insert(parents_.end(), sides_.begin(), sides_.end());
+  if (!searched_path.empty()) {
+    parents_.insert(parents_.end(), searched_path.begin(), searched_path.end());
+  } else {
+    if (!shortest_path_to_border(ctx.mesh, ctx.ws, t, v, limits.max_path_depth, sides_)) return false;
+    parents_.push_back(t);
+    parents_.insert(parents_.end(), sides_.begin(), sides_.end());
+  }
   const std::span<const TetId> path(parents_.data() + group_begin, parents_.size() - group_begin);
   const SetRemovalCheck at_v = ctx.ws.check_at(ctx.mesh, path, v);
   // 3.5's extension, decided at v alone: each piece the path leaves around v (or around the
@@ -152,14 +157,14 @@ void RefinementStrategies::close_pinched_midpoints(RemovalContext& ctx, std::uin
 }
 
 std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, const Removability& first,
-                                              const WideSearchLimits& repair) {
+                                              const WideSearchLimits& repair, std::span<const TetId> searched_path) {
   if (first.kind == SingularityKind::kVertex) {
     // Along the shortest path from T to the border of v's shell (paper 3.7, figure 4), and
     // likewise at each other vertex of T where T alone would leave a singularity: T goes whole,
     // so each of its vertices needs its own path (plan_at_vertex, before any split).
     parents_.clear();
     groups_.clear();
-    if (!plan_at_vertex(ctx, t, first.vertex, repair)) return 0;
+    if (!plan_at_vertex(ctx, t, first.vertex, repair, searched_path)) return 0;
     const TetId one[1] = {t};
     for (VertId x : ctx.mesh.tet(t))
       if (x != first.vertex && !ctx.ws.check_at(ctx.mesh, one, x).ok && !plan_at_vertex(ctx, t, x, repair)) return 0;

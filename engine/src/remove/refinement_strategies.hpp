@@ -46,7 +46,10 @@ class RefinementStrategies {
   void reserve();
   // Each returns the size of the set removed, 0 when the attempt failed (the mesh as before).
   std::uint32_t basic(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair);
-  std::uint32_t optimized(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair);
+  // `searched_path`: T and its shortest path at the singular vertex, if 3.5 just found them on
+  // this mesh (paper 3.7 stores the path of 3.5's search); empty: 3.7 finds it.
+  std::uint32_t optimized(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair,
+                          std::span<const TetId> searched_path = {});
 
  private:
   // Edges from `from` to the other vertices of `tets` (one hint each), into edges_.
@@ -56,7 +59,8 @@ class RefinementStrategies {
   // passes, to parents_ as one group. The split leaves v's link as it is (a link vertex w
   // becomes the midpoint of (v, w)) and the set's tets at v are the corners of the group, so
   // the refined set passes at v iff the group passes at v now. False when no candidate does.
-  bool plan_at_vertex(RemovalContext& ctx, TetId t, VertId v, const WideSearchLimits& limits);
+  bool plan_at_vertex(RemovalContext& ctx, TetId t, VertId v, const WideSearchLimits& limits,
+                      std::span<const TetId> searched_path = {});
   // 3.5's extension decided at one vertex: `set` from `begin` on failed check_at(v) with
   // `offence`; appends the smallest piece it leaves around v (or around the edge pinched at v)
   // with which it passes at v. False, `set` as it was, when none does within max_set_size.
