@@ -128,7 +128,7 @@ void BM_RemovalByStrategy(benchmark::State& state) {
   const auto strategy = static_cast<tetcut::RemovalStrategy>(state.range(0));
   const tetcut::TetMesh& base = removal_mesh(static_cast<int>(state.range(1)));
   std::vector<double> samples;
-  double cardinality = 0;
+  tetcut::RemovalReport report;
   for (auto _ : state) {
     state.PauseTiming();
     tetcut::TetMesh mesh = base;
@@ -147,13 +147,18 @@ void BM_RemovalByStrategy(benchmark::State& state) {
       samples.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
       picker.add(remover.last_exposed());
     }
-    cardinality = remover.report().mean_cardinality();
+    report = remover.report();
   }
   state.SetLabel(std::string(tetcut::to_string(strategy)) + (state.range(1) == 0 ? " liver 16k" : " box 1M"));
   state.counters["p50_us"] = percentile(samples, 0.5);
   state.counters["p99_us"] = percentile(samples, 0.99);
   state.counters["max_us"] = percentile(samples, 1.0);
-  state.counters["mean_cardinality"] = cardinality;
+  state.counters["mean_cardinality"] = report.mean_cardinality();
+  // How the requests went: the tail of the times is the refinements and the fallbacks.
+  state.counters["refinements"] = static_cast<double>(report.resolved_by_refinement);
+  state.counters["fallbacks"] = static_cast<double>(report.resolved_by_fallback);
+  state.counters["attempts_undone"] = static_cast<double>(report.attempts_undone);
+  state.counters["unresolved"] = static_cast<double>(report.unresolved);
 }
 BENCHMARK(BM_RemovalByStrategy)
     ->ArgsProduct({{static_cast<int>(tetcut::RemovalStrategy::kBasic), static_cast<int>(tetcut::RemovalStrategy::kNeighbours),
