@@ -23,6 +23,11 @@ StatsReport small_report() {
     s.removal.vertex_singularities = 3;
     s.table1 = table1_row(s.removal);
     s.table2 = table2_row(s.removal);
+    // The wide search resolved all three vertex singularities with 5 tets each; 3.5 none.
+    s.wide_removal = s.removal;
+    s.wide_removal.resolved_by_neighbours = s.wide_removal.vertex_resolved_by_neighbours = 3;
+    s.wide_removal.vertex_neighbour_set_tets = s.wide_removal.neighbour_set_tets = 15;
+    s.wide_table2 = table2_row(s.wide_removal);
     report.meshes.push_back(s);
   }
   report.comparison_mesh = "liver-refined";
@@ -34,11 +39,11 @@ StatsReport small_report() {
   return report;
 }
 
-TEST(HtmlReport, IsOneSelfContainedPageWithTheThreeTables) {
+TEST(HtmlReport, IsOneSelfContainedPageWithItsFourTables) {
   const std::string html = html_report(small_report(), "tetcut stats --html r.html");
   EXPECT_TRUE(html.starts_with("<!DOCTYPE html>"));
   EXPECT_NE(html.find("</html>"), std::string::npos);
-  for (const char* id : {"id=\"table1\"", "id=\"table2\"", "id=\"strategies\""})
+  for (const char* id : {"id=\"table1\"", "id=\"table2\"", "id=\"table2-wide\"", "id=\"strategies\""})
     EXPECT_NE(html.find(id), std::string::npos) << id;
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("src="), std::string::npos);
@@ -57,6 +62,25 @@ TEST(HtmlReport, PutsThePapersFiguresBesideOurs) {
   ASSERT_NE(diff, std::string::npos);
   EXPECT_LT(ours, paper);
   EXPECT_LT(paper, diff);
+}
+
+TEST(HtmlReport, PutsTheWideSearchsRowsBesideThePapersSearch) {
+  const std::string html = html_report(small_report(), "");
+  const auto table = html.find("id=\"table2-wide\"");
+  ASSERT_NE(table, std::string::npos);
+  const auto row = html.find("<td>3 liver-coarse</td>", table);
+  ASSERT_NE(row, std::string::npos);
+  // Vertex singularities: wide left 0.0 %, 3.5 left 100.0 %; wide's sets had 5.0 tets, 3.5 none.
+  const auto wide_unresolved = html.find("<td>0.0</td>", row),
+             search_unresolved = html.find("<td class=\"paper\">100.0</td>", row),
+             wide_cardinality = html.find("<td>5.0</td>", row), search_cardinality = html.find("<td class=\"paper\">-</td>", row);
+  ASSERT_NE(wide_unresolved, std::string::npos);
+  ASSERT_NE(search_unresolved, std::string::npos);
+  ASSERT_NE(wide_cardinality, std::string::npos);
+  ASSERT_NE(search_cardinality, std::string::npos);
+  EXPECT_LT(wide_unresolved, search_unresolved);
+  EXPECT_LT(search_unresolved, wide_cardinality);
+  EXPECT_LT(wide_cardinality, search_cardinality);
 }
 
 TEST(HtmlReport, EscapesWhatItQuotes) {

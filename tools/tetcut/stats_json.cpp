@@ -92,6 +92,25 @@ Json table2_row(const stats::MeshStats& m) {
   return row;
 }
 
+// Our wide search's Table 2 row (no paper figures: the paper has no such search).
+Json table2_wide_row(const stats::MeshStats& m) {
+  const stats::Table2Row& w = m.wide_table2;
+  Json row = {{"mesh", m.mesh.name},
+              {"paper_mesh", m.mesh.number},
+              {"vertex_unresolved_pct", w.vertex_unresolved_pct},
+              {"vertex_cardinality", w.vertex_cardinality},
+              {"edge_unresolved_pct", w.edge_unresolved_pct},
+              {"edge_cardinality", w.edge_cardinality},
+              {"global_unresolved_pct", w.global_unresolved_pct},
+              {"global_cardinality_per_selected", w.global_cardinality},
+              {"global_cardinality_per_request", w.global_cardinality_per_request},
+              {"wide_unresolved_pct", w.combined_unresolved_pct},
+              {"ok", m.wide_ok}};
+  if (!m.wide_ok) row["error"] = m.wide_error;
+  row["counts"] = removal_counts(m.wide_removal);
+  return row;
+}
+
 Json strategy_row(const stats::StrategyRow& r, const std::string& mesh) {
   Json row = {{"name", r.name},
               {"strategy", to_string(r.strategy)},
@@ -133,13 +152,17 @@ Json resection(const stats::ResectionStats& resection) {
 }  // namespace
 
 Json stats_json(const stats::StatsReport& report) {
-  Json table1 = Json::array(), table2 = Json::array(), strategies = Json::array();
+  Json table1 = Json::array(), table2 = Json::array(), table2_wide = Json::array(), strategies = Json::array();
   for (const stats::MeshStats& m : report.meshes) {
     table1.push_back(table1_row(m));
     table2.push_back(table2_row(m));
+    table2_wide.push_back(table2_wide_row(m));
   }
   for (const stats::StrategyRow& r : report.strategies) strategies.push_back(strategy_row(r, report.comparison_mesh));
-  Json out = {{"table1", std::move(table1)}, {"table2", std::move(table2)}, {"strategies", std::move(strategies)}};
+  Json out = {{"table1", std::move(table1)},
+              {"table2", std::move(table2)},
+              {"table2_wide", std::move(table2_wide)},
+              {"strategies", std::move(strategies)}};
   if (report.resection) out["resection"] = resection(*report.resection);
   return out;
 }

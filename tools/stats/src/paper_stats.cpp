@@ -90,7 +90,19 @@ StatsResult compute_stats(const StatsOptions& options) {
       out.error = r.error;
       return out;
     }
-    report.meshes.push_back(mesh_stats(m, *r.run));
+    MeshStats s = mesh_stats(m, *r.run);
+    CauteryOptions wide_options = run_options;
+    wide_options.strategy = RemovalStrategy::kWide;
+    CauteryResult wide = run_cautery(corpus + m.scenario, wide_options);
+    if (!wide.run) {
+      out.error = wide.error;
+      return out;
+    }
+    s.wide_removal = wide.run->result.removal;
+    s.wide_table2 = table2_row(s.wide_removal);
+    s.wide_ok = wide.run->result.ok;
+    s.wide_error = wide.run->result.error;
+    report.meshes.push_back(std::move(s));
   }
 
   // The paper's three strategies, and our templates against sequential bisection.

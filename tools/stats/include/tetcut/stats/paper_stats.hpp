@@ -3,7 +3,9 @@
 // Five meshes of the paper's kinds, each cut by a documented cautery scenario in
 // corpus/scenarios/paper/ (sweeps of the tool through the mesh, as the paper's electric lancet
 // did), run with the combined strategy (paper 3.7) and templates: Tables 1 and 2 per mesh, with
-// the paper's figures beside ours. Then the strategy comparison on one of those scenarios: basic
+// the paper's figures beside ours; the same scenarios again with our wider search (strategy wide,
+// not the paper's) for its own Table 2 rows, the two searches side by side. Then the strategy
+// comparison on one of those scenarios: basic
 // (3.4), neighbours (3.5) and combined (3.7), with templates and with sequential bisection. And,
 // for the pictures, the resection of the bundled liver (corpus/scenarios/liver-resection.scn).
 //
@@ -44,6 +46,12 @@ struct MeshStats {
   double p50_us = 0, p99_us = 0;
   bool ok = true;           // the scenario ran to its end, its checks passing
   std::string error;
+  // The same scenario with the wide search in place of 3.5 (3.7 and the fallback behind it, as
+  // in combined): its own Table 2 row, ours only (the paper has no such search).
+  RemovalReport wide_removal;
+  Table2Row wide_table2;
+  bool wide_ok = true;
+  std::string wide_error;
 };
 
 // One row of the strategy comparison.
