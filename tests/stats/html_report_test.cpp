@@ -23,12 +23,12 @@ StatsReport small_report() {
     s.removal.vertex_singularities = 3;
     s.table1 = table1_row(s.removal);
     s.table2 = table2_row(s.removal);
-    // The wide search resolved all three vertex singularities with 5 tets each; 3.5 none.
-    s.wide_removal = s.removal;
-    s.wide_removal.resolved_by_neighbours = s.wide_removal.vertex_resolved_by_neighbours = 3;
-    s.wide_removal.vertex_neighbour_set_tets = s.wide_removal.neighbour_set_tets = 15;
-    s.wide_table2 = table2_row(s.wide_removal);
     report.meshes.push_back(s);
+    // The wide search resolved all three vertex singularities with 5 tets each; 3.5 none.
+    s.removal.resolved_by_neighbours = s.removal.vertex_resolved_by_neighbours = 3;
+    s.removal.vertex_neighbour_set_tets = s.removal.neighbour_set_tets = 15;
+    s.table2 = table2_row(s.removal);
+    report.wide_meshes.push_back(s);
   }
   report.comparison_mesh = "liver-refined";
   StrategyRow basic;

@@ -96,21 +96,20 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   // The combined and wide strategies must remove every requested tet, and every scenario must
   // pass its checks.
   int code = kExitOk;
-  auto must_complete = [&](const stats::MeshStats& m, bool ok, const std::string& error, const RemovalReport& r,
-                           const char* strategy) {
-    if (!ok) {
-      err << "tetcut: " << error << "\n";
-      code = kExitViolated;
-    } else if (r.unresolved != 0) {
-      err << "tetcut: " << m.mesh.scenario << ": the " << strategy << " strategy left " << r.unresolved
-          << " tet(s) unresolved\n";
-      code = kExitViolated;
+  auto must_complete = [&](const std::vector<stats::MeshStats>& runs, const char* strategy) {
+    for (const stats::MeshStats& m : runs) {
+      if (!m.ok) {
+        err << "tetcut: " << m.error << "\n";
+        code = kExitViolated;
+      } else if (m.removal.unresolved != 0) {
+        err << "tetcut: " << m.mesh.scenario << ": the " << strategy << " strategy left " << m.removal.unresolved
+            << " tet(s) unresolved\n";
+        code = kExitViolated;
+      }
     }
   };
-  for (const stats::MeshStats& m : report.meshes) {
-    must_complete(m, m.ok, m.error, m.removal, "combined");
-    must_complete(m, m.wide_ok, m.wide_error, m.wide_removal, "wide");
-  }
+  must_complete(report.meshes, "combined");
+  must_complete(report.wide_meshes, "wide");
   if (report.resection && !report.resection->run.result.ok) {
     err << "tetcut: " << report.resection->run.result.error << "\n";
     code = kExitViolated;

@@ -1,6 +1,7 @@
 #include "stats_json.hpp"
 
-#include <initializer_list>
+#include <array>
+#include <span>
 
 #include "tetcut/scenario/values.hpp"
 
@@ -39,7 +40,7 @@ Json figure_value(const Figure& f, double v) { return f.diff ? Json(v) : Json(st
 
 // Our figures as members of `row`, then objects "paper" (the paper's) and "diff" (ours minus
 // the paper's).
-void ours_paper_diff(Json& row, std::initializer_list<Figure> figures) {
+void ours_paper_diff(Json& row, std::span<const Figure> figures) {
   Json paper = Json::object(), diff = Json::object();
   for (const Figure& f : figures) {
     row[f.key] = figure_value(f, f.ours);
@@ -64,50 +65,49 @@ Json table1_row(const stats::MeshStats& m) {
               {"scenario", m.mesh.scenario},
               {"tets", m.tets_before},
               {"cuts", m.cuts}};
-  ours_paper_diff(row, {{"operations", static_cast<double>(m.table1.operations), static_cast<double>(p.operations), false},
-                        {"removable_pct", m.table1.removable_pct, p.removable_pct},
-                        {"vertex_pct", m.table1.vertex_pct, p.vertex_pct},
-                        {"edge_pct", m.table1.edge_pct, p.edge_pct}});
+  const Figure figures[] = {{"operations", static_cast<double>(m.table1.operations), static_cast<double>(p.operations), false},
+                            {"removable_pct", m.table1.removable_pct, p.removable_pct},
+                            {"vertex_pct", m.table1.vertex_pct, p.vertex_pct},
+                            {"edge_pct", m.table1.edge_pct, p.edge_pct}};
+  ours_paper_diff(row, figures);
   row["ok"] = m.ok;
   if (!m.ok) row["error"] = m.error;
   return row;
 }
 
-Json table2_row(const stats::MeshStats& m) {
+// Table 2's figures of one run with the paper's beside them: the keys of table2 and table2_wide.
+std::array<Figure, 6> table2_figures(const stats::MeshStats& m) {
   const stats::PaperTable2Row& p = stats::kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
   const stats::Table2Row& o = m.table2;
+  return {{{"vertex_unresolved_pct", o.vertex_unresolved_pct, p.vertex_unresolved_pct},
+           {"vertex_cardinality", o.vertex_cardinality, p.vertex_cardinality},
+           {"edge_unresolved_pct", o.edge_unresolved_pct, p.edge_unresolved_pct},
+           {"edge_cardinality", o.edge_cardinality, p.edge_cardinality},
+           {"global_unresolved_pct", o.global_unresolved_pct, p.global_unresolved_pct},
+           {"global_cardinality_per_selected", o.global_cardinality, p.global_cardinality}}};
+}
+
+Json table2_row(const stats::MeshStats& m) {
   Json row = {{"mesh", m.mesh.name}, {"paper_mesh", m.mesh.number}};
-  ours_paper_diff(row, {{"vertex_unresolved_pct", o.vertex_unresolved_pct, p.vertex_unresolved_pct},
-                        {"vertex_cardinality", o.vertex_cardinality, p.vertex_cardinality},
-                        {"edge_unresolved_pct", o.edge_unresolved_pct, p.edge_unresolved_pct},
-                        {"edge_cardinality", o.edge_cardinality, p.edge_cardinality},
-                        {"global_unresolved_pct", o.global_unresolved_pct, p.global_unresolved_pct},
-                        {"global_cardinality_per_selected", o.global_cardinality, p.global_cardinality}});
+  ours_paper_diff(row, table2_figures(m));
   // The paper's global cardinality is per selected tet (3.6: "removed when a single
   // tetrahedron should be removed"); per request is ours, for comparison.
-  row["global_cardinality_per_request"] = o.global_cardinality_per_request;
+  row["global_cardinality_per_request"] = m.table2.global_cardinality_per_request;
   row["paper_global_cardinality_is"] = "per_selected";
-  row["combined_unresolved_pct"] = o.combined_unresolved_pct;
+  row["combined_unresolved_pct"] = m.table2.combined_unresolved_pct;
   row["counts"] = removal_counts(m.removal);
   return row;
 }
 
-// Our wide search's Table 2 row (no paper figures: the paper has no such search).
+// Our wide search's Table 2 row: the same figures without the paper's (it has no such search).
 Json table2_wide_row(const stats::MeshStats& m) {
-  const stats::Table2Row& w = m.wide_table2;
-  Json row = {{"mesh", m.mesh.name},
-              {"paper_mesh", m.mesh.number},
-              {"vertex_unresolved_pct", w.vertex_unresolved_pct},
-              {"vertex_cardinality", w.vertex_cardinality},
-              {"edge_unresolved_pct", w.edge_unresolved_pct},
-              {"edge_cardinality", w.edge_cardinality},
-              {"global_unresolved_pct", w.global_unresolved_pct},
-              {"global_cardinality_per_selected", w.global_cardinality},
-              {"global_cardinality_per_request", w.global_cardinality_per_request},
-              {"wide_unresolved_pct", w.combined_unresolved_pct},
-              {"ok", m.wide_ok}};
-  if (!m.wide_ok) row["error"] = m.wide_error;
-  row["counts"] = removal_counts(m.wide_removal);
+  Json row = {{"mesh", m.mesh.name}, {"paper_mesh", m.mesh.number}};
+  for (const Figure& f : table2_figures(m)) row[f.key] = f.ours;
+  row["global_cardinality_per_request"] = m.table2.global_cardinality_per_request;
+  row["wide_unresolved_pct"] = m.table2.combined_unresolved_pct;
+  row["ok"] = m.ok;
+  if (!m.ok) row["error"] = m.error;
+  row["counts"] = removal_counts(m.removal);
   return row;
 }
 
@@ -156,8 +156,8 @@ Json stats_json(const stats::StatsReport& report) {
   for (const stats::MeshStats& m : report.meshes) {
     table1.push_back(table1_row(m));
     table2.push_back(table2_row(m));
-    table2_wide.push_back(table2_wide_row(m));
   }
+  for (const stats::MeshStats& m : report.wide_meshes) table2_wide.push_back(table2_wide_row(m));
   for (const stats::StrategyRow& r : report.strategies) strategies.push_back(strategy_row(r, report.comparison_mesh));
   Json out = {{"table1", std::move(table1)},
               {"table2", std::move(table2)},

@@ -81,9 +81,10 @@ std::string table2_wide_html(const StatsReport& report) {
                   "<th colspan=\"2\">global card. / selected</th><th rowspan=\"2\">wide:<br>% unresolved</th></tr><tr>";
   for (int i = 0; i < 2; ++i) h += "<th>% unres.</th><th>3.5</th><th>card.</th><th>3.5</th>";
   h += "<th>wide</th><th>3.5</th></tr>\n";
-  for (const MeshStats& m : report.meshes) {
-    const Table2Row& o = m.table2;
-    const Table2Row& w = m.wide_table2;
+  for (std::size_t i = 0; i < report.wide_meshes.size(); ++i) {
+    const MeshStats& m = report.wide_meshes[i];
+    const Table2Row& w = m.table2;
+    const Table2Row& o = report.meshes[i].table2;
     h += "<tr>" + cell(mesh_label(m.mesh)) + cell(fixed(w.vertex_unresolved_pct, 1)) +
          cell(fixed(o.vertex_unresolved_pct, 1), "paper") + cell(fixed(w.vertex_cardinality, 1)) +
          cell(fixed(o.vertex_cardinality, 1), "paper") + cell(fixed(w.edge_unresolved_pct, 1)) +
@@ -92,9 +93,9 @@ std::string table2_wide_html(const StatsReport& report) {
          cell(fixed(o.global_cardinality, 2), "paper") + cell(fixed(w.combined_unresolved_pct, 1)) + "</tr>\n";
   }
   h += "</table>\n";
-  for (const MeshStats& m : report.meshes)
-    if (!m.wide_ok)
-      h += "<p class=\"warning\">" + render::xml_escape(mesh_label(m.mesh) + ": the wide run stopped early: " + m.wide_error) + "</p>\n";
+  for (const MeshStats& m : report.wide_meshes)
+    if (!m.ok)
+      h += "<p class=\"warning\">" + render::xml_escape(mesh_label(m.mesh) + ": the wide run stopped early: " + m.error) + "</p>\n";
   return h;
 }
 

@@ -1,6 +1,7 @@
 #include "tetcut/stats/paper_stats.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace tetcut::stats {
 
@@ -84,26 +85,20 @@ StatsResult compute_stats(const StatsOptions& options) {
 
   CauteryOptions run_options;
   run_options.check_every_cut = options.check_every_cut;
-  for (const PaperMesh& m : paper_meshes()) {
-    CauteryResult r = run_cautery(corpus + m.scenario, run_options);
-    if (!r.run) {
-      out.error = r.error;
-      return out;
+  CauteryOptions wide_options = run_options;
+  wide_options.strategy = RemovalStrategy::kWide;
+  // Each scenario with combined (Tables 1 and 2), then with the wide search (its Table 2 rows).
+  const std::pair<const CauteryOptions*, std::vector<MeshStats>*> runs[] = {{&run_options, &report.meshes},
+                                                                            {&wide_options, &report.wide_meshes}};
+  for (const PaperMesh& m : paper_meshes())
+    for (const auto& [o, into] : runs) {
+      CauteryResult r = run_cautery(corpus + m.scenario, *o);
+      if (!r.run) {
+        out.error = r.error;
+        return out;
+      }
+      into->push_back(mesh_stats(m, *r.run));
     }
-    MeshStats s = mesh_stats(m, *r.run);
-    CauteryOptions wide_options = run_options;
-    wide_options.strategy = RemovalStrategy::kWide;
-    CauteryResult wide = run_cautery(corpus + m.scenario, wide_options);
-    if (!wide.run) {
-      out.error = wide.error;
-      return out;
-    }
-    s.wide_removal = wide.run->result.removal;
-    s.wide_table2 = table2_row(s.wide_removal);
-    s.wide_ok = wide.run->result.ok;
-    s.wide_error = wide.run->result.error;
-    report.meshes.push_back(std::move(s));
-  }
 
   // The paper's three strategies, and our templates against sequential bisection.
   report.comparison_mesh = comparison->name;

@@ -113,17 +113,18 @@ std::string text_report(const StatsReport& report) {
   TextTable tw;
   tw.row({"mesh", "vertex % unres.", "3.5", "card.", "3.5", "edge % unres.", "3.5", "card.", "3.5", "card./sel.", "3.5",
           "wide % unres."});
-  for (const MeshStats& m : report.meshes) {
-    const Table2Row& o = m.table2;
-    const Table2Row& w = m.wide_table2;
+  for (std::size_t i = 0; i < report.wide_meshes.size(); ++i) {
+    const MeshStats& m = report.wide_meshes[i];
+    const Table2Row& w = m.table2;
+    const Table2Row& o = report.meshes[i].table2;
     tw.row({mesh_label(m.mesh), fixed(w.vertex_unresolved_pct, 1), fixed(o.vertex_unresolved_pct, 1),
             fixed(w.vertex_cardinality, 1), fixed(o.vertex_cardinality, 1), fixed(w.edge_unresolved_pct, 1),
             fixed(o.edge_unresolved_pct, 1), fixed(w.edge_cardinality, 1), fixed(o.edge_cardinality, 1),
             fixed(w.global_cardinality, 2), fixed(o.global_cardinality, 2), fixed(w.combined_unresolved_pct, 1)});
   }
   out += tw.str();
-  for (const MeshStats& m : report.meshes)
-    if (!m.wide_ok) out += "  " + mesh_label(m.mesh) + ": the wide run stopped early: " + m.wide_error + "\n";
+  for (const MeshStats& m : report.wide_meshes)
+    if (!m.ok) out += "  " + mesh_label(m.mesh) + ": the wide run stopped early: " + m.error + "\n";
 
   out += "\nStrategies on the " + report.comparison_mesh +
          " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";
