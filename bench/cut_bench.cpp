@@ -24,8 +24,8 @@
 
 #include "bench_meshes.hpp"
 #include "tetcut/cut.hpp"
-#include "detail/edge_split.hpp"
-#include "detail/local_tables.hpp"
+#include "refine/edge_split.hpp"
+#include "core/local_tables.hpp"
 
 namespace {
 std::atomic<std::uint64_t> g_allocations{0};

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "bench_meshes.hpp"
-#include "detail/refine.hpp"
+#include "refine/refine.hpp"
 #include "tetcut/cut.hpp"
 
 namespace {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ctest instruction_gate_catches_slowdown (issue 18: a gate with teeth). Counts the instructions
 # of the fixed liver sweep with callgrind for the clean build and for cut_instructions_planted
-# (about 10 % more work in every cut, engine/src/planted_slowdown.cpp), gates both against the
+# (about 10 % more work in every cut, engine/src/cut/planted_slowdown.cpp), gates both against the
 # checked-in bench/budgets.json, and expects:
 #   clean build              within budget (exit 0)
 #   planted slowdown         over budget (exit 1): +10 % against a +3 % tolerance

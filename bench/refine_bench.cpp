@@ -6,9 +6,9 @@
 #include <algorithm>
 
 #include "bench_meshes.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/quality.hpp"
-#include "detail/refine.hpp"
+#include "core/local_tables.hpp"
+#include "core/quality.hpp"
+#include "refine/refine.hpp"
 
 namespace {
 

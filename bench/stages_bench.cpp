@@ -14,11 +14,11 @@
 #include <cmath>
 
 #include "bench_meshes.hpp"
-#include "detail/boundary_tet_picker.hpp"
+#include "core/boundary_tet_picker.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
-#include "detail/removal.hpp"
-#include "detail/spatial_index.hpp"
+#include "remove/removal.hpp"
+#include "cut/spatial_index.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include "support/fuzz_failure.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/local_tables.hpp"
+#include "core/local_tables.hpp"
 
 namespace tetcut::fuzz {
 

@@ -11,13 +11,13 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
-#include "detail/edge_split.hpp"
-#include "detail/refine.hpp"
+#include "refine/edge_split.hpp"
+#include "refine/refine.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/raw_mesh.hpp"
-#include "detail/tool_ball.hpp"
+#include "core/tool_ball.hpp"
 #include "tetcut/vec3.hpp"
 
 namespace tetcut::fuzz {

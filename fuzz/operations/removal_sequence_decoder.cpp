@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "operations/sequence_session.hpp"
-#include "detail/removal.hpp"
+#include "remove/removal.hpp"
 
 namespace tetcut::fuzz::removal_sequence {
 namespace {

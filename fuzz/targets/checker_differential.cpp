@@ -23,11 +23,11 @@
 #include "operations/mesh_edits.hpp"
 #include "support/fuzz_failure.hpp"
 #include "tetcut/change_log.hpp"
-#include "detail/edge_split.hpp"
+#include "refine/edge_split.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/refine.hpp"
-#include "detail/spatial_index.hpp"
+#include "refine/refine.hpp"
+#include "cut/spatial_index.hpp"
 
 namespace {
 

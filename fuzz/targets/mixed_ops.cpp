@@ -21,12 +21,12 @@
 #include "tetcut/attributes.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/change_log.hpp"
-#include "detail/edge_split.hpp"
+#include "refine/edge_split.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/random.hpp"
-#include "detail/refine.hpp"
-#include "detail/removability.hpp"
-#include "detail/spatial_index.hpp"
+#include "core/random.hpp"
+#include "refine/refine.hpp"
+#include "remove/removability.hpp"
+#include "cut/spatial_index.hpp"
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/io.hpp"
-#include "detail/random.hpp"
+#include "core/random.hpp"
 
 namespace tetcut::test {
 namespace {

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "detail/random.hpp"
+#include "core/random.hpp"
 
 namespace tetcut::cli {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "detail/random.hpp"
+#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

@@ -22,9 +22,9 @@
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/refine.hpp"
-#include "detail/tool_ball.hpp"
+#include "core/local_tables.hpp"
+#include "refine/refine.hpp"
+#include "core/tool_ball.hpp"
 
 namespace tetcut::testing {
 namespace {

@@ -11,8 +11,8 @@
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/io.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/refine.hpp"
+#include "core/local_tables.hpp"
+#include "refine/refine.hpp"
 
 namespace tetcut {
 namespace {

@@ -12,11 +12,11 @@
 #include "checked.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "detail/edge_split.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/quality.hpp"
-#include "detail/random.hpp"
-#include "detail/split_templates.hpp"
+#include "refine/edge_split.hpp"
+#include "core/local_tables.hpp"
+#include "core/quality.hpp"
+#include "core/random.hpp"
+#include "refine/split_templates.hpp"
 
 namespace tetcut {
 namespace {

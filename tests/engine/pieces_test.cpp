@@ -3,7 +3,7 @@
 
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/pieces.hpp"
+#include "core/pieces.hpp"
 
 namespace tetcut {
 namespace {

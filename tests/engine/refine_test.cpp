@@ -6,9 +6,9 @@
 #include "checked.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/refine.hpp"
-#include "detail/spatial_index.hpp"
+#include "core/local_tables.hpp"
+#include "refine/refine.hpp"
+#include "cut/spatial_index.hpp"
 
 namespace tetcut {
 namespace {

@@ -8,10 +8,10 @@
 
 #include "removal_test_support.hpp"
 #include "tetcut/io.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/random.hpp"
-#include "detail/edge_split.hpp"
-#include "detail/set_removal.hpp"
+#include "core/local_tables.hpp"
+#include "core/random.hpp"
+#include "refine/edge_split.hpp"
+#include "remove/set_removal.hpp"
 
 namespace tetcut::testing {
 namespace {

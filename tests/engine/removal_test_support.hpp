@@ -12,8 +12,8 @@
 #include "test_meshes.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/predicates.hpp"
-#include "detail/boundary_tet_picker.hpp"
-#include "detail/removal.hpp"
+#include "core/boundary_tet_picker.hpp"
+#include "remove/removal.hpp"
 
 namespace tetcut::testing {
 

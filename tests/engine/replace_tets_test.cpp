@@ -4,8 +4,8 @@
 
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/random.hpp"
+#include "core/local_tables.hpp"
+#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "test_meshes.hpp"
-#include "detail/edge_split.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/random.hpp"
-#include "detail/spatial_index.hpp"
+#include "refine/edge_split.hpp"
+#include "core/local_tables.hpp"
+#include "core/random.hpp"
+#include "cut/spatial_index.hpp"
 
 namespace tetcut {
 namespace {

@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include "test_meshes.hpp"
-#include "detail/edge_split.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/random.hpp"
+#include "refine/edge_split.hpp"
+#include "core/local_tables.hpp"
+#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

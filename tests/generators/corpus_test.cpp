@@ -13,9 +13,9 @@
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/refine.hpp"
-#include "detail/spatial_index.hpp"
-#include "detail/tool_ball.hpp"
+#include "refine/refine.hpp"
+#include "cut/spatial_index.hpp"
+#include "core/tool_ball.hpp"
 
 namespace tetcut {
 namespace {

@@ -1,5 +1,5 @@
 // The checker's own quality measures (invariants/src/tet_quality.cpp, written from the
-// definitions) and the engine's (engine/src/quality.cpp, other formulas) agree to rounding:
+// definitions) and the engine's (engine/src/core/quality.cpp, other formulas) agree to rounding:
 // two witnesses of I7, neither a copy of the other.
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <string>
 
 #include "tet_quality.hpp"
-#include "detail/quality.hpp"
-#include "detail/random.hpp"
+#include "core/quality.hpp"
+#include "core/random.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {

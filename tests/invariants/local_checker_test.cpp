@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "detail/random.hpp"
+#include "core/random.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {

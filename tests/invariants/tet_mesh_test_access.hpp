@@ -3,7 +3,7 @@
 // one record to prove that the checker sees what it compares (I2, I8).
 #pragma once
 
-#include "detail/mesh_internals.hpp"
+#include "core/mesh_internals.hpp"
 
 namespace tetcut {
 using TetMeshTestAccess = detail::MeshInternals;

@@ -16,7 +16,7 @@
 
 #include "tet_mesh_test_access.hpp"
 #include "test_support.hpp"
-#include "detail/local_tables.hpp"
+#include "core/local_tables.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "io_test_support.hpp"
 #include "tetcut/box_mesh.hpp"
-#include "detail/random.hpp"
+#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

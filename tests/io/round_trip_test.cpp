@@ -6,7 +6,7 @@
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/random.hpp"
+#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

@@ -6,8 +6,8 @@
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/refine.hpp"
-#include "detail/removal.hpp"
+#include "refine/refine.hpp"
+#include "remove/removal.hpp"
 #include "tetcut/render/surface.hpp"
 
 namespace tetcut::render {

@@ -19,7 +19,7 @@
 #include "tetcut/generators/shapes.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/quality.hpp"
+#include "core/quality.hpp"
 
 namespace tetcut::cli {
 namespace {

@@ -13,12 +13,12 @@
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/quality.hpp"
+#include "core/local_tables.hpp"
+#include "core/quality.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/random.hpp"
-#include "detail/refine.hpp"
-#include "detail/spatial_index.hpp"
+#include "core/random.hpp"
+#include "refine/refine.hpp"
+#include "cut/spatial_index.hpp"
 
 namespace tetcut::cli {
 namespace {

@@ -23,13 +23,13 @@
 #include "command_parser.hpp"
 #include "json_output.hpp"
 #include "mesh_input.hpp"
-#include "detail/boundary_tet_picker.hpp"
+#include "core/boundary_tet_picker.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/removal.hpp"
+#include "remove/removal.hpp"
 
 namespace tetcut::cli {
 

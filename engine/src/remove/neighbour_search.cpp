@@ -1,7 +1,7 @@
 #include "remove/neighbour_search.hpp"
 
-#include "detail/local_tables.hpp"
-#include "detail/reserve_touched.hpp"
+#include "core/local_tables.hpp"
+#include "core/reserve_touched.hpp"
 
 namespace tetcut::detail {
 

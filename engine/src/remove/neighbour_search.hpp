@@ -20,8 +20,8 @@
 #include <span>
 #include <vector>
 
-#include "detail/removability.hpp"
-#include "detail/set_removal.hpp"
+#include "remove/removability.hpp"
+#include "remove/set_removal.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::detail {

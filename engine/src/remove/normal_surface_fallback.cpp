@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "detail/reserve_touched.hpp"
+#include "core/reserve_touched.hpp"
 
 namespace tetcut::detail {
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "detail/local_tables.hpp"
-#include "detail/reserve_touched.hpp"
+#include "core/local_tables.hpp"
+#include "core/reserve_touched.hpp"
 #include "remove/neighbour_search.hpp"
 
 namespace tetcut::detail {

@@ -34,7 +34,7 @@
 #include <span>
 #include <vector>
 
-#include "detail/removability.hpp"
+#include "remove/removability.hpp"
 #include "remove/removal_context.hpp"
 #include "remove/wide_search.hpp"
 

@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
-#include "detail/edge_split.hpp"
-#include "detail/removal.hpp"
-#include "detail/set_removal.hpp"
+#include "refine/edge_split.hpp"
+#include "remove/removal.hpp"
+#include "remove/set_removal.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/mesh.hpp"
 

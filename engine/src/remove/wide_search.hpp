@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "detail/set_removal.hpp"
+#include "remove/set_removal.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::detail {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "detail/local_tables.hpp"
-#include "detail/spatial_index.hpp"
+#include "core/local_tables.hpp"
+#include "cut/spatial_index.hpp"
 
 namespace tetcut::render {
 namespace {

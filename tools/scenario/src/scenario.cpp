@@ -10,7 +10,7 @@
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "detail/pieces.hpp"
+#include "core/pieces.hpp"
 
 namespace tetcut::scenario {
 namespace {

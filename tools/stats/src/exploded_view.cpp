@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "detail/pieces.hpp"
+#include "core/pieces.hpp"
 
 namespace tetcut::stats {
 

@@ -36,7 +36,7 @@
 #include <memory>
 #include <span>
 
-#include "detail/removability.hpp"
+#include "remove/removability.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/cut_strategies.hpp"  // RemovalStrategy
 #include "tetcut/ids.hpp"

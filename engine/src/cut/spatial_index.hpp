@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "detail/tool_ball.hpp"
+#include "core/tool_ball.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/mesh.hpp"
 

@@ -6,8 +6,8 @@
 #include <cassert>
 #include <cstring>
 
-#include "detail/local_tables.hpp"
-#include "detail/reserve_touched.hpp"
+#include "core/local_tables.hpp"
+#include "core/reserve_touched.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut {

@@ -1,8 +1,8 @@
-#include "detail/removability.hpp"
+#include "remove/removability.hpp"
 
 #include <cassert>
 
-#include "detail/local_tables.hpp"
+#include "core/local_tables.hpp"
 
 namespace tetcut {
 

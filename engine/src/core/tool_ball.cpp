@@ -1,9 +1,9 @@
-#include "detail/tool_ball.hpp"
+#include "core/tool_ball.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "detail/local_tables.hpp"
+#include "core/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -1,4 +1,4 @@
-#include "detail/pieces.hpp"
+#include "core/pieces.hpp"
 
 namespace tetcut {
 

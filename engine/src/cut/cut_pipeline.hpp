@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "detail/refine.hpp"
-#include "detail/removal.hpp"
-#include "detail/spatial_index.hpp"
-#include "detail/tool_ball.hpp"
+#include "refine/refine.hpp"
+#include "remove/removal.hpp"
+#include "cut/spatial_index.hpp"
+#include "core/tool_ball.hpp"
 #include "tetcut/cut.hpp"
 
 namespace tetcut {

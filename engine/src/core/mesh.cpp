@@ -8,7 +8,7 @@
 #include <cassert>
 #include <cstring>
 
-#include "detail/local_tables.hpp"
+#include "core/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "detail/random.hpp"
+#include "core/random.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 

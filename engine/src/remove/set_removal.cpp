@@ -1,11 +1,11 @@
-#include "detail/set_removal.hpp"
+#include "remove/set_removal.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <utility>
 
-#include "detail/local_tables.hpp"
-#include "detail/reserve_touched.hpp"
+#include "core/local_tables.hpp"
+#include "core/reserve_touched.hpp"
 
 namespace tetcut {
 namespace {

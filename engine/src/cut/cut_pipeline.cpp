@@ -1,14 +1,14 @@
 // The cut pipeline behind Cutter (cut.hpp): locate, refine, select, remove.
-#include "detail/cut_pipeline.hpp"
+#include "cut/cut_pipeline.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
-#include "detail/local_tables.hpp"
-#include "detail/planted_slowdown.hpp"
-#include "detail/quality.hpp"
-#include "detail/reserve_touched.hpp"
+#include "core/local_tables.hpp"
+#include "cut/planted_slowdown.hpp"
+#include "core/quality.hpp"
+#include "core/reserve_touched.hpp"
 
 namespace tetcut {
 namespace {

@@ -1,11 +1,11 @@
-#include "detail/split_templates.hpp"
+#include "refine/split_templates.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <utility>
 #include <vector>
 
-#include "detail/local_tables.hpp"
+#include "core/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -1,15 +1,15 @@
 // The removal dispatcher: one request, the strategy's stages in the paper's order (removal.hpp).
-#include "detail/removal.hpp"
+#include "remove/removal.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <vector>
 
-#include "detail/edge_split.hpp"
-#include "detail/local_tables.hpp"
-#include "detail/reserve_touched.hpp"
-#include "detail/set_removal.hpp"
-#include "detail/split_templates.hpp"
+#include "refine/edge_split.hpp"
+#include "core/local_tables.hpp"
+#include "core/reserve_touched.hpp"
+#include "remove/set_removal.hpp"
+#include "refine/split_templates.hpp"
 #include "remove/neighbour_search.hpp"
 #include "remove/normal_surface_fallback.hpp"
 #include "remove/refinement_strategies.hpp"

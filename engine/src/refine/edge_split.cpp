@@ -1,11 +1,11 @@
-#include "detail/edge_split.hpp"
+#include "refine/edge_split.hpp"
 
 #include <algorithm>
 #include <tuple>
 
-#include "detail/local_tables.hpp"
-#include "detail/reserve_touched.hpp"
-#include "detail/split_templates.hpp"
+#include "core/local_tables.hpp"
+#include "core/reserve_touched.hpp"
+#include "refine/split_templates.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

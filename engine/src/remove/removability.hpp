@@ -17,7 +17,7 @@
 
 #include <cstdint>
 
-#include "detail/edge_split.hpp"
+#include "refine/edge_split.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 

@@ -1,4 +1,4 @@
-#include "detail/boundary_tet_picker.hpp"
+#include "core/boundary_tet_picker.hpp"
 
 namespace tetcut {
 

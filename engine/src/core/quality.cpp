@@ -1,10 +1,10 @@
-#include "detail/quality.hpp"
+#include "core/quality.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "detail/local_tables.hpp"
+#include "core/local_tables.hpp"
 
 namespace tetcut {
 

@@ -1,4 +1,4 @@
-#include "detail/refine.hpp"
+#include "refine/refine.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <limits>
 #include <numbers>
 
-#include "detail/local_tables.hpp"
-#include "detail/quality.hpp"
-#include "detail/reserve_touched.hpp"
-#include "detail/spatial_index.hpp"
+#include "core/local_tables.hpp"
+#include "core/quality.hpp"
+#include "core/reserve_touched.hpp"
+#include "cut/spatial_index.hpp"
 
 namespace tetcut {
 namespace {

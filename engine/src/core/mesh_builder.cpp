@@ -4,8 +4,8 @@
 #include <numeric>
 #include <string>
 
-#include "detail/local_tables.hpp"
-#include "detail/mesh_internals.hpp"
+#include "core/local_tables.hpp"
+#include "core/mesh_internals.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

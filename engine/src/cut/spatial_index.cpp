@@ -1,11 +1,11 @@
-#include "detail/spatial_index.hpp"
+#include "cut/spatial_index.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "detail/local_tables.hpp"
-#include "detail/random.hpp"
-#include "detail/reserve_touched.hpp"
+#include "core/local_tables.hpp"
+#include "core/random.hpp"
+#include "core/reserve_touched.hpp"
 
 namespace tetcut {
 

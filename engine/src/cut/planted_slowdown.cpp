@@ -4,7 +4,7 @@
 // links it ahead of the engine, so that Cutter::cut() calls this version; ctest
 // instruction_gate_catches_slowdown then runs the gate on both builds. About 18,000 extra
 // instructions a cut: roughly a tenth of a cut on the liver sweep today.
-#include "detail/planted_slowdown.hpp"
+#include "cut/planted_slowdown.hpp"
 
 namespace tetcut::detail {
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "detail/cut_pipeline.hpp"
+#include "cut/cut_pipeline.hpp"
 
 namespace tetcut {
 

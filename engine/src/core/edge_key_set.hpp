@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "detail/random.hpp"
+#include "core/random.hpp"
 #include "tetcut/ids.hpp"
 
 namespace tetcut {

@@ -19,8 +19,8 @@
 #include <utility>
 #include <vector>
 
-#include "detail/edge_split.hpp"
-#include "detail/removability.hpp"
+#include "refine/edge_split.hpp"
+#include "remove/removability.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 

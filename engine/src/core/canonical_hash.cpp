@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "detail/random.hpp"
+#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

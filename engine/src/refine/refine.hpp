@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "detail/edge_key_set.hpp"
-#include "detail/edge_split.hpp"
-#include "detail/tool_ball.hpp"
+#include "core/edge_key_set.hpp"
+#include "refine/edge_split.hpp"
+#include "core/tool_ball.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/mesh.hpp"
 

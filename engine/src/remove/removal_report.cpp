@@ -1,6 +1,6 @@
 #include "tetcut/removal_report.hpp"
 
-#include "detail/removal.hpp"  // RemovalResult
+#include "remove/removal.hpp"  // RemovalResult
 
 namespace tetcut {
 
