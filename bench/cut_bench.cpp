@@ -23,9 +23,9 @@
 #include <vector>
 
 #include "bench_meshes.hpp"
-#include "tetcut/cut.hpp"
 #include "refine/edge_split.hpp"
-#include "core/local_tables.hpp"
+#include "tetcut/cut.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace {
 std::atomic<std::uint64_t> g_allocations{0};

@@ -7,8 +7,8 @@
 #include <cstdio>
 
 #include "bench_meshes.hpp"
-#include "toolchain.hpp"
 #include "tetcut/cut.hpp"
+#include "toolchain.hpp"
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <algorithm>
 
 #include "bench_meshes.hpp"
-#include "core/local_tables.hpp"
 #include "core/quality.hpp"
 #include "refine/refine.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace {
 

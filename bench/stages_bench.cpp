@@ -15,10 +15,10 @@
 
 #include "bench_meshes.hpp"
 #include "core/boundary_tet_picker.hpp"
+#include "cut/spatial_index.hpp"
+#include "remove/removal.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
-#include "remove/removal.hpp"
-#include "cut/spatial_index.hpp"
 
 namespace {
 

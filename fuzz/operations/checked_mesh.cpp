@@ -33,23 +33,12 @@ void CheckedMesh::begin(std::string name) {
   ++index_;
   name_ = std::move(name);
   arguments_.clear();
-  live_before_.assign(mesh_.tet_capacity(), 0);
-  for (std::uint32_t t = 0; t < mesh_.tet_capacity(); ++t) live_before_[t] = mesh_.is_live(TetId{t}) ? 1 : 0;
 }
 
 void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change) {
-  removed_.clear();
   created_.clear();
-  for (TetId t : log.removed)
-    if (t.value < live_before_.size() && live_before_[t.value]) removed_.push_back(t);
-  for (const CreatedTet& c : log.created)
-    if (mesh_.is_live(c.tet)) created_.push_back(c.tet);
-  // A reused id may appear several times in the log; the checker wants each once.
-  for (std::vector<TetId>* ids : {&removed_, &created_}) {
-    std::sort(ids->begin(), ids->end());
-    ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
-  }
-  end(removed_, created_, volume_change);
+  for (const CreatedTet& c : log.created) created_.push_back(c.tet);
+  end(log.removed, created_, volume_change);
 }
 
 void CheckedMesh::end(std::span<const TetId> removed, std::span<const TetId> created,

@@ -3,10 +3,9 @@
 // invariant's id and the operation's index on the first violation (fuzz_failure.hpp). The full
 // check runs on request (every few operations: it is O(#T)).
 //
-// Operations that report through a ChangeLog (splits, refinement, later removal strategies and
-// cuts) may create a tet and remove it again, reusing ids; end(log) reduces the log to what the
-// checker wants: the tets that were live before and were removed, and the tets live afterwards
-// that the operation created.
+// Operations that report through a ChangeLog (splits, refinement, removal requests, cuts) hand
+// end(log) their net change, which the mesh's journal derives at commit: the tets live before
+// and removed, and the tets live afterwards that the operation created.
 #pragma once
 
 #include <cstddef>
@@ -43,7 +42,7 @@ class CheckedMesh {
   // triage. Build the description only when tracing() says so: it costs executions.
   [[nodiscard]] bool tracing() const { return tracing_; }
   void describe(const std::string& arguments);
-  // Ends it: the local check of the net change recorded in `log`. `volume_change` is the
+  // Ends it: the local check of the net change recorded in `log` (TetMesh::commit's). `volume_change` is the
   // operation's expected change of the total volume (0 for splits; nullopt: not checked).
   void end(const ChangeLog& log, std::optional<double> volume_change);
   void end(std::span<const TetId> removed, std::span<const TetId> created, std::optional<double> volume_change);
@@ -68,8 +67,7 @@ class CheckedMesh {
   std::string name_ = "build";
   std::string arguments_;
   bool tracing_ = false;
-  std::vector<std::uint8_t> live_before_;  // per tet id, at begin()
-  std::vector<TetId> removed_, created_;
+  std::vector<TetId> created_;
 };
 
 }  // namespace tetcut::fuzz

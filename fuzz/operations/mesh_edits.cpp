@@ -6,8 +6,8 @@
 
 #include "support/fuzz_failure.hpp"
 #include "tetcut/box_mesh.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "core/local_tables.hpp"
 
 namespace tetcut::fuzz {
 

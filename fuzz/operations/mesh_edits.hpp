@@ -11,13 +11,13 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include "core/tool_ball.hpp"
 #include "refine/edge_split.hpp"
 #include "refine/refine.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/raw_mesh.hpp"
-#include "core/tool_ball.hpp"
 #include "tetcut/vec3.hpp"
 
 namespace tetcut::fuzz {

@@ -20,14 +20,14 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include "cut/spatial_index.hpp"
 #include "operations/mesh_edits.hpp"
+#include "refine/edge_split.hpp"
+#include "refine/refine.hpp"
 #include "support/fuzz_failure.hpp"
 #include "tetcut/change_log.hpp"
-#include "refine/edge_split.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "refine/refine.hpp"
-#include "cut/spatial_index.hpp"
 
 namespace {
 
@@ -56,37 +56,21 @@ const char* edit_name(Edit edit) {
 // Also the net change of the last edit, for the local checker.
 struct Workspace : fuzz::EditWorkspace {
   std::vector<TetId> removed, created;
-  std::vector<std::uint8_t> live_before;
 };
-
-// The removed and created ids of a logged operation, as the local checker wants them (see
-// CheckedMesh::end for why a log needs reducing).
-void net_change(const TetMesh& mesh, Workspace& ws) {
-  ws.removed.clear();
-  ws.created.clear();
-  for (TetId t : ws.log.removed)
-    if (t.value < ws.live_before.size() && ws.live_before[t.value]) ws.removed.push_back(t);
-  for (const CreatedTet& c : ws.log.created)
-    if (mesh.is_live(c.tet)) ws.created.push_back(c.tet);
-  for (std::vector<TetId>* ids : {&ws.removed, &ws.created}) {
-    std::sort(ids->begin(), ids->end());
-    ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
-  }
-}
 
 void remove_adjacent_set(TetMesh& mesh, Workspace& ws, FuzzedDataProvider& input) {
   const TetId seed = fuzz::consume_live_tet(mesh, input);
-  ws.removed.assign(1, seed);
+  std::vector<TetId>& set = ws.tets;
+  set.assign(1, seed);
   const std::uint32_t want = input.ConsumeIntegralInRange<std::uint32_t>(1, kMaxSetSize);
   // Grow across faces from tets already in the set, as the tool's cavity grows.
-  while (ws.removed.size() < want && input.remaining_bytes() > 0) {
-    const TetId from = ws.removed[input.ConsumeIntegralInRange<std::size_t>(0, ws.removed.size() - 1)];
+  while (set.size() < want && input.remaining_bytes() > 0) {
+    const TetId from = set[input.ConsumeIntegralInRange<std::size_t>(0, set.size() - 1)];
     const FaceRef next = mesh.neighbour(from, input.ConsumeIntegralInRange<int>(0, 3));
-    if (next.valid() && std::find(ws.removed.begin(), ws.removed.end(), next.tet) == ws.removed.end())
-      ws.removed.push_back(next.tet);
+    if (next.valid() && std::find(set.begin(), set.end(), next.tet) == set.end()) set.push_back(next.tet);
   }
-  std::sort(ws.removed.begin(), ws.removed.end());
-  mesh.remove_tets(ws.removed);
+  std::sort(set.begin(), set.end());
+  mesh.remove_tets(set);
 }
 
 bool has(const inv::CheckReport& report, inv::Invariant id) { return report.find(id) != nullptr; }
@@ -106,30 +90,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t i = 1; i <= kMaxEdits && input.remaining_bytes() > 0 && mesh.num_tets() > 0; ++i) {
     const Edit edit =
         static_cast<Edit>(input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(Edit::kLast)));
-    ws.live_before.assign(mesh.tet_capacity(), 0);
-    for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) ws.live_before[t] = mesh.is_live(TetId{t}) ? 1 : 0;
-    ws.log.clear();
-    ws.removed.clear();
-    ws.created.clear();
+    // Each edit is a transaction: its net change, as the journal records it, is what the local
+    // checker is told.
+    mesh.begin_transaction();
     switch (edit) {
       case Edit::kSplit:
         fuzz::consume_edges(mesh, input, kMaxEdgesPerSplit, ws.edges);
-        ws.splitter.split(mesh, ws.edges, input.ConsumeBool() ? SplitMethod::kBisection : SplitMethod::kTemplates,
-                          nullptr, &ws.log);
-        net_change(mesh, ws);
+        ws.splitter.split(mesh, ws.edges, input.ConsumeBool() ? SplitMethod::kBisection : SplitMethod::kTemplates);
         break;
       case Edit::kRemoveBoundaryTet: {
         const TetId t = fuzz::consume_live_tet_where(mesh, input, [&](TetId c) { return mesh.boundary_face_count(c) > 0; });
-        if (t.valid()) {
-          ws.removed.assign(1, t);
-          mesh.remove_tets(ws.removed);
-        }
+        if (t.valid()) mesh.remove_tets(std::span<const TetId>(&t, 1));
         break;
       }
-      case Edit::kRemoveAnyTet:
-        ws.removed.assign(1, fuzz::consume_live_tet(mesh, input));
-        mesh.remove_tets(ws.removed);
+      case Edit::kRemoveAnyTet: {
+        const TetId t = fuzz::consume_live_tet(mesh, input);
+        mesh.remove_tets(std::span<const TetId>(&t, 1));
         break;
+      }
       case Edit::kRemoveAdjacentSet: remove_adjacent_set(mesh, ws, input); break;
       case Edit::kRefine: {
         const Ball ball = fuzz::consume_ball(input, fuzz::bounding_box(mesh), 0.08, 0.3);
@@ -138,11 +116,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         params.max_iterations = input.ConsumeIntegralInRange<std::uint32_t>(1, 4);
         params.focus = ball;
         scan_tets_meeting(mesh, ball, ws.tets);  // O(#T): the targets' meshes are small
-        if (mesh.num_tets() <= kMaxTetsToRefine) ws.refiner.refine(mesh, ws.tets, params, ws.region, &ws.log);
-        net_change(mesh, ws);
+        if (mesh.num_tets() <= kMaxTetsToRefine) ws.refiner.refine(mesh, ws.tets, params, ws.region);
         break;
       }
     }
+    mesh.transaction_changes(ws.removed, ws.created);
+    mesh.commit();
 
     inv::CheckOptions options;
     options.level = inv::CheckLevel::kLocal;

@@ -15,18 +15,18 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include "core/random.hpp"
+#include "cut/spatial_index.hpp"
 #include "operations/checked_mesh.hpp"
 #include "operations/mesh_edits.hpp"
+#include "refine/edge_split.hpp"
+#include "refine/refine.hpp"
+#include "remove/removability.hpp"
 #include "support/fuzz_failure.hpp"
 #include "tetcut/attributes.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/change_log.hpp"
-#include "refine/edge_split.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "core/random.hpp"
-#include "refine/refine.hpp"
-#include "remove/removability.hpp"
-#include "cut/spatial_index.hpp"
 
 namespace {
 
@@ -65,30 +65,45 @@ using Workspace = fuzz::EditWorkspace;
 
 bool close(double got, double want, double scale) { return std::fabs(got - want) <= 1e-12 * scale; }
 
-// Every vertex a split made sits at (1 - t) a + t b, and so does every attribute channel (paper
-// 3.2: texture and mechanical data follow the split); splits put it at the midpoint.
-void check_created_vertices(const CheckedMesh& checked, const ChangeLog& log) {
+// Every vertex an operation made is the convex combination of old vertices its log names, in
+// position and in every attribute channel (paper 3.2: texture and mechanical data follow the
+// split); a single split puts it at the midpoint of an old edge.
+void check_created_vertices(const CheckedMesh& checked, const ChangeLog& log, bool midpoints) {
   const TetMesh& mesh = checked.mesh();
   const VertexAttributes& attributes = mesh.attributes();
   for (const CreatedVertex& c : log.vertices) {
-    const std::string which = "vertex " + std::to_string(c.vertex.value) + " on edge " + std::to_string(c.a.value) +
-                              "-" + std::to_string(c.b.value);
-    checked.require(c.t == 0.5, "interpolation", which + ": not at the midpoint, t = " + std::to_string(c.t));
-    checked.require(mesh.is_live(c.vertex), "interpolation", which + ": not live after the split");
-    const Vec3 a = mesh.position(c.a), b = mesh.position(c.b), p = mesh.position(c.vertex);
-    const Vec3 want = (1.0 - c.t) * a + c.t * b;
-    const double scale = norm(a) + norm(b) + 1.0;
+    std::string which = "vertex " + std::to_string(c.vertex.value) + " from";
+    double sum = 0.0, scale = 1.0;
+    Vec3 want{};
+    for (int i = 0; i < c.count; ++i) {
+      which.append(1, ' ').append(std::to_string(c.from[i].value)).append(1, ':').append(std::to_string(c.weight[i]));
+      checked.require(c.weight[i] > 0.0 && c.from[i] != c.vertex && mesh.is_live(c.from[i]), "interpolation",
+                      which + ": not a positive weight on another live vertex");
+      sum += c.weight[i];
+      want = want + c.weight[i] * mesh.position(c.from[i]);
+      scale += norm(mesh.position(c.from[i]));
+    }
+    checked.require(c.count > 0 && close(sum, 1.0, 1.0), "interpolation", which + ": weights do not sum to 1");
+    if (midpoints)
+      checked.require(c.on_edge() && c.weight[0] == 0.5 && c.weight[1] == 0.5, "interpolation", which + ": not a midpoint");
+    checked.require(mesh.is_live(c.vertex), "interpolation", which + ": not live after the operation");
+    const Vec3 p = mesh.position(c.vertex);
     checked.require(close(p.x, want.x, scale) && close(p.y, want.y, scale) && close(p.z, want.z, scale),
-                    "interpolation", which + ": position is not (1 - t) a + t b");
+                    "interpolation", which + ": position is not the combination");
     for (std::uint32_t ch = 0; ch < attributes.channel_count(); ++ch) {
       checked.require(c.vertex.value < attributes.size(), "I8", which + ": no attribute slot");
-      const auto va = attributes.value(ch, c.a), vb = attributes.value(ch, c.b);
       const auto vp = attributes.value(ch, c.vertex);
-      for (std::size_t k = 0; k < vp.size(); ++k)
-        checked.require(close(vp[k], (1.0 - c.t) * va[k] + c.t * vb[k], std::fabs(va[k]) + std::fabs(vb[k]) + 1.0),
-                        "interpolation", which + ": channel " + attributes.channel(ch).name + "[" + std::to_string(k) +
-                                             "] is " + std::to_string(vp[k]) + ", not the interpolation of " +
-                                             std::to_string(va[k]) + " and " + std::to_string(vb[k]));
+      for (std::size_t k = 0; k < vp.size(); ++k) {
+        double expected = 0.0, magnitude = 1.0;
+        for (int i = 0; i < c.count; ++i) {
+          const double x = attributes.value(ch, c.from[i])[k];
+          expected += c.weight[i] * x;
+          magnitude += std::fabs(x);
+        }
+        checked.require(close(vp[k], expected, magnitude), "interpolation",
+                        which + ": channel " + attributes.channel(ch).name + "[" + std::to_string(k) + "] is " +
+                            std::to_string(vp[k]) + ", not the combination " + std::to_string(expected));
+      }
     }
   }
 }
@@ -101,7 +116,9 @@ void split(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input, Split
     for (const Edge& e : ws.edges) checked.describe(std::to_string(e.a.value) + "-" + std::to_string(e.b.value));
   const std::uint32_t tets_before = mesh.num_tets();
   ws.log.clear();
-  const SplitResult result = ws.splitter.split(mesh, ws.edges, method, nullptr, &ws.log);
+  mesh.begin_transaction();
+  const SplitResult result = ws.splitter.split(mesh, ws.edges, method);
+  mesh.commit(&ws.log);
   // Every edge came from a live tet, so the only acceptable refusal is floating-point degeneracy,
   // and a refused split leaves the mesh untouched.
   checked.require(result.refusal != SplitRefusal::kNotAnEdge, "refused-split", "an edge of a live tet was not an edge");
@@ -109,7 +126,7 @@ void split(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input, Split
     checked.require(mesh.num_tets() == tets_before && ws.log.created.empty(), "refused-split",
                     std::string("refused (") + to_string(result.refusal) + ") but changed the mesh");
   checked.end(ws.log, 0.0);
-  check_created_vertices(checked, ws.log);
+  check_created_vertices(checked, ws.log, true);
 }
 
 void refine(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input) {
@@ -132,9 +149,11 @@ void refine(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input) {
                      (params.focus ? " focus" : ""));
   scan_tets_meeting(mesh, ball, ws.tets);  // O(#T): the targets' meshes are small
   ws.log.clear();
-  if (mesh.num_tets() <= kMaxTetsToRefine) ws.refiner.refine(mesh, ws.tets, params, ws.region, &ws.log);
+  mesh.begin_transaction();
+  if (mesh.num_tets() <= kMaxTetsToRefine) ws.refiner.refine(mesh, ws.tets, params, ws.region);
+  mesh.commit(&ws.log);
   checked.end(ws.log, 0.0);
-  check_created_vertices(checked, ws.log);
+  check_created_vertices(checked, ws.log, false);
 }
 
 // Removes the first tet at or after a chosen id that the paper's rule (mesh_edits.hpp) says can

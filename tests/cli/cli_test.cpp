@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "cli_fixture.hpp"
+#include "core/random.hpp"
 #include "run_process.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/io.hpp"
-#include "core/random.hpp"
 
 namespace tetcut::test {
 namespace {

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <numeric>
 
+#include "core/random.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

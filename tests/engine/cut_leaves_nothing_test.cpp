@@ -18,13 +18,13 @@
 #include <vector>
 
 #include "checked.hpp"
+#include "core/tool_ball.hpp"
+#include "refine/refine.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/cut.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
-#include "core/local_tables.hpp"
-#include "refine/refine.hpp"
-#include "core/tool_ball.hpp"
 
 namespace tetcut::testing {
 namespace {

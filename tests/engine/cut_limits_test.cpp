@@ -7,12 +7,12 @@
 #include <cmath>
 
 #include "checked.hpp"
+#include "refine/refine.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/cut.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/io.hpp"
-#include "core/local_tables.hpp"
-#include "refine/refine.hpp"
 
 namespace tetcut {
 namespace {

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
+#include "change_log_check.hpp"
 #include "checked.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
@@ -64,13 +66,23 @@ class CorpusSweep : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CorpusSweep, EveryCutKeepsTheMeshValidAndRemovesEverythingRequested) {
   TetMesh mesh = load_corpus(GetParam());
+  // A channel to follow: the change log's vertex origins must reproduce it (paper 3.2).
+  const auto tag = *mesh.attributes().add_channel("tag", 1);
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = std::sin(v);
   const Box box = bounds(mesh);
   Cutter cutter(mesh, {.tool_diameter = diagonal(box) / 25});
   invariants::LocalChecker local(mesh.raw_view());
   std::uint32_t removed = 0;
   for (const Vec3& centre : sweep(box, 12)) {
-    const CutReport r = cutter.cut(centre);
+    const TetMesh before = mesh;
+    ChangeLog log;
+    const CutReport r = cutter.cut(centre, &log);
     ASSERT_TRUE(r.ok) << r.failure;
+    // The log a consumer gets is the net change the checker is told about, and it replays.
+    EXPECT_EQ(log.removed, cutter.last_removed());
+    ASSERT_EQ(log.created.size(), cutter.last_created().size());
+    for (std::size_t i = 0; i < log.created.size(); ++i) EXPECT_EQ(log.created[i].tet, cutter.last_created()[i]);
+    testing::expect_log_describes(before, mesh, log);
     EXPECT_EQ(r.unresolved, 0u) << "combined must resolve every singularity";
     removed += r.tets_removed;
     const invariants::CheckReport l = local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created());

@@ -10,13 +10,13 @@
 #include <cmath>
 
 #include "checked.hpp"
-#include "test_meshes.hpp"
-#include "tetcut/canonical_hash.hpp"
-#include "refine/edge_split.hpp"
-#include "core/local_tables.hpp"
 #include "core/quality.hpp"
 #include "core/random.hpp"
+#include "refine/edge_split.hpp"
 #include "refine/split_templates.hpp"
+#include "test_meshes.hpp"
+#include "tetcut/canonical_hash.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {
@@ -165,7 +165,9 @@ TEST(EdgeSplit, UniformRefinementGivesEightTimesTheTets) {
       for (int e = 0; e < 6; ++e) all.push_back({mesh.vertex(TetId{t}, kEdgeVerts[e][0]), mesh.vertex(TetId{t}, kEdgeVerts[e][1])});
     EdgeSplitter splitter;
     ChangeLog log;
-    const SplitResult r = splitter.split(mesh, all, method, nullptr, &log);
+    mesh.begin_transaction();
+    const SplitResult r = splitter.split(mesh, all, method);
+    mesh.commit(&log);
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(mesh.num_tets(), 8 * tets);
     EXPECT_EQ(log.removed.size(), tets);
@@ -191,7 +193,9 @@ TEST(EdgeSplit, RandomEdgeSetsKeepTheMeshValidAfterEverySplit) {
     }
     invariants::LocalChecker local(mesh.raw_view());
     ChangeLog log;
-    ASSERT_TRUE(splitter.split(mesh, edges, round % 2 ? SplitMethod::kBisection : SplitMethod::kTemplates, nullptr, &log).ok());
+    mesh.begin_transaction();
+    ASSERT_TRUE(splitter.split(mesh, edges, round % 2 ? SplitMethod::kBisection : SplitMethod::kTemplates).ok());
+    mesh.commit(&log);
     std::vector<TetId> created;
     for (const CreatedTet& c : log.created) created.push_back(c.tet);
     EXPECT_TRUE(local.after_operation(mesh.raw_view(), log.removed, created, {.level = invariants::CheckLevel::kLocal}, 0.0).ok());
@@ -208,12 +212,24 @@ TEST(EdgeSplit, ChildrenRememberTheirParentAndMidpointsTheirEdge) {
   std::sort(parents.begin(), parents.end());
   EdgeSplitter splitter;
   ChangeLog log;
-  ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&e, 1), SplitMethod::kTemplates, nullptr, &log).ok());
+  mesh.begin_transaction();
+  ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&e, 1), SplitMethod::kTemplates).ok());
+  mesh.commit(&log);
   ASSERT_EQ(log.vertices.size(), 1u);
-  EXPECT_EQ(mesh.position(log.vertices[0].vertex), 0.5 * (mesh.position(e.a) + mesh.position(e.b)));
+  const CreatedVertex& m = log.vertices[0];
+  EXPECT_EQ(mesh.position(m.vertex), 0.5 * (mesh.position(e.a) + mesh.position(e.b)));
+  ASSERT_TRUE(m.on_edge());
+  EXPECT_EQ(std::minmax(m.from[0], m.from[1]), std::minmax(e.a, e.b));
+  EXPECT_EQ(m.weight[0], 0.5);
+  EXPECT_EQ(m.weight[1], 0.5);
+  EXPECT_TRUE(log.removed_vertices.empty());
   EXPECT_EQ(log.created.size(), 2 * shell.size());
   std::map<std::uint32_t, int> children_per_parent;
-  for (const CreatedTet& c : log.created) ++children_per_parent[c.parent.value];
+  for (const CreatedTet& c : log.created) {
+    ASSERT_EQ(c.parents_count, 1u);
+    EXPECT_EQ(log.parents_of(c)[0], c.parent);
+    ++children_per_parent[c.parent.value];
+  }
   for (TetId p : parents) EXPECT_EQ(children_per_parent[p.value], 2);
 }
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "core/local_tables.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -4,7 +4,7 @@
 #include <set>
 
 #include "test_meshes.hpp"
-#include "core/local_tables.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {

@@ -1,9 +1,9 @@
 // Face-connected pieces: a box is one; removing a slab of tets across it makes two.
 #include <gtest/gtest.h>
 
+#include "core/pieces.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "core/pieces.hpp"
 
 namespace tetcut {
 namespace {

@@ -4,11 +4,11 @@
 #include <limits>
 
 #include "checked.hpp"
+#include "cut/spatial_index.hpp"
+#include "refine/refine.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "core/local_tables.hpp"
-#include "refine/refine.hpp"
-#include "cut/spatial_index.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {
@@ -51,9 +51,8 @@ TEST(Refine, RefinesUntilEveryEdgeOfTheNewTetsIsShorterThanDref) {
     ASSERT_FALSE(hit.empty());
     Refiner refiner;
     std::vector<TetId> region;
-    ChangeLog log;
     const RefineParams params{.d_ref = 0.1, .p = 1.5, .max_iterations = 10, .method = method, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}};
-    const RefineReport r = refiner.refine(mesh, hit, params, region, &log);
+    const RefineReport r = refiner.refine(mesh, hit, params, region);
     EXPECT_TRUE(r.converged);
     EXPECT_GE(r.iterations, 2u) << "edges of 0.25 to 0.43 need two halvings to get under 0.1";
     EXPECT_LE(r.iterations, 6u);

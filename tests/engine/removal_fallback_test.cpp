@@ -8,9 +8,9 @@
 #include <string>
 
 #include "checked.hpp"
+#include "removal_test_support.hpp"
 #include "remove/normal_surface_fallback.hpp"
 #include "remove/refinement_strategies.hpp"
-#include "removal_test_support.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/io.hpp"
 
@@ -23,7 +23,7 @@ struct Request {
   EdgeSplitter splitter;
   ChangeLog log;
   std::vector<TetId> exposed;
-  detail::RemovalContext context(TetMesh& mesh) { return {mesh, ws, splitter, log, exposed, 0xFFFFFFFFu}; }
+  detail::RemovalContext context(TetMesh& mesh) { return {mesh, ws, splitter, exposed, mesh.savepoint(), 0xFFFFFFFFu}; }
 };
 
 // The vertices of the stars of t's corners: what the construction may touch.
@@ -54,7 +54,7 @@ std::vector<VertId> star_vertices(const TetMesh& mesh, TetId t) {
     request.log.clear();
     detail::RemovalContext ctx = request.context(mesh);
     const std::uint32_t n = fallback.remove(ctx, t);
-    mesh.commit();
+    mesh.commit(&request.log);
     if (n == 0) return ::testing::AssertionFailure() << "tet " << i << ": the fallback refused";
     if (mesh.is_live(t)) return ::testing::AssertionFailure() << "tet " << i << ": still there";
     if (tet_containing(mesh, c).valid()) return ::testing::AssertionFailure() << "tet " << i << ": its centroid is covered";
@@ -63,8 +63,8 @@ std::vector<VertId> star_vertices(const TetMesh& mesh, TetId t) {
     // Local: every edge split has an end among T's corners, so every tet removed or made has
     // its original vertices in the stars.
     for (const CreatedVertex& v : request.log.vertices)
-      for (VertId end : {v.a, v.b})
-        if (!std::binary_search(star.begin(), star.end(), end))
+      for (int k = 0; k < v.count; ++k)
+        if (!std::binary_search(star.begin(), star.end(), v.from[k]))
           return ::testing::AssertionFailure() << "tet " << i << ": split outside the stars";
     ++checked;
   }

@@ -6,12 +6,12 @@
 #include <set>
 #include <utility>
 
-#include "removal_test_support.hpp"
-#include "tetcut/io.hpp"
-#include "core/local_tables.hpp"
 #include "core/random.hpp"
 #include "refine/edge_split.hpp"
+#include "removal_test_support.hpp"
 #include "remove/set_removal.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/io.hpp"
 
 namespace tetcut::testing {
 namespace {
@@ -276,7 +276,9 @@ TEST(SetRemoval, SplittingAtAVertexKeepsTheVerdictThere) {
           if (w != v) edges.push_back({v, w, t});
       EdgeSplitter splitter;
       ChangeLog log;
-      const SplitResult split = splitter.split(mesh, edges, SplitMethod::kTemplates, nullptr, &log);
+      mesh.begin_transaction();
+      const SplitResult split = splitter.split(mesh, edges, SplitMethod::kTemplates);
+      mesh.commit(&log);
       if (!split.ok()) return;  // a degenerate child refused: nothing to compare
       std::vector<TetId> corners;
       for (const CreatedTet& c : log.created)

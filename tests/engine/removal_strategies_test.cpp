@@ -3,8 +3,8 @@
 // bookkeeping a simulator relies on (change log, atomicity, statistics).
 #include <gtest/gtest.h>
 
-#include "remove/neighbour_search.hpp"
 #include "removal_test_support.hpp"
+#include "remove/neighbour_search.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/io.hpp"
 
@@ -124,7 +124,9 @@ TEST(RemovalStrategies, NeighboursFailsBeyondItsDepthAndCombinedThenSucceeds) {
     TetMesh mesh = original;
     Remover remover({.strategy = RemovalStrategy::kNeighbours});
     ChangeLog log;
-    const RemovalResult result = remover.remove(mesh, t, &log);
+    mesh.begin_transaction();
+    const RemovalResult result = remover.remove(mesh, t);
+    mesh.commit(&log);
     EXPECT_EQ(result.outcome, RemovalOutcome::kUnresolved);
     EXPECT_EQ(canonical_hash(mesh), canonical_hash(original));
     EXPECT_TRUE(mesh.is_live(t));
@@ -157,31 +159,50 @@ TEST(RemovalStrategies, NeighboursFailsBeyondItsDepthAndCombinedThenSucceeds) {
 }
 
 TEST(RemovalStrategies, TheChangeLogReplaysToTheSameTets) {
-  // A simulator applies the log to its own copy: removed ids die, created ids hold the tets
-  // the mesh has now, with their parents, and every new vertex sits on its edge.
-  TetMesh mesh = build_or_fail(cone_over_grid(16));
+  // A simulator applies the log to its own copy of the mesh before the request: removed ids die,
+  // created ids hold the tets the mesh has now, each with parents it had (live before, removed
+  // now: never a tet the request made and split again), and every new vertex is the stated
+  // combination of vertices it had.
+  const TetMesh before = build_or_fail(cone_over_grid(16));
+  TetMesh mesh = before;
   const TetId t = tet_containing(mesh, {8.3, 8.1, 0.2});
   Remover remover;
   ChangeLog log;
-  const RemovalResult result = remover.remove(mesh, t, &log);
+  mesh.begin_transaction();
+  const RemovalResult result = remover.remove(mesh, t);
+  mesh.commit(&log);
   ASSERT_EQ(result.outcome, RemovalOutcome::kFallback);  // it splits (see above)
   EXPECT_FALSE(log.vertices.empty());
   for (const CreatedVertex& v : log.vertices) {
-    const Vec3 expected = (1 - v.t) * mesh.position(v.a) + v.t * mesh.position(v.b);
-    const Vec3 got = mesh.positions()[v.vertex.value];
-    EXPECT_NEAR(norm(got - expected), 0.0, 1e-12);
+    ASSERT_GE(v.count, 2u);
+    Vec3 expected{};
+    double sum = 0.0;
+    for (int i = 0; i < v.count; ++i) {
+      EXPECT_TRUE(before.is_live(v.from[i]));
+      EXPECT_FALSE(before.is_live(v.vertex) && v.vertex == v.from[i]);
+      expected = expected + v.weight[i] * before.position(v.from[i]);
+      sum += v.weight[i];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-15);
+    EXPECT_NEAR(norm(mesh.position(v.vertex) - expected), 0.0, 1e-12);
   }
   // Net, and no id reused inside the request: what went is dead, what came is live.
-  for (TetId r : remover.last_removed()) EXPECT_FALSE(mesh.is_live(r));
-  for (TetId c : remover.last_created()) EXPECT_TRUE(mesh.is_live(c));
-  // Every tet created is in the history with a parent that was live before.
-  for (TetId c : remover.last_created()) {
-    const auto entry = std::find_if(log.created.begin(), log.created.end(), [&](const CreatedTet& x) { return x.tet == c; });
-    ASSERT_NE(entry, log.created.end());
-    EXPECT_TRUE(entry->parent.valid());
+  EXPECT_TRUE(std::equal(log.removed.begin(), log.removed.end(), remover.last_removed().begin(), remover.last_removed().end()));
+  ASSERT_EQ(log.created.size(), remover.last_created().size());
+  for (TetId r : log.removed) {
+    EXPECT_TRUE(before.is_live(r));
+    EXPECT_FALSE(mesh.is_live(r));
   }
-  EXPECT_TRUE(std::find(remover.last_removed().begin(), remover.last_removed().end(), t) !=
-              remover.last_removed().end());
+  for (std::size_t i = 0; i < log.created.size(); ++i) {
+    const CreatedTet& c = log.created[i];
+    EXPECT_EQ(c.tet, remover.last_created()[i]);
+    EXPECT_TRUE(mesh.is_live(c.tet));
+    ASSERT_EQ(c.parents_count, 1u) << "a split's child has one parent";
+    EXPECT_EQ(c.parent, log.parents_of(c)[0]);
+    EXPECT_TRUE(before.is_live(c.parent));
+    EXPECT_TRUE(std::binary_search(log.removed.begin(), log.removed.end(), c.parent)) << "parents are tets the request replaced";
+  }
+  EXPECT_TRUE(std::binary_search(log.removed.begin(), log.removed.end(), t));
 }
 
 TEST(RemovalStrategies, DirectRemovalsAgreeWithTheSetTest) {

@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "checked.hpp"
+#include "core/boundary_tet_picker.hpp"
+#include "remove/removal.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/predicates.hpp"
-#include "core/boundary_tet_picker.hpp"
-#include "remove/removal.hpp"
 
 namespace tetcut::testing {
 

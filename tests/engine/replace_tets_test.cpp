@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
+#include "core/random.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
-#include "core/local_tables.hpp"
-#include "core/random.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {

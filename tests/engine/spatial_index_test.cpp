@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "test_meshes.hpp"
-#include "refine/edge_split.hpp"
-#include "core/local_tables.hpp"
 #include "core/random.hpp"
 #include "cut/spatial_index.hpp"
+#include "refine/edge_split.hpp"
+#include "test_meshes.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {
@@ -68,14 +68,15 @@ TEST(SpatialIndex, QueriesMatchAScanThroughSplitsAndRemovals) {
     // boundary tet will do for the index, which does not care about manifoldness.
     ChangeLog log;
     const TetId t = testing::random_live_tet(mesh, rng);
+    mesh.begin_transaction();
     if (round % 3 == 2) {
       mesh.remove_tets(std::span<const TetId>(&t, 1));
-      log.removed.push_back(t);
     } else {
       const int e = static_cast<int>(rng.below(6));
       const Edge edge{mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])};
-      ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates, nullptr, &log).ok());
+      ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates).ok());
     }
+    mesh.commit(&log);
     index.apply(mesh, log);
   }
 }

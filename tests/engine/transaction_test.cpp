@@ -2,10 +2,11 @@
 
 #include <algorithm>
 
-#include "test_meshes.hpp"
-#include "refine/edge_split.hpp"
-#include "core/local_tables.hpp"
+#include "change_log_check.hpp"
 #include "core/random.hpp"
+#include "refine/edge_split.hpp"
+#include "test_meshes.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {
@@ -160,6 +161,86 @@ TEST(Transaction, NoIdIsReusedInsideATransactionAndChangesAreNet) {
   const std::uint32_t capacity = mesh.tet_capacity();
   ASSERT_TRUE(splitter.split(mesh, edges, SplitMethod::kTemplates, &made).ok());
   EXPECT_EQ(mesh.tet_capacity(), capacity);
+}
+
+TEST(RecordOfChange, ChildrenSplitAgainNameTheTetsThereBeforeAndMidpointsTheirOldVertices) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  const auto tag = *mesh.attributes().add_channel("tag", 1);
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = 3.0 * v;
+  const TetMesh before = mesh;
+  EdgeSplitter splitter;
+  SplitMix64 rng(11);
+  mesh.begin_transaction();
+  // Three rounds, each splitting edges of tets the previous round made: grandchildren whose
+  // midpoints lie on edges between midpoints.
+  std::vector<TetId> made;
+  const Edge first{mesh.vertex(TetId{0}, 0), mesh.vertex(TetId{0}, 1)};
+  ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&first, 1), SplitMethod::kTemplates, &made).ok());
+  for (int round = 0; round < 2; ++round) {
+    std::vector<Edge> edges;
+    for (TetId t : made)
+      if (mesh.is_live(t)) edges.push_back({mesh.vertex(t, rng.below(2) ? 2 : 0), mesh.vertex(t, 3), t});
+    made.clear();
+    ASSERT_TRUE(splitter.split(mesh, edges, SplitMethod::kTemplates, &made).ok());
+  }
+  // An attempt undone: its births go with it.
+  const TetMesh::Savepoint point = mesh.savepoint();
+  const std::size_t births = mesh.tets_made_since(point).size();
+  const Edge undone{mesh.vertex(made[0], 1), mesh.vertex(made[0], 2)};
+  ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&undone, 1), SplitMethod::kTemplates).ok());
+  EXPECT_GT(mesh.tets_made_since(point).size(), births);
+  mesh.rollback_to(point);
+  EXPECT_EQ(mesh.tets_made_since(point).size(), 0u);
+  EXPECT_EQ(mesh.vertices_made_since(point).size(), 0u);
+  ChangeLog log;
+  mesh.commit(&log);
+  EXPECT_FALSE(log.created.empty());
+  EXPECT_GT(testing::expect_log_describes(before, mesh, log), 0) << "some midpoints lie inside old faces or tets";
+  EXPECT_TRUE(log.removed_vertices.empty());
+}
+
+TEST(RecordOfChange, AMovedVertexIsLocatedInTheOldTetItMovedInto) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  const auto tag = *mesh.attributes().add_channel("tag", 1);
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = 1.0 + v * v;
+  const TetMesh before = mesh;
+  // An interior edge: its midpoint can move a little in any direction.
+  Edge edge{};
+  for (std::uint32_t t = 0; t < mesh.tet_capacity() && !edge.a.valid(); ++t)
+    for (int e = 0; e < 6 && !edge.a.valid(); ++e)
+      if (!mesh.is_boundary_edge(TetId{t}, e)) edge = {mesh.vertex(TetId{t}, kEdgeVerts[e][0]), mesh.vertex(TetId{t}, kEdgeVerts[e][1])};
+  ASSERT_TRUE(edge.a.valid());
+  EdgeSplitter splitter;
+  mesh.begin_transaction();
+  const TetMesh::Savepoint point = mesh.savepoint();
+  ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates).ok());
+  ASSERT_EQ(mesh.vertices_made_since(point).size(), 1u);
+  const VertId m = mesh.vertices_made_since(point)[0].vertex;
+  ASSERT_TRUE(mesh.made_in_transaction(m));
+  mesh.move_vertex(m, mesh.position(m) + Vec3{0.011, 0.007, -0.013});
+  ChangeLog log;
+  mesh.commit(&log);
+  ASSERT_EQ(log.vertices.size(), 1u);
+  EXPECT_GE(log.vertices[0].count, 3u) << "off its edge";
+  testing::expect_log_describes(before, mesh, log);
+}
+
+TEST(RecordOfChange, RemovedTetsAndVerticesAreNetAndTheLogOfAnEmptyTransactionIsEmpty) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(1, 1, 1));
+  const TetMesh before = mesh;
+  ChangeLog log;
+  mesh.begin_transaction();
+  mesh.commit(&log);
+  EXPECT_TRUE(log.removed.empty() && log.created.empty() && log.vertices.empty() && log.removed_vertices.empty());
+  // A corner tet of the cube: removing it frees no vertex; removing all frees all eight.
+  std::vector<TetId> all;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) all.push_back(TetId{t});
+  mesh.begin_transaction();
+  mesh.remove_tets(all);
+  mesh.commit(&log);
+  EXPECT_EQ(log.removed.size(), all.size());
+  EXPECT_EQ(log.removed_vertices.size(), 8u);
+  testing::expect_log_describes(before, mesh, log);
 }
 
 }  // namespace

@@ -9,13 +9,13 @@
 #include <utility>
 #include <vector>
 
+#include "core/tool_ball.hpp"
+#include "cut/spatial_index.hpp"
+#include "refine/refine.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "refine/refine.hpp"
-#include "cut/spatial_index.hpp"
-#include "core/tool_ball.hpp"
 
 namespace tetcut {
 namespace {

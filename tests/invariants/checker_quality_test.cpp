@@ -8,9 +8,9 @@
 #include <numbers>
 #include <string>
 
-#include "tet_quality.hpp"
 #include "core/quality.hpp"
 #include "core/random.hpp"
+#include "tet_quality.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {

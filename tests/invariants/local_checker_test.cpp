@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "test_support.hpp"
 #include "core/random.hpp"
+#include "test_support.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {

@@ -14,9 +14,9 @@
 #include <map>
 #include <vector>
 
-#include "tet_mesh_test_access.hpp"
 #include "test_support.hpp"
-#include "core/local_tables.hpp"
+#include "tet_mesh_test_access.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut::invariants::testing {
 namespace {

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <functional>
 
+#include "core/random.hpp"
 #include "io_test_support.hpp"
 #include "tetcut/box_mesh.hpp"
-#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

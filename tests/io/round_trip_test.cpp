@@ -2,11 +2,11 @@
 #include <bit>
 #include <cmath>
 
+#include "core/random.hpp"
 #include "io_test_support.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "core/random.hpp"
 
 namespace tetcut {
 namespace {

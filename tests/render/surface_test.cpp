@@ -3,11 +3,11 @@
 #include <cmath>
 #include <vector>
 
+#include "refine/refine.hpp"
+#include "remove/removal.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "refine/refine.hpp"
-#include "remove/removal.hpp"
 #include "tetcut/render/surface.hpp"
 
 namespace tetcut::render {

@@ -14,12 +14,12 @@
 
 #include "command.hpp"
 #include "command_parser.hpp"
+#include "core/quality.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/generators/liver.hpp"
 #include "tetcut/generators/shapes.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "core/quality.hpp"
 
 namespace tetcut::cli {
 namespace {

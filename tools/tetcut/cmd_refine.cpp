@@ -8,17 +8,17 @@
 
 #include "command.hpp"
 #include "command_parser.hpp"
+#include "core/quality.hpp"
+#include "core/random.hpp"
+#include "cut/spatial_index.hpp"
 #include "json_output.hpp"
 #include "mesh_input.hpp"
+#include "refine/refine.hpp"
 #include "tetcut/canonical_hash.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
-#include "core/local_tables.hpp"
-#include "core/quality.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "core/random.hpp"
-#include "refine/refine.hpp"
-#include "cut/spatial_index.hpp"
 
 namespace tetcut::cli {
 namespace {

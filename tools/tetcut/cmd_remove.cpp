@@ -21,15 +21,15 @@
 
 #include "command.hpp"
 #include "command_parser.hpp"
+#include "core/boundary_tet_picker.hpp"
 #include "json_output.hpp"
 #include "mesh_input.hpp"
-#include "core/boundary_tet_picker.hpp"
+#include "remove/removal.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "remove/removal.hpp"
 
 namespace tetcut::cli {
 

@@ -47,6 +47,8 @@ class VertexAttributes {
 
   // dst := (1 - t) * a + t * b on every channel.
   void interpolate(VertId dst, VertId a, VertId b, double t);
+  // dst := sum of weight[i] * from[i] on every channel (a vertex moved inside an old tet).
+  void combine(VertId dst, std::span<const VertId> from, std::span<const double> weight);
 
   // Renumbers the vertices: vertex n takes the values vertex new_to_old[n] had (compaction).
   void permute(std::span<const VertId> new_to_old);

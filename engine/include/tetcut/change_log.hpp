@@ -1,10 +1,26 @@
-// What an operation did to the mesh, for a FEM simulator to apply to its own arrays (design:
-// the ChangeLog). Entries are appended in the order they happened: within one operation a tet
-// may be created and later removed again (refinement splits its own children), so apply the
-// removals and creations of each step in order, or simply take the final state of each id.
+// What an operation did to the mesh, net, for a simulator to apply to its own arrays (design: the
+// ChangeLog; a FEM model, the rendered surface). Derived from the mesh's journal when the
+// operation commits (TetMesh::commit, Cutter::cut), so it is the one record there is:
+//
+//   removed           tets live before and gone after, sorted by id;
+//   created           tets live after and not before, sorted by id, each with its parents: the
+//                     tets live before that it lies in (one for a split's child, several for a
+//                     flip's), listed in `parents`;
+//   vertices          vertices made and still used, sorted by id, each a convex combination of
+//                     vertices live before (an edge midpoint: two; a vertex smoothing moved off
+//                     its edge: barycentric coordinates in the tet it moved into);
+//   removed_vertices  vertices live before and gone after (no tet uses them any more).
+//
+// Net means intermediate steps are invisible: a tet a refinement made and a later step split or
+// removed again appears nowhere, and its children's parents are the tets that were there before.
+// Apply removals first, then creations. Ids of removed tets and vertices may be reused by
+// created ones in a later operation, never within one.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "tetcut/ids.hpp"
@@ -13,32 +29,64 @@ namespace tetcut {
 
 struct CreatedTet {
   TetId tet;
-  TetId parent;  // the tet it subdivides, kNoTet when it has none
+  // Its parents are ChangeLog::parents[parents_begin .. parents_begin + parents_count), sorted
+  // by id; `parent` is the first of them, the only one for a split's child.
+  TetId parent;
+  std::uint32_t parents_begin = 0, parents_count = 0;
 };
 
 struct CreatedVertex {
   VertId vertex;
-  VertId a, b;  // the edge it was put on
-  double t = 0.5;  // position and attributes: (1 - t) * a + t * b
+  // Position and every attribute channel: sum over i < count of weight[i] * (the value of from[i]
+  // before the operation), to rounding (the mesh's own position is the reference). Weights are
+  // positive and sum to 1. count 2: on the old edge (from[0], from[1]) at t = weight[1].
+  std::array<VertId, 4> from{};
+  std::array<double, 4> weight{};
+  std::uint8_t count = 0;
+
+  [[nodiscard]] bool on_edge() const { return count == 2; }
 };
 
 struct ChangeLog {
   std::vector<TetId> removed;
   std::vector<CreatedTet> created;
+  std::vector<TetId> parents;
   std::vector<CreatedVertex> vertices;
+  std::vector<VertId> removed_vertices;
+
+  [[nodiscard]] std::span<const TetId> parents_of(const CreatedTet& c) const {
+    return std::span<const TetId>(parents).subspan(c.parents_begin, c.parents_count);
+  }
 
   // Room for this many entries of each kind (a caller that must not allocate per operation).
   void reserve(std::size_t n) {
     removed.reserve(n);
     created.reserve(n);
+    parents.reserve(2 * n);
     vertices.reserve(n);
+    removed_vertices.reserve(n);
   }
 
   void clear() {
     removed.clear();
     created.clear();
+    parents.clear();
     vertices.clear();
+    removed_vertices.clear();
   }
 };
+
+// Appends `from` to `to` (the log of several operations, in order).
+inline void append(ChangeLog& to, const ChangeLog& from) {
+  const auto offset = static_cast<std::uint32_t>(to.parents.size());
+  to.removed.insert(to.removed.end(), from.removed.begin(), from.removed.end());
+  for (CreatedTet c : from.created) {
+    c.parents_begin += offset;
+    to.created.push_back(c);
+  }
+  to.parents.insert(to.parents.end(), from.parents.begin(), from.parents.end());
+  to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+  to.removed_vertices.insert(to.removed_vertices.end(), from.removed_vertices.begin(), from.removed_vertices.end());
+}
 
 }  // namespace tetcut

@@ -111,9 +111,10 @@ class Cutter {
   std::optional<std::string> set_params(const CutParams& params);
   [[nodiscard]] const CutParams& params() const;
 
-  // One cut with the tool centred at `centre`. Appends its net change to `log` when given: the
-  // tets live before and gone after, the tets live after and not before (each with the tet it
-  // came from, live before the cut), and the vertices made that are still used.
+  // One cut with the tool centred at `centre`. Appends its net change to `log` when given, as the
+  // mesh's journal derives it (change_log.hpp): the tets live before and gone after, the tets
+  // live after and not before with their parents among the former, the vertices made that are
+  // still used with their origin, the vertices gone.
   CutReport cut(const Vec3& centre, ChangeLog* log = nullptr);
 
   // One removal request outside the cut pipeline (tetcut remove, scenarios): tet t with the
@@ -132,7 +133,7 @@ class Cutter {
   [[nodiscard]] const std::vector<TetId>& last_created() const;
 
  private:
-  // The index, the refiner, the Remover, the marks and the scratch lists (engine/src/detail/
+  // The index, the refiner, the Remover, the marks and the scratch lists (engine/src/cut/
   // cut_pipeline.hpp): allocated once, by the constructor.
   class Pipeline;
   std::unique_ptr<Pipeline> pipeline_;

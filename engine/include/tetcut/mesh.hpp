@@ -23,6 +23,9 @@
 #include <vector>
 
 #include "tetcut/attributes.hpp"
+#include "tetcut/change_log.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/raw_mesh.hpp"
 #include "tetcut/raw_mesh_view.hpp"
@@ -37,7 +40,7 @@ struct Renumbering {
 };
 
 namespace detail {
-struct MeshInternals;  // engine/src/detail/mesh_internals.hpp: the builder's and the checker tests' way in
+struct MeshInternals;  // engine/src/core/mesh_internals.hpp: the builder's and the checker tests' way in
 }  // namespace detail
 
 // Tets are addressed by 30 bits in packed neighbour references: about 1.07e9 tets at most.
@@ -93,6 +96,19 @@ class TetMesh {
   // O(edge shell): walks around the edge until it closes or meets the boundary.
   [[nodiscard]] bool is_boundary_edge(TetId t, int local_edge) const;
 
+  // ---- edges ------------------------------------------------------------------------------
+  // The local edge (0..5) joining a and b in t, or -1 when t does not have both. Inline: the
+  // splitter and the refinement ask it for every tet of every shell they walk.
+  [[nodiscard]] int local_edge(TetId t, VertId a, VertId b) const {
+    const int la = local_index(t, a), lb = local_index(t, b);
+    if (la < 0 || lb < 0 || la == lb) return -1;
+    return kEdgeIndex[la][lb];
+  }
+  // The edge (a, b) as (a tet that has it, its local edge) (style: CGAL's is_edge): from `hint`
+  // when the hint has both ends, else from a walk of a's shell (into `shell_scratch`). Invalid
+  // when a and b are not joined. O(1) with a good hint, O(shell of a) otherwise.
+  EdgeRef find_edge(VertId a, VertId b, TetId hint, std::vector<TetId>& shell_scratch) const;
+
   // ---- shells -----------------------------------------------------------------------------
   // The tets around v, face-connected walk from vertex_tet(v). `out` is cleared first. Cost
   // O(shell^2) in the worst case through a linear membership test, which beats hashing for the
@@ -130,6 +146,11 @@ class TetMesh {
   // A new vertex at (1 - t) * a + t * b with every attribute channel interpolated the same way
   // (paper 3.2: texture and mechanical data follow the split).
   VertId add_vertex_on_edge(VertId a, VertId b, double t);
+  // Moves a vertex the open transaction made (smoothing; never a vertex that was there before:
+  // input vertices do not move). Its origin becomes barycentric coordinates in the tet that was
+  // there before the transaction and contains its new position, and its attribute channels
+  // are interpolated from them, so a consumer still sees one convex combination of old values.
+  void move_vertex(VertId v, const Vec3& p);
 
   // The one local mutation primitive: removes `removed` and inserts `added`, gluing the new tets
   // to each other and to the faces the removed ones shared with the rest of the mesh (matched by
@@ -138,11 +159,15 @@ class TetMesh {
   // needed to re-seed vertex_tet). A vertex left without tets is removed. Ids of new tets are
   // appended to `created` (may reuse ids of removed tets).
   //
+  // `parent_of`, for the record of change: the one removed tet each added tet comes from (a
+  // split: one entry per added tet); empty when every removed tet is a parent of every added
+  // one (a flip).
+  //
   // Preconditions (asserted in debug builds, the caller's plan guarantees them): removed tets
   // are live and distinct, added tets are positively oriented over live or newly added
   // vertices, and no face ends up shared by more than two tets.
   void replace_tets(std::span<const TetId> removed, std::span<const TetVerts> added,
-                    std::vector<TetId>* created = nullptr);
+                    std::vector<TetId>* created = nullptr, std::span<const TetId> parent_of = {});
   void remove_tets(std::span<const TetId> removed) { replace_tets(removed, {}, nullptr); }
 
   // Reserves room for this many tet and vertex ids (scratch and the journal's working size
@@ -166,24 +191,72 @@ class TetMesh {
   // Inside a transaction no id is reused: a tet or vertex freed there joins the free lists only
   // at commit(). So an id is created or removed at most once per transaction, and what a
   // transaction did is a plain set difference (the net ChangeLog of a cut, the checker's region).
+  //
+  // The journal is also the one record of what changed: every tet made is recorded with its
+  // parents, every vertex with its origin (its edge, or the tet it was moved into), and
+  // commit(&log) derives the net ChangeLog from that (change_log.hpp). Nothing else keeps one.
   void begin_transaction();
-  void commit();
+  // Ends the transaction; with `log`, first appends its net change (change_log.hpp): the tets
+  // live before and gone now, those live now and not before with their parents among the
+  // former, the vertices made and still used with their origin among the vertices there before,
+  // and the vertices gone. O(journal).
+  void commit(ChangeLog* log = nullptr);
   void rollback();
   [[nodiscard]] bool in_transaction() const { return journal_.active; }
 
   // A point inside the open transaction to come back to: an attempt that does not pan out is
   // undone by rollback_to() (the removal strategies' one undo), everything done since is gone
-  // bit for bit, and the transaction stays open. Savepoints nest: rolling back to one
-  // invalidates those taken after it.
+  // bit for bit, the record of change included, and the transaction stays open. Savepoints
+  // nest: rolling back to one invalidates those taken after it.
   struct Savepoint {
     std::uint32_t entries = 0, attribute_values = 0;
     std::uint32_t tets = 0, vertices = 0;  // array sizes
     std::uint32_t live_tets = 0, live_vertices = 0;
+    std::uint32_t tet_births = 0, parents = 0, vertex_births = 0, births_removed = 0;
     TetId free_tet_head, pending_tet_head, pending_tet_tail;
     VertId free_vert_head, pending_vert_head, pending_vert_tail;
   };
   [[nodiscard]] Savepoint savepoint();
   void rollback_to(const Savepoint& point);
+
+  // ---- the record of change, as it is being written ------------------------------------------
+  // A tet made by replace_tets() inside the open transaction, with the tets that call removed
+  // that it comes from (parents()).
+  struct TetBirth {
+    TetId tet;
+    std::uint32_t parents_begin = 0, parents_count = 0;
+  };
+  // A vertex made inside the open transaction: on edge (a, b) at t, or (a invalid) by
+  // add_vertex(). `origin`: where it is now, over vertices there before the transaction (count
+  // 0 while unknown: located when the log is derived).
+  struct VertexBirth {
+    VertId vertex;
+    VertId a, b;
+    double t = 0.0;
+    CreatedVertex origin;
+  };
+  // What the open transaction made since `point`, in the order it was made: raw, not net (a tet
+  // made and split again since is listed, and so is its child). A split's children and
+  // midpoints are exactly what it made since a savepoint taken before it. O(1); the spans are
+  // valid until the next mutation.
+  [[nodiscard]] std::span<const TetBirth> tets_made_since(const Savepoint& point) const {
+    return std::span<const TetBirth>(journal_.tet_births).subspan(point.tet_births);
+  }
+  [[nodiscard]] std::span<const VertexBirth> vertices_made_since(const Savepoint& point) const {
+    return std::span<const VertexBirth>(journal_.vertex_births).subspan(point.vertex_births);
+  }
+  [[nodiscard]] std::span<const TetId> parents(const TetBirth& birth) const {
+    return std::span<const TetId>(journal_.parents).subspan(birth.parents_begin, birth.parents_count);
+  }
+  // Tets the open transaction made since `point` that are still live: made minus made and
+  // removed again. O(1): what a per-cut tet budget counts.
+  [[nodiscard]] std::uint32_t net_tets_made_since(const Savepoint& point) const {
+    return static_cast<std::uint32_t>(journal_.tet_births.size()) - point.tet_births -
+           (journal_.births_removed - point.births_removed);
+  }
+  // True when the open transaction made t (t live or not).
+  [[nodiscard]] bool made_in_transaction(TetId t) const { return journal_.birth_of.contains(t); }
+  [[nodiscard]] bool made_in_transaction(VertId v) const { return journal_.vertex_birth_of.contains(v); }
 
   // The net effect since `point` (a savepoint of the open transaction), sorted by id: `removed`
   // gets the ids live then and dead now, `created` the ids live now and dead then. O(journal
@@ -289,18 +362,42 @@ class TetMesh {
     std::uint32_t recorded_tets = 0, recorded_vertices = 0;
     std::vector<JournalEntry> entries;
     std::vector<double> attribute_values;
+    // The record of change: births in order, their parents flat, and per id its birth's index.
+    std::vector<TetBirth> tet_births;
+    std::vector<TetId> parents;
+    std::vector<VertexBirth> vertex_births;
+    std::uint32_t births_removed = 0;      // tets made in the transaction and removed again
+    StampedMap<TetId, std::uint32_t> birth_of;
+    StampedMap<VertId, std::uint32_t> vertex_birth_of;
+    // Per tet id noted: its first kTetVerts entry (the tet's vertices at begin_transaction()),
+    // indexed up to entry first_verts_indexed.
+    StampedMap<TetId, std::uint32_t> first_verts_entry;
+    std::size_t first_verts_indexed = 0;
   };
   void note(Array array, std::uint32_t index);
+  // The vertices tet t had at begin_transaction() (t live then).
+  [[nodiscard]] TetVerts tet_at_start(TetId t);
+  // The tets live at begin_transaction() that tet t descends from (t itself if it was live
+  // then), appended sorted.
+  void ancestors_at_start(TetId t, std::vector<TetId>& out);
+  // Origins of vertices made in the transaction (ChangeLog::vertices): composed along the edges
+  // they were put on, or located in an old tet (mesh_journal.cpp).
+  void compose_origin(VertId a, VertId b, double t, CreatedVertex& out) const;
+  void locate_origin(VertId v, CreatedVertex& out);
+  void append_change_log(ChangeLog& log);
+  std::vector<TetId> ancestor_stack_, locate_scratch_, net_removed_scratch_, net_created_scratch_;
+  StampedSet<TetId> ancestor_seen_;
+  StampedSet<VertId> vertex_seen_;
   Journal journal_;
   static constexpr std::size_t kJournalWorkingSize = 16384;  // entries reserve() makes room for
 
   std::vector<FaceSlot> scratch_faces_;
   std::vector<std::uint32_t> face_table_;  // open addressing over scratch_faces_ indices
   std::vector<VertId> scratch_verts_;
-  std::vector<std::uint32_t> tet_stamp_;
-  std::vector<std::uint32_t> vert_stamp_;  // replace_tets(): vertex journaled in this call
+  StampedSet<TetId> removing_;      // replace_tets(): the tets this call removes
+  StampedSet<VertId> vertex_noted_;  // replace_tets(): vertex journaled in this call
+  StampedSet<TetId> net_seen_;       // changes_since(): a tet's first entry after the point seen
   void touch_vertex(std::uint32_t v);
-  std::uint32_t stamp_ = 0;
 };
 
 }  // namespace tetcut

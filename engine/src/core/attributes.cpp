@@ -51,6 +51,17 @@ void VertexAttributes::interpolate(VertId dst, VertId a, VertId b, double t) {
   }
 }
 
+void VertexAttributes::combine(VertId dst, std::span<const VertId> from, std::span<const double> weight) {
+  for (Channel& ch : channels_) {
+    const std::size_t w = ch.width;
+    for (std::size_t k = 0; k < w; ++k) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < from.size(); ++i) sum += weight[i] * ch.values[from[i].value * w + k];
+      ch.values[dst.value * w + k] = sum;
+    }
+  }
+}
+
 void VertexAttributes::permute(std::span<const VertId> new_to_old) {
   for (Channel& ch : channels_) {
     std::vector<double> moved(new_to_old.size() * ch.width);

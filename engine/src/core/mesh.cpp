@@ -8,7 +8,7 @@
 #include <cassert>
 #include <cstring>
 
-#include "core/local_tables.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {
@@ -40,6 +40,16 @@ struct EdgeWalker {
   }
 };
 }  // namespace
+
+EdgeRef TetMesh::find_edge(VertId a, VertId b, TetId hint, std::vector<TetId>& shell_scratch) const {
+  if (is_live(hint))
+    if (const int e = local_edge(hint, a, b); e >= 0) return {hint, static_cast<std::uint8_t>(e)};
+  if (!is_live(a)) return {};
+  vertex_shell(a, shell_scratch);
+  for (TetId t : shell_scratch)
+    if (const int e = local_edge(t, a, b); e >= 0) return {t, static_cast<std::uint8_t>(e)};
+  return {};
+}
 
 bool TetMesh::is_boundary_edge(TetId t, int local_edge) const {
   EdgeWalker walk{tet_verts_, tet_adj_, tet_verts_[t.value][kEdgeVerts[local_edge][0]],

@@ -4,8 +4,8 @@
 #include <numeric>
 #include <string>
 
-#include "core/local_tables.hpp"
 #include "core/mesh_internals.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -1,10 +1,13 @@
-// TetMesh's journal (include/tetcut/mesh.hpp): transactions, nested savepoints and rollback. Each
-// write of a mutation is noted once per array slot per transaction, with the slot's old value, so
-// that rollback_to() restores the mesh bit for bit and changes_since() gives a savepoint's net
-// change: what lets a failed cut, or an undone removal attempt, leave no trace.
+// TetMesh's journal (include/tetcut/mesh.hpp): transactions, nested savepoints and rollback, and
+// the record of change. Each write of a mutation is noted once per array slot per transaction,
+// with the slot's old value, so that rollback_to() restores the mesh bit for bit and
+// changes_since() gives a savepoint's net change: what lets a failed cut, or an undone removal
+// attempt, leave no trace. Each tet and vertex made is recorded with where it comes from, so that
+// commit() derives the net ChangeLog a consumer applies.
 #include <algorithm>
 #include <cassert>
 #include <cstring>
+#include <limits>
 
 #include "tetcut/mesh.hpp"
 
@@ -18,6 +21,10 @@ TetMesh::Savepoint TetMesh::savepoint() {
   p.vertices = vertex_capacity();
   p.live_tets = live_tets_;
   p.live_vertices = live_vertices_;
+  p.tet_births = static_cast<std::uint32_t>(journal_.tet_births.size());
+  p.parents = static_cast<std::uint32_t>(journal_.parents.size());
+  p.vertex_births = static_cast<std::uint32_t>(journal_.vertex_births.size());
+  p.births_removed = journal_.births_removed;
   p.free_tet_head = free_tet_head_;
   p.pending_tet_head = pending_tet_head_;
   p.pending_tet_tail = pending_tet_tail_;
@@ -35,11 +42,20 @@ void TetMesh::begin_transaction() {
   assert(!journal_.active && "transactions do not nest");
   journal_.entries.clear();
   journal_.attribute_values.clear();
+  journal_.tet_births.clear();
+  journal_.parents.clear();
+  journal_.vertex_births.clear();
+  journal_.births_removed = 0;
+  journal_.birth_of.clear();
+  journal_.vertex_birth_of.clear();
+  journal_.first_verts_entry.clear();
+  journal_.first_verts_indexed = 0;
   journal_.start = savepoint();
   journal_.active = true;
 }
 
-void TetMesh::commit() {
+void TetMesh::commit(ChangeLog* log) {
+  if (log && journal_.active) append_change_log(*log);
   journal_.active = false;
   journal_.entries.clear();
   journal_.attribute_values.clear();
@@ -100,6 +116,17 @@ void TetMesh::rollback_to(const Savepoint& p) {
   }
   journal_.entries.resize(p.entries);
   journal_.attribute_values.resize(p.attribute_values);
+  // Births since p are undone with the tets and vertices they name; their ids' slots in
+  // birth_of go stale (a lookup checks the birth still names the id).
+  journal_.tet_births.resize(p.tet_births);
+  journal_.parents.resize(p.parents);
+  journal_.vertex_births.resize(p.vertex_births);
+  journal_.births_removed = p.births_removed;
+  // Entries past p are gone: their first-entry records too (rare: only after a locate).
+  if (journal_.first_verts_indexed > p.entries) {
+    journal_.first_verts_entry.clear();
+    journal_.first_verts_indexed = 0;
+  }
   tet_verts_.resize(p.tets);
   tet_adj_.resize(p.tets);
   positions_.resize(p.vertices);
@@ -129,17 +156,11 @@ void TetMesh::changes_since(const Savepoint& p, std::vector<TetId>& removed, std
   removed.clear();
   created.clear();
   if (!journal_.active) return;
-  if (tet_stamp_.size() < tet_capacity()) tet_stamp_.resize(tet_capacity(), 0);
-  if (++stamp_ == 0) {
-    std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0);
-    std::fill(vert_stamp_.begin(), vert_stamp_.end(), 0);
-    stamp_ = 1;
-  }
+  net_seen_.clear();
   // The first entry after p of a row that existed at p holds its state at p.
   for (std::size_t i = p.entries; i < journal_.entries.size(); ++i) {
     const JournalEntry& e = journal_.entries[i];
-    if (e.array != Array::kTetVerts || e.index >= p.tets || tet_stamp_[e.index] == stamp_) continue;
-    tet_stamp_[e.index] = stamp_;
+    if (e.array != Array::kTetVerts || e.index >= p.tets || !net_seen_.insert(TetId{e.index})) continue;
     std::array<std::uint32_t, 4> old;
     std::memcpy(old.data(), e.old.data(), 16);
     const bool was_live = old[0] != kDeadTetMarker;
@@ -153,6 +174,164 @@ void TetMesh::changes_since(const Savepoint& p, std::vector<TetId>& removed, std
     if (tet_verts_[t][0] != kDeadTetMarker) created.push_back(TetId{t});
   std::sort(removed.begin(), removed.end());
   std::sort(created.begin(), created.end());
+}
+
+// ---- the record of change -------------------------------------------------------------------
+
+TetMesh::TetVerts TetMesh::tet_at_start(TetId t) {
+  // The index of first entries is brought up to date here, on the rare call (a vertex moved or
+  // located), rather than in note(), which every write of every operation goes through.
+  for (auto& i = journal_.first_verts_indexed; i < journal_.entries.size(); ++i) {
+    const JournalEntry& e = journal_.entries[i];
+    if (e.array == Array::kTetVerts && e.index < journal_.start.tets && !journal_.first_verts_entry.contains(TetId{e.index}))
+      journal_.first_verts_entry.set(TetId{e.index}, static_cast<std::uint32_t>(i));
+  }
+  if (const std::uint32_t* entry = journal_.first_verts_entry.find(t)) {
+    const JournalEntry& e = journal_.entries[*entry];
+    return {VertId{e.old[0]}, VertId{e.old[1]}, VertId{e.old[2]}, VertId{e.old[3]}};
+  }
+  return tet(t);  // never written in the transaction: as it was
+}
+
+namespace {
+
+double signed_volume6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return dot(b - a, cross(c - a, d - a)); }
+
+// The birth a per-id slot points to, if that birth still names the id (a rollback leaves the
+// slots of undone births behind).
+template <class Births, class Id>
+const typename Births::value_type* current_birth(const Births& births, const std::uint32_t* slot, Id id) {
+  if (!slot || *slot >= births.size()) return nullptr;
+  const auto& b = births[*slot];
+  if constexpr (requires { b.tet; }) {
+    return b.tet == id ? &b : nullptr;
+  } else {
+    return b.vertex == id ? &b : nullptr;
+  }
+}
+
+}  // namespace
+
+void TetMesh::ancestors_at_start(TetId t, std::vector<TetId>& out) {
+  // A split's child has one parent, and so usually has its whole line: follow it without the
+  // walk's bookkeeping until it ends or forks.
+  const TetBirth* birth = current_birth(journal_.tet_births, journal_.birth_of.find(t), t);
+  while (birth && birth->parents_count == 1) {
+    t = journal_.parents[birth->parents_begin];
+    birth = current_birth(journal_.tet_births, journal_.birth_of.find(t), t);
+  }
+  if (!birth) {
+    out.push_back(t);  // there at begin_transaction()
+    return;
+  }
+  // Several parents (a flip): every line, each tet once.
+  const std::size_t first = out.size();
+  ancestor_seen_.clear();
+  ancestor_stack_.assign(1, t);
+  while (!ancestor_stack_.empty()) {
+    const TetId u = ancestor_stack_.back();
+    ancestor_stack_.pop_back();
+    const TetBirth* b = current_birth(journal_.tet_births, journal_.birth_of.find(u), u);
+    if (!b) {
+      out.push_back(u);
+      continue;
+    }
+    for (TetId parent : parents(*b))
+      if (ancestor_seen_.insert(parent)) ancestor_stack_.push_back(parent);
+  }
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+}
+
+// Barycentric coordinates of v's position in a tet live at begin_transaction() that contains it:
+// among the ancestors of a tet around v (they cover it, and so v), the one where v is deepest
+// inside. Coordinates within rounding of 0 are dropped. For a vertex move_vertex() moved, or one
+// whose edge joins vertices of different old tets (a split after a flip).
+void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
+  locate_scratch_.clear();
+  ancestors_at_start(vert_tet_[v.value], locate_scratch_);
+  const Vec3& p = positions_[v.value];
+  double best_min = -std::numeric_limits<double>::infinity();
+  for (TetId root : locate_scratch_) {
+    const TetVerts c = tet_at_start(root);
+    const Vec3 x[4] = {positions_[c[0].value], positions_[c[1].value], positions_[c[2].value], positions_[c[3].value]};
+    const double whole = signed_volume6(x[0], x[1], x[2], x[3]);
+    if (!(whole > 0.0)) continue;
+    std::array<double, 4> w{};
+    for (int i = 0; i < 4; ++i) {
+      Vec3 y[4] = {x[0], x[1], x[2], x[3]};
+      y[i] = p;
+      w[i] = signed_volume6(y[0], y[1], y[2], y[3]) / whole;
+    }
+    const double lowest = std::min(std::min(w[0], w[1]), std::min(w[2], w[3]));
+    if (lowest <= best_min) continue;
+    best_min = lowest;
+    double sum = 0.0;
+    for (double& wi : w) sum += wi = std::max(wi, 0.0);
+    out.count = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (w[i] / sum <= 1e-12) continue;
+      out.from[out.count] = c[i];
+      out.weight[out.count++] = w[i] / sum;
+    }
+  }
+  assert(out.count > 0 && "a vertex made in the transaction lies in no tet that was there before it");
+}
+
+// out := (1 - t) * origin(a) + t * origin(b), over vertices live at begin_transaction(); count 0
+// when that takes more than four of them (the caller locates the vertex instead).
+void TetMesh::compose_origin(VertId a, VertId b, double t, CreatedVertex& out) const {
+  out.count = 0;
+  auto add = [&](VertId x, double w) {
+    if (w == 0.0) return true;
+    const VertexBirth* birth = current_birth(journal_.vertex_births, journal_.vertex_birth_of.find(x), x);
+    const CreatedVertex single{x, {x}, {1.0}, 1};
+    const CreatedVertex& o = birth ? birth->origin : single;
+    if (o.count == 0) return false;
+    for (int i = 0; i < o.count; ++i) {
+      int k = 0;
+      while (k < out.count && out.from[k] != o.from[i]) ++k;
+      if (k == out.count) {
+        if (out.count == 4) return false;
+        out.from[k] = o.from[i];
+        out.weight[k] = 0.0;
+        ++out.count;
+      }
+      out.weight[k] += w * o.weight[i];
+    }
+    return true;
+  };
+  if (!add(a, 1.0 - t) || !add(b, t)) out.count = 0;
+}
+
+void TetMesh::append_change_log(ChangeLog& log) {
+  changes_since(journal_.start, net_removed_scratch_, net_created_scratch_);
+  log.removed.insert(log.removed.end(), net_removed_scratch_.begin(), net_removed_scratch_.end());
+  for (TetId t : net_created_scratch_) {
+    CreatedTet c{t, kNoTet, static_cast<std::uint32_t>(log.parents.size()), 0};
+    ancestors_at_start(t, log.parents);
+    c.parents_count = static_cast<std::uint32_t>(log.parents.size()) - c.parents_begin;
+    if (c.parents_count > 0) c.parent = log.parents[c.parents_begin];
+    log.created.push_back(c);
+  }
+  // Vertices made and still used, in id order; vertices there before and used no more.
+  const std::size_t first_vertex = log.vertices.size();
+  for (const VertexBirth& b : journal_.vertex_births) {
+    if (!is_live(b.vertex)) continue;
+    CreatedVertex v = b.origin;
+    v.vertex = b.vertex;
+    if (v.count == 0) locate_origin(b.vertex, v);
+    log.vertices.push_back(v);
+  }
+  std::sort(log.vertices.begin() + static_cast<std::ptrdiff_t>(first_vertex), log.vertices.end(),
+            [](const CreatedVertex& x, const CreatedVertex& y) { return x.vertex < y.vertex; });
+  const std::size_t first_removed = log.removed_vertices.size();
+  vertex_seen_.clear();
+  for (const JournalEntry& e : journal_.entries) {
+    // The first entry of a vertex holds its seed at begin_transaction().
+    if (e.array != Array::kVertTet || e.index >= journal_.start.vertices || !vertex_seen_.insert(VertId{e.index})) continue;
+    if (TetId{e.old[0]}.valid() && !vert_tet_[e.index].valid()) log.removed_vertices.push_back(VertId{e.index});
+  }
+  std::sort(log.removed_vertices.begin() + static_cast<std::ptrdiff_t>(first_removed), log.removed_vertices.end());
 }
 
 }  // namespace tetcut

@@ -6,8 +6,8 @@
 #include <cassert>
 #include <cstring>
 
-#include "core/local_tables.hpp"
-#include "core/reserve_touched.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut {
@@ -43,6 +43,10 @@ VertId TetMesh::add_vertex(const Vec3& p) {
     free_vert_next_.push_back(kNoVert);
     attributes_.resize(vertex_capacity());
   }
+  if (journal_.active) {
+    journal_.vertex_birth_of.set(v, static_cast<std::uint32_t>(journal_.vertex_births.size()));
+    journal_.vertex_births.push_back({v, kNoVert, kNoVert, 0.0, {}});
+  }
   return v;
 }
 
@@ -51,7 +55,26 @@ VertId TetMesh::add_vertex_on_edge(VertId a, VertId b, double t) {
   const VertId v = add_vertex(p);
   note(Array::kAttributes, v.value);
   attributes_.interpolate(v, a, b, t);
+  if (journal_.active) {
+    VertexBirth& birth = journal_.vertex_births.back();
+    birth.a = a;
+    birth.b = b;
+    birth.t = t;
+    compose_origin(a, b, t, birth.origin);
+  }
   return v;
+}
+
+void TetMesh::move_vertex(VertId v, const Vec3& p) {
+  assert(journal_.active && journal_.vertex_birth_of.contains(v) && "only a vertex the transaction made moves");
+  note(Array::kPositions, v.value);
+  positions_[v.value] = p;
+  VertexBirth& birth = journal_.vertex_births[*journal_.vertex_birth_of.find(v)];
+  locate_origin(v, birth.origin);
+  birth.origin.vertex = v;
+  note(Array::kAttributes, v.value);
+  attributes_.combine(v, std::span<const VertId>(birth.origin.from.data(), birth.origin.count),
+                      std::span<const double>(birth.origin.weight.data(), birth.origin.count));
 }
 
 TetId TetMesh::allocate_tet() {
@@ -91,26 +114,22 @@ void TetMesh::free_vertex(VertId v) {
 // Journals a vertex's seed and boundary count once per replace_tets() call, however many of its
 // faces and tets the call touches (the first record is the one a rollback keeps).
 void TetMesh::touch_vertex(std::uint32_t v) {
-  if (vert_stamp_[v] == stamp_) return;
-  vert_stamp_[v] = stamp_;
+  if (!vertex_noted_.insert(VertId{v})) return;
   note(Array::kVertTet, v);
   note(Array::kBoundary, v);
 }
 
 void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVerts> added,
-                           std::vector<TetId>* created) {
-  // Stamp the removed tets so that "is this neighbour also going?" is O(1).
-  if (tet_stamp_.size() < tet_capacity()) tet_stamp_.resize(tet_capacity(), 0);
-  if (++stamp_ == 0) {
-    std::fill(tet_stamp_.begin(), tet_stamp_.end(), 0);
-    std::fill(vert_stamp_.begin(), vert_stamp_.end(), 0);
-    stamp_ = 1;
-  }
+                           std::vector<TetId>* created, std::span<const TetId> parent_of) {
+  assert(parent_of.empty() || parent_of.size() == added.size());
+  // Mark the removed tets so that "is this neighbour also going?" is O(1).
+  removing_.clear();
+  vertex_noted_.clear();
   for (TetId r : removed) {
     assert(is_live(r));
-    tet_stamp_[r.value] = stamp_;
+    removing_.insert(r);
+    if (journal_.active && journal_.birth_of.contains(r)) ++journal_.births_removed;
   }
-  if (vert_stamp_.size() < vertex_capacity()) vert_stamp_.resize(vertex_capacity(), 0);
 
   scratch_faces_.clear();
   scratch_verts_.clear();
@@ -125,13 +144,13 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
           touch_vertex(verts[kFaceVerts[f][k]]);
           --vert_boundary_faces_[verts[kFaceVerts[f][k]]];
         }
-      } else if (tet_stamp_[adj >> 2] != stamp_) {
+      } else if (!removing_.contains(TetId{adj >> 2})) {
         scratch_faces_.push_back({sorted_face_key(verts, f), adj, kNoSlot, 1});
       }
     }
     for (std::uint32_t v : verts) {
       const TetId seed = vert_tet_[v];
-      if (seed.valid() && seed != kReseed && tet_stamp_[seed.value] == stamp_) {
+      if (seed.valid() && seed != kReseed && removing_.contains(seed)) {
         touch_vertex(v);
         vert_tet_[v] = kReseed;
         scratch_verts_.push_back(VertId{v});
@@ -140,9 +159,20 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
   }
   for (TetId r : removed) free_tet(r);
 
-  // 2. The new tets, unglued for now.
-  for (const TetVerts& tv : added) {
+  // 2. The new tets, unglued for now, and their births.
+  for (std::size_t k = 0; k < added.size(); ++k) {
+    const TetVerts& tv = added[k];
     const TetId t = allocate_tet();
+    if (journal_.active) {
+      const auto parents_begin = static_cast<std::uint32_t>(journal_.parents.size());
+      if (parent_of.empty()) {
+        journal_.parents.insert(journal_.parents.end(), removed.begin(), removed.end());
+      } else {
+        journal_.parents.push_back(parent_of[k]);
+      }
+      journal_.birth_of.set(t, static_cast<std::uint32_t>(journal_.tet_births.size()));
+      journal_.tet_births.push_back({t, parents_begin, static_cast<std::uint32_t>(journal_.parents.size()) - parents_begin});
+    }
     note(Array::kTetVerts, t.value);
     note(Array::kTetAdj, t.value);
     auto& verts = tet_verts_[t.value];
@@ -244,8 +274,14 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
   using detail::reserve_touched;
   reserve_touched(tet_verts_, tets);
   reserve_touched(tet_adj_, tets);
-  reserve_touched(tet_stamp_, tets);
-  reserve_touched(vert_stamp_, vertices);
+  removing_.reserve(tets);
+  net_seen_.reserve(tets);
+  ancestor_seen_.reserve(tets);
+  vertex_noted_.reserve(vertices);
+  vertex_seen_.reserve(vertices);
+  journal_.birth_of.reserve(tets);
+  journal_.vertex_birth_of.reserve(vertices);
+  journal_.first_verts_entry.reserve(tets);
   reserve_touched(positions_, vertices);
   reserve_touched(vert_tet_, vertices);
   reserve_touched(vert_boundary_faces_, vertices);
@@ -254,6 +290,13 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
   // The working size of one operation: its journal and the faces replace_tets() glues. A larger
   // operation grows them once.
   reserve_touched(journal_.entries, kJournalWorkingSize);
+  reserve_touched(journal_.tet_births, kJournalWorkingSize / 4);
+  reserve_touched(journal_.parents, kJournalWorkingSize / 4);
+  reserve_touched(journal_.vertex_births, kJournalWorkingSize / 16);
+  reserve_touched(ancestor_stack_, 64);
+  reserve_touched(locate_scratch_, 64);
+  reserve_touched(net_removed_scratch_, kJournalWorkingSize / 4);
+  reserve_touched(net_created_scratch_, kJournalWorkingSize / 4);
   reserve_touched(scratch_faces_, 4096);
   reserve_touched(face_table_, 8192);
   reserve_touched(scratch_verts_, 1024);
@@ -304,8 +347,6 @@ Renumbering TetMesh::compact() {
   free_vert_next_.assign(nv, kNoVert);
   free_tet_head_ = kNoTet;
   free_vert_head_ = kNoVert;
-  tet_stamp_.assign(nt, 0);
-  stamp_ = 0;
   id_epoch_.advance();
   return map;
 }

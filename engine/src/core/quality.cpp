@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/local_tables.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 

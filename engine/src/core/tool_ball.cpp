@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/local_tables.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

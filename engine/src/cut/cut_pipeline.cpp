@@ -5,10 +5,10 @@
 #include <chrono>
 #include <cmath>
 
-#include "core/local_tables.hpp"
-#include "cut/planted_slowdown.hpp"
 #include "core/quality.hpp"
-#include "core/reserve_touched.hpp"
+#include "cut/planted_slowdown.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut {
 namespace {
@@ -45,17 +45,15 @@ void Cutter::Pipeline::prepare() {
   mesh_.reserve(tets, vertices);
   refiner_.reserve(tets);
   remover_.reserve(tets, vertices);
-  for (auto* marks : {&made_, &selected_, &tissue_, &tried_, &queued_})
-    if (marks->size() < tets) marks->resize(tets, 0);
-  if (origin_.size() < tets) origin_.resize(tets, kNoTet);
+  for (auto* marks : {&selected_, &tissue_, &tried_, &queued_}) marks->reserve(tets);
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
   // gated by ci/bench).
   constexpr std::size_t kCutScratch = 16384;
-  for (auto* list : {&work_, &removal_, &hit_, &region_, &net_removed_, &net_created_, &refine_log_.removed})
+  for (auto* list : {&work_, &removal_, &hit_, &region_, &net_removed_, &net_created_, &changes_.removed, &changes_.parents})
     reserve_touched(*list, kCutScratch);
-  reserve_touched(vertices_made_, kCutScratch);
-  reserve_touched(refine_log_.created, kCutScratch);
-  reserve_touched(refine_log_.vertices, kCutScratch);
+  reserve_touched(changes_.created, kCutScratch);
+  reserve_touched(changes_.vertices, kCutScratch);
+  reserve_touched(changes_.removed_vertices, kCutScratch);
 }
 
 void Cutter::Pipeline::reset() {
@@ -63,9 +61,7 @@ void Cutter::Pipeline::reset() {
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
   remover_.reset();
-  // Marks of the old mesh must not match the next cut's generation.
-  for (auto* marks : {&made_, &selected_, &tissue_, &tried_, &queued_}) std::fill(marks->begin(), marks->end(), 0u);
-  generation_ = 0;
+  clear_marks();
   prepare();
 }
 
@@ -89,29 +85,8 @@ TetId Cutter::Pipeline::tet_containing(const Vec3& p) {
   return hit_.empty() ? kNoTet : hit_.front();
 }
 
-void Cutter::Pipeline::next_generation() {
-  grow_marks();
-  net_created_count_ = 0;
-  if (++generation_ != 0) return;
-  // Wrapped around: clear the marks once.
-  std::fill(made_.begin(), made_.end(), 0u);
-  std::fill(selected_.begin(), selected_.end(), 0u);
-  std::fill(tissue_.begin(), tissue_.end(), 0u);
-  std::fill(tried_.begin(), tried_.end(), 0u);
-  std::fill(queued_.begin(), queued_.end(), 0u);
-  generation_ = 1;
-}
-
-void Cutter::Pipeline::grow_marks() {
-  const std::size_t n = mesh_.tet_capacity();
-  if (made_.size() >= n) return;
-  const std::size_t m = n + n / 4 + 16;
-  made_.resize(m, 0);
-  selected_.resize(m, 0);
-  tissue_.resize(m, 0);
-  tried_.resize(m, 0);
-  queued_.resize(m, 0);
-  origin_.resize(m, kNoTet);
+void Cutter::Pipeline::clear_marks() {
+  for (auto* marks : {&selected_, &tissue_, &tried_, &queued_}) marks->clear();
 }
 
 // Paper 3.3: inside the tool (centroid in the closed ball) and no edge longer than D_ref.
@@ -126,36 +101,23 @@ bool Cutter::Pipeline::selectable(TetId t) const {
   return true;
 }
 
-bool Cutter::Pipeline::pending(TetId t) const {
-  return mesh_.is_live(t) && selected_[t.value] == generation_ && tried_[t.value] != generation_;
-}
+bool Cutter::Pipeline::pending(TetId t) const { return mesh_.is_live(t) && selected_.contains(t) && !tried_.contains(t); }
 
-void Cutter::Pipeline::follow(const ChangeLog& step) {
-  grow_marks();
-  // No id is reused inside the cut's transaction, and the history is in order: a parent made
-  // by the cut has been seen before its children.
-  for (const CreatedTet& c : step.created) {
-    const std::uint32_t i = c.tet.value;
-    const bool parent_made = made_[c.parent.value] == generation_;
-    made_[i] = generation_;
-    origin_[i] = parent_made ? origin_[c.parent.value] : c.parent;
-    selected_[i] = 0;
-    ++net_created_count_;
+void Cutter::Pipeline::follow(const TetMesh::Savepoint& point) {
+  for (const TetMesh::TetBirth& birth : mesh_.tets_made_since(point)) {
     // Selection is decided once, on the refined region (paper 3.3): a piece of a selected tet is
     // selected tissue, a piece of a kept tet stays kept wherever its centroid falls (else every
     // split at the ball's edge would select finer and finer pieces of kept tissue: 3.4 ran away
-    // that way). A piece of selected tissue inside the tool joins T_removal.
-    tissue_[i] = tissue_[c.parent.value] == generation_ ? generation_ : 0;
-    if (tissue_[i] == generation_ && mesh_.is_live(c.tet) && selectable(c.tet)) {
-      selected_[i] = generation_;
-      removal_.push_back(c.tet);
+    // that way). A piece of selected tissue inside the tool joins T_removal. The journal lists
+    // parents before children, so a parent's marks are set when its children are seen.
+    const auto parents = mesh_.parents(birth);
+    if (!std::any_of(parents.begin(), parents.end(), [&](TetId p) { return tissue_.contains(p); })) continue;
+    tissue_.insert(birth.tet);
+    if (mesh_.is_live(birth.tet) && selectable(birth.tet)) {
+      selected_.insert(birth.tet);
+      removal_.push_back(birth.tet);
     }
   }
-  for (TetId r : step.removed)
-    if (made_[r.value] == generation_) --net_created_count_;
-  // The net change log needs the vertices made (the tets come from the journal), and only when
-  // the caller asked for it.
-  if (keep_vertices_) vertices_made_.insert(vertices_made_.end(), step.vertices.begin(), step.vertices.end());
 }
 
 CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
@@ -185,10 +147,9 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
     return report;
   }
 
-  vertices_made_.clear();
-  keep_vertices_ = log != nullptr;
   mesh_.begin_transaction();
-  next_generation();
+  cut_start_ = mesh_.savepoint();
+  clear_marks();
   tool_ = tool;
   d_ref_ = d_ref;
   removal_.clear();
@@ -211,11 +172,10 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   refine.focus = tool;
   refine.max_tets_created = params_.max_tets_created;  // checked before each round (net)
   refine.measure_quality = false;  // finish() reports the worst net new tet
-  refine_log_.clear();
-  const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_, &refine_log_);
+  const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_);
   if (refined.refusal != SplitRefusal::kNone)
     return fail(std::string("refinement refused: ") + to_string(refined.refusal));
-  follow(refine_log_);
+  follow(cut_start_);
   report.refine_iterations = refined.iterations;
   report.edges_split = refined.edges_split;
   report.tets_refined = refined.tets_removed;
@@ -225,8 +185,9 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   // Select T_removal (paper 3.3).
   for (TetId t : region_) {
     // The refinement's own tets inside the tool were selected as they were made (follow()).
-    if (!mesh_.is_live(t) || selected_[t.value] == generation_ || !selectable(t)) continue;
-    selected_[t.value] = tissue_[t.value] = generation_;
+    if (!mesh_.is_live(t) || selected_.contains(t) || !selectable(t)) continue;
+    selected_.insert(t);
+    tissue_.insert(t);
     removal_.push_back(t);
   }
   const Clock::time_point t3 = Clock::now();
@@ -257,13 +218,13 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
     return report;
   }
   const Clock::time_point t0 = Clock::now();
-  vertices_made_.clear();
-  keep_vertices_ = log != nullptr;
   mesh_.begin_transaction();
-  next_generation();
+  cut_start_ = mesh_.savepoint();
+  clear_marks();
   tool_.reset();  // no tool: the request alone, no children join it
   removal_.assign(1, t);
-  selected_[t.value] = tissue_[t.value] = generation_;
+  selected_.insert(t);
+  tissue_.insert(t);
   remove_selected(report);
   if (!report.ok) {
     mesh_.rollback();
@@ -277,7 +238,6 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
 
 void Cutter::Pipeline::remove_selected(CutReport& report) {
   const RemovalReport before = remover_.report();
-  grow_marks();
   if (tool_ && removal_.size() == mesh_.num_tets()) {
     // The tool holds every tet (each selected one is live and counted once): removing the whole
     // mesh leaves nothing that could pinch, so it goes at once, in O(#T), instead of tet by tet
@@ -296,24 +256,23 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
   work_.clear();
   std::size_t head = 0;
   auto enqueue = [&](TetId t) {
-    if (!pending(t) || queued_[t.value] == generation_) return;
-    queued_[t.value] = generation_;
+    if (!pending(t) || !queued_.insert(t)) return;
     work_.push_back(t);
   };
   for (TetId t : removal_) enqueue(t);
   auto request = [&](TetId t) {
-    tried_[t.value] = generation_;
+    tried_.insert(t);
     ++requests;
-    const Selection selection{selected_, generation_};
     RequestLimits limits;
-    limits.max_tets_created = params_.max_tets_created > net_created_count_ ? params_.max_tets_created - net_created_count_ : 0;
-    limits.selection = &selection;
+    limits.max_tets_created = params_.max_tets_created > net_made() ? params_.max_tets_created - net_made() : 0;
+    limits.selection = &selected_;
     const std::size_t selected_before = removal_.size();
-    const RemovalResult r = remover_.remove(mesh_, t, nullptr, limits);
-    follow(remover_.last_log());
+    const TetMesh::Savepoint before_request = mesh_.savepoint();
+    const RemovalResult r = remover_.remove(mesh_, t, limits);
+    follow(before_request);
     for (std::size_t i = selected_before; i < removal_.size(); ++i) enqueue(removal_[i]);
     for (TetId e : remover_.last_exposed()) enqueue(e);
-    if (r.over_budget || net_created_count_ > params_.max_tets_created) {
+    if (r.over_budget || net_made() > params_.max_tets_created) {
       report.ok = false;
       report.failure = "the removal would exceed the per-cut tet budget";
       return false;
@@ -326,7 +285,7 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     // larger set then meets fewer singularities.
     while (head < work_.size()) {
       const TetId t = work_[head++];
-      queued_[t.value] = 0;
+      queued_.erase(t);
       if (!pending(t) || !removability(mesh_, t).removable) continue;
       if (!request(t)) return;
     }
@@ -362,21 +321,24 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
 }
 
 // Commits the transaction, brings the index up to date with the net changes, hands the caller
-// the net change, and reports the worst new tet.
+// the net change (the journal derives it), and reports the worst new tet.
 void Cutter::Pipeline::finish(CutReport& report, ChangeLog* log) {
-  mesh_.transaction_changes(net_removed_, net_created_);
-  mesh_.commit();
+  if (log) {
+    changes_.clear();
+    mesh_.commit(&changes_);
+    net_removed_.assign(changes_.removed.begin(), changes_.removed.end());
+    net_created_.clear();
+    for (const CreatedTet& c : changes_.created) net_created_.push_back(c.tet);
+    append(*log, changes_);
+  } else {
+    // Nobody reads the parents and origins: the ids alone, for the index.
+    mesh_.transaction_changes(net_removed_, net_created_);
+    mesh_.commit();
+  }
   for (TetId t : net_removed_) index_.erase(t);
   for (TetId t : net_created_) index_.insert(mesh_, t);
   report.min_radius_ratio = min_radius_ratio(mesh_, net_created_);
   report.tets_created = static_cast<std::uint32_t>(net_created_.size());
-  if (log) {
-    log->removed.insert(log->removed.end(), net_removed_.begin(), net_removed_.end());
-    for (TetId t : net_created_) log->created.push_back({t, origin_[t.value]});
-    // A vertex the cut made and still uses (no vertex id is reused inside the cut either).
-    for (const CreatedVertex& v : vertices_made_)
-      if (mesh_.is_live(v.vertex)) log->vertices.push_back(v);
-  }
 }
 
 }  // namespace tetcut

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "core/tool_ball.hpp"
+#include "cut/spatial_index.hpp"
 #include "refine/refine.hpp"
 #include "remove/removal.hpp"
-#include "cut/spatial_index.hpp"
-#include "core/tool_ball.hpp"
 #include "tetcut/cut.hpp"
 
 namespace tetcut {
@@ -39,13 +39,14 @@ class Cutter::Pipeline {
   // Removes the selected tets (removal_, growing), directly removable ones first, and fills the
   // counts.
   void remove_selected(CutReport& report);
-  // Follows a step's history: which tets the cut made (for the budget and the net log's
-  // parents), and which of them are inside the tool and so selected in turn.
-  void follow(const ChangeLog& step);
+  // Follows what a step made since `point` (the journal's record): which of the new tets are
+  // pieces of selected tissue inside the tool, and so selected in turn.
+  void follow(const TetMesh::Savepoint& point);
   [[nodiscard]] bool selectable(TetId t) const;
   [[nodiscard]] bool pending(TetId t) const;
-  void grow_marks();
-  void next_generation();  // a new cut: fresh marks
+  void clear_marks();  // a new cut: fresh marks
+  // Tets the cut made that are still live: what its budget counts.
+  [[nodiscard]] std::uint32_t net_made() const { return mesh_.net_tets_made_since(cut_start_); }
   void finish(CutReport& report, ChangeLog* log);
   // Why the index cannot serve the mesh (compacted or replaced since it was built), if so.
   [[nodiscard]] std::optional<std::string> stale() const;
@@ -54,18 +55,13 @@ class Cutter::Pipeline {
   MeshScale scale_;          // what the refinement can serve (check_scale), measured once
   SpatialIndex index_;
   Refiner refiner_;
-  std::vector<CreatedVertex> vertices_made_;  // by the cut, when the caller wants its log
-  bool keep_vertices_ = false;
-  ChangeLog refine_log_;
+  ChangeLog changes_;                // the last cut's net change, derived by the journal at commit
+  TetMesh::Savepoint cut_start_;
   std::vector<TetId> hit_, region_, removal_;
-  // Per tet id, == generation_ when true in the current cut: made by it, selected, selected
-  // tissue (a selected tet or a piece of one, inside the tool or not), already requested (and
-  // left unresolved), waiting in work_.
-  std::vector<std::uint32_t> made_, selected_, tissue_, tried_, queued_;
+  // In the current cut: selected; selected tissue (a selected tet or a piece of one, inside the
+  // tool or not); already requested (and left unresolved); waiting in work_.
+  StampedSet<TetId> selected_, tissue_, tried_, queued_;
   std::vector<TetId> work_;          // selected tets to test for a direct removal
-  std::vector<TetId> origin_;        // per tet id made by the cut: the tet it came from
-  std::uint32_t generation_ = 0;
-  std::uint32_t net_created_count_ = 0;
   std::optional<Ball> tool_;         // the cut's ball (none for remove())
   double d_ref_ = 0.0;
 };

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/local_tables.hpp"
 #include "core/random.hpp"
-#include "core/reserve_touched.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut {
 

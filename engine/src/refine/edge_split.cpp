@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <tuple>
 
-#include "core/local_tables.hpp"
-#include "core/reserve_touched.hpp"
 #include "refine/split_templates.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {
@@ -71,7 +71,7 @@ void EdgeSplitter::reserve(std::uint32_t tets) {
   reserve_touched(all_labels_, kPlannedChildren);
   reserve_touched(children_, kPlannedChildren);
   reserve_touched(children_per_parent_, kPlannedChildren / 2);
-  reserve_touched(created_scratch_, kPlannedChildren);
+  reserve_touched(child_parent_, kPlannedChildren);
 }
 
 int EdgeSplitter::find_edge(std::uint32_t lo, std::uint32_t hi) const {
@@ -85,34 +85,22 @@ int EdgeSplitter::find_edge(std::uint32_t lo, std::uint32_t hi) const {
 
 // Adds the tets around edge e to affected_, with the edge's bit in their mask.
 bool EdgeSplitter::collect_shell(const TetMesh& mesh, const PlannedEdge& e) {
-  TetId start = kNoTet;
-  if (mesh.is_live(e.hint) && mesh.local_index(e.hint, VertId{e.lo}) >= 0 && mesh.local_index(e.hint, VertId{e.hi}) >= 0) {
-    start = e.hint;
-  } else {
-    mesh.vertex_shell(VertId{e.lo}, shell_);
-    for (TetId t : shell_)
-      if (mesh.local_index(t, VertId{e.hi}) >= 0) {
-        start = t;
-        break;
-      }
-  }
-  if (!start.valid()) return false;
-  const int la = mesh.local_index(start, VertId{e.lo}), lb = mesh.local_index(start, VertId{e.hi});
-  mesh.edge_shell(start, kEdgeIndex[la][lb], shell_);
+  const EdgeRef edge = mesh.find_edge(VertId{e.lo}, VertId{e.hi}, e.hint, shell_);
+  if (!edge.valid()) return false;
+  mesh.edge_shell(edge.tet, edge.edge, shell_);
   for (TetId t : shell_) {
     std::uint32_t& slot = affected_slot_[t.value];
     if (slot == 0) {
       affected_.push_back({t, 0});
       slot = static_cast<std::uint32_t>(affected_.size());
     }
-    const int a = mesh.local_index(t, VertId{e.lo}), b = mesh.local_index(t, VertId{e.hi});
-    affected_[slot - 1].mask = static_cast<std::uint8_t>(affected_[slot - 1].mask | (1u << kEdgeIndex[a][b]));
+    affected_[slot - 1].mask = static_cast<std::uint8_t>(affected_[slot - 1].mask | (1u << mesh.local_edge(t, VertId{e.lo}, VertId{e.hi})));
   }
   return true;
 }
 
 SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, SplitMethod method,
-                                std::vector<TetId>* created, ChangeLog* log, std::uint64_t max_created) {
+                                std::vector<TetId>* created, std::uint64_t max_created) {
   SplitResult result;
   edges_.clear();
   for (const Edge& e : edges) {
@@ -139,7 +127,7 @@ SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, Spli
       all_edges = false;
       break;
     }
-  if (all_edges) result = plan_and_apply(mesh, method, created, log, max_created);
+  if (all_edges) result = plan_and_apply(mesh, method, created, max_created);
   for (const AffectedTet& a : affected_) affected_slot_[a.tet.value] = 0;  // leave the scratch clean
   return result;
 }
@@ -148,7 +136,7 @@ SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, Spli
 // them with the exact predicate, and only then mutates: midpoints first, then one
 // replace_tets() for all parents.
 SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std::vector<TetId>* created,
-                                         ChangeLog* log, std::uint64_t max_created) {
+                                         std::uint64_t max_created) {
   SplitResult result;
   all_labels_.clear();
   children_per_parent_.clear();
@@ -193,12 +181,10 @@ SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std:
   }
 
   // Apply. Midpoints in global edge order, so their ids do not depend on the input order.
-  for (PlannedEdge& e : edges_) {
-    e.midpoint = mesh.add_vertex_on_edge(VertId{e.lo}, VertId{e.hi}, 0.5);
-    if (log) log->vertices.push_back({e.midpoint, VertId{e.lo}, VertId{e.hi}, 0.5});
-  }
+  for (PlannedEdge& e : edges_) e.midpoint = mesh.add_vertex_on_edge(VertId{e.lo}, VertId{e.hi}, 0.5);
   parents_.clear();
   children_.clear();
+  child_parent_.clear();
   std::size_t next = 0;
   for (std::size_t k = 0; k < affected_.size(); ++k) {
     const TetMesh::TetVerts v = mesh.tet(affected_[k].tet);
@@ -216,17 +202,10 @@ SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std:
       TetMesh::TetVerts child;
       for (int i = 0; i < 4; ++i) child[i] = label_vertex[all_labels_[next][i]];
       children_.push_back(child);
+      child_parent_.push_back(affected_[k].tet);
     }
   }
-  created_scratch_.clear();
-  mesh.replace_tets(parents_, children_, &created_scratch_);
-  if (log) {
-    log->removed.insert(log->removed.end(), parents_.begin(), parents_.end());
-    std::size_t c = 0;
-    for (std::size_t k = 0; k < parents_.size(); ++k)
-      for (int i = 0; i < children_per_parent_[k]; ++i) log->created.push_back({created_scratch_[c++], parents_[k]});
-  }
-  if (created) created->insert(created->end(), created_scratch_.begin(), created_scratch_.end());
+  mesh.replace_tets(parents_, children_, created, child_parent_);
   result.edges_split = static_cast<std::uint32_t>(edges_.size());
   result.tets_removed = static_cast<std::uint32_t>(parents_.size());
   result.tets_created = static_cast<std::uint32_t>(children_.size());

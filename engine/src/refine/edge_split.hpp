@@ -12,7 +12,6 @@
 #include <span>
 #include <vector>
 
-#include "tetcut/change_log.hpp"
 #include "tetcut/cut_strategies.hpp"  // SplitMethod
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
@@ -50,12 +49,12 @@ struct SplitResult {
 class EdgeSplitter {
  public:
   // Splits every edge of `edges` (duplicates and either orientation allowed). Created tets are
-  // appended to `created` (if given) and recorded in `log` (if given). A plan with more than
-  // `max_created` children is refused (kOverBudget) as soon as planning passes the bound, before
-  // the mesh changes: a caller with a budget pays for at most that many planned children.
+  // appended to `created` (if given); inside a transaction the mesh's journal records each child
+  // with its parent and each midpoint with its edge (TetMesh::tets_made_since). A plan with more
+  // than `max_created` children is refused (kOverBudget) as soon as planning passes the bound,
+  // before the mesh changes: a caller with a budget pays for at most that many planned children.
   SplitResult split(TetMesh& mesh, std::span<const Edge> edges, SplitMethod method,
-                    std::vector<TetId>* created = nullptr, ChangeLog* log = nullptr,
-                    std::uint64_t max_created = UINT64_MAX);
+                    std::vector<TetId>* created = nullptr, std::uint64_t max_created = UINT64_MAX);
 
   // Room for per-tet scratch up to this many tet ids (no reallocation of a mesh-sized array in
   // the middle of an operation).
@@ -75,7 +74,7 @@ class EdgeSplitter {
     std::uint8_t mask;
   };
 
-  SplitResult plan_and_apply(TetMesh& mesh, SplitMethod method, std::vector<TetId>* created, ChangeLog* log,
+  SplitResult plan_and_apply(TetMesh& mesh, SplitMethod method, std::vector<TetId>* created,
                              std::uint64_t max_created);
   [[nodiscard]] int find_edge(std::uint32_t lo, std::uint32_t hi) const;
   bool collect_shell(const TetMesh& mesh, const PlannedEdge& e);
@@ -88,8 +87,8 @@ class EdgeSplitter {
   std::vector<std::array<std::uint8_t, 4>> labels_;      // one tet's children, local labels
   std::vector<std::array<std::uint8_t, 4>> all_labels_;  // every planned child
   std::vector<TetMesh::TetVerts> children_;
+  std::vector<TetId> child_parent_;  // per child: the affected tet it comes from
   std::vector<std::uint8_t> children_per_parent_;
-  std::vector<TetId> created_scratch_;
 };
 
 }  // namespace tetcut

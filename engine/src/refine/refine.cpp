@@ -6,10 +6,10 @@
 #include <limits>
 #include <numbers>
 
-#include "core/local_tables.hpp"
 #include "core/quality.hpp"
-#include "core/reserve_touched.hpp"
 #include "cut/spatial_index.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut {
 namespace {
@@ -105,26 +105,16 @@ std::uint32_t Refiner::add_shell_edges(const TetMesh& mesh, double p) {
   for (std::size_t i = 0; i < edges_.size(); ++i) {
     const Edge e = edges_[i];
     const double threshold = p * length(mesh, e.a, e.b);
-    TetId start = e.hint;  // every edge here was found in a tet
-    if (!mesh.is_live(start) || mesh.local_index(start, e.a) < 0 || mesh.local_index(start, e.b) < 0) {
-      start = kNoTet;
-      mesh.vertex_shell(e.a, shell_);
-      for (TetId t : shell_)
-        if (mesh.local_index(t, e.b) >= 0) {
-          start = t;
-          break;
-        }
-    }
-    if (!start.valid()) continue;
-    mesh.edge_shell(start, kEdgeIndex[mesh.local_index(start, e.a)][mesh.local_index(start, e.b)], shell_);
+    const EdgeRef edge = mesh.find_edge(e.a, e.b, e.hint, shell_);  // every edge here was found in a tet
+    if (!edge.valid()) continue;
+    mesh.edge_shell(edge.tet, edge.edge, shell_);
     for (TetId t : shell_) {
       // The shells of the round's edges are exactly the tets the split will replace.
-      if (t.value < born_.size() && born_[t.value] == stamp_) {
-        born_[t.value] = 0;
+      if (born_.contains(t)) {
+        born_.erase(t);
         ++born_parents;
       }
-      const int le = kEdgeIndex[mesh.local_index(t, e.a)][mesh.local_index(t, e.b)];
-      const int lo = opposite_edge(static_cast<std::uint8_t>(le));
+      const int lo = opposite_edge(static_cast<std::uint8_t>(mesh.local_edge(t, e.a, e.b)));
       const Edge opposite{mesh.vertex(t, kEdgeVerts[lo][0]), mesh.vertex(t, kEdgeVerts[lo][1]), t};
       if (length(mesh, opposite.a, opposite.b) > threshold && seen_.insert(opposite.a, opposite.b))
         edges_.push_back(opposite);
@@ -134,14 +124,11 @@ std::uint32_t Refiner::add_shell_edges(const TetMesh& mesh, double p) {
 }
 
 RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, const RefineParams& params,
-                             std::vector<TetId>& region, ChangeLog* log) {
+                             std::vector<TetId>& region) {
   RefineReport report;
   region.assign(initial.begin(), initial.end());
   current_.assign(initial.begin(), initial.end());
-  if (++stamp_ == 0) {
-    std::fill(born_.begin(), born_.end(), 0);
-    stamp_ = 1;
-  }
+  born_.clear();
   std::uint64_t net = 0;  // live tets made by this call
   for (;;) {
     collect_long_edges(mesh, params.d_ref);
@@ -154,13 +141,12 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
     created_.clear();
     // After the round: net + children - born_parents, which must stay within the budget.
     const std::uint64_t allowed = params.max_tets_created - std::min<std::uint64_t>(net, params.max_tets_created) + born_parents;
-    const SplitResult split = splitter_.split(mesh, edges_, params.method, &created_, log, allowed);
+    const SplitResult split = splitter_.split(mesh, edges_, params.method, &created_, allowed);
     if (!split.ok()) {
       report.refusal = split.refusal;
       break;
     }
-    if (born_.size() < mesh.tet_capacity()) born_.resize(mesh.tet_capacity(), 0);
-    for (TetId t : created_) born_[t.value] = stamp_;
+    for (TetId t : created_) born_.insert(t);
     net = net + split.tets_created - born_parents;
     report.net_tets_created = static_cast<std::uint32_t>(net);
     ++report.iterations;
@@ -183,7 +169,7 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
 void Refiner::reserve(std::uint32_t tets) {
   using detail::reserve_touched;
   splitter_.reserve(tets);
-  reserve_touched(born_, tets);
+  born_.reserve(tets);
   reserve_touched(current_, 4096);
   reserve_touched(created_, 4096);
   reserve_touched(shell_, 256);

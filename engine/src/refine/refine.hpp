@@ -26,9 +26,9 @@
 #include <vector>
 
 #include "core/edge_key_set.hpp"
-#include "refine/edge_split.hpp"
 #include "core/tool_ball.hpp"
-#include "tetcut/change_log.hpp"
+#include "refine/edge_split.hpp"
+#include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut {
@@ -87,9 +87,10 @@ struct RefineReport {
 class Refiner {
  public:
   // Refines around `initial` (live tet ids). Afterwards `region` holds the live tets among the
-  // initial ones and those created, sorted by id: the candidates for removal.
+  // initial ones and those created, sorted by id: the candidates for removal. Inside a
+  // transaction the mesh's journal records what was made (TetMesh::tets_made_since).
   RefineReport refine(TetMesh& mesh, std::span<const TetId> initial, const RefineParams& params,
-                      std::vector<TetId>& region, ChangeLog* log = nullptr);
+                      std::vector<TetId>& region);
 
   // Room (allocated and touched) for meshes up to `tets` tet ids and the working size of one
   // loop; a larger loop grows its lists once.
@@ -104,10 +105,9 @@ class Refiner {
   std::vector<TetId> current_, created_, shell_;
   std::vector<Edge> edges_;
   EdgeKeySet seen_;
-  // Per tet id: the call's stamp while the tet is a live child of this call's loop. A parent
-  // found so is unstamped as it is counted, so each is counted once per round.
-  std::vector<std::uint32_t> born_;
-  std::uint32_t stamp_ = 0;
+  // The live children of this call's loop. A parent found so is erased as it is counted, so each
+  // is counted once per round.
+  StampedSet<TetId> born_;
 };
 
 }  // namespace tetcut

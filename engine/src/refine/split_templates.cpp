@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/local_tables.hpp"
+#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {

@@ -1,7 +1,7 @@
 #include "remove/neighbour_search.hpp"
 
-#include "core/local_tables.hpp"
-#include "core/reserve_touched.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut::detail {
 
@@ -19,7 +19,7 @@ void sides_of_edge(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, VertId
   ws.mark(mesh, one);
   tets.clear();
   sizes.clear();
-  const int local_edge = kEdgeIndex[mesh.local_index(t, a)][mesh.local_index(t, b)];
+  const int local_edge = mesh.local_edge(t, a, b);
   ws.remaining_runs(mesh, t, local_edge, tets, sizes);
 }
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/reserve_touched.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut::detail {
 
@@ -10,9 +10,6 @@ void NormalSurfaceFallback::reserve() {
   reserve_touched(edges_, 1024);
   for (auto* v : {&shell_, &set_, &larger_}) reserve_touched(*v, 1024);
   reserve_touched(midpoints_, 1024);
-  reserve_touched(split_log_.removed, 1024);
-  reserve_touched(split_log_.created, 4096);
-  reserve_touched(split_log_.vertices, 1024);
 }
 
 void NormalSurfaceFallback::plan(const TetMesh& mesh, TetId t, std::vector<Edge>& edges) {
@@ -36,32 +33,32 @@ void NormalSurfaceFallback::plan(const TetMesh& mesh, TetId t, std::vector<Edge>
 
 std::uint32_t NormalSurfaceFallback::remove(RemovalContext& ctx, TetId t) {
   plan(ctx.mesh, t, edges_);
-  const RemovalContext::Mark before = ctx.mark();
-  if (!ctx.split(edges_, split_log_)) return 0;
+  const TetMesh::Savepoint before = ctx.mesh.savepoint();
+  if (!ctx.split(edges_)) return 0;
 
   // f = 1 at T's corners (T is untouched), 1/2 at the new midpoints, 0 elsewhere.
   const TetMesh::TetVerts corners = ctx.mesh.tet(t);
   midpoints_.clear();
-  for (const CreatedVertex& v : split_log_.vertices) midpoints_.push_back(v.vertex.value);
+  for (const TetMesh::VertexBirth& v : ctx.mesh.vertices_made_since(before)) midpoints_.push_back(v.vertex.value);
   std::sort(midpoints_.begin(), midpoints_.end());
   auto f_at_least_half = [&](VertId w) {
     return std::find(corners.begin(), corners.end(), w) != corners.end() ||
            std::binary_search(midpoints_.begin(), midpoints_.end(), w.value);
   };
   set_.assign(1, t);
-  for (const CreatedTet& c : split_log_.created) {
+  for (const TetMesh::TetBirth& c : ctx.mesh.tets_made_since(before)) {
     const TetMesh::TetVerts v = ctx.mesh.tet(c.tet);
     if (std::all_of(v.begin(), v.end(), f_at_least_half)) set_.push_back(c.tet);
   }
   // With the selected parents' other children, if that is removable too (removal_context.hpp).
-  if (ctx.with_selected_children(set_, split_log_, larger_) && ctx.ws.check(ctx.mesh, larger_).ok) {
+  if (ctx.with_selected_children(set_, ctx.mesh.tets_made_since(before), larger_) && ctx.ws.check(ctx.mesh, larger_).ok) {
     ctx.remove_set(larger_);
     return static_cast<std::uint32_t>(larger_.size());
   }
   // Removable by the proof; tested all the same, as every set is, so that a bug shows up as an
   // unresolved request in the tests rather than as a broken mesh.
   if (!ctx.ws.check(ctx.mesh, set_).ok) {
-    ctx.rollback_to(before);
+    ctx.mesh.rollback_to(before);
     return 0;
   }
   ctx.remove_set(set_);

@@ -35,7 +35,6 @@ class NormalSurfaceFallback {
   std::vector<Edge> edges_;
   std::vector<TetId> shell_, set_, larger_;
   std::vector<std::uint32_t> midpoints_;  // sorted: the vertices with f = 1/2
-  ChangeLog split_log_;
 };
 
 }  // namespace tetcut::detail

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "core/local_tables.hpp"
-#include "core/reserve_touched.hpp"
 #include "remove/neighbour_search.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut::detail {
 namespace {
@@ -23,9 +23,6 @@ void RefinementStrategies::reserve() {
   for (auto* v : {&parents_, &sides_, &set_, &larger_, &repaired_}) reserve_touched(*v, 512);
   groups_.reserve(8);  // T has four vertices
   reserve_touched(sizes_, 64);
-  reserve_touched(split_log_.removed, 512);
-  reserve_touched(split_log_.created, 2048);
-  reserve_touched(split_log_.vertices, 512);
 }
 
 void RefinementStrategies::add_edges_from(const TetMesh& mesh, VertId from, std::span<const TetId> tets,
@@ -40,33 +37,34 @@ void RefinementStrategies::add_edges_from(const TetMesh& mesh, VertId from, std:
 }
 
 std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId t, const WideSearchLimits& repair) {
-  const RemovalContext::Mark before = ctx.mark();
+  const TetMesh::Savepoint before = ctx.mesh.savepoint();
   for (const CornerGroup& g : groups_)
     std::sort(parents_.begin() + g.begin, parents_.begin() + g.begin + g.size);
-  if (!ctx.split(edges_, split_log_)) return 0;
+  if (!ctx.split(edges_)) return 0;
   set_.clear();
   bool t_split = false;
-  for (const CreatedTet& c : split_log_.created) {
+  for (const TetMesh::TetBirth& c : ctx.mesh.tets_made_since(before)) {
     // No id is reused inside the transaction, so a parent id still names the tet it named.
-    if (c.parent == t) {
+    const TetId parent = ctx.mesh.parents(c)[0];
+    if (parent == t) {
       t_split = true;
       set_.push_back(c.tet);
       continue;
     }
     for (const CornerGroup& g : groups_) {
       const auto begin = parents_.begin() + g.begin, end = begin + g.size;
-      if (std::binary_search(begin, end, c.parent) && contains_all(ctx.mesh, c.tet, g.vertices())) {
+      if (std::binary_search(begin, end, parent) && contains_all(ctx.mesh, c.tet, g.vertices())) {
         set_.push_back(c.tet);
         break;
       }
     }
   }
   if (!t_split) set_.push_back(t);
-  close_pinched_midpoints(ctx, repair.max_set_size);
-  if (ctx.with_selected_children(set_, split_log_, larger_))
+  close_pinched_midpoints(ctx, ctx.mesh.vertices_made_since(before), repair.max_set_size);
+  if (ctx.with_selected_children(set_, ctx.mesh.tets_made_since(before), larger_))
     if (const std::uint32_t n = remove_or_repair(ctx, larger_, repair)) return n;
   if (const std::uint32_t n = remove_or_repair(ctx, set_, repair)) return n;
-  ctx.rollback_to(before);
+  ctx.mesh.rollback_to(before);
   return 0;
 }
 
@@ -94,7 +92,7 @@ std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t, const Re
     return split_and_remove(ctx, t, repair);
   }
   const VertId ends[2] = {first.edge.a, first.edge.b};
-  const int local_edge = kEdgeIndex[ctx.mesh.local_index(t, ends[0])][ctx.mesh.local_index(t, ends[1])];
+  const int local_edge = ctx.mesh.local_edge(t, ends[0], ends[1]);
   ctx.mesh.edge_shell(t, local_edge, parents_);
   for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
   groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 0, static_cast<std::uint32_t>(parents_.size())});
@@ -144,12 +142,13 @@ bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v
   return true;
 }
 
-void RefinementStrategies::close_pinched_midpoints(RemovalContext& ctx, std::uint32_t max_set_size) {
+void RefinementStrategies::close_pinched_midpoints(RemovalContext& ctx, std::span<const TetMesh::VertexBirth> midpoints,
+                                                   std::uint32_t max_set_size) {
   if (groups_.size() < 2) return;
   auto planned = [&](VertId x) {
     return std::any_of(groups_.begin(), groups_.end(), [&](const CornerGroup& g) { return g.at[0] == x || g.at[1] == x; });
   };
-  for (const CreatedVertex& m : split_log_.vertices) {
+  for (const TetMesh::VertexBirth& m : midpoints) {
     if (!planned(m.a) || !planned(m.b)) continue;
     const SetRemovalCheck at_m = ctx.ws.check_at(ctx.mesh, set_, m.vertex);
     if (!at_m.ok) extend_at(ctx, set_, 0, m.vertex, at_m, max_set_size);

@@ -70,7 +70,8 @@ class RefinementStrategies {
   // vertices is where their corner runs can pinch (docs/removal-proof.md, "3.7, planned"). Each
   // such midpoint is tested alone and, where set_ fails there, set_ is extended by extend_at(),
   // so the full test that follows usually passes at once.
-  void close_pinched_midpoints(RemovalContext& ctx, std::uint32_t max_set_size);
+  void close_pinched_midpoints(RemovalContext& ctx, std::span<const TetMesh::VertexBirth> midpoints,
+                               std::uint32_t max_set_size);
   // Splits edges_, then removes T's children and, for each group, the children of its parents
   // that contain the group's vertices, if removable; otherwise rolls back.
   std::uint32_t split_and_remove(RemovalContext& ctx, TetId t, const WideSearchLimits& repair);
@@ -91,7 +92,6 @@ class RefinementStrategies {
   std::vector<Edge> edges_;
   std::vector<TetId> parents_, sides_, set_, larger_, repaired_;
   std::vector<std::uint32_t> sizes_;
-  ChangeLog split_log_;
 };
 
 }  // namespace tetcut::detail

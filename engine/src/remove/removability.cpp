@@ -2,7 +2,7 @@
 
 #include <cassert>
 
-#include "core/local_tables.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 

@@ -6,15 +6,15 @@
 #include <vector>
 
 #include "refine/edge_split.hpp"
-#include "core/local_tables.hpp"
-#include "core/reserve_touched.hpp"
-#include "remove/set_removal.hpp"
 #include "refine/split_templates.hpp"
 #include "remove/neighbour_search.hpp"
 #include "remove/normal_surface_fallback.hpp"
 #include "remove/refinement_strategies.hpp"
 #include "remove/removal_context.hpp"
+#include "remove/set_removal.hpp"
 #include "remove/wide_search.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut {
 
@@ -26,14 +26,8 @@ struct Remover::Workspace {
   detail::RefinementStrategies refinement;
   detail::NormalSurfaceFallback fallback;
   std::vector<TetId> set;
-  ChangeLog log;                                  // the last request's history
   std::vector<TetId> net_removed, net_created, exposed;
-  std::vector<std::uint8_t> met_unresolved;       // per tet id: already counted as unresolved
-
-  void grow(const TetMesh& mesh) {
-    if (met_unresolved.size() < mesh.tet_capacity())
-      met_unresolved.resize(mesh.tet_capacity() + mesh.tet_capacity() / 4 + 16, 0);
-  }
+  StampedSet<TetId> met_unresolved;  // already counted as unresolved (cleared by reset() only)
 };
 
 const char* to_string(RemovalOutcome outcome) {
@@ -59,9 +53,7 @@ Remover& Remover::operator=(Remover&&) noexcept = default;
 void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
   // The working size of one request's lists: a larger request grows them once.
   using detail::reserve_touched;
-  for (auto* v : {&ws_->log.removed, &ws_->net_removed, &ws_->net_created, &ws_->exposed}) reserve_touched(*v, 4096);
-  reserve_touched(ws_->log.created, 4096);
-  reserve_touched(ws_->log.vertices, 4096);
+  for (auto* v : {&ws_->net_removed, &ws_->net_created, &ws_->exposed}) reserve_touched(*v, 4096);
   reserve_touched(ws_->set, 1024);
   ws_->set_test.reserve(tets, vertices);
   ws_->splitter.reserve(tets);
@@ -69,34 +61,31 @@ void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
   ws_->wide.reserve();
   ws_->refinement.reserve();
   ws_->fallback.reserve();
-  if (ws_->met_unresolved.size() < tets) ws_->met_unresolved.resize(tets, 0);
+  ws_->met_unresolved.reserve(tets);
 }
 
 void Remover::reset() {
   report_ = {};
-  std::fill(ws_->met_unresolved.begin(), ws_->met_unresolved.end(), std::uint8_t{0});
+  ws_->met_unresolved.clear();
 }
 
 std::span<const TetId> Remover::last_removed() const { return ws_->net_removed; }
 std::span<const TetId> Remover::last_created() const { return ws_->net_created; }
-const ChangeLog& Remover::last_log() const { return ws_->log; }
 std::span<const TetId> Remover::last_exposed() const { return ws_->exposed; }
 
-RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const RequestLimits& limits) {
+RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limits) {
   assert(mesh.is_live(t));
   Workspace& w = *ws_;
-  w.grow(mesh);
   const bool own_transaction = !mesh.in_transaction();
   if (own_transaction) mesh.begin_transaction();
   const TetMesh::Savepoint start = mesh.savepoint();
-  w.log.clear();
   w.exposed.clear();
-  detail::RemovalContext ctx{mesh, w.set_test, w.splitter, w.log, w.exposed, limits.max_tets_created, limits.selection};
+  detail::RemovalContext ctx{mesh, w.set_test, w.splitter, w.exposed, start, limits.max_tets_created, limits.selection};
 
   RemovalResult result;
   result.first = removability(mesh, t);
   const Removability& first = result.first;
-  const bool repeat = w.met_unresolved[t.value] != 0;
+  const bool repeat = w.met_unresolved.contains(t);
   auto count_selected = [&](std::span<const TetId> set) {
     if (!limits.selection) return static_cast<std::uint32_t>(1);  // the requested tet
     std::uint32_t n = 0;
@@ -126,7 +115,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const Requ
       offence.edge = first.edge;
       if (first.kind == SingularityKind::kEdge)
         offence.local_edge = static_cast<std::uint8_t>(
-            kEdgeIndex[mesh.local_index(t, first.edge.a)][mesh.local_index(t, first.edge.b)]);
+            mesh.local_edge(t, first.edge.a, first.edge.b));
       const TetId one[1] = {t};
       const detail::WideSearchLimits wide{options_.max_path_depth, options_.wide_rounds, options_.wide_evaluations,
                                           options_.max_set_size};
@@ -168,7 +157,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const Requ
   }
 
   result.over_budget = ctx.over_budget && result.outcome == RemovalOutcome::kUnresolved;
-  result.edges_split = ctx.edges_split;
+  result.edges_split = static_cast<std::uint32_t>(mesh.vertices_made_since(start).size());
   mesh.changes_since(start, w.net_removed, w.net_created);
   result.tets_created = static_cast<std::uint32_t>(w.net_created.size());
   for (TetId c : w.net_created)
@@ -176,18 +165,12 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, ChangeLog* log, const Requ
   if (own_transaction) mesh.commit();
 
   count_request(report_, result, repeat);
-  w.grow(mesh);
   if (result.outcome == RemovalOutcome::kUnresolved) {
-    w.met_unresolved[t.value] = 1;
+    w.met_unresolved.insert(t);
   } else {
-    for (TetId r : w.net_removed) w.met_unresolved[r.value] = 0;
+    for (TetId r : w.net_removed) w.met_unresolved.erase(r);
   }
-  for (TetId c : w.net_created) w.met_unresolved[c.value] = 0;
-  if (log) {
-    log->removed.insert(log->removed.end(), w.log.removed.begin(), w.log.removed.end());
-    log->created.insert(log->created.end(), w.log.created.begin(), w.log.created.end());
-    log->vertices.insert(log->vertices.end(), w.log.vertices.begin(), w.log.vertices.end());
-  }
+  for (TetId c : w.net_created) w.met_unresolved.erase(c);
   return result;
 }
 

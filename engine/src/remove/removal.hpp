@@ -26,7 +26,7 @@
 // Plan, then apply: every set is tested by set_removable() before anything is removed, so the
 // mesh is a valid manifold after every request. An attempt that splits and then finds its set
 // not removable is rolled back to a savepoint of the mesh's journal (the one undo), so a
-// request is atomic and what it reports (last_removed/last_created, last_log) is its net change.
+// request is atomic and what it reports (last_removed/last_created) is its net change.
 //
 // Cost: local. The searches are bounded (path depth, candidates, set size); nothing scans the
 // mesh and, once the Remover's workspaces have grown, nothing allocates.
@@ -37,8 +37,8 @@
 #include <span>
 
 #include "remove/removability.hpp"
-#include "tetcut/change_log.hpp"
 #include "tetcut/cut_strategies.hpp"  // RemovalStrategy
+#include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/removal_report.hpp"
@@ -81,13 +81,9 @@ struct RemovalResult {
 // Counts one request in `report`; `repeat` when the tet was left unresolved before.
 void count_request(RemovalReport& report, const RemovalResult& result, bool repeat);
 
-// The tets a caller (a cut) selected for removal: tet id i is selected when
-// stamps[i] == generation. Lets the statistics count what a neighbour set swallowed.
-struct Selection {
-  std::span<const std::uint32_t> stamps;
-  std::uint32_t generation = 0;
-  [[nodiscard]] bool contains(TetId t) const { return t.value < stamps.size() && stamps[t.value] == generation; }
-};
+// The tets a caller (a cut) selected for removal: lets the statistics count what a neighbour set
+// swallowed, and a refinement take a selected parent's other children along.
+using Selection = StampedSet<TetId>;
 
 // What one request may do beyond the strategy's own bounds.
 struct RequestLimits {
@@ -104,9 +100,10 @@ class Remover {
   Remover(Remover&&) noexcept;
   Remover& operator=(Remover&&) noexcept;
 
-  // Removes t (live) or leaves the mesh as it was. Appends what happened to `log` if given.
-  // Runs in the mesh's open transaction, or in one of its own.
-  RemovalResult remove(TetMesh& mesh, TetId t, ChangeLog* log = nullptr, const RequestLimits& limits = {});
+  // Removes t (live) or leaves the mesh as it was. Runs in the mesh's open transaction (whose
+  // journal records what it made: TetMesh::tets_made_since a savepoint taken before), or in one
+  // of its own.
+  RemovalResult remove(TetMesh& mesh, TetId t, const RequestLimits& limits = {});
 
   [[nodiscard]] const RemovalReport& report() const { return report_; }
   // Sizes all per-tet and per-vertex scratch for meshes up to these capacities (see Cutter).
@@ -126,9 +123,6 @@ class Remover {
   // ids live now that it made (never the same id: no id is reused inside a transaction).
   [[nodiscard]] std::span<const TetId> last_removed() const;
   [[nodiscard]] std::span<const TetId> last_created() const;
-  // Its history, in order (the split that survived, then the set removed): what a caller needs
-  // to follow the tets it cares about through the request (parents of created tets).
-  [[nodiscard]] const ChangeLog& last_log() const;
   // Live tets that may have come to the surface in the last remove() (neighbours of what went,
   // new tets with a boundary face): what a cautery meets next.
   [[nodiscard]] std::span<const TetId> last_exposed() const;

@@ -2,31 +2,14 @@
 
 namespace tetcut::detail {
 
-RemovalContext::Mark RemovalContext::mark() {
-  return {mesh.savepoint(), log.removed.size(), log.created.size(), log.vertices.size(), tets_created, edges_split};
-}
-
-void RemovalContext::rollback_to(const Mark& m) {
-  mesh.rollback_to(m.mesh);
-  log.removed.resize(m.removed);
-  log.created.resize(m.created);
-  log.vertices.resize(m.vertices);
-  tets_created = m.tets_created;
-  edges_split = m.edges_split;
-}
-
-bool RemovalContext::split(std::span<const Edge> edges, ChangeLog& split_log) {
-  split_log.clear();
-  const std::uint32_t allowed = budget > tets_created ? budget - tets_created : 0;
-  const SplitResult r = splitter.split(mesh, edges, SplitMethod::kTemplates, nullptr, &split_log, allowed);
+bool RemovalContext::split(std::span<const Edge> edges) {
+  // Every tet the request made so far counts, children split again included, as they did when
+  // the splits were planned.
+  const std::uint32_t made = static_cast<std::uint32_t>(mesh.tets_made_since(start).size());
+  const std::uint32_t allowed = budget > made ? budget - made : 0;
+  const SplitResult r = splitter.split(mesh, edges, SplitMethod::kTemplates, nullptr, allowed);
   if (r.refusal == SplitRefusal::kOverBudget) over_budget = true;
-  if (!r.ok()) return false;
-  log.removed.insert(log.removed.end(), split_log.removed.begin(), split_log.removed.end());
-  log.created.insert(log.created.end(), split_log.created.begin(), split_log.created.end());
-  log.vertices.insert(log.vertices.end(), split_log.vertices.begin(), split_log.vertices.end());
-  tets_created += r.tets_created;
-  edges_split += r.edges_split;
-  return true;
+  return r.ok();
 }
 
 void RemovalContext::remove_set(std::span<const TetId> set) {
@@ -36,17 +19,16 @@ void RemovalContext::remove_set(std::span<const TetId> set) {
       const FaceRef n = mesh.neighbour(u, f);
       if (n.valid() && !ws.marked(n.tet)) exposed.push_back(n.tet);
     }
-  log.removed.insert(log.removed.end(), set.begin(), set.end());
   mesh.remove_tets(set);
 }
 
-bool RemovalContext::with_selected_children(std::span<const TetId> set, const ChangeLog& split_log,
+bool RemovalContext::with_selected_children(std::span<const TetId> set, std::span<const TetMesh::TetBirth> children,
                                             std::vector<TetId>& out) {
   if (!selection) return false;
   out.assign(set.begin(), set.end());
   ws.mark(mesh, set);
-  for (const CreatedTet& c : split_log.created)
-    if (selection->contains(c.parent) && mesh.is_live(c.tet) && !ws.marked(c.tet)) out.push_back(c.tet);
+  for (const TetMesh::TetBirth& c : children)
+    if (selection->contains(mesh.parents(c)[0]) && mesh.is_live(c.tet) && !ws.marked(c.tet)) out.push_back(c.tet);
   return out.size() > set.size();
 }
 

@@ -4,50 +4,17 @@
 #include <cassert>
 #include <utility>
 
-#include "core/local_tables.hpp"
-#include "core/reserve_touched.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut {
-namespace {
-
-// A fresh generation for a stamp array; on wrap-around the array is really cleared once.
-std::uint32_t next_gen(std::vector<std::uint32_t>& stamps, std::uint32_t& gen) {
-  if (++gen == 0) {
-    std::fill(stamps.begin(), stamps.end(), 0u);
-    gen = 1;
-  }
-  return gen;
-}
-
-}  // namespace
-
-void SetRemovalWorkspace::grow(const TetMesh& mesh) {
-  // Grows with the mesh only: a warm workspace on a mesh that does not grow never allocates.
-  if (set_stamp_.size() < mesh.tet_capacity()) {
-    const std::size_t n = mesh.tet_capacity() + mesh.tet_capacity() / 4 + 16;
-    set_stamp_.resize(n, 0);
-    shell_stamp_.resize(n, 0);
-    visit_stamp_.resize(n, 0);
-    parent_.resize(n, 0);
-  }
-  if (vertex_stamp_.size() < mesh.vertex_capacity()) {
-    const std::size_t n = mesh.vertex_capacity() + mesh.vertex_capacity() / 4 + 16;
-    vertex_stamp_.resize(n, 0);
-    vertex_slot_.resize(n, 0);
-  }
-}
-
 void SetRemovalWorkspace::reserve(std::uint32_t tets, std::uint32_t vertices) {
-  if (set_stamp_.size() < tets) {
-    set_stamp_.resize(tets, 0);
-    shell_stamp_.resize(tets, 0);
-    visit_stamp_.resize(tets, 0);
-    parent_.resize(tets, 0);
-  }
-  if (vertex_stamp_.size() < vertices) {
-    vertex_stamp_.resize(vertices, 0);
-    vertex_slot_.resize(vertices, 0);
-  }
+  marked_.reserve(tets);
+  in_shell_.reserve(tets);
+  visited_.reserve(tets);
+  bfs_parent_.reserve(tets);
+  walked_.reserve(vertices);
+  vertex_slot_.reserve(vertices);
   for (auto* v : {&shell_, &queue_, &ring_, &distinct_, &at_vertex_}) detail::reserve_touched(*v, 2048);
   detail::reserve_touched(depth_, 512);
   detail::reserve_touched(set_vertices_, 2048);
@@ -55,17 +22,16 @@ void SetRemovalWorkspace::reserve(std::uint32_t tets, std::uint32_t vertices) {
   detail::reserve_touched(vertex_changed_, 2048);
 }
 
-void SetRemovalWorkspace::mark(const TetMesh& mesh, std::span<const TetId> set) {
-  grow(mesh);
-  const std::uint32_t g = next_gen(set_stamp_, set_gen_);
-  for (TetId t : set) set_stamp_[t.value] = g;
+void SetRemovalWorkspace::mark(const TetMesh&, std::span<const TetId> set) {
+  marked_.clear();
+  for (TetId t : set) marked_.insert(t);
 }
 
 void SetRemovalWorkspace::collect_shell(const TetMesh& mesh, VertId v, TetId seed) {
-  const std::uint32_t g = next_gen(shell_stamp_, shell_gen_);
+  in_shell_.clear();
   shell_.clear();
   shell_.push_back(seed);
-  shell_stamp_[seed.value] = g;
+  in_shell_.insert(seed);
   for (std::size_t i = 0; i < shell_.size(); ++i) {
     const TetId cur = shell_[i];
     const int lv = mesh.local_index(cur, v);
@@ -73,22 +39,19 @@ void SetRemovalWorkspace::collect_shell(const TetMesh& mesh, VertId v, TetId see
     for (int f = 0; f < 4; ++f) {
       if (f == lv) continue;
       const FaceRef n = mesh.neighbour(cur, f);
-      if (!n.valid() || shell_stamp_[n.tet.value] == g) continue;
-      shell_stamp_[n.tet.value] = g;
+      if (!n.valid() || !in_shell_.insert(n.tet)) continue;
       shell_.push_back(n.tet);
     }
   }
 }
 
 template <class Visit>
-void SetRemovalWorkspace::visit_fresh_shell_neighbours(const TetMesh& mesh, VertId v, TetId cur, std::uint32_t g,
-                                                       Visit&& visit) {
+void SetRemovalWorkspace::visit_fresh_shell_neighbours(const TetMesh& mesh, VertId v, TetId cur, Visit&& visit) {
   const int lv = mesh.local_index(cur, v);
   for (int f = 0; f < 4; ++f) {
     if (f == lv) continue;
     const FaceRef n = mesh.neighbour(cur, f);
-    if (!n.valid() || marked(n.tet) || visit_stamp_[n.tet.value] == g) continue;
-    visit_stamp_[n.tet.value] = g;
+    if (!n.valid() || marked(n.tet) || !visited_.insert(n.tet)) continue;
     visit(n.tet);
   }
 }
@@ -141,8 +104,8 @@ SetRemovalWorkspace::VertexVerdict SetRemovalWorkspace::vertex_ok(const TetMesh&
   }
   // Every link vertex the walk reaches is stamped when it becomes the pivot; `from` becomes the
   // pivot last, the one whose turn leads back onto the start edge.
-  const std::uint32_t g = next_gen(vertex_stamp_, vertex_gen_);
-  vertex_stamp_[pivot.value] = g;
+  walked_.clear();
+  walked_.insert(pivot);
   TetId u = start;
   std::uint32_t followed = 1;
   // A valid mesh closes the walk within a few turns per edge; the bound only guards the loop.
@@ -158,8 +121,7 @@ SetRemovalWorkspace::VertexVerdict SetRemovalWorkspace::vertex_ok(const TetMesh&
       // An interface edge (pivot, fourth): follow it.
       if (u == start && face == start_face) return {followed == interface, VertId{}};
       ++followed;
-      if (vertex_stamp_[fourth.value] == g) return {false, fourth};  // K pinched there
-      vertex_stamp_[fourth.value] = g;
+      if (!walked_.insert(fourth)) return {false, fourth};  // K pinched there
       from = pivot;
       pivot = fourth;
       continue;
@@ -174,28 +136,25 @@ SetRemovalWorkspace::VertexVerdict SetRemovalWorkspace::vertex_ok(const TetMesh&
 SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const TetId> set, TestedPrefix prefix) {
   // Marks the set and groups its tets by vertex in two linear passes (a bucket per vertex, in
   // the order the set first names them): a sort of (vertex, tet) pairs was a quarter of the test.
-  grow(mesh);
-  const std::uint32_t g = next_gen(set_stamp_, set_gen_);
-  const std::uint32_t vg = next_gen(vertex_stamp_, vertex_gen_);
+  marked_.clear();
+  vertex_slot_.clear();
   distinct_.clear();
   set_vertices_.clear();
   vertex_begin_.clear();
   vertex_changed_.clear();
   for (std::size_t k = 0; k < set.size(); ++k) {
     const TetId t = set[k];
-    if (set_stamp_[t.value] == g) continue;  // a tet listed twice counts once
-    set_stamp_[t.value] = g;
+    if (!marked_.insert(t)) continue;  // a tet listed twice counts once
     distinct_.push_back(t);
     const bool added = k >= prefix.tets;
     for (VertId v : mesh.tet(t)) {
-      if (vertex_stamp_[v.value] != vg) {
-        vertex_stamp_[v.value] = vg;
-        vertex_slot_[v.value] = static_cast<std::uint32_t>(set_vertices_.size());
+      if (!vertex_slot_.contains(v)) {
+        vertex_slot_.set(v, static_cast<std::uint32_t>(set_vertices_.size()));
         set_vertices_.push_back(v);
         vertex_begin_.push_back(0);
         vertex_changed_.push_back(0);
       }
-      const std::uint32_t slot = vertex_slot_[v.value];
+      const std::uint32_t slot = *vertex_slot_.find(v);
       ++vertex_begin_[slot];  // a count for now
       vertex_changed_[slot] |= static_cast<std::uint8_t>(added);
     }
@@ -204,7 +163,7 @@ SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const 
   for (std::uint32_t& b : vertex_begin_) offset += std::exchange(b, offset);
   at_vertex_.resize(offset);
   for (TetId t : distinct_)
-    for (VertId v : mesh.tet(t)) at_vertex_[vertex_begin_[vertex_slot_[v.value]]++] = t;
+    for (VertId v : mesh.tet(t)) at_vertex_[vertex_begin_[*vertex_slot_.find(v)]++] = t;
   // Each begin now holds its end; the first vertex begins at 0.
   for (std::size_t i = 0; i < set_vertices_.size(); ++i) {
     const std::uint32_t begin = i == 0 ? 0 : vertex_begin_[i - 1];
@@ -253,14 +212,11 @@ SetRemovalCheck SetRemovalWorkspace::offence(const TetMesh& mesh, VertId v, std:
 
 SetRemovalCheck SetRemovalWorkspace::check_at(const TetMesh& mesh, std::span<const TetId> set, VertId v) {
   mark(mesh, set);
-  // The set's distinct tets at v (visit stamps: a tet listed twice counts once).
-  const std::uint32_t g = next_gen(visit_stamp_, visit_gen_);
+  // The set's distinct tets at v (a tet listed twice counts once).
+  visited_.clear();
   at_vertex_.clear();
   for (TetId t : set)
-    if (visit_stamp_[t.value] != g && mesh.local_index(t, v) >= 0) {
-      visit_stamp_[t.value] = g;
-      at_vertex_.push_back(t);
-    }
+    if (mesh.local_index(t, v) >= 0 && visited_.insert(t)) at_vertex_.push_back(t);
   SetRemovalCheck result;
   if (at_vertex_.empty()) return result;
   const VertexVerdict verdict = vertex_ok(mesh, v, at_vertex_);
@@ -271,16 +227,14 @@ SetRemovalCheck SetRemovalWorkspace::check_at(const TetMesh& mesh, std::span<con
 void SetRemovalWorkspace::remaining_components(const TetMesh& mesh, VertId v, TetId seed,
                                                std::vector<TetId>& tets,
                                                std::vector<std::uint32_t>& sizes) {
-  grow(mesh);
   collect_shell(mesh, v, seed);
-  const std::uint32_t g = next_gen(visit_stamp_, visit_gen_);
+  visited_.clear();
   for (TetId start : shell_) {
-    if (marked(start) || visit_stamp_[start.value] == g) continue;
+    if (marked(start) || !visited_.insert(start)) continue;
     const std::size_t begin = tets.size();
     tets.push_back(start);
-    visit_stamp_[start.value] = g;
     for (std::size_t i = begin; i < tets.size(); ++i)
-      visit_fresh_shell_neighbours(mesh, v, tets[i], g, [&](TetId n) { tets.push_back(n); });
+      visit_fresh_shell_neighbours(mesh, v, tets[i], [&](TetId n) { tets.push_back(n); });
     sizes.push_back(static_cast<std::uint32_t>(tets.size() - begin));
   }
 }
@@ -296,9 +250,9 @@ void SetRemovalWorkspace::remaining_pieces(const TetMesh& mesh, const SetRemoval
 
 bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId seed, int max_depth,
                                          std::vector<TetId>& out) {
-  grow(mesh);
   collect_shell(mesh, v, seed);
-  const std::uint32_t g = next_gen(visit_stamp_, visit_gen_);
+  visited_.clear();
+  bfs_parent_.clear();
   queue_.clear();
   depth_.clear();
   auto has_border_face = [&](TetId t) {
@@ -310,8 +264,7 @@ bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId se
   for (TetId t : shell_) {
     if (!marked(t)) continue;
     if (has_border_face(t)) return true;  // the hole already opens onto the surface
-    visit_stamp_[t.value] = g;
-    parent_[t.value] = TetId{}.value;
+    visited_.insert(t);
     queue_.push_back(t);
     depth_.push_back(0);
   }
@@ -320,13 +273,13 @@ bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId se
     const int d = depth_[i];
     if (d > 0 && has_border_face(cur)) {
       const std::size_t begin = out.size();
-      for (TetId p = cur; !marked(p); p = TetId{parent_[p.value]}) out.push_back(p);
+      for (TetId p = cur; !marked(p); p = bfs_parent_.get(p, kNoTet)) out.push_back(p);
       std::reverse(out.begin() + static_cast<std::ptrdiff_t>(begin), out.end());
       return true;
     }
     if (d >= max_depth) continue;
-    visit_fresh_shell_neighbours(mesh, v, cur, g, [&](TetId n) {
-      parent_[n.value] = cur.value;
+    visit_fresh_shell_neighbours(mesh, v, cur, [&](TetId n) {
+      bfs_parent_.set(n, cur);
       queue_.push_back(n);
       depth_.push_back(static_cast<std::uint8_t>(d + 1));
     });
@@ -336,7 +289,6 @@ bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId se
 
 void SetRemovalWorkspace::remaining_runs(const TetMesh& mesh, TetId seed, int local_edge,
                                          std::vector<TetId>& tets, std::vector<std::uint32_t>& sizes) {
-  grow(mesh);
   const bool open = mesh.edge_shell(seed, local_edge, ring_);
   const std::size_t n = ring_.size();
   // On a closed ring start right after a marked tet so that no run is cut in two.

@@ -11,7 +11,7 @@
 // walk starts from the set's own faces, so it costs what the set touches, not whole shells.
 //
 // Everything is local: O(the set's faces + the interface's turns), no scan of the mesh, no
-// allocation once the workspace has grown (stamps, never cleared arrays).
+// allocation once the workspace has grown (stamped marks, cleared in O(1)).
 #pragma once
 
 #include <cstdint>
@@ -21,6 +21,7 @@
 
 #include "refine/edge_split.hpp"
 #include "remove/removability.hpp"
+#include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 
@@ -55,7 +56,7 @@ class SetRemovalWorkspace {
   // Stamps `set` as the tets about to go (a tet listed twice counts once). Every query below
   // is about the mesh without the marked tets, until the next mark().
   void mark(const TetMesh& mesh, std::span<const TetId> set);
-  [[nodiscard]] bool marked(TetId t) const { return t.value < set_stamp_.size() && set_stamp_[t.value] == set_gen_; }
+  [[nodiscard]] bool marked(TetId t) const { return marked_.contains(t); }
 
   // The test on `set` (marks it first), vertex by vertex in the order the set first names them;
   // the first vertex whose link fails names the offence: that vertex, or the edge at it with two
@@ -96,13 +97,12 @@ class SetRemovalWorkspace {
   void reserve(std::uint32_t tets, std::uint32_t vertices);
 
  private:
-  void grow(const TetMesh& mesh);
-  // The whole shell of v into shell_, stamped with shell_gen_.
+  // The whole shell of v into shell_ (and in_shell_).
   void collect_shell(const TetMesh& mesh, VertId v, TetId seed);
   // The breadth-first step both shell walks take: each unmarked neighbour of `cur` across a face
-  // through v that visit generation g has not seen yet is stamped and handed to `visit`.
+  // through v not visited yet is marked visited and handed to `visit`.
   template <class Visit>
-  void visit_fresh_shell_neighbours(const TetMesh& mesh, VertId v, TetId cur, std::uint32_t g, Visit&& visit);
+  void visit_fresh_shell_neighbours(const TetMesh& mesh, VertId v, TetId cur, Visit&& visit);
   // The set's tets at v are `removed_at_v` (marked, distinct). Not ok with `pinched` valid:
   // the edge (v, pinched) keeps two runs of tets; with `pinched` invalid: v itself is singular.
   struct VertexVerdict {
@@ -114,13 +114,11 @@ class SetRemovalWorkspace {
   static SetRemovalCheck offence(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v,
                                  const VertexVerdict& verdict);
 
-  std::vector<std::uint32_t> set_stamp_;    // per tet: == set_gen_ when marked
-  std::vector<std::uint32_t> shell_stamp_;  // per tet: == shell_gen_ when in shell_
-  std::vector<std::uint32_t> visit_stamp_;  // per tet: BFS visits
-  std::vector<std::uint32_t> parent_;       // per tet: BFS parent (valid where visited)
-  // per vertex: == vertex_gen_ when the current pass met it (check's grouping, then each walk)
-  std::vector<std::uint32_t> vertex_stamp_;
-  std::uint32_t set_gen_ = 0, shell_gen_ = 0, visit_gen_ = 0, vertex_gen_ = 0;
+  StampedSet<TetId> marked_;     // the set about to go
+  StampedSet<TetId> in_shell_;   // collect_shell()'s tets
+  StampedSet<TetId> visited_;    // the current breadth-first walk's
+  StampedMap<TetId, TetId> bfs_parent_;  // path_to_border(): where each visited tet was reached from
+  StampedSet<VertId> walked_;    // vertex_ok(): link vertices the walk passed
 
   std::vector<TetId> shell_;
   std::vector<TetId> queue_;
@@ -133,7 +131,7 @@ class SetRemovalWorkspace {
   std::vector<std::uint32_t> vertex_begin_;
   std::vector<std::uint8_t> vertex_changed_;  // per set vertex: a tet beyond the tested prefix has it
   std::vector<TetId> at_vertex_;
-  std::vector<std::uint32_t> vertex_slot_;   // per vertex: its index in set_vertices_
+  StampedMap<VertId, std::uint32_t> vertex_slot_;  // check(): a set vertex's index in set_vertices_
 };
 
 // Convenience: the test with a given workspace.

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/reserve_touched.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut::detail {
 

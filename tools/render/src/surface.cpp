@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/local_tables.hpp"
 #include "cut/spatial_index.hpp"
+#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut::render {
 namespace {

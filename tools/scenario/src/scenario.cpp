@@ -6,11 +6,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/pieces.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
-#include "core/pieces.hpp"
 
 namespace tetcut::scenario {
 namespace {
