@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "tetcut/percentile.hpp"
+
 namespace tetcut::stats {
 
 const std::vector<PaperMesh>& paper_meshes() {

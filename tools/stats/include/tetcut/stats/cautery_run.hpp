@@ -47,7 +47,4 @@ struct CauteryResult {
 // with result.ok false and the statistics up to the failure; only unusable input is an error.
 CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options);
 
-// Nearest-rank percentile (q in [0, 1]) of `values`; NaN when empty.
-double percentile(std::vector<double> values, double q);
-
 }  // namespace tetcut::stats
