@@ -31,9 +31,9 @@ std::optional<TetMesh> initial_mesh(const scenario::Scenario& s, std::string& er
 
 }  // namespace
 
-CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options) {
+CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options, const std::string& name) {
   CauteryResult out;
-  const scenario::ParseResult parsed = scenario::parse_file(scenario_path);
+  const scenario::ParseResult parsed = scenario::parse_file(scenario_path, name);
   if (!parsed.scenario) {
     out.error = parsed.error;
     return out;
@@ -42,7 +42,7 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   if (!before) return out;
 
   CauteryRun run;
-  run.scenario = scenario_path;
+  run.scenario = parsed.scenario->name;
   run.strategy = options.strategy;
   run.split = options.split;
   run.tets_before = before->num_tets();
