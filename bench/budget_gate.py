@@ -111,7 +111,7 @@ def write_markdown(path, rows, summary):
     over = [r[0] for r in rows if r[4] == "OVER BUDGET"]
     if over:
         lines += ["", "To find the commit that pushed a figure over budget (instruction counts, so"
-                  " the machine's noise does not matter; see README, \"Using tetcut in your CI\"):", ""]
+                  " the machine's noise does not matter; see docs/bisect.md):", ""]
         # The unit in parentheses is left out: ci/bisect matches a figure by the start of its name.
         lines += [f"    ci/bisect --budget \"{name.split(' (')[0]}\" --good LAST_GOOD_COMMIT" for name in over]
     tmp = path + ".tmp"
@@ -152,7 +152,7 @@ def gate_rows(results, budgets, confirmations, skip):
         other = toolchain_mismatch(results, figure)
         if other is not None:
             # Not a pass: the count was taken with another toolchain and says nothing about
-            # this change. Recalibrate on the new toolchain instead (README, "Recalibrating").
+            # this change. Recalibrate on the new toolchain instead (docs/ci.md, "Recalibrating").
             mismatched.append((figure["name"], other))
             rows.append((figure["name"], f"{value:.4g}", f"{sign} {bound:g}", "", "OTHER TOOLCHAIN"))
             continue
