@@ -100,14 +100,18 @@ def write_lines(path, lines):
     os.replace(tmp, path)
 
 
-def write_markdown(path, rows, summary):
+def markdown_table(rows):
+    """The gate's rows as the lines of a Markdown table (ci/gate's report, docs/results.md)."""
     lines = ["| figure | measured | budget | margin | status |", "|---|---|---|---|---|"]
-    lines += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
-    lines += ["", summary]
+    return lines + ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+
+
+def write_markdown(path, rows, summary):
+    lines = markdown_table(rows) + ["", summary]
     over = [r[0] for r in rows if r[4] == "OVER BUDGET"]
     if over:
         lines += ["", "To find the commit that pushed a figure over budget (instruction counts, so"
-                  " the machine's noise does not matter; see README, \"Using tetcut in your CI\"):", ""]
+                  " the machine's noise does not matter; see docs/bisect.md):", ""]
         # The unit in parentheses is left out: ci/bisect matches a figure by the start of its name.
         lines += [f"    ci/bisect --budget \"{name.split(' (')[0]}\" --good LAST_GOOD_COMMIT" for name in over]
     tmp = path + ".tmp"
@@ -116,20 +120,22 @@ def write_markdown(path, rows, summary):
     os.replace(tmp, path)
 
 
-def main(argv):
-    argv, skip_arg = take_option(argv, "--skip-missing")
-    skip = set(skip_arg.split(",")) if skip_arg else set()
-    argv, markdown = take_option(argv, "--markdown")
-    argv, over_time_path = take_option(argv, "--over-time")
-    argv, confirm_paths = take_repeated_option(argv, "--confirm")
-    if len(argv) != 3:
-        print("usage: budget_gate.py RESULTS.json BUDGETS.json [--skip-missing BENCH,...] [--markdown FILE]"
-              " [--confirm MORE.json]... [--over-time FILE]", file=sys.stderr)
-        return 2
-    results = load(argv[1], "results")
-    budgets = load(argv[2], "budgets")
-    confirmations = [load(p, "re-run results") for p in confirm_paths]
-    rows, failed, missing, mismatched, over_figures = [], 0, 0, [], []
+class Gate:
+    """The gate's verdict on every figure: `rows` (figure, measured, budget, margin, status), the
+    figures over budget, how many are missing, and the (figure, toolchain) pairs measured with
+    another toolchain than their budget records."""
+
+    def __init__(self, results, budgets, confirmations=(), skip=()):
+        self.rows, self.over_figures, self.missing, self.mismatched = gate_rows(results, budgets, confirmations, skip)
+        self.failed = len(self.over_figures)
+        skipped = sum(1 for r in self.rows if r[4] == "skipped")
+        within = len(self.rows) - self.failed - self.missing - skipped - len(self.mismatched)
+        self.summary = (f"budget gate: {within} within budget, {self.failed} over, {self.missing} missing, "
+                        f"{skipped} skipped, {len(self.mismatched)} on another toolchain")
+
+
+def gate_rows(results, budgets, confirmations, skip):
+    rows, missing, mismatched, over_figures = [], 0, [], []
     for figure in budgets.get("figures", []):
         value, runs = best_value(results, confirmations, figure)
         if "max" in figure:
@@ -146,12 +152,11 @@ def main(argv):
         other = toolchain_mismatch(results, figure)
         if other is not None:
             # Not a pass: the count was taken with another toolchain and says nothing about
-            # this change. Recalibrate on the new toolchain instead (README, "Recalibrating").
+            # this change. Recalibrate on the new toolchain instead (docs/ci.md, "Recalibrating").
             mismatched.append((figure["name"], other))
             rows.append((figure["name"], f"{value:.4g}", f"{sign} {bound:g}", "", "OTHER TOOLCHAIN"))
             continue
         ok = ok_cmp(value, bound)
-        failed += not ok
         if not ok:
             over_figures.append(figure)
         if bound == 0:
@@ -161,28 +166,43 @@ def main(argv):
             margin_text = f"{margin:+.0f}%"
         shown = f"{value:.4g}" + (f" (best of {runs})" if runs > 1 else "")
         rows.append((figure["name"], shown, f"{sign} {bound:g}", margin_text, "ok" if ok else "OVER BUDGET"))
+    return rows, over_figures, missing, mismatched
+
+
+def main(argv):
+    argv, skip_arg = take_option(argv, "--skip-missing")
+    skip = set(skip_arg.split(",")) if skip_arg else set()
+    argv, markdown = take_option(argv, "--markdown")
+    argv, over_time_path = take_option(argv, "--over-time")
+    argv, confirm_paths = take_repeated_option(argv, "--confirm")
+    if len(argv) != 3:
+        print("usage: budget_gate.py RESULTS.json BUDGETS.json [--skip-missing BENCH,...] [--markdown FILE]"
+              " [--confirm MORE.json]... [--over-time FILE]", file=sys.stderr)
+        return 2
+    results = load(argv[1], "results")
+    budgets = load(argv[2], "budgets")
+    confirmations = [load(p, "re-run results") for p in confirm_paths]
+    gate = Gate(results, budgets, confirmations, skip)
+    rows, over_figures, missing, mismatched = gate.rows, gate.over_figures, gate.missing, gate.mismatched
 
     header = ("figure", "measured", "budget", "margin", "status")
     widths = [max(len(str(r[i])) for r in rows + [header]) for i in range(5)]
     for r in [header] + rows:
         print("  ".join(str(c).ljust(w) for c, w in zip(r, widths)))
-    skipped = sum(1 for r in rows if r[4] == "skipped")
-    summary = (f"budget gate: {len(rows) - failed - missing - skipped - len(mismatched)} within budget, {failed} over, "
-               f"{missing} missing, {skipped} skipped, {len(mismatched)} on another toolchain")
-    print(summary)
+    print(gate.summary)
     for name, other in mismatched:
         figure = next(f for f in budgets["figures"] if f["name"] == name)
         print(f"budget_gate: '{name}' was calibrated with\n  {figure['toolchain']}\nbut this build is\n  {other}\n"
               "the counts cannot be compared: recalibrate with `ci/bench --instructions --recalibrate-instructions`"
               " on an idle machine and commit bench/budgets.json", file=sys.stderr)
     if markdown:
-        write_markdown(markdown, rows, summary)
+        write_markdown(markdown, rows, gate.summary)
     if over_time_path:
         only_time = over_figures and all(f.get("kind") == "time" for f in over_figures)
         write_lines(over_time_path, sorted({f["benchmark"] for f in over_figures}) if only_time else [])
     if missing or mismatched:
         return 2
-    return 1 if failed else 0
+    return 1 if gate.failed else 0
 
 
 if __name__ == "__main__":

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Calibrates bench/budgets.json from measurements (README, "Recalibrating budgets").
+"""Calibrates bench/budgets.json from measurements (docs/ci.md, "Recalibrating budgets").
 
   calibrate_budgets.py instructions BUDGETS.json RESULTS.json
       The instruction figure (kind "instructions"): its baseline becomes the count in RESULTS,

@@ -26,6 +26,9 @@
 #include "refine/edge_split.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/detail/local_tables.hpp"
+#include "tetcut/percentile.hpp"
+
+using tetcut::percentile;
 
 namespace {
 std::atomic<std::uint64_t> g_allocations{0};
@@ -92,12 +95,6 @@ std::vector<tetcut::Vec3> sweep_centres() {
   for (double z = 60; z <= 150; z += 15)
     for (double y = 40; y <= 180; y += 4) c.push_back({95, y, z});
   return c;
-}
-
-double percentile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size())));
-  return v[std::min(v.size() - 1, rank == 0 ? 0 : rank - 1)];
 }
 
 struct SweepResult {

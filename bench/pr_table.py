@@ -1,15 +1,19 @@
 #!/usr/bin/python3
 """The pull-request delta: one Markdown row per gated figure of bench/budgets.json.
 
-    pr_table.py BASE.json HEAD.json BUDGETS.json [--alpha A]
+    pr_table.py BASE.json HEAD.json BUDGETS.json COMPARE.json [--alpha A]
 
 BASE and HEAD are results files of `ci/bench` (Google Benchmark JSON, merged across suites),
-run on the same machine. Columns: figure, base, head, change, significance, budget (the head's
+run on the same machine; COMPARE is what Google Benchmark's compare.py made of them
+(`ci/bench --compare BASE.json` writes it beside HEAD as HEAD.compare.json, through
+bench/compare_results.sh). Columns: figure, base, head, change, significance, budget (the head's
 value against it). Instruction counts (callgrind, `ci/bench --instructions`) come first: they do
 not depend on the runner's load, so any change is real for one toolchain ("exact"). Wall-time
-figures follow, with a two-sided Mann-Whitney U test over their repetitions (scipy's, the one
-Google Benchmark's compare.py uses; Debian's python3-scipy, so run it with /usr/bin/python3):
-"significant" when p < alpha (0.05) and the medians are more than 1 % apart.
+figures follow with compare.py's two-sided Mann-Whitney U test over the repetitions of their
+benchmark, read from COMPARE and not computed again: "significant" when p < alpha (0.05) and the
+medians are more than 1 % apart. compare.py tests a benchmark's own time (real_time, or
+cpu_time for a cpu_time figure); a figure read from a counter (a per-cut percentile of a sweep)
+gets the p-value of its benchmark's time, and its cell says so.
 
 Prints the Markdown (the workflow adds it to the job summary and to a pull-request comment).
 Exit 0 (information, not a gate: ci/gate is the gate), 2 on unreadable input or bad usage.
@@ -29,11 +33,10 @@ def is_instruction_count(figure):
     return "instructions" in figure["field"]
 
 
-def repetition_samples(results, figure):
-    """The figure's field in every repetition of its benchmark (not the aggregates)."""
-    return [float(b[figure["field"]]) for b in results.get("benchmarks", [])
-            if b.get("run_name", b.get("name")) == figure["benchmark"]
-            and b.get("run_type", "iteration") == "iteration" and figure["field"] in b]
+def u_tests(comparison):
+    """compare.py's U test of each benchmark, by name (its repetitions, not its aggregates)."""
+    return {entry["name"]: entry["utest"] for entry in comparison
+            if isinstance(entry, dict) and entry.get("run_type") == "iteration" and entry.get("utest")}
 
 
 def number(value):
@@ -44,20 +47,19 @@ def number(value):
     return f"{value:.4g}"
 
 
-def significance(figure, base, head, alpha):
-    if base is None or head is None:
+def significance(figure, vb, vh, tests, alpha):
+    if vb is None or vh is None:
         return ""
     if is_instruction_count(figure):
         return "exact"
-    xb, xh = repetition_samples(base, figure), repetition_samples(head, figure)
-    if len(xb) < 2 or len(xh) < 2:
-        return "one run each: no test"
-    from scipy.stats import mannwhitneyu  # python3-scipy (ci/packages.txt)
-
-    p = float(mannwhitneyu(xb, xh, alternative="two-sided").pvalue)
-    vb, vh = measured_value(base, figure), measured_value(head, figure)
+    test = tests.get(figure["benchmark"])
+    if test is None:
+        return "not tested (fewer than 2 repetitions each)"
+    p = float(test["cpu_pvalue"] if figure["field"] == "cpu_time" else test["time_pvalue"])
     apart = vb != 0 and abs(vh - vb) / abs(vb) * 100 > NOISE_FLOOR_PERCENT
-    return f"{'significant' if p < alpha and apart else 'noise'} (p={p:.2f}, n={len(xb)}+{len(xh)})"
+    of = "" if figure["field"] in ("real_time", "cpu_time") else " for the benchmark's time"
+    n = f"n={test['nr_of_repetitions']}+{test['nr_of_repetitions_other']}"
+    return f"{'significant' if p < alpha and apart else 'noise'} (p={p:.2f}{of}, {n})"
 
 
 def budget_cell(figure, head_value):
@@ -79,7 +81,8 @@ def change_cell(base_value, head_value):
     return f"{(head_value - base_value) / abs(base_value) * 100:+.1f} %"
 
 
-def table(base, head, budgets, alpha):
+def table(base, head, budgets, comparison, alpha):
+    tests = u_tests(comparison)
     figures = budgets.get("figures", [])
     ordered = [f for f in figures if is_instruction_count(f)] + [f for f in figures if not is_instruction_count(f)]
     rows, over, missing = [], 0, 0
@@ -89,10 +92,11 @@ def table(base, head, budgets, alpha):
         over += within is False
         missing += vh is None
         rows.append((figure["name"], number(vb), number(vh), change_cell(vb, vh),
-                     significance(figure, base, head, alpha), budget))
+                     significance(figure, vb, vh, tests, alpha), budget))
     lines = [MARKER, "### Benchmarks: this pull request against its base", "",
              "Instruction counts (callgrind) first: exact for one toolchain, so any change is real. "
-             "Wall times are medians over repetitions on a shared runner, tested with Mann-Whitney "
+             "Wall times are medians over repetitions on a shared runner, with the Mann-Whitney U test "
+             "of Google Benchmark's compare.py over their benchmark's repetitions "
              f"(significant: p < {alpha:g} and more than {NOISE_FLOOR_PERCENT:g} % apart). "
              "The budget column judges the head.", "",
              "| figure | base | head | change | significance | budget |", "|---|---|---|---|---|---|"]
@@ -112,11 +116,12 @@ def main(argv):
             print("pr_table: --alpha needs a number", file=sys.stderr)
             return 2
         del args[i:i + 2]
-    if len(args) != 3:
+    if len(args) != 4:
         print(__doc__, file=sys.stderr)
         return 2
     base, head, budgets = load(args[0], "results"), load(args[1], "results"), load(args[2], "budgets")
-    sys.stdout.write(table(base, head, budgets, alpha))
+    comparison = load(args[3], "compare.py result")
+    sys.stdout.write(table(base, head, budgets, comparison, alpha))
     return 0
 
 

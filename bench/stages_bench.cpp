@@ -19,21 +19,16 @@
 #include "remove/removal.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
+#include "tetcut/percentile.hpp"
 
 namespace {
 
+using tetcut::percentile;
 using tetcut::TetId;
 using tetcut::Vec3;
 using Clock = std::chrono::steady_clock;
 
 constexpr const char* kCorpus[] = {"cylinder.msh", "sheet.msh", "liver-coarse.msh", "liver-refined.msh", "liver.msh"};
-
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size())));
-  return v[std::min(v.size() - 1, rank == 0 ? 0 : rank - 1)];
-}
 
 struct Bounds {
   Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};

@@ -2,7 +2,6 @@
 // are made of add up, the combined strategy removes everything, and the run is deterministic.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <string>
 
 #include "tetcut/stats/cautery_run.hpp"
@@ -95,13 +94,6 @@ TEST(CauteryRun, AnUnusableScenarioIsAnErrorNamingTheFile) {
   const CauteryResult r = run_cautery("/nonexistent/x.scn", {});
   EXPECT_FALSE(r.run.has_value());
   EXPECT_NE(r.error.find("/nonexistent/x.scn"), std::string::npos) << r.error;
-}
-
-TEST(Percentile, IsTheNearestRank) {
-  EXPECT_DOUBLE_EQ(percentile({5, 1, 3, 2, 4}, 0.5), 3);
-  EXPECT_DOUBLE_EQ(percentile({5, 1, 3, 2, 4}, 0.99), 5);
-  EXPECT_DOUBLE_EQ(percentile({7}, 0.0), 7);
-  EXPECT_TRUE(std::isnan(percentile({}, 0.5)));
 }
 
 }  // namespace

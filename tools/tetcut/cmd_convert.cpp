@@ -46,7 +46,7 @@ int cmd_convert(Args args, std::ostream& out, std::ostream& err) {
       "convert", "tetcut convert IN OUT [--format F] [--binary] [--compress zlib|lzma] [--reorient]",
       "Converts a mesh between the supported formats, chosen by file extension, and prints the\n"
       "canonical hash of the mesh (identical for IN and OUT when the round trip is faithful).\n"
-      "IN may be any format tetcut reads (ASCII, binary or compressed; see the README).\n"
+      "IN may be any format tetcut reads (ASCII, binary or compressed; see docs/usage.md).\n"
       "The output is written to a temporary file and renamed: a failure leaves no partial file.\n",
       "exit: 0, 2 unreadable input, unwritable output, a mesh --reorient cannot build, or bad usage");
   CLI::App& app = parser.app();

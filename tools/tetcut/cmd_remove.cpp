@@ -10,7 +10,9 @@
 // --random requests tets on the current boundary one at a time, as a cautery meets them; `all`
 // goes on until the mesh is empty (or only unresolved tets remain, with --strategy neighbours),
 // or 20 requests per initial tet: basic and combined refine, and a cautery that keeps meeting
-// the small tets they make can keep the mesh alive (`wide` hollows a mesh out).
+// the small tets they make can keep the mesh alive (`wide` hollows a mesh out). Both go through
+// Cutter::remove, as an integrator's code would; what a request exposed is read from its
+// ChangeLog (RequestExposure below).
 // --check every runs the local checker after every request and the full one at the end; end
 // (default) only the full one; none skips it. Exit 0, 1 if an invariant broke, 2 bad input.
 #include <optional>
@@ -26,6 +28,7 @@
 #include "mesh_input.hpp"
 #include "remove/removal.hpp"
 #include "tetcut/canonical_hash.hpp"
+#include "tetcut/change_log.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
@@ -74,6 +77,45 @@ void add_options(CLI::App& app, RemoveArgs& a) {
   opt::text(app, "-o", a.output, "the mesh after the removals", "OUT")->required();
   opt::text(app, "--report", a.report, "`summary` (the paper's statistics) and `details` as JSON", "R.json");
 }
+
+// The tets a removal request may have brought to the surface, from its ChangeLog alone (the
+// public API): the tets that shared a face with a removed tet, and the created tets on the
+// boundary. A removed tet's vertices are gone from the mesh, so the vertices of every tet are
+// mirrored here, updated from each ChangeLog in O(changed).
+class RequestExposure {
+ public:
+  explicit RequestExposure(const TetMesh& mesh) {
+    verts_.resize(mesh.tet_capacity());
+    for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i)
+      if (mesh.is_live(TetId{i})) verts_[i] = mesh.tet(TetId{i});
+  }
+
+  // After the request that wrote `log`: its exposed tets, in the order of the removed tets and
+  // their faces (face i opposite vertex i), then the created tets.
+  std::span<const TetId> after(const TetMesh& mesh, const ChangeLog& log) {
+    exposed_.clear();
+    for (TetId r : log.removed) {
+      const TetMesh::TetVerts& v = verts_[r.value];
+      for (int face = 0; face < 4; ++face) {
+        const VertId a = v[(face + 1) % 4], b = v[(face + 2) % 4], c = v[(face + 3) % 4];
+        if (!mesh.is_live(a)) continue;
+        mesh.vertex_shell(a, shell_);
+        for (TetId u : shell_)
+          if (mesh.local_index(u, b) >= 0 && mesh.local_index(u, c) >= 0) exposed_.push_back(u);
+      }
+    }
+    for (const CreatedTet& c : log.created) {
+      if (c.tet.value >= verts_.size()) verts_.resize(c.tet.value + c.tet.value / 4 + 16);
+      verts_[c.tet.value] = mesh.tet(c.tet);
+      if (mesh.boundary_face_count(c.tet) > 0) exposed_.push_back(c.tet);
+    }
+    return exposed_;
+  }
+
+ private:
+  std::vector<TetMesh::TetVerts> verts_;  // by tet id: its vertices while it was live
+  std::vector<TetId> exposed_, shell_;
+};
 
 Json report_json(const RemovalReport& s, RemovalStrategy strategy, std::uint64_t tets_left, const std::string& hash,
                  std::uint64_t points_outside, bool valid) {
@@ -159,39 +201,41 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
     if (!r.ok()) first_violation = co.operation + ": " + invariants::to_string(r);
   };
 
-  std::uint64_t points_outside = 0;
-  RemovalReport s;
+  CutParams params;
+  params.strategy = strategy;
+  Cutter cutter(mesh, params);
+  std::uint64_t points_outside = 0, refused = 0;
+  std::string first_refusal;
+  auto request = [&](std::uint64_t index, TetId t, ChangeLog* log) {
+    const CutReport r = cutter.remove(t, log);
+    if (!r.ok && refused++ == 0) first_refusal = "request " + std::to_string(index) + ": " + r.failure;
+    check_request(index, cutter.last_removed(), cutter.last_created());
+  };
   if (!points.empty()) {
-    CutParams params;
-    params.strategy = strategy;
-    Cutter cutter(mesh, params);
     for (std::size_t i = 0; i < points.size(); ++i) {
       const TetId t = cutter.tet_containing(points[i]);
       if (!t.valid()) {
         ++points_outside;
         continue;
       }
-      cutter.remove(t);
-      check_request(i, cutter.last_removed(), cutter.last_created());
+      request(i, t, nullptr);
     }
-    s = cutter.removal_report();
   } else {
-    // --random needs the tets each request exposed (Remover::last_exposed), which only the
-    // Remover knows; no point is located, so the Cutter has nothing to add.
-    Remover remover(RemovalOptions{.strategy = strategy});
     BoundaryTetPicker picker(mesh, *a.seed);
+    RequestExposure exposure(mesh);
+    ChangeLog log;
     // With `neighbours` an unresolved tet stays on the surface and may be met again; bound the
     // run so that `all` ends when only such tets remain.
     const std::uint64_t limit = random_count ? *random_count : 20ull * mesh.num_tets() + 100;
     for (std::uint64_t i = 0; i < limit; ++i) {
       const TetId t = picker.pick(mesh);
       if (!t.valid()) break;
-      remover.remove(mesh, t);
-      check_request(i, remover.last_removed(), remover.last_created());
-      picker.add(remover.last_exposed());
+      log.clear();
+      request(i, t, &log);
+      picker.add(exposure.after(mesh, log));
     }
-    s = remover.report();
   }
+  const RemovalReport& s = cutter.removal_report();
 
   bool valid = first_violation.empty();
   if (check_mode != scenario::CheckMode::kNone) {
@@ -207,6 +251,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
       << s.resolved_by_refinement << " by refinement, " << s.unresolved << " unresolved; mean cardinality "
       << s.mean_cardinality() << "; " << mesh.num_tets() << " tets left\n";
   if (points_outside) out << points_outside << " point(s) in no tet\n";
+  if (refused) out << refused << " request(s) refused and rolled back, the first " << first_refusal << "\n";
   out << "hash " << hash << "\n";
   if (!valid) out << "violated: " << first_violation << "\n";
 

@@ -1,5 +1,6 @@
 // `tetcut stats`: the paper's Tables 1 and 2 on our five meshes with its figures beside ours, the
 // strategy comparison, and the JSON and HTML reports (tools/stats).
+#include <filesystem>
 #include <ostream>
 
 #include "command.hpp"
@@ -39,7 +40,10 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
       "exit: 0 done, 1 a scenario failed a check or the combined or wide strategy left a tet unresolved,\n"
       "2 unusable corpus or bad usage");
   CLI::App& app = parser.app();
-  opt::text(app, "--corpus", corpus, "the corpus folder (default: corpus, as from the repository's root)", "DIR");
+  opt::text(app, "--corpus", corpus,
+            "the corpus folder (default: the corpus/ of the source tree tetcut was built from, " TETCUT_DEFAULT_CORPUS_DIR
+            ", whatever the working folder)",
+            "DIR");
   opt::text(app, "--mesh", mesh, "the strategy comparison's mesh (default liver-refined)", "NAME");
   opt::check_mode(app, check, "the local checker after every cut (default) or the full one at the end");
   opt::text(app, "--json", json,
@@ -57,7 +61,15 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   if (const auto code = parser.parse(args, out, err)) return *code;
 
   stats::StatsOptions options;
-  options.corpus_dir = corpus.value_or("corpus");
+  // Found from any working folder: the build records where its source tree's corpus is. The
+  // reports name it "corpus" as before, so that they read the same from wherever they were made.
+  options.corpus_dir = corpus.value_or(TETCUT_DEFAULT_CORPUS_DIR);
+  options.corpus_label = corpus.value_or("corpus");
+  if (!corpus && !std::filesystem::is_directory(options.corpus_dir)) {
+    err << "tetcut: no corpus at " << options.corpus_dir << " (the source tree this tetcut was built from): give "
+        << "the bundled corpus folder with --corpus DIR\n";
+    return kExitBadInput;
+  }
   options.comparison_mesh = mesh.value_or("liver-refined");
   bool known = false;
   for (const stats::PaperMesh& m : stats::paper_meshes()) known = known || options.comparison_mesh == m.name;

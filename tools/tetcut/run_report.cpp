@@ -1,25 +1,23 @@
 #include "run_report.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <ostream>
 
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/io.hpp"
+#include "tetcut/percentile.hpp"
 
 namespace tetcut::cli {
 
-double percentile_us(const std::vector<scenario::CutRecord>& cuts, double q) {
-  if (cuts.empty()) return 0.0;
+namespace {
+
+// Each cut's total time in microseconds, in scenario order: what the percentiles are taken of.
+std::vector<double> cut_times_us(const std::vector<scenario::CutRecord>& cuts) {
   std::vector<double> t;
   t.reserve(cuts.size());
   for (const auto& c : cuts) t.push_back(c.report.time.total_us);
-  std::sort(t.begin(), t.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(t.size())));
-  return t[std::min(t.size() - 1, rank == 0 ? 0 : rank - 1)];
+  return t;
 }
-
-namespace {
 
 Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
   const CutReport& r = c.report;
@@ -71,14 +69,15 @@ Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::st
   Json records = Json::array();
   for (std::size_t i = 0; i < cuts.size(); ++i) records.push_back(cut_record_json(i, cuts[i]));
   const Totals t = totals(cuts);
+  const std::vector<double> times = cut_times_us(cuts);
   // The first cut on its own (what a simulator feels when the tool first touches the tissue);
   // the percentiles are over every cut, the first included.
   Json summary = {{"cuts", cuts.size()},
                   {"first_us", cuts.empty() ? 0.0 : cuts.front().report.time.total_us},
-                  {"p50_us", percentile_us(cuts, 0.50)},
-                  {"p90_us", percentile_us(cuts, 0.90)},
-                  {"p99_us", percentile_us(cuts, 0.99)},
-                  {"max_us", percentile_us(cuts, 1.0)},
+                  {"p50_us", percentile(times, 0.50)},
+                  {"p90_us", percentile(times, 0.90)},
+                  {"p99_us", percentile(times, 0.99)},
+                  {"max_us", percentile(times, 1.0)},
                   {"tets_removed", t.removed},
                   {"tets_created", t.created},
                   {"unresolved", t.unresolved},
@@ -93,10 +92,12 @@ int report_run(const scenario::RunResult& r, const TetMesh& mesh, const RunOutpu
   const Totals t = totals(r.cuts);
   out << r.cuts.size() << " cuts: " << r.removals << " tets removed, " << t.created << " created, " << r.unresolved
       << " unresolved, " << mesh.num_tets() << " tets left\n";
-  if (!r.cuts.empty())
-    out << "per cut (all cuts): p50 " << percentile_us(r.cuts, 0.5) << " us, p90 " << percentile_us(r.cuts, 0.9)
-        << " us, p99 " << percentile_us(r.cuts, 0.99) << " us, max " << percentile_us(r.cuts, 1.0) << " us; first cut "
-        << r.cuts.front().report.time.total_us << " us\n";
+  if (!r.cuts.empty()) {
+    const std::vector<double> times = cut_times_us(r.cuts);
+    out << "per cut (all cuts): p50 " << percentile(times, 0.5) << " us, p90 " << percentile(times, 0.9) << " us, p99 "
+        << percentile(times, 0.99) << " us, max " << percentile(times, 1.0) << " us; first cut " << times.front()
+        << " us\n";
+  }
   if (r.exit_code == 2) return r.exit_code;  // unusable input: nothing worth writing
   // A stopped run leaves no hash in `r`: the mesh where it stopped has one all the same.
   const std::string hash = r.hash.empty() ? hash_to_hex(canonical_hash(mesh)) : r.hash;

@@ -15,9 +15,6 @@
 
 namespace tetcut::cli {
 
-// Nearest-rank percentile (q in [0, 1]) of the cuts' total times; 0 when there are none.
-double percentile_us(const std::vector<scenario::CutRecord>& cuts, double q);
-
 Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::string& hash, bool valid);
 
 struct RunOutputs {

@@ -3,6 +3,7 @@
 #include <array>
 #include <span>
 
+#include "tetcut/percentile.hpp"
 #include "tetcut/scenario/values.hpp"
 
 namespace tetcut::cli {
@@ -144,8 +145,8 @@ Json resection(const stats::ResectionStats& resection) {
               {"counts", removal_counts(run.result.removal)},
               {"quality_before", quality(run.quality_before)},
               {"quality_after", quality(run.quality_after)},
-              {"p50_us", stats::percentile(run.cut_us, 0.5)},
-              {"p99_us", stats::percentile(run.cut_us, 0.99)},
+              {"p50_us", percentile(run.cut_us, 0.5)},
+              {"p99_us", percentile(run.cut_us, 0.99)},
               {"cut_us", run.cut_us}};
 }
 

@@ -130,13 +130,14 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
   return result;
 }
 
-ParseResult parse_file(const std::string& path) {
+ParseResult parse_file(const std::string& path, const std::string& name) {
+  const std::string& shown = name.empty() ? path : name;
   std::ifstream in(path, std::ios::binary);
-  if (!in) return {std::nullopt, path + ":0: cannot open the scenario"};
+  if (!in) return {std::nullopt, shown + ":0: cannot open the scenario"};
   std::ostringstream text;
   text << in.rdbuf();
   const auto slash = path.find_last_of('/');
-  return parse(text.str(), path, slash == std::string::npos ? "." : path.substr(0, slash));
+  return parse(text.str(), shown, slash == std::string::npos ? "." : path.substr(0, slash));
 }
 
 std::string mesh_path_from(const std::string& mesh, const std::string& dir) {

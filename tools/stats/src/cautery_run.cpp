@@ -1,9 +1,5 @@
 #include "tetcut/stats/cautery_run.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
-
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
 
@@ -35,16 +31,9 @@ std::optional<TetMesh> initial_mesh(const scenario::Scenario& s, std::string& er
 
 }  // namespace
 
-double percentile(std::vector<double> values, double q) {
-  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(values.begin(), values.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
-  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
-}
-
-CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options) {
+CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options, const std::string& name) {
   CauteryResult out;
-  const scenario::ParseResult parsed = scenario::parse_file(scenario_path);
+  const scenario::ParseResult parsed = scenario::parse_file(scenario_path, name);
   if (!parsed.scenario) {
     out.error = parsed.error;
     return out;
@@ -53,7 +42,7 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   if (!before) return out;
 
   CauteryRun run;
-  run.scenario = scenario_path;
+  run.scenario = parsed.scenario->name;
   run.strategy = options.strategy;
   run.split = options.split;
   run.tets_before = before->num_tets();

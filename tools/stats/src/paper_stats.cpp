@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "tetcut/percentile.hpp"
+
 namespace tetcut::stats {
 
 const std::vector<PaperMesh>& paper_meshes() {
@@ -73,7 +75,11 @@ StrategyRow strategy_row(const std::string& name, const CauteryRun& run) {
 StatsResult compute_stats(const StatsOptions& options) {
   StatsResult out;
   StatsReport report;
-  const std::string corpus = options.corpus_dir + "/";
+  // Read from corpus_dir, named through corpus_label: the reports and their errors read the same
+  // wherever the corpus was found.
+  auto run_scenario = [&](const std::string& relative, const CauteryOptions& o) {
+    return run_cautery(options.corpus_dir + "/" + relative, o, options.corpus_label + "/" + relative);
+  };
   const PaperMesh* comparison = nullptr;
   for (const PaperMesh& m : paper_meshes())
     if (options.comparison_mesh == m.name) comparison = &m;
@@ -92,7 +98,7 @@ StatsResult compute_stats(const StatsOptions& options) {
                                                                             {&wide_options, &report.wide_meshes}};
   for (const PaperMesh& m : paper_meshes())
     for (const auto& [o, into] : runs) {
-      CauteryResult r = run_cautery(corpus + m.scenario, *o);
+      CauteryResult r = run_scenario(m.scenario, *o);
       if (!r.run) {
         out.error = r.error;
         return out;
@@ -121,7 +127,7 @@ StatsResult compute_stats(const StatsOptions& options) {
     o.max_growth = kComparisonMaxGrowth;
     o.strategy = v.strategy;
     o.split = v.split;
-    CauteryResult r = run_cautery(corpus + comparison->scenario, o);
+    CauteryResult r = run_scenario(comparison->scenario, o);
     if (!r.run) {
       out.error = r.error;
       return out;
@@ -132,13 +138,13 @@ StatsResult compute_stats(const StatsOptions& options) {
   if (options.resection) {
     CauteryOptions o = run_options;
     o.keep_meshes = true;
-    const std::string path = corpus + "scenarios/liver-resection.scn";
-    CauteryResult r = run_cautery(path, o);
+    CauteryResult r = run_scenario("scenarios/liver-resection.scn", o);
     if (!r.run) {
       out.error = r.error;
       return out;
     }
-    report.resection = ResectionStats{path, std::move(*r.run)};
+    std::string name = r.run->scenario;
+    report.resection = ResectionStats{std::move(name), std::move(*r.run)};
   }
   out.report = std::move(report);
   return out;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "tetcut/percentile.hpp"
 #include "tetcut/render/histogram_svg.hpp"
 #include "tetcut/render/line_plot_svg.hpp"
 #include "tetcut/render/surface.hpp"

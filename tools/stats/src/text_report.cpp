@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "tetcut/percentile.hpp"
+
 namespace tetcut::stats {
 
 std::string fixed(double value, int decimals) {

@@ -60,7 +60,9 @@ struct ParseResult {
 };
 
 ParseResult parse(const std::string& text, const std::string& name, const std::string& base_dir);
-ParseResult parse_file(const std::string& path);
+// `name` is what errors and reports call the scenario (default: `path`); its mesh lines are
+// read relative to the folder of `path` all the same.
+ParseResult parse_file(const std::string& path, const std::string& name = "");
 
 // How a scenario written in folder `dir` names the mesh at absolute path `mesh`: relative when
 // both lie in one tree (a checkout), so that the pair can move together; absolute otherwise.

@@ -15,7 +15,7 @@
 namespace tetcut::stats {
 
 struct CauteryRun {
-  std::string scenario;                // the file
+  std::string scenario;                // the file, as named
   RemovalStrategy strategy = RemovalStrategy::kCombined;
   SplitMethod split = SplitMethod::kTemplates;
   scenario::RunResult result;          // ok == false: it stopped early (result.error says why)
@@ -45,9 +45,8 @@ struct CauteryResult {
 // Runs the scenario file with the strategy and split method set before its own settings (so a
 // scenario that sets none is run as asked). A scenario that fails part-way still gives a run,
 // with result.ok false and the statistics up to the failure; only unusable input is an error.
-CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options);
-
-// Nearest-rank percentile (q in [0, 1]) of `values`; NaN when empty.
-double percentile(std::vector<double> values, double q);
+// `name` is what the run and its errors call the scenario (default: the path).
+CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options,
+                          const std::string& name = "");
 
 }  // namespace tetcut::stats

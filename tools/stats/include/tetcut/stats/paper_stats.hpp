@@ -73,7 +73,10 @@ struct ResectionStats {
 };
 
 struct StatsOptions {
-  std::string corpus_dir = "corpus";
+  std::string corpus_dir = "corpus";   // where the scenarios are read from
+  // What the reports call that folder (the resection's scenario is named through it): the
+  // corpus_dir a user gave, or "corpus" when the command line found the bundled one itself.
+  std::string corpus_label = "corpus";
   std::string comparison_mesh = "liver-refined";  // which paper mesh the strategies run on
   bool check_every_cut = true;
   bool resection = true;                // run the liver resection (needed for the pictures)

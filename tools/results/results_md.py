@@ -1,0 +1,379 @@
+#!/usr/bin/python3
+"""Writes docs/results.md: every measured figure of tetcut, from the outputs of the tools that
+measure them, never copied by hand. `ci/results` runs it on the CI machine; run that again and
+commit the page whenever the figures move.
+
+    results_md.py --bench RESULTS.json [--confirm RERUN.json]... --budgets BUDGETS.json
+                  --stats STATS.json [--build-dir DIR] [--how TEXT] [--out FILE]
+
+RESULTS.json is ci/bench's Google Benchmark JSON (merged across suites, the callgrind count
+included with --instructions), RERUN.json the re-runs ci/bench made of wall times over budget
+(the gate keeps the fastest run, and so does the page), BUDGETS.json bench/budgets.json,
+STATS.json `tetcut stats --json`'s output. --build-dir is the build the figures came from (its compiler and flags are
+named in the header), --how says how the benchmarks were run. Without --out the page goes to
+stdout.
+
+The page is a list of sections (SECTIONS at the end): each is one function from the inputs to
+its Markdown lines, or to None when its inputs are absent (then it is left out). To add figures,
+write one such function and add it to the list.
+"""
+import argparse
+import json
+import os
+import platform
+import re
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bench"))
+from budget_gate import Gate, markdown_table, measured_entry  # noqa: E402
+
+# The Debian packages whose code is built into, or runs inside, what is measured.
+LIBRARIES = ["libc6", "libstdc++6", "libtet1.5-dev", "libcgal-dev", "zlib1g-dev", "liblzma-dev",
+             "nlohmann-json3-dev", "libcli11-dev", "libbenchmark-dev", "valgrind"]
+
+
+class Inputs:
+    def __init__(self, bench, confirmations, budgets, stats, build_dir, how):
+        self.bench, self.confirmations, self.budgets, self.stats = bench, confirmations, budgets, stats
+        self.build_dir, self.how = build_dir, how
+
+    def median(self, benchmark):
+        """The entry the gate reads for a benchmark: its median over the repetitions, else its run."""
+        return measured_entry(self.bench, {"benchmark": benchmark}) if self.bench else None
+
+    def benchmarks(self, prefix):
+        """The names of the benchmarks that start with `prefix`, in the order they ran."""
+        names = []
+        for b in (self.bench or {}).get("benchmarks", []):
+            name = b.get("run_name", b.get("name"))
+            if name.startswith(prefix) and name not in names:
+                names.append(name)
+        return names
+
+
+# ---- formatting --------------------------------------------------------------------------------
+
+def fmt(value, decimals=1):
+    """A figure for a table: thousands separated, `decimals` after the point; "-" when absent."""
+    if value is None or (isinstance(value, float) and value != value):
+        return "-"
+    if decimals == 0:
+        return f"{round(value):,}"
+    return f"{value:,.{decimals}f}"
+
+
+def short(value):
+    """A figure whose size is not known in advance: 4 significant digits, or scientific when tiny."""
+    if value is None:
+        return "-"
+    if value != 0 and abs(value) < 1e-3:
+        return f"{value:.2g}"
+    return f"{value:,.4g}" if abs(value) < 1e4 else fmt(value, 0)
+
+
+def pair(ours, theirs, decimals=1):
+    return f"{fmt(ours, decimals)} / {fmt(theirs, decimals)}"
+
+
+def beside_paper(ours, paper, decimals=1):
+    """Ours / the paper's, the paper's figure with no more digits than the paper printed."""
+    if isinstance(paper, float):
+        printed = len(repr(paper).split(".")[1]) if "." in repr(paper) else 0
+        return f"{fmt(ours, decimals)} / {fmt(paper, max(1, min(decimals, printed)))}"
+    return pair(ours, paper, decimals)
+
+
+def table(header, rows, right_from=1):
+    """A Markdown table; the columns from `right_from` on are numbers, aligned right."""
+    lines = ["| " + " | ".join(header) + " |",
+             "|" + "|".join("---" if i < right_from else "---:" for i in range(len(header))) + "|"]
+    return lines + ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+
+
+def command_output(args):
+    try:
+        return subprocess.run(args, capture_output=True, text=True, check=False).stdout.strip()
+    except OSError:
+        return ""
+
+
+# ---- sections ----------------------------------------------------------------------------------
+
+def machine(inputs):
+    cpu = "unknown"
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as f:
+            cpu = next((line.split(":", 1)[1].strip() for line in f if line.startswith("model name")), cpu)
+    except OSError:
+        pass
+    context = (inputs.bench or {}).get("context", {})
+    cores = f"{os.cpu_count()}"
+    if context.get("num_cpus"):
+        cores += f" (Google Benchmark saw {context['num_cpus']}"
+        cores += f" at {context['mhz_per_cpu']} MHz)" if context.get("mhz_per_cpu") else ")"
+    caches = ", ".join(f"L{c['level']} {c['type'].lower()} {c['size'] // 1024} KiB"
+                       + (f" per {c['num_sharing']} CPUs" if c.get("num_sharing", 1) > 1 else "")
+                       for c in context.get("caches", []))
+    cache = {}
+    build = inputs.build_dir
+    if build and os.path.exists(os.path.join(build, "CMakeCache.txt")):
+        with open(os.path.join(build, "CMakeCache.txt"), encoding="utf-8") as f:
+            for line in f:
+                m = re.match(r"^([A-Za-z_]+):[A-Z]+=(.*)$", line.strip())
+                if m:
+                    cache[m.group(1)] = m.group(2)
+    compiler = cache.get("CMAKE_CXX_COMPILER", "c++")
+    build_type = cache.get("CMAKE_BUILD_TYPE", "")
+    flags = " ".join(f for f in (cache.get("CMAKE_CXX_FLAGS", ""), cache.get(f"CMAKE_CXX_FLAGS_{build_type.upper()}", ""))
+                     if f)
+    cmake = command_output([cache.get("CMAKE_COMMAND", "cmake"), "--version"]).splitlines()
+    packages = command_output(["dpkg-query", "-W", "-f", "${Package} ${Version}\\n"] + LIBRARIES).splitlines()
+    rows = [("CPU", cpu), ("cores", cores)]
+    if caches:
+        rows.append(("caches", caches))
+    if context.get("load_avg"):
+        rows.append(("load average", ", ".join(f"{x:.2f}" for x in context["load_avg"])
+                     + " (1, 5 and 15 minutes, as the first benchmark started)"))
+    version = command_output([compiler, "--version"]).splitlines()
+    rows += [("system", f"{platform.system()} {platform.release()}, {platform.machine()}"),
+             ("compiler", version[0] if version else compiler),
+             ("build", f"{build_type} {flags}".strip() + " (the project adds -ffp-contract=off)"),
+             ("CMake", cmake[0] if cmake else "unknown"),
+             ("libraries", ", ".join(packages) if packages else "unknown"),
+             ("benchmarks", benchmark_runs(inputs))]
+    return ["## Machine and toolchain", ""] + table(("", ""), rows, right_from=2)
+
+
+def benchmark_runs(inputs):
+    """How the benchmarks ran: the command, and the repetitions their medians are taken over."""
+    repetitions = max((b.get("repetitions", 1) for b in (inputs.bench or {}).get("benchmarks", [])), default=0)
+    how = f"`{inputs.how}`" if inputs.how else "ci/bench"
+    return f"{how}, medians over {repetitions} repetitions" if repetitions > 1 else how
+
+
+def budget_gate(inputs):
+    if not inputs.bench:
+        return None
+    gate = Gate(inputs.bench, inputs.budgets, inputs.confirmations, skip={"instructions_per_cut"})
+    return ["## The budget gate", "",
+            "Every figure of `bench/budgets.json`, as `ci/bench` gates it: the median over the repetitions, its "
+            "budget, and how far below the budget it is. A wall time over budget is run again, up to twice, and the "
+            "fastest run is kept (\"best of 3\"): load only slows a run down ([ci.md](ci.md)).", ""] + markdown_table(
+        gate.rows) + ["", gate.summary]
+
+
+def cut_sweeps(inputs):
+    names = inputs.benchmarks("BM_CutSweep/") + inputs.benchmarks("BM_CutSweepCorpus/")
+    if not names:
+        return None
+    rows = []
+    for name in names:
+        e = inputs.median(name)
+        level = re.match(r"BM_CutSweep/(\d+)", name)
+        times = {"0": "", "1": ", refined once", "2": ", refined twice"}
+        mesh = (f"bundled liver{times.get(level.group(1), ', refined ' + level.group(1) + ' times')}" if level
+                else e.get("label", name))
+        rows.append((f"{mesh} ({fmt(e.get('tets'), 0)} tets)" if e.get("tets") else mesh, fmt(e.get("cuts"), 0),
+                     fmt(e.get("p50_us")), fmt(e.get("p90_us")), fmt(e.get("p99_us")), fmt(e.get("max_us")),
+                     fmt(e.get("first_us")), fmt(e.get("tets_removed_per_cut")), fmt(e.get("tets_created_per_cut")),
+                     fmt(e.get("allocations"), 0), fmt(e.get("unresolved"), 0)))
+    same_work = inputs.median("BM_CutScalingSameWork/iterations:1")
+    lines = ["## Per-cut latency", "",
+             "Cautery sweeps with every cut timed (`bench/cut_bench.cpp`: the gated sweep through the bundled liver "
+             "and the same paths through the refined livers; `bench/stages_bench.cpp`: a sweep along each bundled "
+             "mesh). Percentiles are nearest-rank over every cut, the first included, in microseconds; `first` is "
+             "the first cut with the caches emptied before it; allocations are counted over the whole sweep.", ""]
+    lines += table(("sweep", "cuts", "p50", "p90", "p99", "max", "first", "removed / cut", "created / cut",
+                    "allocations", "unresolved"), rows)
+    if same_work and "p50_ratio_1M_over_16k" in same_work:
+        lines += ["", f"The same work on 64 copies of the liver against one: p50 ratio "
+                      f"{same_work['p50_ratio_1M_over_16k']:.2f}, p99 ratio {same_work.get('p99_ratio_1M_over_16k', 0):.2f} "
+                      f"({fmt(same_work.get('tets_large'), 0)} tets against the liver's)."]
+    return lines
+
+
+def removal_requests(inputs):
+    names = inputs.benchmarks("BM_RemovalByStrategy/")
+    if not names:
+        return None
+    rows = []
+    for name in names:
+        e = inputs.median(name)
+        rows.append((e.get("label", name), fmt(e.get("p50_us"), 2), fmt(e.get("p99_us")), fmt(e.get("max_us")),
+                     fmt(e.get("mean_cardinality"), 2), fmt(e.get("refinements"), 0), fmt(e.get("fallbacks"), 0),
+                     fmt(e.get("attempts_undone"), 0), fmt(e.get("unresolved"), 0)))
+    return ["## Removal requests by strategy", "",
+            "2,000 requests for a tet on the current surface, one at a time as a cautery meets them "
+            "(`BM_RemovalByStrategy`), each timed, in microseconds; the refinements and fallbacks are "
+            "the requests in the tail.", ""] + table(
+        ("strategy and mesh", "p50", "p99", "max", "mean cardinality", "refinements", "fallbacks", "attempts undone",
+         "unresolved"), rows)
+
+
+def instructions(inputs):
+    e = inputs.median("instructions_per_cut")
+    if not e:
+        return None
+    figure = next((f for f in inputs.budgets.get("figures", []) if f.get("benchmark") == "instructions_per_cut"), {})
+    lines = ["## Instructions per cut", "",
+             f"callgrind over every cut of the fixed liver sweep (`bench/cut_instructions.cpp`, `ci/bench "
+             f"--instructions`): {fmt(e['instructions_per_cut'], 0)} instructions per cut ({fmt(e.get('instructions'), 0)} "
+             f"in {fmt(e.get('cuts'), 0)} cuts). Deterministic for one toolchain, whatever the machine's load."]
+    if figure:
+        lines += ["", f"Baseline in `bench/budgets.json`: {fmt(figure.get('baseline'), 0)}, gated at "
+                      f"+{figure.get('tolerance_pct', 3):g} % ({fmt(figure.get('max'), 0)})."]
+    if e.get("toolchain"):
+        lines += ["", f"Toolchain of the count: {e['toolchain']}"]
+    return lines
+
+
+def paper_table1(inputs):
+    rows = (inputs.stats or {}).get("table1")
+    if not rows:
+        return None
+    body = [(f"{r['paper_mesh']} {r['mesh']}", fmt(r["tets"], 0), fmt(r["cuts"], 0),
+             beside_paper(r["operations"], r["paper"]["operations"], 0),
+             beside_paper(r["removable_pct"], r["paper"]["removable_pct"]),
+             beside_paper(r["vertex_pct"], r["paper"]["vertex_pct"]), beside_paper(r["edge_pct"], r["paper"]["edge_pct"]))
+            for r in rows]
+    return ["## The paper's Table 1 beside ours", "",
+            "`tetcut stats`: each mesh cut by its cautery scenario (`corpus/scenarios/paper/`) with the combined "
+            "strategy. Removing a tet on the surface: % removable directly, % that would make a vertex singular, "
+            "% an edge. Each cell is ours / the paper's.", ""] + table(
+        ("mesh", "tets", "cuts", "operations", "% removable", "% vertices", "% edges"), body)
+
+
+def paper_table2(inputs):
+    rows = (inputs.stats or {}).get("table2")
+    if not rows:
+        return None
+    keys = ("vertex_unresolved_pct", "vertex_cardinality", "edge_unresolved_pct", "edge_cardinality",
+            "global_unresolved_pct", "global_cardinality_per_selected")
+    body = [(f"{r['paper_mesh']} {r['mesh']}",) + tuple(
+        beside_paper(r.get(k), r["paper"].get(k), 2 if k == "global_cardinality_per_selected" else 1) for k in keys)
+        + (fmt(r.get("global_cardinality_per_request"), 2), fmt(r.get("combined_unresolved_pct")))
+        for r in rows]
+    return ["## Table 2: the paper's neighbour search", "",
+            "The neighbour strategy (paper 3.5): % of singularities it did not resolve and the mean number of tets "
+            "it removed when it did. Global: over all operations, direct removals counting 1, tets removed per "
+            "selected tet; per request (ours only): a set that swallows other selected tets counted once. Ours / "
+            "the paper's; the last column is what the combined strategy left.", ""] + table(
+        ("mesh", "vertex: % unresolved", "vertex: cardinality", "edge: % unresolved", "edge: cardinality",
+         "global: % unresolved", "global: cardinality", "per request", "combined: % unresolved"), body)
+
+
+def paper_table2_wide(inputs):
+    wide, paper = (inputs.stats or {}).get("table2_wide"), (inputs.stats or {}).get("table2")
+    if not wide or not paper:
+        return None
+    ours = {r["mesh"]: r for r in paper}
+    keys = ("vertex_unresolved_pct", "vertex_cardinality", "edge_unresolved_pct", "edge_cardinality")
+    body = [(f"{r['paper_mesh']} {r['mesh']}",) + tuple(pair(r.get(k), ours[r["mesh"]].get(k)) for k in keys)
+            + (pair(r.get("global_cardinality_per_selected"), ours[r["mesh"]].get("global_cardinality_per_selected"), 2),
+               fmt(r.get("wide_unresolved_pct"))) for r in wide]
+    return ["## Table 2, our wider search", "",
+            "Strategy `wide` (not the paper's: whole vertex shells as candidates, rounds of repairs, smallest set "
+            "first) in place of 3.5 on the same scenarios: each cell is wide / the paper's search (ours, from "
+            "Table 2).", ""] + table(
+        ("mesh", "vertex: % unresolved", "vertex: cardinality", "edge: % unresolved", "edge: cardinality",
+         "global: cardinality", "wide: % unresolved"), body)
+
+
+def strategies(inputs):
+    rows = (inputs.stats or {}).get("strategies")
+    if not rows:
+        return None
+    full = max(r["cuts"] for r in rows)
+    stops = []
+    body = []
+    for r in rows:
+        cuts = fmt(r["cuts"], 0)
+        if not r.get("ok", True):
+            stops.append(r.get("error", ""))
+            cuts = f"{cuts} of {fmt(full, 0)} *"
+        body.append((r["name"], cuts, fmt(r["requests"], 0), fmt(r["tets_created"], 0), fmt(r["removed_per_request"], 2),
+                     fmt(r["unresolved"], 0), fmt(r["tets_after"], 0),
+                     f"{short(r['worst_created_radius_ratio'])} / {r['mean_radius_ratio']:.3f}",
+                     f"{short(r['p50_us'])} / {short(r['p99_us'])}"))
+    mesh = rows[0].get("mesh", "")
+    lines = [f"## Strategies on the {mesh} scenario", "",
+             "Every strategy on one paper scenario (`tetcut stats --mesh` picks another), with our split templates "
+             "and with sequential bisection. Quality is the radius ratio: the worst tet the cuts created, and the "
+             "mean of the mesh after; times per cut in microseconds.", ""]
+    lines += table(("strategy", "cuts", "requests", "tets created", "removed / request", "unresolved", "tets after",
+                    "worst created / mean after", "p50 / p99 per cut"), body)
+    if stops:
+        reason = re.sub(r"^\S+:\d+: ", "", stops[0])
+        lines += ["", f"\\* stopped early: {reason} (the comparison stops a run when its mesh passes twice its "
+                      "initial size)."]
+    return lines
+
+
+def resection(inputs):
+    r = (inputs.stats or {}).get("resection")
+    if not r:
+        return None
+    before, after = r.get("quality_before", {}), r.get("quality_after", {})
+    return ["## The liver resection", "",
+            f"`{r['scenario']}` with the combined strategy: {fmt(r['cuts'], 0)} cuts, {fmt(r['tets_before'], 0)} tets "
+            f"before and {fmt(r['tets_after'], 0)} after, per cut p50 {short(r.get('p50_us'))} us and p99 "
+            f"{short(r.get('p99_us'))} us; radius ratio worst {short(before.get('min_radius_ratio'))} before, "
+            f"{short(after.get('min_radius_ratio'))} after, mean {fmt(before.get('mean_radius_ratio'), 3)} before, "
+            f"{fmt(after.get('mean_radius_ratio'), 3)} after. `tetcut stats --html` draws it."]
+
+
+SECTIONS = [machine, budget_gate, cut_sweeps, removal_requests, instructions, paper_table1, paper_table2,
+            paper_table2_wide, strategies, resection]
+
+
+def page(inputs):
+    lines = ["# Results", "",
+             "<!-- Generated by ci/results (tools/results/results_md.py): do not edit; run ci/results again. -->", "",
+             "Every figure tetcut measures, generated by `ci/results` from `tetcut stats --json` and `ci/bench`'s "
+             "Google Benchmark JSON on the machine named below. Times depend on that machine and its load; counts, "
+             "the paper's tables and instruction counts do not. Why the figures are what they are: "
+             "[performance.md](performance.md) and [paper.md](paper.md)."]
+    for section in SECTIONS:
+        body = section(inputs)
+        if body:
+            lines += [""] + body
+    return "\n".join(lines) + "\n"
+
+
+def load(path, what):
+    if not path:
+        return None
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        sys.exit(f"results_md: cannot read {what} {path}: {e}")
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description="Writes docs/results.md from measured outputs.")
+    parser.add_argument("--bench", help="ci/bench's results JSON")
+    parser.add_argument("--confirm", action="append", default=[], help="ci/bench's re-runs of wall times over budget")
+    parser.add_argument("--budgets", required=True, help="bench/budgets.json")
+    parser.add_argument("--stats", help="tetcut stats --json output")
+    parser.add_argument("--build-dir", help="the build the figures came from")
+    parser.add_argument("--how", help="how the benchmarks were run")
+    parser.add_argument("--out", help="the page (default: stdout)")
+    args = parser.parse_args(argv[1:])
+    inputs = Inputs(load(args.bench, "benchmark results"), [load(c, "re-run results") for c in args.confirm],
+                    load(args.budgets, "budgets"),
+                    load(args.stats, "tetcut stats output"), args.build_dir, args.how)
+    text = page(inputs)
+    if not args.out:
+        sys.stdout.write(text)
+        return 0
+    tmp = args.out + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write(text)
+    os.replace(tmp, args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
