@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "bench_meshes.hpp"
+#include "gated_sweep.hpp"
 #include "refine/edge_split.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/detail/local_tables.hpp"
@@ -89,14 +90,6 @@ const tetcut::TetMesh& replicated_liver() {
   return mesh;
 }
 
-// Tool centres: passes across the organ in the plane x = 95 mm, every 4 mm, at 7 heights.
-std::vector<tetcut::Vec3> sweep_centres() {
-  std::vector<tetcut::Vec3> c;
-  for (double z = 60; z <= 150; z += 15)
-    for (double y = 40; y <= 180; y += 4) c.push_back({95, y, z});
-  return c;
-}
-
 struct SweepResult {
   std::vector<double> samples_us;  // every cut, the first included
   std::vector<double> first_us;    // the first cut of each sweep
@@ -124,9 +117,9 @@ void evict_caches() {
 void run_sweep(int level, SweepResult& out) {
   const tetcut::TetMesh& base = level >= 0 ? liver_at(level) : replicated_liver();
   level = std::max(level, 0);
-  static const std::vector<tetcut::Vec3> centres = sweep_centres();
+  static const std::vector<tetcut::Vec3> centres = tetcut::bench::gated_sweep_centres();
   tetcut::TetMesh mesh = base;
-  tetcut::Cutter cutter(mesh, {.tool_diameter = 8.0 / (1 << level)});
+  tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter / (1 << level)});
   evict_caches();
   for (std::size_t i = 0; i < centres.size(); ++i) {
     const std::uint64_t before = g_allocations.load(std::memory_order_relaxed);

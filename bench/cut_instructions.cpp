@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "bench_meshes.hpp"
+#include "gated_sweep.hpp"
 #include "tetcut/cut.hpp"
 #include "toolchain.hpp"
 
@@ -23,10 +24,8 @@ namespace {
 
 int main() {
   tetcut::TetMesh mesh = tetcut::bench::corpus_mesh("liver.msh");
-  std::vector<tetcut::Vec3> centres;
-  for (double z = 60; z <= 150; z += 15)
-    for (double y = 40; y <= 180; y += 4) centres.push_back({95, y, z});
-  tetcut::Cutter cutter(mesh, {.tool_diameter = 8.0});
+  const std::vector<tetcut::Vec3> centres = tetcut::bench::gated_sweep_centres();
+  tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter});
   const std::uint64_t removed = measured_cuts(cutter, centres);
   std::printf("measured_cuts %zu removed %llu\n", centres.size(), static_cast<unsigned long long>(removed));
   std::printf("toolchain %s\n", TETCUT_TOOLCHAIN);
