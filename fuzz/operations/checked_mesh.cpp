@@ -35,17 +35,18 @@ void CheckedMesh::begin(std::string name) {
   arguments_.clear();
 }
 
-void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change) {
+void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change, inv::QualityRule rule) {
   created_.clear();
   for (const CreatedTet& c : log.created) created_.push_back(c.tet);
-  end(log.removed, created_, volume_change);
+  end(log.removed, created_, volume_change, rule);
 }
 
 void CheckedMesh::end(std::span<const TetId> removed, std::span<const TetId> created,
-                      std::optional<double> volume_change) {
+                      std::optional<double> volume_change, inv::QualityRule rule) {
   if (volume_change) expected_volume_ += *volume_change;
   inv::CheckOptions options;
   options.level = inv::CheckLevel::kLocal;
+  options.quality_rule = rule;
   options.operation = name_;
   if (tracing_) trace(removed.size(), created.size());
   report(local_->after_operation(mesh_.raw_view(), removed, created, options, volume_change), "local");

@@ -44,8 +44,12 @@ class CheckedMesh {
   void describe(const std::string& arguments);
   // Ends it: the local check of the net change recorded in `log` (TetMesh::commit's). `volume_change` is the
   // operation's expected change of the total volume (0 for splits; nullopt: not checked).
-  void end(const ChangeLog& log, std::optional<double> volume_change);
-  void end(std::span<const TetId> removed, std::span<const TetId> created, std::optional<double> volume_change);
+  // `rule`: a Cutter transaction is judged by I7's no-degradation rule; a raw operation (a split,
+  // a refinement loop) only reports quality (invariants/check.hpp, QualityRule).
+  void end(const ChangeLog& log, std::optional<double> volume_change,
+           invariants::QualityRule rule = invariants::QualityRule::kNoDegradation);
+  void end(std::span<const TetId> removed, std::span<const TetId> created, std::optional<double> volume_change,
+           invariants::QualityRule rule = invariants::QualityRule::kNoDegradation);
   // Ends an operation that renumbered everything (compact()): the local checker starts over and
   // the full check runs.
   void end_renumbered();

@@ -125,7 +125,7 @@ void split(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input, Split
   if (!result.ok())
     checked.require(mesh.num_tets() == tets_before && ws.log.created.empty(), "refused-split",
                     std::string("refused (") + to_string(result.refusal) + ") but changed the mesh");
-  checked.end(ws.log, 0.0);
+  checked.end(ws.log, 0.0, invariants::QualityRule::kReportOnly);  // a raw split: no improvement pass
   check_created_vertices(checked, ws.log, true);
 }
 
@@ -152,7 +152,7 @@ void refine(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input) {
   mesh.begin_transaction();
   if (mesh.num_tets() <= kMaxTetsToRefine) ws.refiner.refine(mesh, ws.tets, params, ws.region);
   mesh.commit(&ws.log);
-  checked.end(ws.log, 0.0);
+  checked.end(ws.log, 0.0, invariants::QualityRule::kReportOnly);  // a raw refinement loop
   check_created_vertices(checked, ws.log, false);
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "engine_records.hpp"
+#include "no_degradation.hpp"
 #include "report_builder.hpp"
 #include "tet_checks.hpp"
 #include "tetcut/invariants/check.hpp"
@@ -31,6 +32,7 @@ bool references_in_range(const RawTet& q, std::size_t vertex_count) {
 
 struct LocalChecker::Scratch {
   detail::VertexLinkChecker link;
+  detail::NoDegradationCheck no_degradation;
   std::vector<std::uint32_t> touched;
 };
 
@@ -106,6 +108,9 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
   };
 
   // Removed tets leave the index; their old vertices are remembered from it, not from the mesh.
+  detail::NoDegradationCheck& no_degradation = scratch_->no_degradation;
+  no_degradation.begin();
+  const bool judge_quality = options.quality_rule == QualityRule::kNoDegradation;
   detail::VolumeSum removed_volume;
   double removed_abs = 0.0;
   double rounding = 0.0;  // what rounding alone can put into the volume change
@@ -113,6 +118,17 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
     if (t >= known_tets_.size() || known_tets_[t][0] == kDeadTetMarker) {
       misreported(t, "removing", "which was not live");
       continue;
+    }
+    if (references_in_range(known_tets_[t], positions.size())) {
+      // Vertices that were there before an operation never move (only the ones it made may):
+      // the tet's volume now, from the same positions, is bit for bit the one remembered.
+      const double now = detail::tet_volume(known_tets_[t], positions);
+      if (now != known_volume_[t])
+        report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
+          return "a vertex of removed tet " + str(t) + " moved: its volume was " + detail::num(known_volume_[t]) +
+                 " and is " + detail::num(now);
+        });
+      if (judge_quality) no_degradation.add_removed(t, known_tets_[t]);
     }
     for (std::uint32_t v : known_tets_[t]) {
       if (v >= vertex_to_tets_.size()) continue;
@@ -154,7 +170,8 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
       list.push_back(t);
       touch(v);
     }
-    geometry.check(t, q, positions);
+    const double ratio = geometry.check(t, q, positions);
+    if (judge_quality) no_degradation.add_created(t, q, ratio);
     known_volume_[t] = detail::tet_volume(q, positions);
     known_rounding_[t] = detail::tet_volume_rounding_bound(q, positions);
     created_volume.add(known_volume_[t]);
@@ -205,6 +222,8 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
     detail::check_volume(change, *expected_volume_change, std::max(removed_abs, created_abs),
                          options.volume_rel_tolerance, "the volume change of the operation", report, rounding);
   }
+
+  if (judge_quality) no_degradation.finish(positions, options.quality_floor, report);
 
   geometry.finish(out);
   out.volume = change;

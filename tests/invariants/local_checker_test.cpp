@@ -28,6 +28,29 @@ std::vector<TetId> split_at_centroid(TetMesh& mesh, TetId t) {
   return created;
 }
 
+// I7 judges a split at the centroid like any transaction: the children are worse than their
+// parent, so with F = 1 (the floor is then the parent's own ratio) each is a violation naming the
+// tet it replaces; with F below every child's ratio, nothing is.
+TEST(LocalChecker, I7ACreatedTetWorseThanWhatItReplacedIsNamedWithItsHost) {
+  auto check = [](double floor) {
+    TetMesh mesh = build_or_fail(make_box_mesh(2, 2, 2));
+    LocalChecker local(mesh.raw_view());
+    const TetId t{17};
+    const std::vector<TetId> created = split_at_centroid(mesh, t);
+    const TetId removed[] = {t};
+    return local.after_operation(mesh.raw_view(), removed, created, {.quality_floor = floor}, 0.0);
+  };
+  const CheckReport strict = check(1.0);
+  const Violation* v = strict.find(Invariant::kI7Quality);
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->count, 4u);
+  EXPECT_NE(v->detail.find("replaces 17 ("), std::string::npos) << v->detail;
+  EXPECT_TRUE(check(0.05).ok()) << to_string(check(0.05));
+}
+
+// A raw split is reported, not judged by I7's no-degradation rule (a Cutter transaction's).
+const CheckOptions kRawSplit{.quality_rule = QualityRule::kReportOnly};
+
 TEST(LocalChecker, AValidSplitPassesAndKeepsTheVolume) {
   TetMesh mesh = build_or_fail(make_box_mesh(2, 2, 2));
   LocalChecker local(mesh.raw_view());
@@ -36,7 +59,7 @@ TEST(LocalChecker, AValidSplitPassesAndKeepsTheVolume) {
   const std::vector<TetId> created = split_at_centroid(mesh, t);
   ASSERT_EQ(created.size(), 4u);
   const TetId removed[] = {t};
-  const CheckReport report = local.after_operation(mesh.raw_view(), removed, created, {}, 0.0);
+  const CheckReport report = local.after_operation(mesh.raw_view(), removed, created, kRawSplit, 0.0);
   EXPECT_TRUE(report.ok()) << to_string(report);
   EXPECT_NEAR(report.volume, 0.0, 1e-15);
   EXPECT_EQ(report.quality.tets, 4u);
@@ -51,7 +74,7 @@ TEST(LocalChecker, I9AWrongVolumeChangeIsNamed) {
   const TetId t{3};
   const std::vector<TetId> created = split_at_centroid(mesh, t);
   const TetId removed[] = {t};
-  const CheckReport report = local.after_operation(mesh.raw_view(), removed, created, {}, -1e-3);
+  const CheckReport report = local.after_operation(mesh.raw_view(), removed, created, kRawSplit, -1e-3);
   EXPECT_EQ(names(report), "I9") << to_string(report);
 }
 
@@ -165,7 +188,7 @@ TEST(LocalChecker, AgreesWithTheFullCheckOnRandomSplits) {
     const TetId t = live[rng.below(static_cast<std::uint32_t>(live.size()))];
     const std::vector<TetId> created = split_at_centroid(mesh, t);
     const TetId removed[] = {t};
-    const CheckReport local_report = local.after_operation(mesh.raw_view(), removed, created, {}, 0.0);
+    const CheckReport local_report = local.after_operation(mesh.raw_view(), removed, created, kRawSplit, 0.0);
     ASSERT_TRUE(local_report.ok()) << "step " << step << ": " << to_string(local_report);
     const CheckReport full_report = check_mesh(mesh.raw_view());
     ASSERT_TRUE(full_report.ok()) << "step " << step << ": " << to_string(full_report);

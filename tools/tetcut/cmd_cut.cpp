@@ -23,7 +23,8 @@ constexpr double kMaxCuts = 100000;
 
 struct CutArgs {
   std::optional<std::string> mesh, frames;
-  std::optional<double> diameter, step, dref_factor, p;
+  std::optional<double> diameter, step, dref_factor, p, quality_floor;
+  bool no_improve = false;
   std::optional<Vec3> from, to;
   std::optional<std::uint64_t> depth;
   std::optional<RemovalStrategy> strategy;
@@ -43,6 +44,9 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::number(app, "--dref-factor", a.dref_factor, "D_ref = F x diameter (paper 3.2; default 1.5)", "F");
   opt::number(app, "--p", a.p, "shell edge ratio of the refinement loop (paper 3.2; default 1.5)", "P");
   opt::count(app, "--depth", a.depth, "neighbour search depth (paper 3.5; default 10, at most 64)");
+  opt::flag(app, "--no-improve", a.no_improve, "no improvement pass after each cut: the paper's algorithm alone");
+  opt::number(app, "--quality-floor", a.quality_floor,
+              "the radius ratio the improvement pass lifts created tets to (I7's F; default 0.1)", "F");
   opt::check_mode(app, a.check, "the local check after every cut (default), the full one at the end, or none");
   opt::text(app, "--out", a.outputs.mesh_path, "the final mesh", "M");
   opt::text(app, "--report", a.outputs.report_path,
@@ -59,6 +63,8 @@ std::optional<std::string> cut_params(const CutArgs& a, CutParams& params) {
   if (a.split) params.split_method = *a.split;
   if (a.dref_factor) params.d_ref_factor = *a.dref_factor;
   if (a.p) params.p = *a.p;
+  if (a.quality_floor) params.quality_floor = *a.quality_floor;
+  params.improve = !a.no_improve;
   if (a.depth) {
     if (*a.depth > 64) return "--depth: at most 64";
     params.search_depth = static_cast<std::uint32_t>(*a.depth);
@@ -75,6 +81,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CommandParser parser(
       "cut",
       "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--split M] "
+      "[--no-improve] [--quality-floor F] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
       "each cut refined then removed without breaking the manifold (paper 3.1-3.7). The sweep is\n"

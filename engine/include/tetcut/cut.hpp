@@ -12,10 +12,15 @@
 //            and again. When a strategy refines a selected tet, its pieces that pass the same
 //            test join T_removal; pieces of a kept tet stay kept (selection is decided once,
 //            on the refined region). Every selected tet is removed or counted unresolved.
+//   improve  flips, collapses, smoothing of the cut's own vertices (improve/improver.hpp) until
+//            every tet the cut made reaches min(quality_floor, the worst tet it replaced): the
+//            floor the invariant checker holds every cut to (I7). A sliver at the cut's surface
+//            that nothing lifts goes with the tissue.
 //
 // Atomic: the whole cut runs in a mesh transaction; if it cannot complete (a split refused
-// for degeneracy, the per-cut tet budget exceeded) it is rolled back, the mesh is bit-identical
-// to before, and the report says why. A tet left unresolved by the `neighbours` strategy is
+// for degeneracy, the per-cut tet budget exceeded, a created tet the improvement pass cannot lift
+// to the quality floor) it is rolled back, the mesh is bit-identical to before, and the report
+// says why. A tet left unresolved by the `neighbours` strategy is
 // not a failure: the mesh is valid, the report counts it.
 //
 // The budget counts net tets created: tets the cut made that are still there at its end (an
@@ -49,13 +54,19 @@ struct CutParams {
   std::uint32_t max_tets_created = 20000;  // net tets a cut may create; more is refused, in < 50 ms on the liver
   RemovalStrategy strategy = RemovalStrategy::kCombined;   // cut_strategies.hpp
   SplitMethod split_method = SplitMethod::kTemplates;
+  // The improvement pass that ends a cut or a removal request (flips, smoothing of the cut's own
+  // vertices): it lifts every tet the cut made to min(quality_floor, the worst tet it replaced),
+  // the floor the invariant checker holds every transaction to (I7). Off: the paper's algorithm
+  // alone, as its tables measure it.
+  bool improve = true;
+  double quality_floor = 0.1;  // F, a radius ratio in [0, 1]
 };
 
 // A message naming the parameter when one is non-finite, non-positive or out of range.
 std::optional<std::string> validate(const CutParams& params);
 
 struct CutTimings {
-  double locate_us = 0, refine_us = 0, select_us = 0, remove_us = 0, total_us = 0;
+  double locate_us = 0, refine_us = 0, select_us = 0, remove_us = 0, improve_us = 0, total_us = 0;
 };
 
 struct CutReport {
@@ -73,7 +84,12 @@ struct CutReport {
   // unresolved: requests of this cut left in place (a tet left twice counts twice; the
   // removal_report() counts distinct tets, as the paper's tables do).
   std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_fallback = 0, unresolved = 0;
-  double min_radius_ratio = 1.0;     // worst tet created (1 when none)
+  double min_radius_ratio = 1.0;     // worst tet created (1 when none), after the improvement pass
+  double min_radius_ratio_before_improvement = 1.0;
+  double quality_floor = 1.0;        // min(F, worst tet replaced): what every created tet must reach
+                                     // (F when every created tet is above it)
+  bool quality_met = true;           // every created tet reaches it
+  std::uint32_t improvement_flips = 0, improvement_collapses = 0, improvement_moves = 0;
   CutTimings time;
 };
 

@@ -150,7 +150,10 @@ class TetMesh {
   // input vertices do not move). Its origin becomes barycentric coordinates in the tet that was
   // there before the transaction and contains its new position, and its attribute channels
   // are interpolated from them, so a consumer still sees one convex combination of old values.
-  void move_vertex(VertId v, const Vec3& p);
+  // The tets around it are made anew (new ids appended to `created`), each with all of them as
+  // parents: moving v reshapes its star within the same polytope, so every tet of it lies in
+  // the star's old tets, not in its own parent alone.
+  void move_vertex(VertId v, const Vec3& p, std::vector<TetId>* created = nullptr);
 
   // The one local mutation primitive: removes `removed` and inserts `added`, gluing the new tets
   // to each other and to the faces the removed ones shared with the rest of the mesh (matched by
@@ -254,6 +257,11 @@ class TetMesh {
     return static_cast<std::uint32_t>(journal_.tet_births.size()) - point.tet_births -
            (journal_.births_removed - point.births_removed);
   }
+  // The tets live at begin_transaction() that tet t descends from (t itself if it was live
+  // then), appended sorted: what the ChangeLog names as its parents.
+  void ancestors_at_start(TetId t, std::vector<TetId>& out);
+  // The vertices tet t had at begin_transaction() (t live then, dead or alive now).
+  [[nodiscard]] TetVerts tet_at_start(TetId t);
   // True when the open transaction made t (t live or not).
   [[nodiscard]] bool made_in_transaction(TetId t) const { return journal_.birth_of.contains(t); }
   [[nodiscard]] bool made_in_transaction(VertId v) const { return journal_.vertex_birth_of.contains(v); }
@@ -375,17 +383,13 @@ class TetMesh {
     std::size_t first_verts_indexed = 0;
   };
   void note(Array array, std::uint32_t index);
-  // The vertices tet t had at begin_transaction() (t live then).
-  [[nodiscard]] TetVerts tet_at_start(TetId t);
-  // The tets live at begin_transaction() that tet t descends from (t itself if it was live
-  // then), appended sorted.
-  void ancestors_at_start(TetId t, std::vector<TetId>& out);
   // Origins of vertices made in the transaction (ChangeLog::vertices): composed along the edges
   // they were put on, or located in an old tet (mesh_journal.cpp).
   void compose_origin(VertId a, VertId b, double t, CreatedVertex& out) const;
   void locate_origin(VertId v, CreatedVertex& out);
   void append_change_log(ChangeLog& log);
-  std::vector<TetId> ancestor_stack_, locate_scratch_, net_removed_scratch_, net_created_scratch_;
+  std::vector<TetId> ancestor_stack_, locate_scratch_, net_removed_scratch_, net_created_scratch_, move_star_;
+  std::vector<TetVerts> move_tets_;
   StampedSet<TetId> ancestor_seen_;
   StampedSet<VertId> vertex_seen_;
   Journal journal_;

@@ -243,8 +243,8 @@ void TetMesh::ancestors_at_start(TetId t, std::vector<TetId>& out) {
 }
 
 // Barycentric coordinates of v's position in a tet live at begin_transaction() that contains it:
-// among the ancestors of a tet around v (they cover it, and so v), the one where v is deepest
-// inside. Coordinates within rounding of 0 are dropped. For a vertex move_vertex() moved, or one
+// among the ancestors of a tet around v (every tet lies in its ancestors, move_vertex() sees to it
+// for the tets it reshapes; so they cover v), the one where v is deepest inside. Coordinates within rounding of 0 are dropped. For a vertex move_vertex() moved, or one
 // whose edge joins vertices of different old tets (a split after a flip).
 void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
   locate_scratch_.clear();

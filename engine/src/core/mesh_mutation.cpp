@@ -65,10 +65,14 @@ VertId TetMesh::add_vertex_on_edge(VertId a, VertId b, double t) {
   return v;
 }
 
-void TetMesh::move_vertex(VertId v, const Vec3& p) {
+void TetMesh::move_vertex(VertId v, const Vec3& p, std::vector<TetId>* created) {
   assert(journal_.active && journal_.vertex_birth_of.contains(v) && "only a vertex the transaction made moves");
   note(Array::kPositions, v.value);
   positions_[v.value] = p;
+  vertex_shell(v, move_star_);
+  move_tets_.clear();
+  for (TetId t : move_star_) move_tets_.push_back(tet(t));
+  replace_tets(move_star_, move_tets_, created);
   VertexBirth& birth = journal_.vertex_births[*journal_.vertex_birth_of.find(v)];
   locate_origin(v, birth.origin);
   birth.origin.vertex = v;
@@ -294,6 +298,8 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
   reserve_touched(journal_.parents, kJournalWorkingSize / 4);
   reserve_touched(journal_.vertex_births, kJournalWorkingSize / 16);
   reserve_touched(ancestor_stack_, 64);
+  reserve_touched(move_star_, 128);
+  reserve_touched(move_tets_, 128);
   reserve_touched(locate_scratch_, 64);
   reserve_touched(net_removed_scratch_, kJournalWorkingSize / 4);
   reserve_touched(net_created_scratch_, kJournalWorkingSize / 4);

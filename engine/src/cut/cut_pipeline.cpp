@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "core/quality.hpp"
 #include "cut/planted_slowdown.hpp"
@@ -45,6 +46,7 @@ void Cutter::Pipeline::prepare() {
   mesh_.reserve(tets, vertices);
   refiner_.reserve(tets);
   remover_.reserve(tets, vertices);
+  improver_.reserve(tets);
   for (auto* marks : {&selected_, &tissue_, &tried_, &queued_}) marks->reserve(tets);
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
   // gated by ci/bench).
@@ -198,6 +200,9 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   if (!report.ok) return fail(report.failure);
   const Clock::time_point t4 = Clock::now();
   report.time.remove_us = micros(t3, t4);
+  improve(report);
+  report.time.improve_us = micros(t4, Clock::now());
+  if (!report.quality_met && params_.improve) return fail(floor_failure(report));
   finish(report, log);
   report.time.total_us = micros(t0, Clock::now());
   return report;
@@ -230,9 +235,18 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
     mesh_.rollback();
     return report;
   }
-  report.time.remove_us = micros(t0, Clock::now());
+  const Clock::time_point t1 = Clock::now();
+  report.time.remove_us = micros(t0, t1);
+  improve(report);
+  report.time.improve_us = micros(t1, Clock::now());
+  if (!report.quality_met && params_.improve) {
+    mesh_.rollback();
+    report.ok = false;
+    report.failure = floor_failure(report);
+    return report;
+  }
   finish(report, log);
-  report.time.total_us = report.time.remove_us;
+  report.time.total_us = micros(t0, Clock::now());
   return report;
 }
 
@@ -320,6 +334,32 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
   report.unresolved = unresolved;
 }
 
+std::string Cutter::Pipeline::floor_failure(const CutReport& report) {
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the quality floor could not be met: a created tet has radius ratio %.3g, below %.3g = min(quality_floor, "
+                "the worst tet replaced); a lower quality_floor, or improve off, lets such a cut through",
+                report.min_radius_ratio, report.quality_floor);
+  return text;
+}
+
+void Cutter::Pipeline::improve(CutReport& report) {
+  // The cut's reach: the tool's ball grown by D_ref, the longest edge its refinement leaves at
+  // the ball (refine.hpp); the cut's own surface and its made tets lie within it.
+  const std::optional<Ball> reach =
+      tool_ ? std::optional<Ball>(Ball{tool_->centre, tool_->radius + d_ref_}) : std::nullopt;
+  const detail::ImproveOutcome outcome =
+      improver_.run(mesh_, cut_start_, params_.quality_floor, params_.improve, reach ? &*reach : nullptr);
+  report.tets_removed += outcome.removed;
+  report.min_radius_ratio_before_improvement = outcome.worst_before;
+  report.min_radius_ratio = outcome.worst_after;  // the worst net new tet: the made tets still live
+  report.quality_floor = outcome.floor;
+  report.quality_met = outcome.met;
+  report.improvement_flips = outcome.flips;
+  report.improvement_collapses = outcome.collapses;
+  report.improvement_moves = outcome.moves;
+}
+
 // Commits the transaction, brings the index up to date with the net changes, hands the caller
 // the net change (the journal derives it), and reports the worst new tet.
 void Cutter::Pipeline::finish(CutReport& report, ChangeLog* log) {
@@ -337,7 +377,6 @@ void Cutter::Pipeline::finish(CutReport& report, ChangeLog* log) {
   }
   for (TetId t : net_removed_) index_.erase(t);
   for (TetId t : net_created_) index_.insert(mesh_, t);
-  report.min_radius_ratio = min_radius_ratio(mesh_, net_created_);
   report.tets_created = static_cast<std::uint32_t>(net_created_.size());
 }
 

@@ -11,6 +11,7 @@
 
 #include "core/tool_ball.hpp"
 #include "cut/spatial_index.hpp"
+#include "improve/improver.hpp"
 #include "refine/refine.hpp"
 #include "remove/removal.hpp"
 #include "tetcut/cut.hpp"
@@ -47,6 +48,10 @@ class Cutter::Pipeline {
   void clear_marks();  // a new cut: fresh marks
   // Tets the cut made that are still live: what its budget counts.
   [[nodiscard]] std::uint32_t net_made() const { return mesh_.net_tets_made_since(cut_start_); }
+  // The improvement pass (improve/improver.hpp) over what the transaction made, into the report.
+  void improve(CutReport& report);
+  // Why a cut whose made tets the pass could not lift to the floor is refused.
+  static std::string floor_failure(const CutReport& report);
   void finish(CutReport& report, ChangeLog* log);
   // Why the index cannot serve the mesh (compacted or replaced since it was built), if so.
   [[nodiscard]] std::optional<std::string> stale() const;
@@ -55,6 +60,7 @@ class Cutter::Pipeline {
   MeshScale scale_;          // what the refinement can serve (check_scale), measured once
   SpatialIndex index_;
   Refiner refiner_;
+  detail::Improver improver_;
   ChangeLog changes_;                // the last cut's net change, derived by the journal at commit
   TetMesh::Savepoint cut_start_;
   std::vector<TetId> hit_, region_, removal_;

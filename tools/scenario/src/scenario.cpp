@@ -1,5 +1,6 @@
 #include "tetcut/scenario/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iterator>
@@ -24,7 +25,7 @@ std::vector<std::string> tokens_of(const std::string& line) {
 
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
-         w == "split";
+         w == "split" || w == "improve" || w == "quality_floor";
 }
 
 // Applies a parameter line to `params`; a message when the value is not acceptable.
@@ -38,6 +39,9 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
     const auto m = parse_split_method(value);
     if (!m) return "split must be templates or bisection";
     next.split_method = *m;
+  } else if (name == "improve") {
+    if (value != "on" && value != "off") return std::string("improve must be on or off");
+    next.improve = value == "on";
   } else if (name == "depth" || name == "iterations") {
     const auto n = parse_uint(value);
     if (!n || *n > 64) return name + " must be an integer between 1 and 64";
@@ -45,7 +49,10 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
   } else {
     const auto v = parse_double(value);
     if (!v) return name + " must be a finite number";
-    (name == "diameter" ? next.tool_diameter : name == "dref_factor" ? next.d_ref_factor : next.p) = *v;
+    (name == "diameter"        ? next.tool_diameter
+     : name == "dref_factor"   ? next.d_ref_factor
+     : name == "quality_floor" ? next.quality_floor
+                               : next.p) = *v;
   }
   if (auto invalid = validate(next)) return invalid;
   params = next;
@@ -107,7 +114,7 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
       op.text = t.size() == 2 ? t[1] : "full";
       if (!parse_check_level(op.text)) return fail("check level must be local, full or exact");
     } else if (w == "expect") {
-      if (t.size() != 3) return fail("expected: expect hash HEX | tets N | unresolved N | components N");
+      if (t.size() != 3) return fail("expected: expect hash HEX | tets N | unresolved N | components N | min_quality X");
       if (t[1] == "hash") {
         if (t[2].size() != 16 || t[2].find_first_not_of("0123456789abcdef") != std::string::npos)
           return fail("a hash is 16 lowercase hex digits");
@@ -118,6 +125,11 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
         if (!c) return fail("expected a non-negative integer");
         op.kind = t[1] == "tets" ? OpKind::kExpectTets : t[1] == "unresolved" ? OpKind::kExpectUnresolved : OpKind::kExpectComponents;
         op.count = *c;
+      } else if (t[1] == "min_quality") {
+        const auto x = parse_double(t[2]);
+        if (!x || *x < 0.0 || *x > 1.0) return fail("min_quality is a radius ratio between 0 and 1");
+        op.kind = OpKind::kExpectMinQuality;
+        op.bound = *x;
       } else {
         return fail("unknown expectation '" + t[1] + "'");
       }
@@ -232,6 +244,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
           result.cuts.push_back({op.line, centre, r});
           result.removals += r.tets_removed;
           result.unresolved += r.unresolved;
+          if (r.ok) result.min_created_radius_ratio = std::min(result.min_created_radius_ratio, r.min_radius_ratio);
           if (!r.ok) {
             stop(op, 1, "cut failed: " + r.failure);
             return result;
@@ -252,6 +265,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         const CutReport r = cutter->remove(t);
         result.removals += r.tets_removed;
         result.unresolved += r.unresolved;
+        if (r.ok) result.min_created_radius_ratio = std::min(result.min_created_radius_ratio, r.min_radius_ratio);
         if (!r.ok) {
           stop(op, 1, "removal failed: " + r.failure);
           return result;
@@ -299,6 +313,13 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         }
         break;
       }
+      case OpKind::kExpectMinQuality:
+        if (!(result.min_created_radius_ratio >= op.bound)) {
+          stop(op, 1, "expected every created tet to have radius ratio >= " + std::to_string(op.bound) + ", the worst has " +
+                          std::to_string(result.min_created_radius_ratio));
+          return result;
+        }
+        break;
       case OpKind::kExpectUnresolved:
         if (result.unresolved != op.count) {
           stop(op, 1, "expected " + std::to_string(op.count) + " unresolved, got " + std::to_string(result.unresolved));

@@ -41,7 +41,7 @@ enum class Invariant : std::uint8_t {
   kI4Orientation,     // every tet strictly positive (exact predicate)
   kI5VertexShell,     // vertex shell face-connected and link a disk or a sphere
   kI6EdgeShell,       // edge shell face-connected (boundary edge: exactly two boundary faces)
-  kI7Quality,         // radius ratio above the configured floor
+  kI7Quality,         // no operation makes tets worse than it found (and an optional absolute floor)
   kI8Bookkeeping,     // counts, vertex->tet references, boundary flags, attribute sizes
   kI9Volume,          // volume as expected after an operation (relative tolerance)
 };
@@ -75,10 +75,33 @@ struct QualityStats {
   std::array<std::uint64_t, kHistogramBins> radius_ratio_histogram{};
 };
 
+// How I7 judges the tets an operation created (LocalChecker::after_operation).
+enum class QualityRule : std::uint8_t {
+  // A Cutter transaction (a cut, a removal request: the units that end with the improvement
+  // pass): no created tet has a radius ratio below min(quality_floor, the worst tet it
+  // replaced). The replaced tets are the removed ones that contain a created tet's centroid (the
+  // checker's own point location: it does not take the engine's parents on trust); tissue the
+  // operation removed whole replaces nothing and lowers no floor.
+  kNoDegradation,
+  // A raw operation (one split, a refinement loop, an edit under fuzzing): the quality of what it
+  // made is reported, not judged. A midpoint split has no quality bound of its own to keep: the
+  // templates' children of a parent of radius ratio 0.15 can be 100 times worse than it; I4 (every
+  // child strictly positive) is what the templates guarantee.
+  kReportOnly,
+};
+
 struct CheckOptions {
   CheckLevel level = CheckLevel::kFull;
-  // I7: a tet whose radius ratio is below this floor is a violation (0 disables).
+  // I7, absolute: a checked tet (full, exact: every live tet; local: the created ones) whose
+  // radius ratio is below this floor is a violation. 0 disables: the default, since an input
+  // mesh is what it is; for users who want every tet above a floor.
   double radius_ratio_floor = 0.0;
+  // I7, no degradation, on by default wherever the local checker runs. F = 0.1: a radius ratio
+  // below 0.1 is what mesh generators and improvers (TetGen's quality bound, Stellar) treat as a
+  // sliver, and it is where an explicit FEM's stable time step starts to collapse; an input whose
+  // tets are worse still sets its own floor through min(F, worst replaced).
+  QualityRule quality_rule = QualityRule::kNoDegradation;
+  double quality_floor = 0.1;
   // I9: when set, the total volume must equal this to a relative tolerance.
   std::optional<double> expected_volume;
   double volume_rel_tolerance = 1e-9;

@@ -7,6 +7,8 @@
 //   diameter D                    tool diameter           (also: dref_factor F, p P, depth N,
 //                                                          iterations N, split templates|bisection)
 //   strategy S                    basic|neighbours|combined|wide
+//   improve on|off                the improvement pass that ends each cut (CutParams::improve)
+//   quality_floor F               the radius ratio it lifts created tets to (CutParams, I7's F)
 //   cut X,Y,Z                     one cut with the tool centred there
 //   sweep X,Y,Z X,Y,Z STEP        one cut every STEP along the segment (both ends included)
 //   remove X,Y,Z                  remove the tet containing the point with the strategy
@@ -16,6 +18,7 @@
 //   expect tets N                 live tets
 //   expect unresolved N           tets left unresolved so far
 //   expect components N           face-connected pieces of the mesh (a resection separates one)
+//   expect min_quality X          every tet the cuts so far created has radius ratio >= X
 //
 // Running one: every operation is followed by the local check (or the full check, or none, as
 // asked); the first failed check or expectation stops the run and names its line.
@@ -35,7 +38,7 @@ namespace tetcut::scenario {
 
 enum class OpKind : std::uint8_t {
   kMesh, kParam, kCut, kSweep, kRemove, kCompact, kCheck, kExpectHash, kExpectTets, kExpectUnresolved,
-  kExpectComponents
+  kExpectComponents, kExpectMinQuality
 };
 
 struct Op {
@@ -46,6 +49,7 @@ struct Op {
   Vec3 a{}, b{};
   double step = 0.0;
   std::uint64_t count = 0;
+  double bound = 0.0;      // expect min_quality
 };
 
 struct Scenario {
@@ -83,6 +87,7 @@ struct RunResult {
   std::vector<CutRecord> cuts;
   std::uint64_t removals = 0;
   std::uint64_t unresolved = 0;
+  double min_created_radius_ratio = 1.0;  // the worst tet any cut or removal created (1: none)
   std::string hash;        // of the final mesh
   std::uint32_t tets = 0;
   RemovalReport removal;   // the paper's statistics over every removal request of the run
