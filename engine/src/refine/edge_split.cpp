@@ -1,6 +1,7 @@
 #include "refine/edge_split.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <tuple>
 
 #include "refine/split_templates.hpp"
@@ -159,7 +160,18 @@ SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std:
           }
         }
       }
-      const SplitTemplate& tpl = split_template(a.mask, vertex_order_index(ids), diagonal);
+      FaceFans fans = 0;
+      if (two_split_faces(a.mask) != 0) {
+        std::array<double, 6> length2{};
+        if (face_rule_ == FaceRule::kLongerEdge)
+          for (int e = 0; e < 6; ++e) {
+            const Vec3 d = p[kEdgeVerts[e][1]] - p[kEdgeVerts[e][0]];
+            length2[static_cast<std::size_t>(e)] = dot(d, d);
+          }
+        fans = face_fans(face_rule_, a.mask, ids, length2);
+      }
+      const SplitTemplate& tpl = split_template_with_fans(a.mask, fans, diagonal);
+      assert(tpl.has_cone_point() && "the fans of an order on edges always have a cone point");
       labels_.assign(tpl.children.begin(), tpl.children.begin() + tpl.count);
     } else {
       bisect_locally(a.mask, ids, labels_);
