@@ -65,8 +65,8 @@ class EdgeSplitter {
   static constexpr std::size_t kPlannedChildren = 8192;
 
   // How the templates triangulate a face with two split edges (split_templates.hpp): by default
-  // the paper's rule (kVertexOrder), which ignores geometry; kLongerEdge fans from the longer
-  // edge's midpoint (the face's shorter diagonal). Either way every tet has a cone point.
+  // from the longer split edge's midpoint (kLongerEdge: the face's shorter diagonal); kVertexOrder
+  // is the paper's rule, which ignores geometry. Either way every tet has a cone point.
   void set_face_rule(FaceRule rule) { face_rule_ = rule; }
   [[nodiscard]] FaceRule face_rule() const { return face_rule_; }
 
@@ -86,7 +86,7 @@ class EdgeSplitter {
   [[nodiscard]] int find_edge(std::uint32_t lo, std::uint32_t hi) const;
   bool collect_shell(const TetMesh& mesh, const PlannedEdge& e);
 
-  FaceRule face_rule_ = FaceRule::kVertexOrder;
+  FaceRule face_rule_ = FaceRule::kLongerEdge;
   std::vector<PlannedEdge> edges_;
   std::vector<AffectedTet> affected_;
   std::vector<std::uint32_t> affected_slot_;  // per tet id: index into affected_ + 1, or 0
