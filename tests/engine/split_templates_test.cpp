@@ -8,7 +8,6 @@
 #include <array>
 #include <bit>
 #include <map>
-#include <numeric>
 #include <set>
 #include <vector>
 

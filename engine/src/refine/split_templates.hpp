@@ -15,6 +15,8 @@
 // split are cut off (the corner tets), and the remaining convex polytope is coned from a point
 // whose incident facets are all fans around it. With all six edges split the polytope is the
 // central octahedron and the cone point is chosen to cut it along its shortest diagonal (1:8).
+// In 24 four- and five-edge entries two cone points give different children: the table keeps
+// both (split_template_alternative) and the splitter keeps the one with the better children.
 //
 // Not every choice of fans has a cone point: fans chosen face by face can be cyclic inside one
 // tet. With the three edges around a corner split, the polytope left by the corner tet is a
@@ -93,9 +95,8 @@ std::uint8_t vertex_order_index(const std::array<std::uint32_t, 4>& global_ids);
 const SplitTemplate& split_template_with_fans(std::uint8_t mask, FaceFans fans, std::uint8_t diagonal = 0);
 
 // Another subdivision for the same mask and fans, from another cone point, whose children differ
-// from split_template_with_fans()'s; count 0 when the cone point is unique up to the children.
-// Only in the four- and five-edge configurations (and mask 63, served by `diagonal` instead): the
-// polytope's interior is free, and the caller keeps whichever has the better children.
+// from split_template_with_fans()'s (the same face triangulations, another interior); count 0
+// when the cone point is unique up to the children, and for mask 63, whose choice is `diagonal`.
 const SplitTemplate& split_template_alternative(std::uint8_t mask, FaceFans fans);
 
 // The template of the paper's rule for the vertex order `order_index` (vertex_order_index()):
