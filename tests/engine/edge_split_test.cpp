@@ -17,6 +17,8 @@
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/detail/local_tables.hpp"
+#include "tetcut/io.hpp"
+#include "tetcut/predicates.hpp"
 
 namespace tetcut {
 namespace {
@@ -72,37 +74,37 @@ std::string configuration(int mask) {
   }
 }
 
-TEST(SplitTemplates, OrderIndexIsAPermutationRank) {
-  std::array<std::uint32_t, 4> ids = {10, 20, 30, 40};
-  std::vector<int> seen(24, 0);
-  do ++seen[vertex_order_index(ids)];
-  while (std::next_permutation(ids.begin(), ids.end()));
-  for (int count : seen) EXPECT_EQ(count, 1);
-}
-
 // Issue 4: every subset of the 6 edges under every ordering of the vertex ids gives a valid
-// mesh with the configuration's tet count and the parent's volume.
+// mesh with the configuration's tet count and the parent's volume, under both face rules.
 TEST(EdgeSplit, EverySubsetUnderEveryVertexOrderIsValidAndKeepsVolume) {
   std::map<std::string, std::set<std::uint32_t>> counts;
   for (SplitMethod method : {SplitMethod::kTemplates, SplitMethod::kBisection}) {
-    for (int mask = 1; mask < 64; ++mask) {
-      std::array<std::uint32_t, 4> perm = {0, 1, 2, 3};
-      do {
-        TetMesh mesh = testing::build_or_fail(single_tet_with_ids(perm));
-        const double volume = mesh.total_volume();
-        EdgeSplitter splitter;
-        const SplitResult r = splitter.split(mesh, edges_of_mask(mesh, TetId{0}, mask), method);
-        ASSERT_TRUE(r.ok()) << to_string(r.refusal);
-        ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kExact)) << "mask " << mask;
-        EXPECT_NEAR(mesh.total_volume(), volume, 1e-12 * volume) << "mask " << mask;
-        EXPECT_EQ(r.edges_split, static_cast<std::uint32_t>(std::popcount(static_cast<unsigned>(mask))));
-        EXPECT_EQ(mesh.num_vertices(), 4 + r.edges_split);
-        if (method == SplitMethod::kTemplates) {
-          const SplitTemplate& tpl = split_template(static_cast<std::uint8_t>(mask), vertex_order_index(perm));
-          EXPECT_EQ(r.tets_created, tpl.count);
-          counts[configuration(mask)].insert(r.tets_created);
-        }
-      } while (std::next_permutation(perm.begin(), perm.end()));
+    for (FaceRule rule : {FaceRule::kLongerEdge, FaceRule::kVertexOrder}) {
+      if (method == SplitMethod::kBisection && rule != FaceRule::kLongerEdge) continue;  // bisection has no face rule
+      for (int mask = 1; mask < 64; ++mask) {
+        std::array<std::uint32_t, 4> perm = {0, 1, 2, 3};
+        do {
+          TetMesh mesh = testing::build_or_fail(single_tet_with_ids(perm));
+          const double volume = mesh.total_volume();
+          EdgeSplitter splitter;
+          splitter.set_face_rule(rule);
+          const SplitResult r = splitter.split(mesh, edges_of_mask(mesh, TetId{0}, mask), method);
+          ASSERT_TRUE(r.ok()) << to_string(r.refusal);
+          ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kExact)) << "mask " << mask;
+          EXPECT_NEAR(mesh.total_volume(), volume, 1e-12 * volume) << "mask " << mask;
+          EXPECT_EQ(r.edges_split, static_cast<std::uint32_t>(std::popcount(static_cast<unsigned>(mask))));
+          EXPECT_EQ(mesh.num_vertices(), 4 + r.edges_split);
+          if (method == SplitMethod::kTemplates) {
+            if (rule == FaceRule::kVertexOrder) {  // the paper's template, or its alternative interior
+              const SplitTemplate& tpl = split_template(static_cast<std::uint8_t>(mask), vertex_order_index(perm));
+              const FaceFans fans = face_fans(FaceRule::kVertexOrder, static_cast<std::uint8_t>(mask), perm, {});
+              const SplitTemplate& other = split_template_alternative(static_cast<std::uint8_t>(mask), fans);
+              EXPECT_TRUE(r.tets_created == tpl.count || (other.count > 0 && r.tets_created == other.count));
+            }
+            counts[configuration(mask)].insert(r.tets_created);
+          }
+        } while (std::next_permutation(perm.begin(), perm.end()));
+      }
     }
   }
   // The paper's ten configurations and their tet counts.
@@ -121,37 +123,48 @@ TEST(EdgeSplit, EverySubsetUnderEveryVertexOrderIsValidAndKeepsVolume) {
   EXPECT_EQ(counts, expected);
 }
 
+// The area of the boundary surface: a face triangulated differently from its two sides opens a
+// crack inside the mesh, whose two sides add to it.
+double boundary_area(const TetMesh& m) {
+  std::vector<FaceRef> faces;
+  m.boundary_faces(faces);
+  double area = 0;
+  for (const FaceRef& f : faces) {
+    const Vec3 a = m.position(m.vertex(f.tet, kFaceVerts[f.face][0])), b = m.position(m.vertex(f.tet, kFaceVerts[f.face][1])),
+               c = m.position(m.vertex(f.tet, kFaceVerts[f.face][2]));
+    area += 0.5 * norm(cross(b - a, c - a));
+  }
+  return area;
+}
+
 // Two tets sharing a face, each with its own subset of split edges: the shared face must be
-// triangulated alike from both sides (no crack: the boundary area stays that of the pair).
+// triangulated alike from both sides (no crack: the boundary area stays that of the pair). The
+// shared face is scalene, so that kLongerEdge decides it from its lengths, and the pair is tried
+// under every numbering of its five vertices' ids that the two orders of its tets give.
 TEST(EdgeSplit, NeighboursWithDifferentSubsetsStayConformal) {
-  const RawMesh pair{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.9, 0.8, 0.7}}, {{0, 1, 2, 3}, {1, 2, 3, 4}}};
-  // The second tet's orientation: make it positive whatever the coordinates.
-  RawMesh raw = pair;
-  BuildResult built = build_mesh(raw, {.reorient_inverted = true});
-  ASSERT_TRUE(built.ok());
-  const RawMesh base = built.mesh->to_raw();
-  auto boundary_area = [](const TetMesh& m) {
-    std::vector<FaceRef> faces;
-    m.boundary_faces(faces);
-    double area = 0;
-    for (const FaceRef& f : faces) {
-      const Vec3 a = m.position(m.vertex(f.tet, kFaceVerts[f.face][0])), b = m.position(m.vertex(f.tet, kFaceVerts[f.face][1])),
-                 c = m.position(m.vertex(f.tet, kFaceVerts[f.face][2]));
-      area += 0.5 * norm(cross(b - a, c - a));
-    }
-    return area;
-  };
-  for (int mask0 = 1; mask0 < 64; ++mask0)
-    for (int mask1 = 0; mask1 < 64; mask1 += 7) {
-      TetMesh mesh = testing::build_or_fail(base);
-      const double area = boundary_area(mesh);
-      std::vector<Edge> edges = edges_of_mask(mesh, TetId{0}, mask0);
-      const std::vector<Edge> more = edges_of_mask(mesh, TetId{1}, mask1);
-      edges.insert(edges.end(), more.begin(), more.end());
-      EdgeSplitter splitter;
-      ASSERT_TRUE(splitter.split(mesh, edges, SplitMethod::kTemplates).ok());
-      ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kExact)) << mask0 << " " << mask1;
-      ASSERT_NEAR(boundary_area(mesh), area, 1e-12) << mask0 << " " << mask1;
+  const std::vector<Vec3> corners = {{0, 0, 0}, {1.2, 0.1, 0}, {0.1, 0.9, 0.05}, {0.05, 0.1, 1.4}, {1.1, 0.9, 0.8}};
+  for (FaceRule rule : {FaceRule::kLongerEdge, FaceRule::kVertexOrder})
+    for (const std::array<std::uint32_t, 5>& ids : {std::array<std::uint32_t, 5>{0, 1, 2, 3, 4}, {4, 2, 0, 3, 1}, {1, 3, 4, 0, 2}}) {
+      RawMesh raw;
+      raw.positions.resize(5);
+      for (int i = 0; i < 5; ++i) raw.positions[ids[static_cast<std::size_t>(i)]] = corners[static_cast<std::size_t>(i)];
+      raw.tets = {{ids[0], ids[1], ids[2], ids[3]}, {ids[1], ids[2], ids[3], ids[4]}};
+      BuildResult built = build_mesh(raw, {.reorient_inverted = true});  // whatever the orientation
+      ASSERT_TRUE(built.ok());
+      const RawMesh base = built.mesh->to_raw();
+      for (int mask0 = 1; mask0 < 64; ++mask0)
+        for (int mask1 = 0; mask1 < 64; mask1 += 7) {
+          TetMesh mesh = testing::build_or_fail(base);
+          const double area = boundary_area(mesh);
+          std::vector<Edge> edges = edges_of_mask(mesh, TetId{0}, mask0);
+          const std::vector<Edge> more = edges_of_mask(mesh, TetId{1}, mask1);
+          edges.insert(edges.end(), more.begin(), more.end());
+          EdgeSplitter splitter;
+          splitter.set_face_rule(rule);
+          ASSERT_TRUE(splitter.split(mesh, edges, SplitMethod::kTemplates).ok());
+          ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kExact)) << mask0 << " " << mask1;
+          ASSERT_NEAR(boundary_area(mesh), area, 1e-12) << mask0 << " " << mask1;
+        }
     }
 }
 
@@ -203,6 +216,96 @@ TEST(EdgeSplit, RandomEdgeSetsKeepTheMeshValidAfterEverySplit) {
                                       {.level = invariants::CheckLevel::kLocal, .quality_rule = invariants::QualityRule::kReportOnly}, 0.0)
                     .ok());
     ASSERT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kFull, volume)) << "round " << round;
+  }
+}
+
+// A box whose interior vertices are moved by up to a tenth of a cell (seeded): its faces are
+// scalene, so kLongerEdge decides them (a regular box ties everywhere and falls back to vertex
+// order).
+RawMesh jittered_box(std::uint32_t n, std::uint64_t seed) {
+  RawMesh raw = make_box_mesh(n, n, n);
+  SplitMix64 rng(seed);
+  const double h = 1.0 / n;
+  auto inside = [](double x) { return x > 1e-9 && x < 1 - 1e-9; };
+  for (Vec3& p : raw.positions)
+    if (inside(p.x) && inside(p.y) && inside(p.z)) p = p + (0.2 * h) * Vec3{rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5};
+  return raw;
+}
+
+struct SplitRun {
+  std::uint64_t hash = 0;
+  std::uint32_t tets = 0;
+};
+
+// `rounds` splits of a few edges each, drawn around a random tet (its edges and its neighbours'),
+// so that many tets get several split edges at once. After every split the local checker passes
+// and the boundary keeps its area; at the end the full check passes. `shuffle`: the edges of
+// each round are given in a scrambled order (the same edges).
+SplitRun random_splits(const RawMesh& raw, std::uint64_t seed, int rounds, SplitMethod method, FaceRule rule, bool shuffle) {
+  TetMesh mesh = testing::build_or_fail(raw);
+  const double volume = mesh.total_volume();
+  const double area = boundary_area(mesh);
+  SplitMix64 rng(seed), order(seed + 1);
+  EdgeSplitter splitter;
+  splitter.set_face_rule(rule);
+  for (int round = 0; round < rounds; ++round) {
+    std::vector<Edge> edges;
+    const TetId centre = testing::random_live_tet(mesh, rng);
+    std::vector<TetId> around = {centre};
+    for (int f = 0; f < 4; ++f)
+      if (const FaceRef n = mesh.neighbour(centre, f); n.valid()) around.push_back(n.tet);
+    const int n = 2 + static_cast<int>(rng.below(10));
+    for (int k = 0; k < n; ++k) {
+      const TetId t = around[rng.below(around.size())];
+      const int e = static_cast<int>(rng.below(6));
+      edges.push_back({mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])});
+    }
+    if (shuffle)
+      for (std::size_t i = edges.size() - 1; i > 0; --i) {
+        std::swap(edges[i], edges[order.below(i + 1)]);
+        if (order.below(2)) std::swap(edges[i].a, edges[i].b);
+      }
+    invariants::LocalChecker local(mesh.raw_view());
+    ChangeLog log;
+    mesh.begin_transaction();
+    const SplitResult r = splitter.split(mesh, edges, method);
+    mesh.commit(&log);
+    EXPECT_TRUE(r.ok()) << to_string(r.refusal);
+    std::vector<TetId> created;
+    for (const CreatedTet& c : log.created) created.push_back(c.tet);
+    // A raw split: its quality is reported, not judged (I7 judges Cutter transactions).
+    const invariants::CheckOptions raw{.level = invariants::CheckLevel::kLocal, .quality_rule = invariants::QualityRule::kReportOnly};
+    EXPECT_TRUE(local.after_operation(mesh.raw_view(), log.removed, created, raw, 0.0).ok()) << "round " << round;
+    EXPECT_NEAR(boundary_area(mesh), area, 1e-9 * area) << "round " << round;
+  }
+  EXPECT_TRUE(testing::mesh_is_valid(mesh, invariants::CheckLevel::kFull, volume));
+  return {canonical_hash(mesh), mesh.num_tets()};
+}
+
+// Random multi-edge splits on a jittered box and on bundled meshes, under both face rules and
+// with bisection: valid and conforming after every split (random_splits), and the same mesh bit
+// for bit when run again with the edges in another order. The two rules make different meshes
+// (the geometric rule was exercised); bisection has no face rule.
+TEST(EdgeSplit, RandomMultiEdgeSplitsAreValidConformingAndDeterministic) {
+  struct Case {
+    std::string name;
+    RawMesh raw;
+  };
+  std::vector<Case> cases = {{"jittered box", jittered_box(4, 11)}};
+  for (const char* name : {"liver-coarse.msh", "cylinder.msh"}) {
+    ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/meshes/" + name);
+    ASSERT_TRUE(read.mesh) << name;
+    cases.push_back({name, *read.mesh});
+  }
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const SplitRun longer = random_splits(c.raw, 5, 40, SplitMethod::kTemplates, FaceRule::kLongerEdge, false);
+    EXPECT_EQ(random_splits(c.raw, 5, 40, SplitMethod::kTemplates, FaceRule::kLongerEdge, true).hash, longer.hash);
+    const SplitRun paper = random_splits(c.raw, 5, 40, SplitMethod::kTemplates, FaceRule::kVertexOrder, false);
+    EXPECT_EQ(random_splits(c.raw, 5, 40, SplitMethod::kTemplates, FaceRule::kVertexOrder, true).hash, paper.hash);
+    EXPECT_NE(longer.hash, paper.hash);
+    const SplitRun bisection = random_splits(c.raw, 5, 40, SplitMethod::kBisection, FaceRule::kLongerEdge, false);
+    EXPECT_EQ(random_splits(c.raw, 5, 40, SplitMethod::kBisection, FaceRule::kVertexOrder, true).hash, bisection.hash);
   }
 }
 
@@ -312,6 +415,53 @@ TEST(EdgeSplit, QualityTableTemplatesAgainstBisection) {
   }
   // The red 1:8 split along the shortest diagonal beats repeated bisection.
   EXPECT_GT(worst["6 edges"].first, worst["6 edges"].second);
+}
+
+// The face rules on irregular tets (random, radius ratio at least 0.3): per configuration, the
+// mean and the worst over the tets of their worst child's radius ratio relative to the parent's.
+// A face rule can only act where a face has two split edges; elsewhere the two rules coincide.
+TEST(EdgeSplit, QualityTableLongerEdgeAgainstVertexOrderOnIrregularTets) {
+  struct Figures {
+    double sum = 0, worst = 1;
+    int n = 0;
+  };
+  std::map<std::string, std::array<Figures, 2>> table;  // configuration -> (vertex order, longer edge)
+  SplitMix64 rng(2002);
+  int tets = 0;
+  while (tets < 300) {
+    std::array<Vec3, 4> p;
+    for (Vec3& x : p) x = {rng.unit(), rng.unit(), rng.unit()};
+    if (orientation(p[0], p[1], p[2], p[3]) < 0) std::swap(p[2], p[3]);
+    const double parent = radius_ratio(p[0], p[1], p[2], p[3]);
+    if (parent < 0.3) continue;
+    ++tets;
+    std::array<std::uint32_t, 4> ids = {0, 1, 2, 3};
+    for (int i = 3; i > 0; --i) std::swap(ids[static_cast<std::size_t>(i)], ids[rng.below(static_cast<std::uint64_t>(i) + 1)]);
+    RawMesh raw;
+    raw.positions.resize(4);
+    for (int i = 0; i < 4; ++i) raw.positions[ids[static_cast<std::size_t>(i)]] = p[static_cast<std::size_t>(i)];
+    raw.tets.push_back(ids);
+    for (int mask = 1; mask < 64; ++mask) {
+      if (two_split_faces(static_cast<std::uint8_t>(mask)) == 0) continue;
+      for (int r = 0; r < 2; ++r) {
+        TetMesh mesh = testing::build_or_fail(raw);
+        EdgeSplitter splitter;
+        splitter.set_face_rule(r == 0 ? FaceRule::kVertexOrder : FaceRule::kLongerEdge);
+        std::vector<TetId> children;
+        ASSERT_TRUE(splitter.split(mesh, edges_of_mask(mesh, TetId{0}, mask), SplitMethod::kTemplates, &children).ok());
+        Figures& f = table[configuration(mask)][static_cast<std::size_t>(r)];
+        const double q = min_radius_ratio(mesh, children) / parent;
+        f.sum += q;
+        f.worst = std::min(f.worst, q);
+        ++f.n;
+      }
+    }
+  }
+  std::printf("%-30s %23s %23s\n", "configuration", "vertex order mean/worst", "longer edge mean/worst");
+  for (const auto& [name, f] : table) {
+    std::printf("%-30s %11.3f %11.3f %11.3f %11.3f\n", name.c_str(), f[0].sum / f[0].n, f[0].worst, f[1].sum / f[1].n, f[1].worst);
+    EXPECT_GT(f[1].sum / f[1].n, f[0].sum / f[0].n) << name;
+  }
 }
 
 }  // namespace

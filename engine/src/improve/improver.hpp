@@ -66,6 +66,9 @@ class Improver {
   double collect_made(TetMesh& mesh, const TetMesh::Savepoint& start);
   // min(F, the worst host of made_).
   double floor_of(TetMesh& mesh, double floor_f);
+  // Operations on the made tets below out.floor, worst first, until none helps (counted in
+  // `out`, at most kMaxOperations in all), then the slivers that go with the tissue.
+  void lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operations);
   // One operation that lifts tet t, applied; false when none does.
   bool improve_tet(TetMesh& mesh, TetId t);
   // Insertion at the midpoint of t's longest edge, kept when it lifts the worst tet around it.

@@ -1,8 +1,10 @@
 #include "refine/edge_split.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <tuple>
 
+#include "core/quality.hpp"
 #include "refine/split_templates.hpp"
 #include "tetcut/detail/local_tables.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
@@ -46,6 +48,16 @@ void bisect_locally(std::uint8_t mask, const std::array<std::uint32_t, 4>& ids, 
       out.push_back(with_y);
     }
   }
+}
+
+// The worst radius ratio among a template's children, placed on the points `p` (labels).
+double worst_child(const SplitTemplate& tpl, const Vec3 (&p)[10]) {
+  double worst = 1.0;
+  for (int c = 0; c < tpl.count; ++c) {
+    const Labels& l = tpl.children[static_cast<std::size_t>(c)];
+    worst = std::min(worst, radius_ratio(p[l[0]], p[l[1]], p[l[2]], p[l[3]]));
+  }
+  return worst;
 }
 
 }  // namespace
@@ -159,8 +171,22 @@ SplitResult EdgeSplitter::plan_and_apply(TetMesh& mesh, SplitMethod method, std:
           }
         }
       }
-      const SplitTemplate& tpl = split_template(a.mask, vertex_order_index(ids), diagonal);
-      labels_.assign(tpl.children.begin(), tpl.children.begin() + tpl.count);
+      FaceFans fans = 0;
+      if (two_split_faces(a.mask) != 0) {
+        std::array<double, 6> length2{};
+        if (face_rule_ == FaceRule::kLongerEdge)
+          for (int e = 0; e < 6; ++e) {
+            const Vec3 d = p[kEdgeVerts[e][1]] - p[kEdgeVerts[e][0]];
+            length2[static_cast<std::size_t>(e)] = dot(d, d);
+          }
+        fans = face_fans(face_rule_, a.mask, ids, length2);
+      }
+      const SplitTemplate* tpl = &split_template_with_fans(a.mask, fans, diagonal);
+      assert(tpl->has_cone_point() && "the fans of an order on edges always have a cone point");
+      // The interior is free in some four- and five-edge configurations: the better children.
+      if (const SplitTemplate& other = split_template_alternative(a.mask, fans); other.count > 0)
+        if (worst_child(other, p) > worst_child(*tpl, p)) tpl = &other;
+      labels_.assign(tpl->children.begin(), tpl->children.begin() + tpl->count);
     } else {
       bisect_locally(a.mask, ids, labels_);
     }

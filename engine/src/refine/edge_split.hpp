@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "refine/split_templates.hpp"  // FaceRule
 #include "tetcut/cut_strategies.hpp"  // SplitMethod
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
@@ -63,6 +64,12 @@ class EdgeSplitter {
   void reserve(std::uint32_t tets);
   static constexpr std::size_t kPlannedChildren = 8192;
 
+  // How the templates triangulate a face with two split edges (split_templates.hpp): by default
+  // from the longer split edge's midpoint (kLongerEdge: the face's shorter diagonal); kVertexOrder
+  // is the paper's rule, which ignores geometry. Either way every tet has a cone point.
+  void set_face_rule(FaceRule rule) { face_rule_ = rule; }
+  [[nodiscard]] FaceRule face_rule() const { return face_rule_; }
+
  private:
   struct PlannedEdge {
     std::uint32_t lo, hi;  // sorted vertex ids: the global order of the paper's rule
@@ -79,6 +86,7 @@ class EdgeSplitter {
   [[nodiscard]] int find_edge(std::uint32_t lo, std::uint32_t hi) const;
   bool collect_shell(const TetMesh& mesh, const PlannedEdge& e);
 
+  FaceRule face_rule_ = FaceRule::kLongerEdge;
   std::vector<PlannedEdge> edges_;
   std::vector<AffectedTet> affected_;
   std::vector<std::uint32_t> affected_slot_;  // per tet id: index into affected_ + 1, or 0
