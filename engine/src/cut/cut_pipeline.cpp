@@ -286,7 +286,7 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     while (head < work_.size()) {
       const TetId t = work_[head++];
       queued_.erase(t);
-      if (!pending(t) || !removability(mesh_, t).removable) continue;
+      if (!pending(t) || !removability(mesh_, t).removable()) continue;
       if (!request(t)) return;
     }
     // Then one stuck tet, outside in: on the surface first (the paper's statistics are about

@@ -70,8 +70,8 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
 
 std::uint32_t RefinementStrategies::remove_or_repair(RemovalContext& ctx, const std::vector<TetId>& set,
                                                      const WideSearchLimits& repair) {
-  const SetRemovalCheck check = ctx.ws.check(ctx.mesh, set);
-  if (check.ok) {
+  const Removability check = ctx.ws.check(ctx.mesh, set);
+  if (check.removable()) {
     ctx.remove_set(set);
     return static_cast<std::uint32_t>(set.size());
   }
@@ -100,7 +100,7 @@ std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t, const Re
 }
 
 bool RefinementStrategies::extend_at(RemovalContext& ctx, std::vector<TetId>& set, std::size_t begin, VertId v,
-                                     const SetRemovalCheck& offence, std::uint32_t max_set_size) {
+                                     const Removability& offence, std::uint32_t max_set_size) {
   // The pieces are listed while the set is still marked (check_at marked it).
   sides_.clear();
   sizes_.clear();
@@ -112,7 +112,7 @@ bool RefinementStrategies::extend_at(RemovalContext& ctx, std::vector<TetId>& se
     if ((best_size != 0 && n >= best_size) || end - begin + n > max_set_size) continue;
     set.resize(end);
     set.insert(set.end(), sides_.begin() + first, sides_.begin() + first + n);
-    if (ctx.ws.check_at(ctx.mesh, std::span<const TetId>(set.data() + begin, set.size() - begin), v).ok) {
+    if (ctx.ws.check_at(ctx.mesh, std::span<const TetId>(set.data() + begin, set.size() - begin), v).removable()) {
       best_begin = first;
       best_size = n;
     }
@@ -134,10 +134,10 @@ bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v
     parents_.insert(parents_.end(), sides_.begin(), sides_.end());
   }
   const std::span<const TetId> path(parents_.data() + group_begin, parents_.size() - group_begin);
-  const SetRemovalCheck at_v = ctx.ws.check_at(ctx.mesh, path, v);
+  const Removability at_v = ctx.ws.check_at(ctx.mesh, path, v);
   // 3.5's extension, decided at v alone: each piece the path leaves around v (or around the
   // pinched edge at v), smallest first.
-  if (!at_v.ok && !extend_at(ctx, parents_, group_begin, v, at_v, limits.max_set_size)) return false;
+  if (!at_v.removable() && !extend_at(ctx, parents_, group_begin, v, at_v, limits.max_set_size)) return false;
   groups_.push_back({{v, VertId{}}, group_begin, static_cast<std::uint32_t>(parents_.size()) - group_begin});
   return true;
 }
@@ -150,8 +150,8 @@ void RefinementStrategies::close_pinched_midpoints(RemovalContext& ctx, std::spa
   };
   for (const TetMesh::VertexBirth& m : midpoints) {
     if (!planned(m.a) || !planned(m.b)) continue;
-    const SetRemovalCheck at_m = ctx.ws.check_at(ctx.mesh, set_, m.vertex);
-    if (!at_m.ok) extend_at(ctx, set_, 0, m.vertex, at_m, max_set_size);
+    const Removability at_m = ctx.ws.check_at(ctx.mesh, set_, m.vertex);
+    if (!at_m.removable()) extend_at(ctx, set_, 0, m.vertex, at_m, max_set_size);
   }
 }
 
@@ -166,7 +166,7 @@ std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, cons
     if (!plan_at_vertex(ctx, t, first.vertex, repair, searched_path)) return 0;
     const TetId one[1] = {t};
     for (VertId x : ctx.mesh.tet(t))
-      if (x != first.vertex && !ctx.ws.check_at(ctx.mesh, one, x).ok && !plan_at_vertex(ctx, t, x, repair)) return 0;
+      if (x != first.vertex && !ctx.ws.check_at(ctx.mesh, one, x).removable() && !plan_at_vertex(ctx, t, x, repair)) return 0;
     edges_.clear();
     for (const CornerGroup& g : groups_)
       add_edges_from(ctx.mesh, g.at[0], std::span<const TetId>(parents_.data() + g.begin, g.size), {});

@@ -65,7 +65,7 @@ class RefinementStrategies {
   // `offence`; appends the smallest piece it leaves around v (or around the edge pinched at v)
   // with which it passes at v. False, `set` as it was, when none does within max_set_size.
   bool extend_at(RemovalContext& ctx, std::vector<TetId>& set, std::size_t begin, VertId v,
-                 const SetRemovalCheck& offence, std::uint32_t max_set_size);
+                 const Removability& offence, std::uint32_t max_set_size);
   // After a split with several corner groups: the midpoint of an edge of T between two planned
   // vertices is where their corner runs can pinch (docs/removal-proof.md, "3.7, planned"). Each
   // such midpoint is tested alone and, where set_ fails there, set_ is extended by extend_at(),

@@ -93,9 +93,9 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
     return n;
   };
 
-  if (first.removable) {
+  if (first.removable()) {
     const TetId one[1] = {t};
-    if (options_.verify_direct) result.set_test_disagrees = !w.set_test.check(mesh, one).ok;
+    if (options_.verify_direct) result.set_test_disagrees = !w.set_test.check(mesh, one).removable();
     result.selected_removed = count_selected(one);
     ctx.remove_set(one);
     result.outcome = RemovalOutcome::kDirect;
@@ -107,19 +107,10 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
   if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kBasic) {
     bool found = false;
     if (options_.strategy == RemovalStrategy::kWide) {
-      SetRemovalCheck offence;
-      offence.ok = false;
-      offence.kind = first.kind;
-      offence.tet = t;
-      offence.vertex = first.vertex;
-      offence.edge = first.edge;
-      if (first.kind == SingularityKind::kEdge)
-        offence.local_edge = static_cast<std::uint8_t>(
-            mesh.local_edge(t, first.edge.a, first.edge.b));
       const TetId one[1] = {t};
       const detail::WideSearchLimits wide{options_.max_path_depth, options_.wide_rounds, options_.wide_evaluations,
                                           options_.max_set_size};
-      found = w.wide.find(mesh, w.set_test, one, offence, wide, w.set);
+      found = w.wide.find(mesh, w.set_test, one, first, wide, w.set);
     } else {
       found = w.neighbours.find(mesh, w.set_test, t, first, options_.max_path_depth, options_.max_set_size, w.set);
       searched_path = w.neighbours.path();
