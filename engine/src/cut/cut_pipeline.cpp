@@ -19,6 +19,24 @@ double micros(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::micro>(b - a).count();
 }
 
+// One request in the cut's counts. Per request, except what the Remover's statistics count per
+// distinct tet: a tet an earlier cut left unresolved was counted as a direct removal or a
+// singularity then, not again.
+void count_request(CutReport& report, const RemovalResult& r) {
+  if (!r.repeat) {
+    report.vertex_singularities += r.first.kind == SingularityKind::kVertex ? 1 : 0;
+    report.edge_singularities += r.first.kind == SingularityKind::kEdge ? 1 : 0;
+  }
+  if (r.outcome != RemovalOutcome::kUnresolved) report.tets_removed += r.tets_removed;
+  switch (r.outcome) {
+    case RemovalOutcome::kDirect: report.direct += r.repeat ? 0 : 1; break;
+    case RemovalOutcome::kNeighbours: ++report.resolved_by_neighbours; break;
+    case RemovalOutcome::kRefinement: ++report.resolved_by_refinement; break;
+    case RemovalOutcome::kFallback: ++report.resolved_by_fallback; break;
+    case RemovalOutcome::kUnresolved: ++report.unresolved; break;
+  }
+}
+
 RemovalOptions removal_options(const CutParams& p) {
   RemovalOptions o;
   o.strategy = p.strategy;
@@ -237,18 +255,15 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
 }
 
 void Cutter::Pipeline::remove_selected(CutReport& report) {
-  const RemovalReport before = remover_.report();
   if (tool_ && removal_.size() == mesh_.num_tets()) {
     // The tool holds every tet (each selected one is live and counted once): removing the whole
-    // mesh leaves nothing that could pinch, so it goes at once, in O(#T), instead of tet by tet
-    // (issue 16: a tool larger than the mesh removes what it can, fast).
+    // mesh leaves nothing that could pinch, so it goes at once, in O(#T), instead of tet by tet.
     mesh_.remove_tets(removal_);
     report.requested = report.tets_removed = static_cast<std::uint32_t>(removal_.size());
     return;
   }
-  // Counted per request here: the Remover's running total of unresolved tets goes down when a
-  // tet left unresolved by an earlier cut goes now, so its difference can be negative.
-  std::uint32_t unresolved = 0, requests = 0;
+  // A cut the budget refuses is rolled back and reports none of its requests.
+  const CutReport before = report;
   // The tets to test for a direct removal: every selected tet once, then what each request
   // exposes or selects. Removal only turns faces, edges and vertices into boundary ones, so a tet
   // that is not removable becomes removable only when it gains a boundary face, i.e. when a face
@@ -260,24 +275,26 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     work_.push_back(t);
   };
   for (TetId t : removal_) enqueue(t);
-  auto request = [&](TetId t) {
+  // `first`: removability(mesh_, t), just computed.
+  auto request = [&](TetId t, const Removability& first) {
     tried_.insert(t);
-    ++requests;
+    ++report.requests;
     RequestLimits limits;
     limits.max_tets_created = params_.max_tets_created > net_made() ? params_.max_tets_created - net_made() : 0;
     limits.selection = &selected_;
     const std::size_t selected_before = removal_.size();
     const TetMesh::Savepoint before_request = mesh_.savepoint();
-    const RemovalResult r = remover_.remove(mesh_, t, limits);
+    const RemovalResult r = remover_.remove(mesh_, t, first, limits);
     follow(before_request);
     for (std::size_t i = selected_before; i < removal_.size(); ++i) enqueue(removal_[i]);
     for (TetId e : remover_.last_exposed()) enqueue(e);
     if (r.over_budget || net_made() > params_.max_tets_created) {
+      report = before;
       report.ok = false;
       report.failure = "the removal would exceed the per-cut tet budget";
       return false;
     }
-    if (r.outcome == RemovalOutcome::kUnresolved) ++unresolved;
+    count_request(report, r);
     return true;
   };
   for (;;) {
@@ -286,8 +303,10 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     while (head < work_.size()) {
       const TetId t = work_[head++];
       queued_.erase(t);
-      if (!pending(t) || !removability(mesh_, t).removable()) continue;
-      if (!request(t)) return;
+      if (!pending(t)) continue;
+      const Removability first = removability(mesh_, t);
+      if (!first.removable()) continue;
+      if (!request(t, first)) return;
     }
     // Then one stuck tet, outside in: on the surface first (the paper's statistics are about
     // "removing a tetrahedron on the mesh surface", 3.3), else any (a tool inside the mesh).
@@ -304,20 +323,9 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
           break;
         }
     if (!stuck.valid()) break;
-    if (!request(stuck)) return;
+    if (!request(stuck, removability(mesh_, stuck))) return;
   }
-  const RemovalReport& after = remover_.report();
-  auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<std::uint32_t>(a - b); };
   report.requested = static_cast<std::uint32_t>(removal_.size());
-  report.requests = requests;
-  report.tets_removed = delta(after.tets_removed, before.tets_removed);
-  report.direct = delta(after.direct, before.direct);
-  report.vertex_singularities = delta(after.vertex_singularities, before.vertex_singularities);
-  report.edge_singularities = delta(after.edge_singularities, before.edge_singularities);
-  report.resolved_by_neighbours = delta(after.resolved_by_neighbours, before.resolved_by_neighbours);
-  report.resolved_by_refinement = delta(after.resolved_by_refinement, before.resolved_by_refinement);
-  report.resolved_by_fallback = delta(after.resolved_by_fallback, before.resolved_by_fallback);
-  report.unresolved = unresolved;
 }
 
 // Commits the transaction, brings the index up to date with the net changes, hands the caller

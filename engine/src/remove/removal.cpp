@@ -30,6 +30,60 @@ struct Remover::Workspace {
   StampedSet<TetId> met_unresolved;  // already counted as unresolved (cleared by reset() only)
 };
 
+namespace {
+
+// One request in the Remover's statistics, per distinct tet (removal_report.hpp).
+void count_request(RemovalReport& report, const RemovalResult& result) {
+  const SingularityKind kind = result.first.kind;
+  const bool repeat = result.repeat;
+  if (repeat) {
+    ++report.repeated_requests;
+  } else {
+    ++report.requested;
+    if (kind == SingularityKind::kVertex) ++report.vertex_singularities;
+    if (kind == SingularityKind::kEdge) ++report.edge_singularities;
+  }
+  if (result.outcome != RemovalOutcome::kUnresolved) {
+    ++report.removed;
+    if (repeat) --report.unresolved;
+    report.tets_removed += result.tets_removed;
+    report.tets_created += result.tets_created;
+    report.edges_split += result.edges_split;
+  }
+  switch (result.outcome) {
+    case RemovalOutcome::kDirect:
+      if (!repeat) {
+        ++report.direct;
+        report.selected_in_sets += result.selected_removed;
+      }
+      break;
+    case RemovalOutcome::kNeighbours:
+      ++report.resolved_by_neighbours;
+      report.neighbour_set_tets += result.tets_removed;
+      report.selected_in_sets += result.selected_removed;
+      if (kind == SingularityKind::kVertex) {
+        ++report.vertex_resolved_by_neighbours;
+        report.vertex_neighbour_set_tets += result.tets_removed;
+      } else {
+        ++report.edge_resolved_by_neighbours;
+        report.edge_neighbour_set_tets += result.tets_removed;
+      }
+      break;
+    case RemovalOutcome::kRefinement:
+      ++report.resolved_by_refinement;
+      if (result.optimized_refinement) ++report.resolved_by_optimized_refinement;
+      break;
+    case RemovalOutcome::kFallback:
+      ++report.resolved_by_fallback;
+      break;
+    case RemovalOutcome::kUnresolved:
+      if (!repeat) ++report.unresolved;
+      break;
+  }
+}
+
+}  // namespace
+
 const char* to_string(RemovalOutcome outcome) {
   switch (outcome) {
     case RemovalOutcome::kDirect: return "direct";
@@ -74,7 +128,12 @@ std::span<const TetId> Remover::last_created() const { return ws_->net_created; 
 std::span<const TetId> Remover::last_exposed() const { return ws_->exposed; }
 
 RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limits) {
+  return remove(mesh, t, removability(mesh, t), limits);
+}
+
+RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first, const RequestLimits& limits) {
   assert(mesh.is_live(t));
+  assert(first.kind == removability(mesh, t).kind && "first is t's verdict on this mesh");
   Workspace& w = *ws_;
   const bool own_transaction = !mesh.in_transaction();
   if (own_transaction) mesh.begin_transaction();
@@ -83,9 +142,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
   detail::RemovalContext ctx{mesh, w.set_test, w.splitter, w.exposed, start, limits.max_tets_created, limits.selection};
 
   RemovalResult result;
-  result.first = removability(mesh, t);
-  const Removability& first = result.first;
-  const bool repeat = w.met_unresolved.contains(t);
+  result.first = first;
+  result.repeat = w.met_unresolved.contains(t);
   auto count_selected = [&](std::span<const TetId> set) {
     if (!limits.selection) return static_cast<std::uint32_t>(1);  // the requested tet
     std::uint32_t n = 0;
@@ -155,7 +213,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
     if (mesh.boundary_face_count(c) > 0) w.exposed.push_back(c);
   if (own_transaction) mesh.commit();
 
-  count_request(report_, result, repeat);
+  count_request(report_, result);
   if (result.outcome == RemovalOutcome::kUnresolved) {
     w.met_unresolved.insert(t);
   } else {
