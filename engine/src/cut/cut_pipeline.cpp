@@ -51,6 +51,8 @@ Cutter::Pipeline::Pipeline(TetMesh& mesh, const CutParams& params)
   index_.build(mesh_);
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
+  invalid_ = validate(params_);
+  judge_scale();
   prepare();
 }
 
@@ -78,6 +80,7 @@ void Cutter::Pipeline::reset() {
   index_.build(mesh_, mesh_.mean_edge_length());
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
+  judge_scale();
   remover_.reset();
   clear_marks();
   prepare();
@@ -87,8 +90,14 @@ std::optional<std::string> Cutter::Pipeline::set_params(const CutParams& params)
   if (auto invalid = validate(params)) return invalid;
   const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth;
   params_ = params;
+  invalid_.reset();
+  judge_scale();
   if (removal_changed) remover_.set_options(removal_options(params_));
   return std::nullopt;
+}
+
+void Cutter::Pipeline::judge_scale() {
+  refusal_ = invalid_ ? invalid_ : check_scale(scale_, params_.tool_diameter, params_.d_ref_factor, params_.max_tets_created);
 }
 
 std::optional<std::string> Cutter::Pipeline::stale() const {
@@ -143,8 +152,7 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   net_removed_.clear();
   net_created_.clear();
   auto invalid = stale();
-  if (!invalid) invalid = validate(params_);
-  if (!invalid) invalid = check_scale(scale_, params_.tool_diameter, params_.d_ref_factor, params_.max_tets_created);
+  if (!invalid) invalid = refusal_;
   if (invalid) {
     report.ok = false;
     report.failure = *invalid;
