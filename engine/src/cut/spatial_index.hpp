@@ -113,9 +113,6 @@ class SpatialIndex {
   std::uint64_t cells_visited_ = 0;
 };
 
-// Whether the live tet t meets the ball (the closest-point test of tool_ball.hpp on its corners).
-bool tet_meets_ball(const TetMesh& mesh, TetId t, const Ball& ball);
-
 // Every live tet meeting the ball, in id order, by a scan of the whole mesh (O(#T)): the
 // reference the index is tested against and the query of one-off commands, never a cut's.
 void scan_tets_meeting(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out);

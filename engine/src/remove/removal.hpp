@@ -37,8 +37,8 @@
 #include <span>
 
 #include "remove/removability.hpp"
+#include "remove/selection.hpp"
 #include "tetcut/cut_strategies.hpp"  // RemovalStrategy
-#include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/removal_report.hpp"
@@ -82,10 +82,6 @@ struct RemovalResult {
   bool over_budget = false;           // kUnresolved because a split would exceed the budget
   bool set_test_disagrees = false;    // verify_direct: set_removable() refused what 3.3 accepted
 };
-
-// The tets a caller (a cut) selected for removal: lets the statistics count what a neighbour set
-// swallowed, and a refinement take a selected parent's other children along.
-using Selection = StampedSet<TetId>;
 
 // What one request may do beyond the strategy's own bounds.
 struct RequestLimits {
