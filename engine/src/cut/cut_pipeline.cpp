@@ -134,9 +134,10 @@ void Cutter::Pipeline::follow(const TetMesh::Savepoint& point) {
   for (const TetMesh::TetBirth& birth : mesh_.tets_made_since(point)) {
     // Selection is decided once, on the refined region (paper 3.3): a piece of a selected tet is
     // selected tissue, a piece of a kept tet stays kept wherever its centroid falls (else every
-    // split at the ball's edge would select finer and finer pieces of kept tissue: 3.4 ran away
-    // that way). A piece of selected tissue inside the tool joins T_removal. The journal lists
-    // parents before children, so a parent's marks are set when its children are seen.
+    // split at the ball's edge would select finer and finer pieces of kept tissue, and 3.4,
+    // which splits around every singularity, would run away). A piece of selected tissue inside
+    // the tool joins T_removal. The journal lists parents before children, so a parent's marks
+    // are set when its children are seen.
     const auto parents = mesh_.parents(birth);
     if (!std::any_of(parents.begin(), parents.end(), [&](TetId p) { return tissue_.contains(p); })) continue;
     tissue_.insert(birth.tet);

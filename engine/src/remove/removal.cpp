@@ -96,7 +96,7 @@ const char* to_string(RemovalOutcome outcome) {
 }
 
 Remover::Remover(RemovalOptions options) : options_(options), ws_(std::make_unique<Workspace>()) {
-  // The split templates are a table built on first use (about 15 million instructions): pay it
+  // The split templates are a table built on first use, costlier than many requests: pay it
   // here, not inside the first request that refines.
   (void)split_template(1, 0);
 }

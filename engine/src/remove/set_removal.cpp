@@ -135,7 +135,8 @@ SetRemovalWorkspace::VertexVerdict SetRemovalWorkspace::vertex_ok(const TetMesh&
 
 Removability SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const TetId> set, TestedPrefix prefix) {
   // Marks the set and groups its tets by vertex in two linear passes (a bucket per vertex, in
-  // the order the set first names them): a sort of (vertex, tet) pairs was a quarter of the test.
+  // the order the set first names them), rather than sorting (vertex, tet) pairs: the test runs
+  // for every candidate set, and the grouping would otherwise be much of its cost.
   marked_.clear();
   vertex_slot_.clear();
   distinct_.clear();
