@@ -202,7 +202,6 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_);
   if (refined.refusal != SplitRefusal::kNone)
     return fail(std::string("refinement refused: ") + to_string(refined.refusal));
-  follow(cut_start_);
   report.refine_iterations = refined.iterations;
   report.edges_split = refined.edges_split;
   report.tets_refined = refined.tets_removed;
@@ -211,8 +210,9 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
 
   // Select T_removal (paper 3.3).
   for (TetId t : region_) {
-    // The refinement's own tets inside the tool were selected as they were made (follow()).
-    if (!mesh_.is_live(t) || selected_.contains(t) || !selectable(t)) continue;
+    // region_ is live and distinct, the refinement's children included (Refiner::refine): each
+    // is tested once. Nothing is tissue before this, so there is nothing to follow() yet.
+    if (!selectable(t)) continue;
     selected_.insert(t);
     tissue_.insert(t);
     removal_.push_back(t);
