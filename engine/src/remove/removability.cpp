@@ -1,18 +1,17 @@
 #include "remove/removability.hpp"
 
 #include <cassert>
+#include <cstddef>
+#include <iterator>
 
 #include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 
 const char* to_string(SingularityKind kind) {
-  switch (kind) {
-    case SingularityKind::kNone: return "none";
-    case SingularityKind::kVertex: return "vertex";
-    case SingularityKind::kEdge: return "edge";
-  }
-  return "?";
+  constexpr const char* kNames[] = {"none", "vertex", "edge"};  // in the enum's order
+  const auto i = static_cast<std::size_t>(kind);
+  return i < std::size(kNames) ? kNames[i] : "?";
 }
 
 Removability removability(const TetMesh& mesh, TetId t) {

@@ -28,6 +28,9 @@ struct Remover::Workspace {
   std::vector<TetId> set;
   std::vector<TetId> net_removed, net_created, exposed;
   StampedSet<TetId> met_unresolved;  // already counted as unresolved (cleared by reset() only)
+  // The wide search's bounds (as the strategy wide and as 3.4/3.7's repair), from the options
+  // when they are set.
+  detail::WideSearchLimits limits;
 };
 
 namespace {
@@ -95,7 +98,8 @@ const char* to_string(RemovalOutcome outcome) {
   return "?";
 }
 
-Remover::Remover(RemovalOptions options) : options_(options), ws_(std::make_unique<Workspace>()) {
+Remover::Remover(RemovalOptions options) : ws_(std::make_unique<Workspace>()) {
+  set_options(options);
   // The split templates are a table built on first use, costlier than many requests: pay it
   // here, not inside the first request that refines.
   (void)split_template(1, 0);
@@ -116,6 +120,12 @@ void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
   ws_->refinement.reserve();
   ws_->fallback.reserve();
   ws_->met_unresolved.reserve(tets);
+}
+
+void Remover::set_options(const RemovalOptions& options) {
+  options_ = options;
+  ws_->limits = {options.max_path_depth, options.wide_rounds, options.wide_evaluations, options.max_set_size};
+  reset();
 }
 
 void Remover::reset() {
@@ -166,9 +176,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
     bool found = false;
     if (options_.strategy == RemovalStrategy::kWide) {
       const TetId one[1] = {t};
-      const detail::WideSearchLimits wide{options_.max_path_depth, options_.wide_rounds, options_.wide_evaluations,
-                                          options_.max_set_size};
-      found = w.wide.find(mesh, w.set_test, one, first, wide, w.set);
+      found = w.wide.find(mesh, w.set_test, one, first, w.limits, w.set);
     } else {
       found = w.neighbours.find(mesh, w.set_test, t, first, options_.max_path_depth, options_.max_set_size, w.set);
       searched_path = w.neighbours.path();
@@ -184,9 +192,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
   // 3.7 (combined, wide) or 3.4 (basic): refine, then remove the paper's set if it is removable.
   if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kNeighbours) {
     const bool optimized = options_.strategy != RemovalStrategy::kBasic;
-    const detail::WideSearchLimits repair{options_.max_path_depth, options_.wide_rounds, options_.wide_evaluations,
-                                          options_.max_set_size};
-    const std::uint32_t n = optimized ? w.refinement.optimized(ctx, t, first, repair, searched_path) : w.refinement.basic(ctx, t, first, repair);
+    const std::uint32_t n = optimized ? w.refinement.optimized(ctx, t, first, w.limits, searched_path)
+                                      : w.refinement.basic(ctx, t, first, w.limits);
     if (n > 0) {
       result.outcome = RemovalOutcome::kRefinement;
       result.optimized_refinement = optimized;

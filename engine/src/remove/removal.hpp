@@ -114,10 +114,7 @@ class Remover {
   // old one are cleared; the workspaces keep their memory, so nothing is reallocated.
   void reset();
   // Other options, as a new Remover would have them (reset() included), in the same memory.
-  void set_options(const RemovalOptions& options) {
-    options_ = options;
-    reset();
-  }
+  void set_options(const RemovalOptions& options);
   [[nodiscard]] const RemovalOptions& options() const { return options_; }
 
   // The net effect of the last remove(), sorted by id: ids live before it that it killed, and
