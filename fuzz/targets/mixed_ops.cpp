@@ -163,9 +163,9 @@ void remove(CheckedMesh& checked, FuzzedDataProvider& input) {
   const TetId t = fuzz::consume_live_tet_where(mesh, input, [&](TetId c) {
     const bool ours = fuzz::removable_by_paper_rule(mesh, c);
     const Removability engine = removability(mesh, c);
-    checked.require(ours == engine.removable, "removability",
+    checked.require(ours == engine.removable(), "removability",
                     "tet " + std::to_string(c.value) + ": the paper's rule says " + (ours ? "removable" : "not removable") +
-                        ", removability() says " + (engine.removable ? "removable" : "not removable") + " (case " +
+                        ", removability() says " + (engine.removable() ? "removable" : "not removable") + " (case " +
                         std::to_string(engine.paper_case) + ")");
     return ours;
   });

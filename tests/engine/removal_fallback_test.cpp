@@ -124,7 +124,7 @@ TEST(NormalSurfaceFallback, TakesOverWherePaper34sSetIsNotRemovable) {
     for (std::uint32_t i = 0; i < original.tet_capacity(); ++i) {
       const TetId t{i};
       const Removability first = removability(original, t);
-      if (first.removable) continue;
+      if (first.removable()) continue;
       ++tried;
       TetMesh mesh = original;
       const std::uint64_t before = canonical_hash(mesh);

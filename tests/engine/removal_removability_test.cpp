@@ -20,7 +20,8 @@ namespace {
 using Seen = std::set<std::pair<int, bool>>;
 
 // For every live tet: removability()'s verdict == the checker's verdict on the mesh without it,
-// and set_removable({t}) says the same; the singular vertex or edge named belongs to the tet.
+// and set_removable({t}) says the same; the singular vertex or edge named belongs to the tet,
+// and the tet named is t.
 void expect_single_removals_agree(const TetMesh& mesh, Seen* seen) {
   SetRemovalWorkspace ws;
   for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
@@ -29,8 +30,8 @@ void expect_single_removals_agree(const TetMesh& mesh, Seen* seen) {
     const Removability r = removability(mesh, t);
     const TetId one[1] = {t};
     const bool valid_after = still_valid_without(mesh, one);
-    EXPECT_EQ(r.removable, valid_after) << "tet " << i << " case " << int(r.paper_case);
-    EXPECT_EQ(ws.check(mesh, one).ok, valid_after) << "tet " << i;
+    EXPECT_EQ(r.removable(), valid_after) << "tet " << i << " case " << int(r.paper_case);
+    EXPECT_EQ(ws.check(mesh, one).removable(), valid_after) << "tet " << i;
     EXPECT_EQ(r.paper_case, std::min(mesh.boundary_face_count(t), 3) + 1);
     if (r.kind == SingularityKind::kVertex) {
       EXPECT_GE(mesh.local_index(t, r.vertex), 0);
@@ -40,16 +41,20 @@ void expect_single_removals_agree(const TetMesh& mesh, Seen* seen) {
       EXPECT_EQ(r.paper_case, 3);
       EXPECT_GE(mesh.local_index(t, r.edge.a), 0);
       EXPECT_GE(mesh.local_index(t, r.edge.b), 0);
+      // Named as the set test names an edge: where a repair search starts (wide_search.hpp).
+      EXPECT_EQ(r.local_edge, mesh.local_edge(t, r.edge.a, r.edge.b));
     }
-    EXPECT_EQ(r.removable, r.kind == SingularityKind::kNone);
-    if (seen) seen->insert({r.paper_case, r.removable});
+    if (!r.removable()) {
+      EXPECT_EQ(r.tet, t);
+    }
+    if (seen) seen->insert({r.paper_case, r.removable()});
   }
 }
 
 TEST(Removability, Case4ASingleTetAndTwoTetsAreAlwaysRemovable) {
   TetMesh one = build_or_fail(single_tet());
   const Removability r = removability(one, TetId{0});
-  EXPECT_TRUE(r.removable);
+  EXPECT_TRUE(r.removable());
   EXPECT_EQ(r.paper_case, 4);
 
   RawMesh two = single_tet();
@@ -68,7 +73,7 @@ TEST(Removability, Case3RemovableAroundAnInteriorEdgeAndNotAroundABoundaryOne) {
   for (std::uint32_t i = 0; i < 6; ++i) {
     const Removability r = removability(mesh, TetId{i});
     EXPECT_EQ(r.paper_case, 3);
-    EXPECT_TRUE(r.removable);
+    EXPECT_TRUE(r.removable());
   }
   // Once one goes the diagonal is on the surface: the tets not adjacent to the gap are case 3
   // with their opposite edge on the boundary, an edge singularity at the diagonal.
@@ -140,9 +145,9 @@ TEST(SetRemoval, AgreesWithTheCheckerOnRandomConnectedSets) {
   for (int trial = 0; trial < 400; ++trial) {
     set.assign(1, TetId{rng.below(mesh.tet_capacity())});
     grow_connected(mesh, set, 2 + rng.below(7), rng, 40);
-    const SetRemovalCheck check = ws.check(mesh, set);
-    EXPECT_EQ(check.ok, still_valid_without(mesh, set)) << "trial " << trial;
-    if (check.ok) {
+    const Removability check = ws.check(mesh, set);
+    EXPECT_EQ(check.removable(), still_valid_without(mesh, set)) << "trial " << trial;
+    if (check.removable()) {
       ++removable;
     } else {
       ++not_removable;
@@ -176,22 +181,22 @@ TEST(SetRemoval, ATestedPrefixGivesTheVerdictOfAFullTest) {
     for (int trial = 0; trial < 600; ++trial) {
       set.assign(1, TetId{rng.below(mesh.tet_capacity())});
       grow(2 + rng.below(12));
-      const SetRemovalCheck base = ws.check(mesh, set);
-      if (base.ok) continue;
+      const Removability base = ws.check(mesh, set);
+      if (base.removable()) continue;
       const TestedPrefix prefix{static_cast<std::uint32_t>(set.size()), base.vertices_passed};
       grow(set.size() + 1 + rng.below(6));
-      const SetRemovalCheck full = ws.check(mesh, set);
-      const SetRemovalCheck quick = ws.check(mesh, set, prefix);
-      ASSERT_EQ(quick.ok, full.ok) << name << " trial " << trial;
+      const Removability full = ws.check(mesh, set);
+      const Removability quick = ws.check(mesh, set, prefix);
+      ASSERT_EQ(quick.removable(), full.removable()) << name << " trial " << trial;
       EXPECT_EQ(quick.vertices_passed, full.vertices_passed) << name << " trial " << trial;
-      if (!full.ok) {
+      if (!full.removable()) {
         EXPECT_EQ(quick.kind, full.kind) << name << " trial " << trial;
         EXPECT_EQ(quick.tet, full.tet) << name << " trial " << trial;
         EXPECT_EQ(quick.vertex, full.vertex) << name << " trial " << trial;
         EXPECT_EQ(quick.local_edge, full.local_edge) << name << " trial " << trial;
       }
       reused += prefix.vertices > 0;
-      (full.ok ? became_removable : still_failing) += 1;
+      (full.removable() ? became_removable : still_failing) += 1;
     }
     // The reuse happened, and both verdicts occur.
     EXPECT_GT(reused, 50) << name;
@@ -223,18 +228,18 @@ TEST(SetRemoval, TheTestAtOneVertexIsTheFullTestThere) {
     int failing = 0, passing = 0;
     for_random_sets(name, 505, 500, [&](const TetMesh& mesh, const std::vector<TetId>& set, SplitMix64&, int trial) {
       SetRemovalWorkspace ws;
-      const SetRemovalCheck full = ws.check(mesh, set);
+      const Removability full = ws.check(mesh, set);
       std::set<std::uint32_t> vertices;
       for (TetId t : set)
         for (VertId v : mesh.tet(t)) vertices.insert(v.value);
       bool all_pass = true;
-      for (std::uint32_t v : vertices) all_pass = all_pass && ws.check_at(mesh, set, VertId{v}).ok;
-      ASSERT_EQ(all_pass, full.ok) << name << " trial " << trial;
-      (full.ok ? passing : failing) += 1;
-      if (full.ok) return;
+      for (std::uint32_t v : vertices) all_pass = all_pass && ws.check_at(mesh, set, VertId{v}).removable();
+      ASSERT_EQ(all_pass, full.removable()) << name << " trial " << trial;
+      (full.removable() ? passing : failing) += 1;
+      if (full.removable()) return;
       if (full.kind == SingularityKind::kVertex) {
-        const SetRemovalCheck there = ws.check_at(mesh, set, full.vertex);
-        ASSERT_FALSE(there.ok) << name << " trial " << trial;
+        const Removability there = ws.check_at(mesh, set, full.vertex);
+        ASSERT_FALSE(there.removable()) << name << " trial " << trial;
         EXPECT_EQ(there.kind, full.kind) << name << " trial " << trial;
         EXPECT_EQ(there.vertex, full.vertex) << name << " trial " << trial;
         EXPECT_EQ(there.tet, full.tet) << name << " trial " << trial;
@@ -243,8 +248,8 @@ TEST(SetRemoval, TheTestAtOneVertexIsTheFullTestThere) {
       // An edge with two runs is found by the walk at one of its ends: that end names it alike.
       bool named = false;
       for (VertId end : {full.edge.a, full.edge.b}) {
-        const SetRemovalCheck there = ws.check_at(mesh, set, end);
-        named = named || (!there.ok && there.kind == SingularityKind::kEdge && there.tet == full.tet &&
+        const Removability there = ws.check_at(mesh, set, end);
+        named = named || (!there.removable() && there.kind == SingularityKind::kEdge && there.tet == full.tet &&
                           there.local_edge == full.local_edge);
       }
       EXPECT_TRUE(named) << name << " trial " << trial;
@@ -268,7 +273,7 @@ TEST(SetRemoval, SplittingAtAVertexKeepsTheVerdictThere) {
       for (TetId t : set)
         if (base.local_index(t, v) >= 0) group.push_back(t);
       SetRemovalWorkspace ws;
-      const bool before = ws.check_at(base, group, v).ok;
+      const bool before = ws.check_at(base, group, v).removable();
       TetMesh mesh = base;
       std::vector<Edge> edges;
       for (TetId t : group)
@@ -285,7 +290,7 @@ TEST(SetRemoval, SplittingAtAVertexKeepsTheVerdictThere) {
         if (std::find(group.begin(), group.end(), c.parent) != group.end() && mesh.local_index(c.tet, v) >= 0)
           corners.push_back(c.tet);
       ASSERT_EQ(corners.size(), group.size()) << name << " trial " << trial << ": one corner per tet of G";
-      const bool after = ws.check_at(mesh, corners, v).ok;
+      const bool after = ws.check_at(mesh, corners, v).removable();
       ASSERT_EQ(after, before) << name << " trial " << trial;
       (before ? agree_pass : agree_fail) += 1;
     });
@@ -305,7 +310,7 @@ TEST(SetRemoval, APathThatPinchesAVertexIsRefusedByTheEulerTest) {
     for (std::uint32_t b = a + 1; b < 6; ++b) {
       const TetId pair[2] = {TetId{a}, TetId{b}};
       const bool valid_after = still_valid_without(mesh, pair);
-      EXPECT_EQ(ws.check(mesh, pair).ok, valid_after) << a << "," << b;
+      EXPECT_EQ(ws.check(mesh, pair).removable(), valid_after) << a << "," << b;
       refused += !valid_after;
     }
   EXPECT_GT(refused, 0);
@@ -361,9 +366,9 @@ TEST(SetRemoval, AgreesWithTheCheckerOnIrregularMeshesAndShells) {
           grow_from(shell[rng.below(static_cast<std::uint32_t>(shell.size()))], 1 + rng.below(4), shell);
         }
       }
-      const SetRemovalCheck check = ws.check(mesh, set);
-      ASSERT_EQ(check.ok, still_valid_without(mesh, set)) << name << " trial " << trial << " kind " << kind;
-      removable += check.ok;
+      const Removability check = ws.check(mesh, set);
+      ASSERT_EQ(check.removable(), still_valid_without(mesh, set)) << name << " trial " << trial << " kind " << kind;
+      removable += check.removable();
       vertex_refusals += check.kind == SingularityKind::kVertex;
       edge_refusals += check.kind == SingularityKind::kEdge;
     }

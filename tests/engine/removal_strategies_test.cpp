@@ -242,7 +242,7 @@ TEST(RemovalStrategies, TheNeighbourSearchKeepsThePathThat37RefinesAlong) {
     const TetId t = picker.pick(mesh);
     if (!t.valid()) break;
     const Removability first = removability(mesh, t);
-    if (!first.removable) {
+    if (!first.removable()) {
       search.find(mesh, ws, t, first, 10, 64, found);
       path.clear();
       if (first.kind == SingularityKind::kVertex && detail::shortest_path_to_border(mesh, ws, t, first.vertex, 10, path)) {

@@ -51,7 +51,7 @@ struct CutParams {
   double p = 1.5;                    // shell edge ratio of the refinement loop (paper 3.2)
   std::uint32_t search_depth = 10;   // neighbour search depth (paper 3.5)
   std::uint32_t max_refine_iterations = 8;
-  std::uint32_t max_tets_created = 20000;  // net tets a cut may create; more is refused, in < 50 ms on the liver
+  std::uint32_t max_tets_created = 20000;  // net tets a cut may create; more is refused early
   RemovalStrategy strategy = RemovalStrategy::kCombined;   // cut_strategies.hpp
   SplitMethod split_method = SplitMethod::kTemplates;
   // The improvement pass that ends a cut or a removal request (flips, smoothing of the cut's own
@@ -104,9 +104,9 @@ class Cutter {
 
   // Makes every working array ready for cuts on the mesh as it is now, O(#T) once: room in the
   // mesh for half as many tets again, the marks, the scratch lists and the journal at their
-  // working size, all allocated and touched (a page fault in a cut is a latency spike, and the
-  // first cut used to pay a hundred). The constructor calls it; call it again after the mesh has
-  // grown past that room, so that the cuts that follow do not reallocate.
+  // working size, all allocated and touched (a page fault in a cut is a latency spike, and a
+  // first cut would otherwise meet them all). The constructor calls it; call it again after the
+  // mesh has grown past that room, so that the cuts that follow do not reallocate.
   void prepare();
 
   // After the mesh this Cutter holds was replaced (assigned another mesh: a fuzzer's next input,

@@ -93,4 +93,9 @@ bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, c
   return false;
 }
 
+bool tet_meets_ball(const TetMesh& mesh, TetId t, const Ball& ball) {
+  const auto v = mesh.tet(t);
+  return intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+}
+
 }  // namespace tetcut

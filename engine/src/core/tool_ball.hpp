@@ -1,6 +1,8 @@
 // The cautery tool as the paper models it (3.1): a ball of given diameter at the tool's tip.
 #pragma once
 
+#include "tetcut/ids.hpp"
+#include "tetcut/mesh.hpp"
 #include "tetcut/vec3.hpp"
 
 namespace tetcut {
@@ -18,5 +20,9 @@ double distance_to_tet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& 
 // behind two cheap ones: most candidates are rejected by their bounding box, and a tet with a
 // vertex in the ball is accepted at once.
 bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+// Whether the live tet t meets the ball: intersects() on its corners. What the spatial index
+// asks of the tets it cannot decide, and the refinement loop of the tets it made (its focus).
+bool tet_meets_ball(const TetMesh& mesh, TetId t, const Ball& ball);
 
 }  // namespace tetcut

@@ -20,6 +20,24 @@ double micros(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::micro>(b - a).count();
 }
 
+// One request in the cut's counts. Per request, except what the Remover's statistics count per
+// distinct tet: a tet an earlier cut left unresolved was counted as a direct removal or a
+// singularity then, not again.
+void count_request(CutReport& report, const RemovalResult& r) {
+  if (!r.repeat) {
+    report.vertex_singularities += r.first.kind == SingularityKind::kVertex ? 1 : 0;
+    report.edge_singularities += r.first.kind == SingularityKind::kEdge ? 1 : 0;
+  }
+  if (r.outcome != RemovalOutcome::kUnresolved) report.tets_removed += r.tets_removed;
+  switch (r.outcome) {
+    case RemovalOutcome::kDirect: report.direct += r.repeat ? 0 : 1; break;
+    case RemovalOutcome::kNeighbours: ++report.resolved_by_neighbours; break;
+    case RemovalOutcome::kRefinement: ++report.resolved_by_refinement; break;
+    case RemovalOutcome::kFallback: ++report.resolved_by_fallback; break;
+    case RemovalOutcome::kUnresolved: ++report.unresolved; break;
+  }
+}
+
 RemovalOptions removal_options(const CutParams& p) {
   RemovalOptions o;
   o.strategy = p.strategy;
@@ -34,6 +52,8 @@ Cutter::Pipeline::Pipeline(TetMesh& mesh, const CutParams& params)
   index_.build(mesh_);
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
+  invalid_ = validate(params_);
+  judge_scale();
   prepare();
 }
 
@@ -62,6 +82,7 @@ void Cutter::Pipeline::reset() {
   index_.build(mesh_, mesh_.mean_edge_length());
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
+  judge_scale();
   remover_.reset();
   clear_marks();
   prepare();
@@ -71,8 +92,14 @@ std::optional<std::string> Cutter::Pipeline::set_params(const CutParams& params)
   if (auto invalid = validate(params)) return invalid;
   const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth;
   params_ = params;
+  invalid_.reset();
+  judge_scale();
   if (removal_changed) remover_.set_options(removal_options(params_));
   return std::nullopt;
+}
+
+void Cutter::Pipeline::judge_scale() {
+  refusal_ = invalid_ ? invalid_ : check_scale(scale_, params_.tool_diameter, params_.d_ref_factor, params_.max_tets_created);
 }
 
 std::optional<std::string> Cutter::Pipeline::stale() const {
@@ -109,9 +136,10 @@ void Cutter::Pipeline::follow(const TetMesh::Savepoint& point) {
   for (const TetMesh::TetBirth& birth : mesh_.tets_made_since(point)) {
     // Selection is decided once, on the refined region (paper 3.3): a piece of a selected tet is
     // selected tissue, a piece of a kept tet stays kept wherever its centroid falls (else every
-    // split at the ball's edge would select finer and finer pieces of kept tissue: 3.4 ran away
-    // that way). A piece of selected tissue inside the tool joins T_removal. The journal lists
-    // parents before children, so a parent's marks are set when its children are seen.
+    // split at the ball's edge would select finer and finer pieces of kept tissue, and 3.4,
+    // which splits around every singularity, would run away). A piece of selected tissue inside
+    // the tool joins T_removal. The journal lists parents before children, so a parent's marks
+    // are set when its children are seen.
     const auto parents = mesh_.parents(birth);
     if (!std::any_of(parents.begin(), parents.end(), [&](TetId p) { return tissue_.contains(p); })) continue;
     tissue_.insert(birth.tet);
@@ -127,8 +155,7 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   net_removed_.clear();
   net_created_.clear();
   auto invalid = stale();
-  if (!invalid) invalid = validate(params_);
-  if (!invalid) invalid = check_scale(scale_, params_.tool_diameter, params_.d_ref_factor, params_.max_tets_created);
+  if (!invalid) invalid = refusal_;
   if (invalid) {
     report.ok = false;
     report.failure = *invalid;
@@ -177,7 +204,6 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   const RefineReport refined = refiner_.refine(mesh_, hit_, refine, region_);
   if (refined.refusal != SplitRefusal::kNone)
     return fail(std::string("refinement refused: ") + to_string(refined.refusal));
-  follow(cut_start_);
   report.refine_iterations = refined.iterations;
   report.edges_split = refined.edges_split;
   report.tets_refined = refined.tets_removed;
@@ -186,8 +212,9 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
 
   // Select T_removal (paper 3.3).
   for (TetId t : region_) {
-    // The refinement's own tets inside the tool were selected as they were made (follow()).
-    if (!mesh_.is_live(t) || selected_.contains(t) || !selectable(t)) continue;
+    // region_ is live and distinct, the refinement's children included (Refiner::refine): each
+    // is tested once. Nothing is tissue before this, so there is nothing to follow() yet.
+    if (!selectable(t)) continue;
     selected_.insert(t);
     tissue_.insert(t);
     removal_.push_back(t);
@@ -251,18 +278,15 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
 }
 
 void Cutter::Pipeline::remove_selected(CutReport& report) {
-  const RemovalReport before = remover_.report();
   if (tool_ && removal_.size() == mesh_.num_tets()) {
     // The tool holds every tet (each selected one is live and counted once): removing the whole
-    // mesh leaves nothing that could pinch, so it goes at once, in O(#T), instead of tet by tet
-    // (issue 16: a tool larger than the mesh removes what it can, fast).
+    // mesh leaves nothing that could pinch, so it goes at once, in O(#T), instead of tet by tet.
     mesh_.remove_tets(removal_);
     report.requested = report.tets_removed = static_cast<std::uint32_t>(removal_.size());
     return;
   }
-  // Counted per request here: the Remover's running total of unresolved tets goes down when a
-  // tet left unresolved by an earlier cut goes now, so its difference can be negative.
-  std::uint32_t unresolved = 0, requests = 0;
+  // A cut the budget refuses is rolled back and reports none of its requests.
+  const CutReport before = report;
   // The tets to test for a direct removal: every selected tet once, then what each request
   // exposes or selects. Removal only turns faces, edges and vertices into boundary ones, so a tet
   // that is not removable becomes removable only when it gains a boundary face, i.e. when a face
@@ -274,24 +298,26 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     work_.push_back(t);
   };
   for (TetId t : removal_) enqueue(t);
-  auto request = [&](TetId t) {
+  // `first`: removability(mesh_, t), just computed.
+  auto request = [&](TetId t, const Removability& first) {
     tried_.insert(t);
-    ++requests;
+    ++report.requests;
     RequestLimits limits;
     limits.max_tets_created = params_.max_tets_created > net_made() ? params_.max_tets_created - net_made() : 0;
     limits.selection = &selected_;
     const std::size_t selected_before = removal_.size();
     const TetMesh::Savepoint before_request = mesh_.savepoint();
-    const RemovalResult r = remover_.remove(mesh_, t, limits);
+    const RemovalResult r = remover_.remove(mesh_, t, first, limits);
     follow(before_request);
     for (std::size_t i = selected_before; i < removal_.size(); ++i) enqueue(removal_[i]);
     for (TetId e : remover_.last_exposed()) enqueue(e);
     if (r.over_budget || net_made() > params_.max_tets_created) {
+      report = before;
       report.ok = false;
       report.failure = "the removal would exceed the per-cut tet budget";
       return false;
     }
-    if (r.outcome == RemovalOutcome::kUnresolved) ++unresolved;
+    count_request(report, r);
     return true;
   };
   for (;;) {
@@ -300,8 +326,10 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     while (head < work_.size()) {
       const TetId t = work_[head++];
       queued_.erase(t);
-      if (!pending(t) || !removability(mesh_, t).removable) continue;
-      if (!request(t)) return;
+      if (!pending(t)) continue;
+      const Removability first = removability(mesh_, t);
+      if (!first.removable()) continue;
+      if (!request(t, first)) return;
     }
     // Then one stuck tet, outside in: on the surface first (the paper's statistics are about
     // "removing a tetrahedron on the mesh surface", 3.3), else any (a tool inside the mesh).
@@ -318,20 +346,9 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
           break;
         }
     if (!stuck.valid()) break;
-    if (!request(stuck)) return;
+    if (!request(stuck, removability(mesh_, stuck))) return;
   }
-  const RemovalReport& after = remover_.report();
-  auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<std::uint32_t>(a - b); };
   report.requested = static_cast<std::uint32_t>(removal_.size());
-  report.requests = requests;
-  report.tets_removed = delta(after.tets_removed, before.tets_removed);
-  report.direct = delta(after.direct, before.direct);
-  report.vertex_singularities = delta(after.vertex_singularities, before.vertex_singularities);
-  report.edge_singularities = delta(after.edge_singularities, before.edge_singularities);
-  report.resolved_by_neighbours = delta(after.resolved_by_neighbours, before.resolved_by_neighbours);
-  report.resolved_by_refinement = delta(after.resolved_by_refinement, before.resolved_by_refinement);
-  report.resolved_by_fallback = delta(after.resolved_by_fallback, before.resolved_by_fallback);
-  report.unresolved = unresolved;
 }
 
 std::string Cutter::Pipeline::floor_failure(const CutReport& report) {

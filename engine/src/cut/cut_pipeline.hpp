@@ -55,9 +55,14 @@ class Cutter::Pipeline {
   void finish(CutReport& report, ChangeLog* log);
   // Why the index cannot serve the mesh (compacted or replaced since it was built), if so.
   [[nodiscard]] std::optional<std::string> stale() const;
+  // refusal_ from invalid_ and check_scale(): after the parameters or the mesh's scale change.
+  void judge_scale();
 
   std::uint64_t epoch_ = 0;  // mesh_.id_epoch() when the index was built
   MeshScale scale_;          // what the refinement can serve (check_scale), measured once
+  // Why every cut would be refused, decided when the parameters or the scale change, not per
+  // cut: validate(params_) (invalid_), else check_scale() with scale_ (refusal_ holds either).
+  std::optional<std::string> invalid_, refusal_;
   SpatialIndex index_;
   Refiner refiner_;
   detail::Improver improver_;

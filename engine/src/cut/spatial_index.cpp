@@ -242,11 +242,6 @@ void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ba
   }
 }
 
-bool tet_meets_ball(const TetMesh& mesh, TetId t, const Ball& ball) {
-  const auto v = mesh.tet(t);
-  return intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
 void scan_tets_meeting(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out) {
   out.clear();
   for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i)

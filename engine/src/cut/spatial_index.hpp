@@ -8,13 +8,13 @@
 // radius plus that largest sphere, skips a cell whose box is farther from the centre than the
 // radius plus the cell's own largest sphere, rejects a tet whose outer sphere misses the ball
 // and accepts one whose inner sphere meets it without reading the mesh, and runs the closest-
-// point test (tool_ball.hpp) on the rest. (A tet listed in every cell its
-// box overlaps cost a dozen candidates per tet found: each tet was met in several cells, most
-// far from the ball.) A cell keeps its entries contiguously, in a chain of fixed-size blocks
-// from a pool, so that a query reads each cell in a few cache lines rather than chasing one
-// line per tet; erasing moves the cell's last entry into the hole. Cells live in an
-// open-addressing table keyed by their integer coordinates; query results are sorted by tet id,
-// so the order in which cells and entries are visited never shows.
+// point test (tool_ball.hpp) on the rest. (Listing a tet in every cell its box overlaps instead
+// would meet each tet in several cells, most of them far from the ball.) A cell keeps its
+// entries contiguously, in a chain of fixed-size blocks from a pool, so that a query reads each
+// cell in a few cache lines rather than chasing one line per tet; erasing moves the cell's last
+// entry into the hole. Cells live in an open-addressing table keyed by their integer
+// coordinates; query results are sorted by tet id, so the order in which cells and entries are
+// visited never shows.
 //
 // A query costs what the index holds, not what the ball's box spans: the box is clamped to the
 // bounds of the cells that ever held a tet (grown on insert, never shrunk: conservative), and
@@ -112,9 +112,6 @@ class SpatialIndex {
   std::array<std::int32_t, 3> occupied_lo_{1, 1, 1}, occupied_hi_{0, 0, 0};  // lo > hi: empty
   std::uint64_t cells_visited_ = 0;
 };
-
-// Whether the live tet t meets the ball (the closest-point test of tool_ball.hpp on its corners).
-bool tet_meets_ball(const TetMesh& mesh, TetId t, const Ball& ball);
 
 // Every live tet meeting the ball, in id order, by a scan of the whole mesh (O(#T)): the
 // reference the index is tested against and the query of one-off commands, never a cut's.

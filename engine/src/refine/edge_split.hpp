@@ -28,7 +28,7 @@ enum class SplitRefusal : std::uint8_t {
   kNone,
   kNotAnEdge,        // the two vertices are not joined by an edge of the mesh
   kDegenerateChild,  // a child would be inverted or flat (floating-point degeneracy)
-  kOverBudget,       // the plan has more children than the caller allows (issue 16)
+  kOverBudget,       // the plan has more children than the caller allows
 };
 
 const char* to_string(SplitRefusal refusal);
@@ -40,7 +40,7 @@ struct SplitResult {
   std::uint32_t tets_removed = 0;
   std::uint32_t tets_created = 0;
   // No quality figure: most callers (a cut's rounds, a removal's attempt) never read it, and
-  // measuring every child cost 4 % of a cut's instructions. A caller that wants the worst child
+  // measuring every child would be work on every cut for nobody. A caller that wants the worst child
   // measures the tets in `created` (Refiner does, when RefineParams::measure_quality).
 
   [[nodiscard]] bool ok() const { return refusal == SplitRefusal::kNone; }

@@ -7,7 +7,6 @@
 #include <numbers>
 
 #include "core/quality.hpp"
-#include "cut/spatial_index.hpp"
 #include "tetcut/detail/local_tables.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
 

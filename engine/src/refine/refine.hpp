@@ -12,7 +12,7 @@
 // of shell edges far from the tool would keep the loop spreading through a coarse mesh (paper
 // Figure 3 refines "at the vicinity of the tool").
 //
-// A budget bounds the work, not only the result (issue 16): before each round the plan's
+// A budget bounds the work, not only the result: before each round the plan's
 // children are counted against what is left of max_tets_created, and a round that would pass it
 // is not applied, so a refused loop costs about its budget. The count is net (the tets the loop
 // made that are still live: a child split again in a later round counts only through its own

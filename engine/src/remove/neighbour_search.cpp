@@ -35,7 +35,7 @@ void NeighbourSearch::consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std
   if (size > max_set_size || (!out.empty() && size >= out.size())) return;
   candidate_.assign(base.begin(), base.end());
   candidate_.insert(candidate_.end(), extra.begin(), extra.end());
-  if (ws.check(mesh, candidate_, tested).ok) out.swap(candidate_);
+  if (ws.check(mesh, candidate_, tested).removable()) out.swap(candidate_);
 }
 
 bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first,
@@ -59,8 +59,8 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
   if (!shortest_path_to_border(mesh, ws, t, first.vertex, max_depth, parts_)) return false;
   base_.insert(base_.end(), parts_.begin(), parts_.end());
   path_found_ = true;
-  const SetRemovalCheck check = ws.check(mesh, base_);
-  if (check.ok) {
+  const Removability check = ws.check(mesh, base_);
+  if (check.removable()) {
     out = base_;
     return true;
   }

@@ -17,30 +17,133 @@ bool contains_all(const TetMesh& mesh, TetId t, std::span<const VertId> verts) {
 
 }  // namespace
 
-void RefinementStrategies::reserve() {
-  search_.reserve();
-  reserve_touched(edges_, 512);
-  for (auto* v : {&parents_, &sides_, &set_, &larger_, &repaired_}) reserve_touched(*v, 512);
-  groups_.reserve(8);  // T has four vertices
-  reserve_touched(sizes_, 64);
+bool RefinementPlan::planned(VertId x) const {
+  return std::any_of(groups.begin(), groups.end(), [&](const CornerGroup& g) { return g.at[0] == x || g.at[1] == x; });
 }
 
+void RefinementStrategies::reserve() {
+  search_.reserve();
+  reserve_touched(plan_.edges, 512);
+  reserve_touched(plan_.parents, 512);
+  plan_.groups.reserve(8);  // T has four vertices
+  for (auto* v : {&path_, &runs_, &pieces_, &set_, &larger_, &repaired_}) reserve_touched(*v, 512);
+  for (auto* v : {&run_sizes_, &piece_sizes_}) reserve_touched(*v, 64);
+}
+
+// ---- planning ----------------------------------------------------------------------------------
+
 void RefinementStrategies::add_edges_from(const TetMesh& mesh, VertId from, std::span<const TetId> tets,
-                                          std::span<const VertId> skip) {
+                                          std::span<const VertId> skip, RefinementPlan& plan) {
   for (TetId u : tets)
     for (int i = 0; i < 4; ++i) {
       const VertId w = mesh.vertex(u, i);
       if (w == from || std::find(skip.begin(), skip.end(), w) != skip.end()) continue;
-      const bool known = std::any_of(edges_.begin(), edges_.end(), [&](const Edge& e) { return e.a == from && e.b == w; });
-      if (!known) edges_.push_back({from, w, u});
+      const bool known =
+          std::any_of(plan.edges.begin(), plan.edges.end(), [&](const Edge& e) { return e.a == from && e.b == w; });
+      if (!known) plan.edges.push_back({from, w, u});
     }
 }
 
-std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId t, const WideSearchLimits& repair) {
+void RefinementStrategies::seal(RefinementPlan& plan) {
+  for (const RefinementPlan::CornerGroup& g : plan.groups)
+    std::sort(plan.parents.begin() + g.begin, plan.parents.begin() + g.begin + g.size);
+}
+
+void RefinementStrategies::plan_basic(const TetMesh& mesh, TetId t, const Removability& first, RefinementPlan& plan) {
+  plan.edges.clear();
+  if (first.kind == SingularityKind::kVertex) {
+    mesh.vertex_shell(first.vertex, plan.parents);
+    add_edges_from(mesh, first.vertex, plan.parents, {}, plan);
+    plan.groups.assign(1, {{first.vertex, VertId{}}, 0, static_cast<std::uint32_t>(plan.parents.size())});
+  } else {
+    const VertId ends[2] = {first.edge.a, first.edge.b};
+    mesh.edge_shell(t, mesh.local_edge(t, ends[0], ends[1]), plan.parents);
+    for (VertId end : ends) add_edges_from(mesh, end, plan.parents, ends, plan);
+    plan.groups.assign(1, {{ends[0], ends[1]}, 0, static_cast<std::uint32_t>(plan.parents.size())});
+  }
+  seal(plan);
+}
+
+bool RefinementStrategies::extend_at(const TetMesh& mesh, SetRemovalWorkspace& ws, std::vector<TetId>& set,
+                                     std::size_t begin, VertId v, const Removability& offence,
+                                     std::uint32_t max_set_size) {
+  // The pieces are listed while the set is still marked (check_at marked it).
+  pieces_.clear();
+  piece_sizes_.clear();
+  ws.remaining_pieces(mesh, offence, pieces_, piece_sizes_);
+  const std::size_t end = set.size();
+  std::uint32_t best_begin = 0, best_size = 0;
+  for (std::uint32_t k = 0, first = 0; k < piece_sizes_.size(); first += piece_sizes_[k++]) {
+    const std::uint32_t n = piece_sizes_[k];
+    if ((best_size != 0 && n >= best_size) || end - begin + n > max_set_size) continue;
+    set.resize(end);
+    set.insert(set.end(), pieces_.begin() + first, pieces_.begin() + first + n);
+    if (ws.check_at(mesh, std::span<const TetId>(set.data() + begin, set.size() - begin), v).removable()) {
+      best_begin = first;
+      best_size = n;
+    }
+  }
+  set.resize(end);
+  if (best_size == 0) return false;
+  set.insert(set.end(), pieces_.begin() + best_begin, pieces_.begin() + best_begin + best_size);
+  return true;
+}
+
+bool RefinementStrategies::plan_at_vertex(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, VertId v,
+                                          const WideSearchLimits& limits, std::span<const TetId> searched_path,
+                                          RefinementPlan& plan) {
+  const auto group_begin = static_cast<std::uint32_t>(plan.parents.size());
+  if (!searched_path.empty()) {
+    plan.parents.insert(plan.parents.end(), searched_path.begin(), searched_path.end());
+  } else {
+    if (!shortest_path_to_border(mesh, ws, t, v, limits.max_path_depth, path_)) return false;
+    plan.parents.push_back(t);
+    plan.parents.insert(plan.parents.end(), path_.begin(), path_.end());
+  }
+  const std::span<const TetId> path(plan.parents.data() + group_begin, plan.parents.size() - group_begin);
+  const Removability at_v = ws.check_at(mesh, path, v);
+  // 3.5's extension, decided at v alone: each piece the path leaves around v (or around the
+  // pinched edge at v), smallest first.
+  if (!at_v.removable() && !extend_at(mesh, ws, plan.parents, group_begin, v, at_v, limits.max_set_size)) return false;
+  plan.groups.push_back({{v, VertId{}}, group_begin, static_cast<std::uint32_t>(plan.parents.size()) - group_begin});
+  return true;
+}
+
+bool RefinementStrategies::plan_optimized_vertex(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t,
+                                                 const Removability& first, const WideSearchLimits& limits,
+                                                 std::span<const TetId> searched_path, RefinementPlan& plan) {
+  // Along the shortest path from T to the border of v's shell (paper 3.7, figure 4), and
+  // likewise at each other vertex of T where T alone would leave a singularity: T goes whole,
+  // so each of its vertices needs its own path.
+  plan.parents.clear();
+  plan.groups.clear();
+  if (!plan_at_vertex(mesh, ws, t, first.vertex, limits, searched_path, plan)) return false;
+  const TetId one[1] = {t};
+  for (VertId x : mesh.tet(t))
+    if (x != first.vertex && !ws.check_at(mesh, one, x).removable() && !plan_at_vertex(mesh, ws, t, x, limits, {}, plan))
+      return false;
+  plan.edges.clear();
+  for (const RefinementPlan::CornerGroup& g : plan.groups) add_edges_from(mesh, g.at[0], plan.parents_of(g), {}, plan);
+  seal(plan);
+  return true;
+}
+
+void RefinementStrategies::plan_edge_side(const TetMesh& mesh, TetId t, std::span<const VertId, 2> ends,
+                                          std::span<const TetId> side, RefinementPlan& plan) {
+  plan.parents.assign(1, t);
+  plan.parents.insert(plan.parents.end(), side.begin(), side.end());
+  plan.edges.clear();
+  for (VertId end : ends) add_edges_from(mesh, end, plan.parents, ends, plan);
+  plan.groups.assign(1, {{ends[0], ends[1]}, 0, static_cast<std::uint32_t>(plan.parents.size())});
+  seal(plan);
+}
+
+// ---- applying a plan ---------------------------------------------------------------------------
+
+std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId t, const RefinementPlan& plan,
+                                                     const WideSearchLimits& repair) {
   const TetMesh::Savepoint before = ctx.mesh.savepoint();
-  for (const CornerGroup& g : groups_)
-    std::sort(parents_.begin() + g.begin, parents_.begin() + g.begin + g.size);
-  if (!ctx.split(edges_)) return 0;
+  if (!ctx.split(plan.edges)) return 0;
   set_.clear();
   bool t_split = false;
   for (const TetMesh::TetBirth& c : ctx.mesh.tets_made_since(before)) {
@@ -51,16 +154,16 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
       set_.push_back(c.tet);
       continue;
     }
-    for (const CornerGroup& g : groups_) {
-      const auto begin = parents_.begin() + g.begin, end = begin + g.size;
-      if (std::binary_search(begin, end, parent) && contains_all(ctx.mesh, c.tet, g.vertices())) {
+    for (const RefinementPlan::CornerGroup& g : plan.groups) {
+      const std::span<const TetId> parents = plan.parents_of(g);
+      if (std::binary_search(parents.begin(), parents.end(), parent) && contains_all(ctx.mesh, c.tet, g.vertices())) {
         set_.push_back(c.tet);
         break;
       }
     }
   }
   if (!t_split) set_.push_back(t);
-  close_pinched_midpoints(ctx, ctx.mesh.vertices_made_since(before), repair.max_set_size);
+  close_pinched_midpoints(ctx, plan, ctx.mesh.vertices_made_since(before), repair.max_set_size);
   if (ctx.with_selected_children(set_, ctx.mesh.tets_made_since(before), larger_))
     if (const std::uint32_t n = remove_or_repair(ctx, larger_, repair)) return n;
   if (const std::uint32_t n = remove_or_repair(ctx, set_, repair)) return n;
@@ -68,10 +171,21 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
   return 0;
 }
 
+void RefinementStrategies::close_pinched_midpoints(RemovalContext& ctx, const RefinementPlan& plan,
+                                                   std::span<const TetMesh::VertexBirth> midpoints,
+                                                   std::uint32_t max_set_size) {
+  if (plan.groups.size() < 2) return;
+  for (const TetMesh::VertexBirth& m : midpoints) {
+    if (!plan.planned(m.a) || !plan.planned(m.b)) continue;
+    const Removability at_m = ctx.ws.check_at(ctx.mesh, set_, m.vertex);
+    if (!at_m.removable()) extend_at(ctx.mesh, ctx.ws, set_, 0, m.vertex, at_m, max_set_size);
+  }
+}
+
 std::uint32_t RefinementStrategies::remove_or_repair(RemovalContext& ctx, const std::vector<TetId>& set,
                                                      const WideSearchLimits& repair) {
-  const SetRemovalCheck check = ctx.ws.check(ctx.mesh, set);
-  if (check.ok) {
+  const Removability check = ctx.ws.check(ctx.mesh, set);
+  if (check.removable()) {
     ctx.remove_set(set);
     return static_cast<std::uint32_t>(set.size());
   }
@@ -82,110 +196,30 @@ std::uint32_t RefinementStrategies::remove_or_repair(RemovalContext& ctx, const 
   return 0;
 }
 
+// ---- the two strategies ------------------------------------------------------------------------
+
 std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t, const Removability& first,
                                           const WideSearchLimits& repair) {
-  edges_.clear();
-  if (first.kind == SingularityKind::kVertex) {
-    ctx.mesh.vertex_shell(first.vertex, parents_);
-    add_edges_from(ctx.mesh, first.vertex, parents_, {});
-    groups_.assign(1, CornerGroup{{first.vertex, VertId{}}, 0, static_cast<std::uint32_t>(parents_.size())});
-    return split_and_remove(ctx, t, repair);
-  }
-  const VertId ends[2] = {first.edge.a, first.edge.b};
-  const int local_edge = ctx.mesh.local_edge(t, ends[0], ends[1]);
-  ctx.mesh.edge_shell(t, local_edge, parents_);
-  for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
-  groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 0, static_cast<std::uint32_t>(parents_.size())});
-  return split_and_remove(ctx, t, repair);
-}
-
-bool RefinementStrategies::extend_at(RemovalContext& ctx, std::vector<TetId>& set, std::size_t begin, VertId v,
-                                     const SetRemovalCheck& offence, std::uint32_t max_set_size) {
-  // The pieces are listed while the set is still marked (check_at marked it).
-  sides_.clear();
-  sizes_.clear();
-  ctx.ws.remaining_pieces(ctx.mesh, offence, sides_, sizes_);
-  const std::size_t end = set.size();
-  std::uint32_t best_begin = 0, best_size = 0;
-  for (std::uint32_t k = 0, first = 0; k < sizes_.size(); first += sizes_[k++]) {
-    const std::uint32_t n = sizes_[k];
-    if ((best_size != 0 && n >= best_size) || end - begin + n > max_set_size) continue;
-    set.resize(end);
-    set.insert(set.end(), sides_.begin() + first, sides_.begin() + first + n);
-    if (ctx.ws.check_at(ctx.mesh, std::span<const TetId>(set.data() + begin, set.size() - begin), v).ok) {
-      best_begin = first;
-      best_size = n;
-    }
-  }
-  set.resize(end);
-  if (best_size == 0) return false;
-  set.insert(set.end(), sides_.begin() + best_begin, sides_.begin() + best_begin + best_size);
-  return true;
-}
-
-bool RefinementStrategies::plan_at_vertex(RemovalContext& ctx, TetId t, VertId v, const WideSearchLimits& limits,
-                                          std::span<const TetId> searched_path) {
-  const auto group_begin = static_cast<std::uint32_t>(parents_.size());
-  if (!searched_path.empty()) {
-    parents_.insert(parents_.end(), searched_path.begin(), searched_path.end());
-  } else {
-    if (!shortest_path_to_border(ctx.mesh, ctx.ws, t, v, limits.max_path_depth, sides_)) return false;
-    parents_.push_back(t);
-    parents_.insert(parents_.end(), sides_.begin(), sides_.end());
-  }
-  const std::span<const TetId> path(parents_.data() + group_begin, parents_.size() - group_begin);
-  const SetRemovalCheck at_v = ctx.ws.check_at(ctx.mesh, path, v);
-  // 3.5's extension, decided at v alone: each piece the path leaves around v (or around the
-  // pinched edge at v), smallest first.
-  if (!at_v.ok && !extend_at(ctx, parents_, group_begin, v, at_v, limits.max_set_size)) return false;
-  groups_.push_back({{v, VertId{}}, group_begin, static_cast<std::uint32_t>(parents_.size()) - group_begin});
-  return true;
-}
-
-void RefinementStrategies::close_pinched_midpoints(RemovalContext& ctx, std::span<const TetMesh::VertexBirth> midpoints,
-                                                   std::uint32_t max_set_size) {
-  if (groups_.size() < 2) return;
-  auto planned = [&](VertId x) {
-    return std::any_of(groups_.begin(), groups_.end(), [&](const CornerGroup& g) { return g.at[0] == x || g.at[1] == x; });
-  };
-  for (const TetMesh::VertexBirth& m : midpoints) {
-    if (!planned(m.a) || !planned(m.b)) continue;
-    const SetRemovalCheck at_m = ctx.ws.check_at(ctx.mesh, set_, m.vertex);
-    if (!at_m.ok) extend_at(ctx, set_, 0, m.vertex, at_m, max_set_size);
-  }
+  plan_basic(ctx.mesh, t, first, plan_);
+  return split_and_remove(ctx, t, plan_, repair);
 }
 
 std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, const Removability& first,
                                               const WideSearchLimits& repair, std::span<const TetId> searched_path) {
   if (first.kind == SingularityKind::kVertex) {
-    // Along the shortest path from T to the border of v's shell (paper 3.7, figure 4), and
-    // likewise at each other vertex of T where T alone would leave a singularity: T goes whole,
-    // so each of its vertices needs its own path (plan_at_vertex, before any split).
-    parents_.clear();
-    groups_.clear();
-    if (!plan_at_vertex(ctx, t, first.vertex, repair, searched_path)) return 0;
-    const TetId one[1] = {t};
-    for (VertId x : ctx.mesh.tet(t))
-      if (x != first.vertex && !ctx.ws.check_at(ctx.mesh, one, x).ok && !plan_at_vertex(ctx, t, x, repair)) return 0;
-    edges_.clear();
-    for (const CornerGroup& g : groups_)
-      add_edges_from(ctx.mesh, g.at[0], std::span<const TetId>(parents_.data() + g.begin, g.size), {});
-    return split_and_remove(ctx, t, repair);
+    if (!plan_optimized_vertex(ctx.mesh, ctx.ws, t, first, repair, searched_path, plan_)) return 0;
+    return split_and_remove(ctx, t, plan_, repair);
   }
   // One side of T around the edge, the smaller first (paper 3.7: "the rightmost or leftmost").
   const VertId ends[2] = {first.edge.a, first.edge.b};
-  sides_of_edge(ctx.mesh, ctx.ws, t, ends[0], ends[1], sides_, sizes_);
-  if (sizes_.size() != 2) return 0;
-  const bool first_smaller = sizes_[0] <= sizes_[1];
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    const bool take_first = (attempt == 0) == first_smaller;
-    const auto begin = sides_.begin() + (take_first ? 0 : sizes_[0]);
-    parents_.assign(1, t);
-    parents_.insert(parents_.end(), begin, begin + (take_first ? sizes_[0] : sizes_[1]));
-    edges_.clear();
-    for (VertId end : ends) add_edges_from(ctx.mesh, end, parents_, ends);
-    groups_.assign(1, CornerGroup{{ends[0], ends[1]}, 0, static_cast<std::uint32_t>(parents_.size())});
-    if (const std::uint32_t n = split_and_remove(ctx, t, repair)) return n;
+  sides_of_edge(ctx.mesh, ctx.ws, t, ends[0], ends[1], runs_, run_sizes_);
+  if (run_sizes_.size() != 2) return 0;
+  const std::span<const TetId> sides[2] = {std::span<const TetId>(runs_.data(), run_sizes_[0]),
+                                           std::span<const TetId>(runs_.data() + run_sizes_[0], run_sizes_[1])};
+  const int smaller = run_sizes_[0] <= run_sizes_[1] ? 0 : 1;
+  for (const int side : {smaller, 1 - smaller}) {
+    plan_edge_side(ctx.mesh, t, ends, sides[side], plan_);
+    if (const std::uint32_t n = split_and_remove(ctx, t, plan_, repair)) return n;
     if (ctx.over_budget) return 0;
   }
   return 0;

@@ -15,18 +15,19 @@
 //                    alone would leave a singularity gets a path of its own, planned the same
 //                    way. A request whose plan fails splits nothing.
 //
+// Plan, then apply (style: Mmg's split_3d, our EdgeSplitter): a planning function reads the
+// unchanged mesh and fills a RefinementPlan (the edges to split, and which children join T's);
+// split_and_remove() takes that plan, splits (the splitter validates every child first) and
+// tests the set.
+//
 // The paper says of 3.4 "we can formally prove that these set of tetrahedra can always be
 // removed"; they cannot always (docs/removal-proof.md gives the configuration: a boundary edge
-// from another surface vertex of T to v). So each attempt plans its edges on the unchanged
-// mesh, splits (the splitter validates every child first) and tests the set. A set that is not
-// removable is repaired among the small tets by the wide search (wide_search.hpp: no further
-// split); if that fails too, the split is rolled back to the savepoint taken before it and the
-// caller uses the fallback. Without the repair, 3.7 failed three times in four when hollowing a
-// box at random, and each fallback creates tens of tets. Planned, 3.7 reaches the fallback
-// once in the 2,000 requests of the removal benchmark (13 before). Where T has several
-// planned vertices, the midpoint of T's edge between two of them is where their corner runs
-// can pinch: the split's set is tested there alone and extended there before the full test,
-// so 2 of the 35 such sets on the benchmark still need the repair search (all 37 did).
+// from another surface vertex of T to v). So a set that is not removable is repaired among the
+// small tets by the wide search (wide_search.hpp: no further split); if that fails too, the
+// split is rolled back to the savepoint taken before it and the caller uses the fallback, which
+// creates many more tets. Where T has several planned vertices, the midpoint of T's edge between
+// two of them is where their corner runs can pinch: the split's set is tested there alone and
+// extended there before the full test, so that the repair search is rarely needed.
 #pragma once
 
 #include <array>
@@ -40,6 +41,28 @@
 
 namespace tetcut::detail {
 
+// What one 3.4 or 3.7 attempt does, decided on the unchanged mesh: the edges to split, and the
+// corner groups whose children join T's in the set to remove.
+struct RefinementPlan {
+  // A range of `parents` whose children containing `at` (one vertex, or both ends of an edge)
+  // join the set: their corners once the edges from `at` to the rest of each parent are split.
+  struct CornerGroup {
+    std::array<VertId, 2> at{};  // at[1] invalid for a vertex
+    std::uint32_t begin = 0, size = 0;
+    [[nodiscard]] std::span<const VertId> vertices() const { return {at.data(), at[1].valid() ? 2u : 1u}; }
+  };
+
+  std::vector<Edge> edges;         // to split, each with a tet that has it
+  std::vector<TetId> parents;      // group after group, each group sorted (for binary search)
+  std::vector<CornerGroup> groups;
+
+  [[nodiscard]] std::span<const TetId> parents_of(const CornerGroup& g) const {
+    return {parents.data() + g.begin, g.size};
+  }
+  // Whether x is a group's vertex (an end of a group's edge).
+  [[nodiscard]] bool planned(VertId x) const;
+};
+
 class RefinementStrategies {
  public:
   // Working sizes, allocated and touched now (a larger request grows them once).
@@ -52,46 +75,60 @@ class RefinementStrategies {
                           std::span<const TetId> searched_path = {});
 
  private:
-  // Edges from `from` to the other vertices of `tets` (one hint each), into edges_.
-  void add_edges_from(const TetMesh& mesh, VertId from, std::span<const TetId> tets, std::span<const VertId> skip);
-  // 3.7 at a vertex v of T, planned before any split: appends T, the shortest path from T to
-  // the border of v's shell and, if those fail at v, the smallest piece they leave at v that
-  // passes, to parents_ as one group. The split leaves v's link as it is (a link vertex w
-  // becomes the midpoint of (v, w)) and the set's tets at v are the corners of the group, so
-  // the refined set passes at v iff the group passes at v now. False when no candidate does.
-  bool plan_at_vertex(RemovalContext& ctx, TetId t, VertId v, const WideSearchLimits& limits,
-                      std::span<const TetId> searched_path = {});
+  // ---- planning, on the unchanged mesh ----
+  // 3.4: every edge at the singular vertex, or from the singular edge's ends to its ring.
+  void plan_basic(const TetMesh& mesh, TetId t, const Removability& first, RefinementPlan& plan);
+  // 3.7 at a vertex singularity: a group at the singular vertex and at each other vertex of T
+  // where T alone fails (plan_at_vertex), then the edges. False when a vertex has no plan.
+  bool plan_optimized_vertex(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first,
+                             const WideSearchLimits& limits, std::span<const TetId> searched_path,
+                             RefinementPlan& plan);
+  // 3.7 at an edge singularity (a, b): T and the tets of one side of it around the edge.
+  void plan_edge_side(const TetMesh& mesh, TetId t, std::span<const VertId, 2> ends, std::span<const TetId> side,
+                      RefinementPlan& plan);
+  // 3.7 at a vertex v of T: appends T, the shortest path from T to the border of v's shell and,
+  // if those fail at v, the smallest piece they leave at v that passes, to the plan's parents as
+  // one group. The split leaves v's link as it is (a link vertex w becomes the midpoint of
+  // (v, w)) and the set's tets at v are the corners of the group, so the refined set passes at
+  // v iff the group passes at v now. False when no candidate does.
+  bool plan_at_vertex(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, VertId v, const WideSearchLimits& limits,
+                      std::span<const TetId> searched_path, RefinementPlan& plan);
+  // Edges from `from` to the other vertices of `tets` (one hint each), into the plan.
+  static void add_edges_from(const TetMesh& mesh, VertId from, std::span<const TetId> tets,
+                             std::span<const VertId> skip, RefinementPlan& plan);
+  // Every group's parents sorted, once its edges are chosen: what split_and_remove() searches.
+  static void seal(RefinementPlan& plan);
+
   // 3.5's extension decided at one vertex: `set` from `begin` on failed check_at(v) with
   // `offence`; appends the smallest piece it leaves around v (or around the edge pinched at v)
   // with which it passes at v. False, `set` as it was, when none does within max_set_size.
-  bool extend_at(RemovalContext& ctx, std::vector<TetId>& set, std::size_t begin, VertId v,
-                 const SetRemovalCheck& offence, std::uint32_t max_set_size);
+  // Before a split (a plan's group) and after it (close_pinched_midpoints).
+  bool extend_at(const TetMesh& mesh, SetRemovalWorkspace& ws, std::vector<TetId>& set, std::size_t begin, VertId v,
+                 const Removability& offence, std::uint32_t max_set_size);
+
+  // ---- applying a plan ----
+  // Splits the plan's edges, then removes T's children and, for each group, the children of its
+  // parents that contain the group's vertices, if removable; otherwise rolls back.
+  std::uint32_t split_and_remove(RemovalContext& ctx, TetId t, const RefinementPlan& plan,
+                                 const WideSearchLimits& repair);
   // After a split with several corner groups: the midpoint of an edge of T between two planned
   // vertices is where their corner runs can pinch (docs/removal-proof.md, "3.7, planned"). Each
   // such midpoint is tested alone and, where set_ fails there, set_ is extended by extend_at(),
   // so the full test that follows usually passes at once.
-  void close_pinched_midpoints(RemovalContext& ctx, std::span<const TetMesh::VertexBirth> midpoints,
-                               std::uint32_t max_set_size);
-  // Splits edges_, then removes T's children and, for each group, the children of its parents
-  // that contain the group's vertices, if removable; otherwise rolls back.
-  std::uint32_t split_and_remove(RemovalContext& ctx, TetId t, const WideSearchLimits& repair);
+  void close_pinched_midpoints(RemovalContext& ctx, const RefinementPlan& plan,
+                               std::span<const TetMesh::VertexBirth> midpoints, std::uint32_t max_set_size);
   // Removes `set` if removable, else its repair by the wide search if one is found; returns the
   // size removed, 0 for neither (the mesh untouched).
   std::uint32_t remove_or_repair(RemovalContext& ctx, const std::vector<TetId>& set, const WideSearchLimits& repair);
 
-  // A range of parents_ whose children containing `at` (one vertex, or both ends of an edge)
-  // join the set: their corners once the edges from `at` to the rest of each parent are split.
-  struct CornerGroup {
-    std::array<VertId, 2> at{};  // at[1] invalid for a vertex
-    std::uint32_t begin = 0, size = 0;
-    [[nodiscard]] std::span<const VertId> vertices() const { return {at.data(), at[1].valid() ? 2u : 1u}; }
-  };
-
   WideSearch search_;
-  std::vector<CornerGroup> groups_;
-  std::vector<Edge> edges_;
-  std::vector<TetId> parents_, sides_, set_, larger_, repaired_;
-  std::vector<std::uint32_t> sizes_;
+  RefinementPlan plan_;  // the attempt's plan: its memory reused from one request to the next
+  std::vector<TetId> path_;               // plan_at_vertex(): 3.5's path
+  std::vector<TetId> runs_;               // an edge's two sides (3.7 at an edge)
+  std::vector<std::uint32_t> run_sizes_;
+  std::vector<TetId> pieces_;             // extend_at(): what a failing set leaves at a vertex
+  std::vector<std::uint32_t> piece_sizes_;
+  std::vector<TetId> set_, larger_, repaired_;  // the applied set, with selected children, repaired
 };
 
 }  // namespace tetcut::detail

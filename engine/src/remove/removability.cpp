@@ -1,18 +1,17 @@
 #include "remove/removability.hpp"
 
 #include <cassert>
+#include <cstddef>
+#include <iterator>
 
 #include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 
 const char* to_string(SingularityKind kind) {
-  switch (kind) {
-    case SingularityKind::kNone: return "none";
-    case SingularityKind::kVertex: return "vertex";
-    case SingularityKind::kEdge: return "edge";
-  }
-  return "?";
+  constexpr const char* kNames[] = {"none", "vertex", "edge"};  // in the enum's order
+  const auto i = static_cast<std::size_t>(kind);
+  return i < std::size(kNames) ? kNames[i] : "?";
 }
 
 Removability removability(const TetMesh& mesh, TetId t) {
@@ -24,6 +23,7 @@ Removability removability(const TetMesh& mesh, TetId t) {
 
   Removability r;
   r.paper_case = static_cast<std::uint8_t>(n >= 3 ? 4 : n + 1);
+  r.tet = t;
   // Whether removing t would leave v a singular vertex: v is on the boundary but none of t's
   // boundary faces holds it (cases 1 and 2 of paper 3.3).
   auto singular_at = [&](VertId v) {
@@ -38,7 +38,7 @@ Removability removability(const TetMesh& mesh, TetId t) {
         if (singular_at(mesh.vertex(t, i))) return r;
       break;
     case 1:
-      if (singular_at(mesh.vertex(t, faces[0]))) return r;  // face i is opposite vertex i
+      singular_at(mesh.vertex(t, faces[0]));  // face i is opposite vertex i
       break;
     case 2: {
       // Faces f1 and f2 omit vertices f1 and f2 respectively: the edge joining those two is
@@ -47,14 +47,13 @@ Removability removability(const TetMesh& mesh, TetId t) {
       if (mesh.is_boundary_edge(t, e)) {
         r.kind = SingularityKind::kEdge;
         r.edge = {mesh.vertex(t, faces[0]), mesh.vertex(t, faces[1])};
-        return r;
+        r.local_edge = static_cast<std::uint8_t>(e);
       }
       break;
     }
     default:
       break;
   }
-  r.removable = true;
   return r;
 }
 

@@ -32,12 +32,27 @@ enum class SingularityKind : std::uint8_t {
 
 const char* to_string(SingularityKind kind);
 
+// The verdict on removing one tet (removability() below) or a set of tets (SetRemovalWorkspace,
+// set_removal.hpp): removable, or the first vertex or edge that would become singular. One type
+// for both, so that a search that starts from a tet's offence (the wide search, 3.7's planning)
+// takes it as the set test would have named it.
 struct Removability {
-  bool removable = false;
-  std::uint8_t paper_case = 0;  // 1..4: 1 + number of boundary faces, capped at 4
   SingularityKind kind = SingularityKind::kNone;
   VertId vertex;  // kind == kVertex: the vertex that would become singular
   Edge edge{};    // kind == kEdge: the edge that would become singular
+  // A tet of the set containing the offending vertex or edge (and its local edge for kEdge):
+  // where a search that wants to repair the offence starts.
+  TetId tet;
+  std::uint8_t local_edge = 0;
+  // One tet (removability()): paper 3.3's case, 1 + the number of its boundary faces, capped
+  // at 4. A set: 0.
+  std::uint8_t paper_case = 0;
+  // A set: how many of its vertices, in the order the test visits them, passed before the
+  // offence (all of them when removable): what a test of a larger set starting with this one
+  // reuses (TestedPrefix). One tet: 0.
+  std::uint32_t vertices_passed = 0;
+
+  [[nodiscard]] bool removable() const { return kind == SingularityKind::kNone; }
 };
 
 // Precondition: t is live.

@@ -28,7 +28,64 @@ struct Remover::Workspace {
   std::vector<TetId> set;
   std::vector<TetId> net_removed, net_created, exposed;
   StampedSet<TetId> met_unresolved;  // already counted as unresolved (cleared by reset() only)
+  // The wide search's bounds (as the strategy wide and as 3.4/3.7's repair), from the options
+  // when they are set.
+  detail::WideSearchLimits limits;
 };
+
+namespace {
+
+// One request in the Remover's statistics, per distinct tet (removal_report.hpp).
+void count_request(RemovalReport& report, const RemovalResult& result) {
+  const SingularityKind kind = result.first.kind;
+  const bool repeat = result.repeat;
+  if (repeat) {
+    ++report.repeated_requests;
+  } else {
+    ++report.requested;
+    if (kind == SingularityKind::kVertex) ++report.vertex_singularities;
+    if (kind == SingularityKind::kEdge) ++report.edge_singularities;
+  }
+  if (result.outcome != RemovalOutcome::kUnresolved) {
+    ++report.removed;
+    if (repeat) --report.unresolved;
+    report.tets_removed += result.tets_removed;
+    report.tets_created += result.tets_created;
+    report.edges_split += result.edges_split;
+  }
+  switch (result.outcome) {
+    case RemovalOutcome::kDirect:
+      if (!repeat) {
+        ++report.direct;
+        report.selected_in_sets += result.selected_removed;
+      }
+      break;
+    case RemovalOutcome::kNeighbours:
+      ++report.resolved_by_neighbours;
+      report.neighbour_set_tets += result.tets_removed;
+      report.selected_in_sets += result.selected_removed;
+      if (kind == SingularityKind::kVertex) {
+        ++report.vertex_resolved_by_neighbours;
+        report.vertex_neighbour_set_tets += result.tets_removed;
+      } else {
+        ++report.edge_resolved_by_neighbours;
+        report.edge_neighbour_set_tets += result.tets_removed;
+      }
+      break;
+    case RemovalOutcome::kRefinement:
+      ++report.resolved_by_refinement;
+      if (result.optimized_refinement) ++report.resolved_by_optimized_refinement;
+      break;
+    case RemovalOutcome::kFallback:
+      ++report.resolved_by_fallback;
+      break;
+    case RemovalOutcome::kUnresolved:
+      if (!repeat) ++report.unresolved;
+      break;
+  }
+}
+
+}  // namespace
 
 const char* to_string(RemovalOutcome outcome) {
   switch (outcome) {
@@ -41,8 +98,9 @@ const char* to_string(RemovalOutcome outcome) {
   return "?";
 }
 
-Remover::Remover(RemovalOptions options) : options_(options), ws_(std::make_unique<Workspace>()) {
-  // The split templates are a table built on first use (about 15 million instructions): pay it
+Remover::Remover(RemovalOptions options) : ws_(std::make_unique<Workspace>()) {
+  set_options(options);
+  // The split templates are a table built on first use, costlier than many requests: pay it
   // here, not inside the first request that refines.
   (void)split_template(1, 0);
 }
@@ -64,6 +122,12 @@ void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
   ws_->met_unresolved.reserve(tets);
 }
 
+void Remover::set_options(const RemovalOptions& options) {
+  options_ = options;
+  ws_->limits = {options.max_path_depth, options.wide_rounds, options.wide_evaluations, options.max_set_size};
+  reset();
+}
+
 void Remover::reset() {
   report_ = {};
   ws_->met_unresolved.clear();
@@ -74,7 +138,12 @@ std::span<const TetId> Remover::last_created() const { return ws_->net_created; 
 std::span<const TetId> Remover::last_exposed() const { return ws_->exposed; }
 
 RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limits) {
+  return remove(mesh, t, removability(mesh, t), limits);
+}
+
+RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first, const RequestLimits& limits) {
   assert(mesh.is_live(t));
+  assert(first.kind == removability(mesh, t).kind && "first is t's verdict on this mesh");
   Workspace& w = *ws_;
   const bool own_transaction = !mesh.in_transaction();
   if (own_transaction) mesh.begin_transaction();
@@ -83,9 +152,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
   detail::RemovalContext ctx{mesh, w.set_test, w.splitter, w.exposed, start, limits.max_tets_created, limits.selection};
 
   RemovalResult result;
-  result.first = removability(mesh, t);
-  const Removability& first = result.first;
-  const bool repeat = w.met_unresolved.contains(t);
+  result.first = first;
+  result.repeat = w.met_unresolved.contains(t);
   auto count_selected = [&](std::span<const TetId> set) {
     if (!limits.selection) return static_cast<std::uint32_t>(1);  // the requested tet
     std::uint32_t n = 0;
@@ -93,9 +161,9 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
     return n;
   };
 
-  if (first.removable) {
+  if (first.removable()) {
     const TetId one[1] = {t};
-    if (options_.verify_direct) result.set_test_disagrees = !w.set_test.check(mesh, one).ok;
+    if (options_.verify_direct) result.set_test_disagrees = !w.set_test.check(mesh, one).removable();
     result.selected_removed = count_selected(one);
     ctx.remove_set(one);
     result.outcome = RemovalOutcome::kDirect;
@@ -107,19 +175,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
   if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kBasic) {
     bool found = false;
     if (options_.strategy == RemovalStrategy::kWide) {
-      SetRemovalCheck offence;
-      offence.ok = false;
-      offence.kind = first.kind;
-      offence.tet = t;
-      offence.vertex = first.vertex;
-      offence.edge = first.edge;
-      if (first.kind == SingularityKind::kEdge)
-        offence.local_edge = static_cast<std::uint8_t>(
-            mesh.local_edge(t, first.edge.a, first.edge.b));
       const TetId one[1] = {t};
-      const detail::WideSearchLimits wide{options_.max_path_depth, options_.wide_rounds, options_.wide_evaluations,
-                                          options_.max_set_size};
-      found = w.wide.find(mesh, w.set_test, one, offence, wide, w.set);
+      found = w.wide.find(mesh, w.set_test, one, first, w.limits, w.set);
     } else {
       found = w.neighbours.find(mesh, w.set_test, t, first, options_.max_path_depth, options_.max_set_size, w.set);
       searched_path = w.neighbours.path();
@@ -135,9 +192,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
   // 3.7 (combined, wide) or 3.4 (basic): refine, then remove the paper's set if it is removable.
   if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kNeighbours) {
     const bool optimized = options_.strategy != RemovalStrategy::kBasic;
-    const detail::WideSearchLimits repair{options_.max_path_depth, options_.wide_rounds, options_.wide_evaluations,
-                                          options_.max_set_size};
-    const std::uint32_t n = optimized ? w.refinement.optimized(ctx, t, first, repair, searched_path) : w.refinement.basic(ctx, t, first, repair);
+    const std::uint32_t n = optimized ? w.refinement.optimized(ctx, t, first, w.limits, searched_path)
+                                      : w.refinement.basic(ctx, t, first, w.limits);
     if (n > 0) {
       result.outcome = RemovalOutcome::kRefinement;
       result.optimized_refinement = optimized;
@@ -164,7 +220,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const RequestLimits& limit
     if (mesh.boundary_face_count(c) > 0) w.exposed.push_back(c);
   if (own_transaction) mesh.commit();
 
-  count_request(report_, result, repeat);
+  count_request(report_, result);
   if (result.outcome == RemovalOutcome::kUnresolved) {
     w.met_unresolved.insert(t);
   } else {

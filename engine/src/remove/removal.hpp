@@ -37,8 +37,8 @@
 #include <span>
 
 #include "remove/removability.hpp"
+#include "remove/selection.hpp"
 #include "tetcut/cut_strategies.hpp"  // RemovalStrategy
-#include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/removal_report.hpp"
@@ -66,9 +66,14 @@ enum class RemovalOutcome : std::uint8_t {
 
 const char* to_string(RemovalOutcome outcome);
 
+// What one request did: the figures a caller sums (a cut's CutReport), as the Remover sums them
+// into its RemovalReport.
 struct RemovalResult {
   RemovalOutcome outcome = RemovalOutcome::kUnresolved;
   Removability first;                 // the O(1) test on the requested tet
+  // The tet was left unresolved by an earlier request: it was counted as requested, with its
+  // singularity, then (the statistics count distinct tets, as the paper's tables do).
+  bool repeat = false;
   std::uint32_t tets_removed = 0;     // cardinality of the removed set
   std::uint32_t tets_created = 0;     // by refinement, net of the set removed
   std::uint32_t edges_split = 0;
@@ -77,13 +82,6 @@ struct RemovalResult {
   bool over_budget = false;           // kUnresolved because a split would exceed the budget
   bool set_test_disagrees = false;    // verify_direct: set_removable() refused what 3.3 accepted
 };
-
-// Counts one request in `report`; `repeat` when the tet was left unresolved before.
-void count_request(RemovalReport& report, const RemovalResult& result, bool repeat);
-
-// The tets a caller (a cut) selected for removal: lets the statistics count what a neighbour set
-// swallowed, and a refinement take a selected parent's other children along.
-using Selection = StampedSet<TetId>;
 
 // What one request may do beyond the strategy's own bounds.
 struct RequestLimits {
@@ -104,6 +102,9 @@ class Remover {
   // journal records what it made: TetMesh::tets_made_since a savepoint taken before), or in one
   // of its own.
   RemovalResult remove(TetMesh& mesh, TetId t, const RequestLimits& limits = {});
+  // The same for a caller that has just tested t: `first` is removability(mesh, t) on the mesh
+  // as it is, and is not computed again (a cut tests every selected tet before it asks).
+  RemovalResult remove(TetMesh& mesh, TetId t, const Removability& first, const RequestLimits& limits = {});
 
   [[nodiscard]] const RemovalReport& report() const { return report_; }
   // Sizes all per-tet and per-vertex scratch for meshes up to these capacities (see Cutter).
@@ -113,10 +114,7 @@ class Remover {
   // old one are cleared; the workspaces keep their memory, so nothing is reallocated.
   void reset();
   // Other options, as a new Remover would have them (reset() included), in the same memory.
-  void set_options(const RemovalOptions& options) {
-    options_ = options;
-    reset();
-  }
+  void set_options(const RemovalOptions& options);
   [[nodiscard]] const RemovalOptions& options() const { return options_; }
 
   // The net effect of the last remove(), sorted by id: ids live before it that it killed, and

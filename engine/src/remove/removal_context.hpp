@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "refine/edge_split.hpp"
-#include "remove/removal.hpp"
+#include "remove/selection.hpp"
 #include "remove/set_removal.hpp"
 #include "tetcut/mesh.hpp"
 

@@ -1,7 +1,5 @@
 #include "tetcut/removal_report.hpp"
 
-#include "remove/removal.hpp"  // RemovalResult
-
 namespace tetcut {
 
 double RemovalReport::mean_cardinality() const {
@@ -13,54 +11,6 @@ double RemovalReport::mean_cardinality() const {
 double RemovalReport::cardinality_per_selected() const {
   if (selected_in_sets == 0) return 0.0;
   return static_cast<double>(direct + neighbour_set_tets) / static_cast<double>(selected_in_sets);
-}
-
-void count_request(RemovalReport& report, const RemovalResult& result, bool repeat) {
-  const SingularityKind kind = result.first.kind;
-  if (repeat) {
-    ++report.repeated_requests;
-  } else {
-    ++report.requested;
-    if (kind == SingularityKind::kVertex) ++report.vertex_singularities;
-    if (kind == SingularityKind::kEdge) ++report.edge_singularities;
-  }
-  if (result.outcome != RemovalOutcome::kUnresolved) {
-    ++report.removed;
-    if (repeat) --report.unresolved;
-    report.tets_removed += result.tets_removed;
-    report.tets_created += result.tets_created;
-    report.edges_split += result.edges_split;
-  }
-  switch (result.outcome) {
-    case RemovalOutcome::kDirect:
-      if (!repeat) {
-        ++report.direct;
-        report.selected_in_sets += result.selected_removed;
-      }
-      break;
-    case RemovalOutcome::kNeighbours:
-      ++report.resolved_by_neighbours;
-      report.neighbour_set_tets += result.tets_removed;
-      report.selected_in_sets += result.selected_removed;
-      if (kind == SingularityKind::kVertex) {
-        ++report.vertex_resolved_by_neighbours;
-        report.vertex_neighbour_set_tets += result.tets_removed;
-      } else {
-        ++report.edge_resolved_by_neighbours;
-        report.edge_neighbour_set_tets += result.tets_removed;
-      }
-      break;
-    case RemovalOutcome::kRefinement:
-      ++report.resolved_by_refinement;
-      if (result.optimized_refinement) ++report.resolved_by_optimized_refinement;
-      break;
-    case RemovalOutcome::kFallback:
-      ++report.resolved_by_fallback;
-      break;
-    case RemovalOutcome::kUnresolved:
-      if (!repeat) ++report.unresolved;
-      break;
-  }
 }
 
 RemovalReport& RemovalReport::operator+=(const RemovalReport& o) {

@@ -133,9 +133,10 @@ SetRemovalWorkspace::VertexVerdict SetRemovalWorkspace::vertex_ok(const TetMesh&
   return {false, VertId{}};
 }
 
-SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const TetId> set, TestedPrefix prefix) {
+Removability SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const TetId> set, TestedPrefix prefix) {
   // Marks the set and groups its tets by vertex in two linear passes (a bucket per vertex, in
-  // the order the set first names them): a sort of (vertex, tet) pairs was a quarter of the test.
+  // the order the set first names them), rather than sorting (vertex, tet) pairs: the test runs
+  // for every candidate set, and the grouping would otherwise be much of its cost.
   marked_.clear();
   vertex_slot_.clear();
   distinct_.clear();
@@ -175,19 +176,18 @@ SetRemovalCheck SetRemovalWorkspace::check(const TetMesh& mesh, std::span<const 
     }
     const VertexVerdict verdict = vertex_ok(mesh, v, group);
     if (verdict.ok) continue;
-    SetRemovalCheck result = offence(mesh, v, group, verdict);
+    Removability result = offence(mesh, v, group, verdict);
     result.vertices_passed = static_cast<std::uint32_t>(i);
     return result;
   }
-  SetRemovalCheck result;
+  Removability result;
   result.vertices_passed = static_cast<std::uint32_t>(set_vertices_.size());
   return result;
 }
 
-SetRemovalCheck SetRemovalWorkspace::offence(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v,
+Removability SetRemovalWorkspace::offence(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v,
                                              const VertexVerdict& verdict) {
-  SetRemovalCheck result;
-  result.ok = false;
+  Removability result;
   result.tet = removed_at_v.front();
   if (!verdict.pinched.valid()) {
     result.kind = SingularityKind::kVertex;
@@ -210,14 +210,14 @@ SetRemovalCheck SetRemovalWorkspace::offence(const TetMesh& mesh, VertId v, std:
   return result;
 }
 
-SetRemovalCheck SetRemovalWorkspace::check_at(const TetMesh& mesh, std::span<const TetId> set, VertId v) {
+Removability SetRemovalWorkspace::check_at(const TetMesh& mesh, std::span<const TetId> set, VertId v) {
   mark(mesh, set);
   // The set's distinct tets at v (a tet listed twice counts once).
   visited_.clear();
   at_vertex_.clear();
   for (TetId t : set)
     if (mesh.local_index(t, v) >= 0 && visited_.insert(t)) at_vertex_.push_back(t);
-  SetRemovalCheck result;
+  Removability result;
   if (at_vertex_.empty()) return result;
   const VertexVerdict verdict = vertex_ok(mesh, v, at_vertex_);
   if (!verdict.ok) result = offence(mesh, v, at_vertex_, verdict);
@@ -239,7 +239,7 @@ void SetRemovalWorkspace::remaining_components(const TetMesh& mesh, VertId v, Te
   }
 }
 
-void SetRemovalWorkspace::remaining_pieces(const TetMesh& mesh, const SetRemovalCheck& offence,
+void SetRemovalWorkspace::remaining_pieces(const TetMesh& mesh, const Removability& offence,
                                            std::vector<TetId>& tets, std::vector<std::uint32_t>& sizes) {
   if (offence.kind == SingularityKind::kVertex) {
     remaining_components(mesh, offence.vertex, offence.tet, tets, sizes);

@@ -27,20 +27,6 @@
 
 namespace tetcut {
 
-struct SetRemovalCheck {
-  bool ok = true;
-  SingularityKind kind = SingularityKind::kNone;
-  VertId vertex;  // kVertex: the first offending vertex
-  Edge edge{};    // kEdge: the first offending edge
-  // A tet of the set containing the offending vertex or edge (and its local edge for kEdge):
-  // where a search that wants to repair the offence starts.
-  TetId tet;
-  std::uint8_t local_edge = 0;
-  // How many of the set's vertices, in the order the test visits them, passed before the
-  // offence (all of them when ok): what a test of a larger set starting with this one reuses.
-  std::uint32_t vertices_passed = 0;
-};
-
 // What an earlier test tells the test of a set that begins with the same tets, in the same
 // order: the verdict at a vertex depends only on the set's tets at it, so a vertex that passed
 // then and that none of the added tets contains passes again, and is not walked twice.
@@ -61,12 +47,12 @@ class SetRemovalWorkspace {
   // The test on `set` (marks it first), vertex by vertex in the order the set first names them;
   // the first vertex whose link fails names the offence: that vertex, or the edge at it with two
   // runs of kept tets.
-  SetRemovalCheck check(const TetMesh& mesh, std::span<const TetId> set, TestedPrefix prefix = {});
+  Removability check(const TetMesh& mesh, std::span<const TetId> set, TestedPrefix prefix = {});
 
   // The same test at one vertex v only (marks the set first): the verdict check() would give
   // at v, with the same offence when it fails. What a refinement that isolates v's corner
   // tets needs to know before it splits (refinement_strategies.hpp).
-  SetRemovalCheck check_at(const TetMesh& mesh, std::span<const TetId> set, VertId v);
+  Removability check_at(const TetMesh& mesh, std::span<const TetId> set, VertId v);
 
   // The unmarked tets around v, split into face-connected components (connected through faces
   // containing v): appended to `tets` component after component, each size appended to
@@ -77,7 +63,7 @@ class SetRemovalWorkspace {
   // The pieces the marked set leaves at a failing test's offence, appended as by the two
   // above: the components of the offending vertex's remaining shell, or the runs of kept tets
   // around the offending edge. Nothing for a passing test. What every search extends by.
-  void remaining_pieces(const TetMesh& mesh, const SetRemovalCheck& offence, std::vector<TetId>& tets,
+  void remaining_pieces(const TetMesh& mesh, const Removability& offence, std::vector<TetId>& tets,
                         std::vector<std::uint32_t>& sizes);
 
   // Paper 3.5, figure 4: breadth-first from the marked tets around v, through unmarked tets
@@ -111,7 +97,7 @@ class SetRemovalWorkspace {
   };
   VertexVerdict vertex_ok(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v);
   // The offence a failing verdict at v names, from the set's tets at v.
-  static SetRemovalCheck offence(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v,
+  static Removability offence(const TetMesh& mesh, VertId v, std::span<const TetId> removed_at_v,
                                  const VertexVerdict& verdict);
 
   StampedSet<TetId> marked_;     // the set about to go
@@ -135,7 +121,7 @@ class SetRemovalWorkspace {
 };
 
 // Convenience: the test with a given workspace.
-inline SetRemovalCheck set_removable(const TetMesh& mesh, std::span<const TetId> set, SetRemovalWorkspace& ws) {
+inline Removability set_removable(const TetMesh& mesh, std::span<const TetId> set, SetRemovalWorkspace& ws) {
   return ws.check(mesh, set);
 }
 

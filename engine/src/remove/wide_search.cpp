@@ -38,7 +38,7 @@ void WideSearch::add_candidate(const Candidate& from, std::span<const TetId> ext
 void WideSearch::expand(const TetMesh& mesh, SetRemovalWorkspace& ws, const Candidate& from,
                         const WideSearchLimits& limits) {
   ws.mark(mesh, std::span<const TetId>(pool_.data() + from.begin, from.size));
-  const SetRemovalCheck& off = from.offence;
+  const Removability& off = from.offence;
   tmp_tets_.clear();
   tmp_sizes_.clear();
   auto part = [&](std::size_t offset, std::size_t n) { return std::span<const TetId>(tmp_tets_.data() + offset, n); };
@@ -68,7 +68,7 @@ void WideSearch::expand(const TetMesh& mesh, SetRemovalWorkspace& ws, const Cand
 }
 
 bool WideSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> seed,
-                      const SetRemovalCheck& offence, const WideSearchLimits& limits, std::vector<TetId>& out) {
+                      const Removability& offence, const WideSearchLimits& limits, std::vector<TetId>& out) {
   pool_.assign(seed.begin(), seed.end());
   frontier_.clear();
   Candidate start;
@@ -88,9 +88,9 @@ bool WideSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<co
     for (Candidate& c : candidates_) {
       if (evaluations >= limits.max_evaluations) return false;
       const std::span<const TetId> set(pool_.data() + c.begin, c.size);
-      const SetRemovalCheck check = ws.check(mesh, set, c.prefix);
+      const Removability check = ws.check(mesh, set, c.prefix);
       ++evaluations;
-      if (check.ok) {
+      if (check.removable()) {
         out.assign(set.begin(), set.end());
         return true;
       }

@@ -29,14 +29,14 @@ class WideSearch {
   // Working sizes, allocated and touched now (a larger request grows them once).
   void reserve();
   // A removable set containing `seed` into `out`, starting from the offence the seed alone has.
-  bool find(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> seed, const SetRemovalCheck& offence,
+  bool find(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> seed, const Removability& offence,
             const WideSearchLimits& limits, std::vector<TetId>& out);
 
  private:
   struct Candidate {
     std::uint32_t begin = 0, size = 0;  // in pool_
     TestedPrefix prefix;                // the candidate it extends, and what its test found
-    SetRemovalCheck offence;
+    Removability offence;
   };
   void expand(const TetMesh& mesh, SetRemovalWorkspace& ws, const Candidate& from, const WideSearchLimits& limits);
   void add_candidate(const Candidate& from, std::span<const TetId> extra, std::uint32_t max_set_size);

@@ -1,9 +1,10 @@
-// Working memory that is ready before the first operation needs it (issue 18: no cold hitch).
+// Working memory that is ready before the first operation needs it, so that the first cut costs
+// what the others do.
 //
 // std::vector::reserve() allocates but does not touch: the pages arrive one fault at a time,
 // inside whichever operation first writes there. On the virtual machines simulators and CI run
-// on, a fault costs microseconds, and the first cut of a sweep paid about a hundred of them
-// (1.7 ms against 50 us for the next). reserve_touched() allocates and writes the whole
+// on, a fault costs microseconds, and a first cut that faults its working memory in costs many
+// times what the next one does. reserve_touched() allocates and writes the whole
 // capacity once, then restores the size: the capacity stays, and so do the pages. A vector that
 // already has the capacity is left alone: it was touched when it got it (here, or by a cut that
 // grew it), and Cutter::reset() on the next mesh then costs nothing here.
