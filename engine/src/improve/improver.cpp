@@ -216,7 +216,7 @@ void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operation
       const TetMesh::TetVerts c = mesh.tet(t);
       if (!intersects(*tool_, mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3]))) continue;
     }
-    if (!removability(mesh, t).removable) continue;
+    if (!removability(mesh, t).removable()) continue;
     mesh.remove_tets(std::span<const TetId>(&t, 1));
     ++out.removed;
   }
