@@ -100,7 +100,7 @@ def main():
 
     # The JSON: one row per mesh in table1 and table2, the paper's figures beside ours.
     stats = json.load(open(json_path))
-    for key in ("table1", "table2", "table2_wide", "strategies"):
+    for key in ("table1", "table2", "table2_wide", "strategies", "quality"):
         check(key in stats, "JSON key %s" % key)
     check([r["mesh"] for r in stats.get("table1", [])] == MESHES, "table1 rows are the five meshes in order")
     check([r["mesh"] for r in stats.get("table2", [])] == MESHES, "table2 rows are the five meshes in order")
@@ -128,6 +128,24 @@ def main():
     combined = [r for r in stats.get("strategies", []) if r["name"] == "combined"]
     check(combined and combined[0]["ok"] and combined[0]["unresolved"] == 0, "combined: ran to the end, 0 unresolved")
 
+    # Issue 29: every strategy row has the created tets' worst dihedral angle and their histogram,
+    # with and without the improvement pass; per paper scenario, combined, neighbours and wide
+    # create nothing below min(0.1, the input's worst), and the pass lifts what the runs without
+    # it create.
+    for row in stats.get("strategies", []):
+        check("worst_created_min_dihedral_deg" in row, "%s: worst_created_min_dihedral_deg" % row["name"])
+        check(sum(row["created"]["radius_ratio_histogram"]) == row["created"]["tets"],
+              "%s: the created tets' histogram counts them all" % row["name"])
+    quality = stats.get("quality", [])
+    check(len(quality) == 5 * 4, "quality rows: 5 scenarios x 4 strategies (got %d)" % len(quality))
+    for row in quality:
+        if row["strategy"] != "basic":
+            check(row["goal_met"] and row["ok"], "%s, %s: ran to the end and met the goal %.3g"
+                  % (row["mesh"], row["strategy"], row["goal"]))
+        if row["created"]["tets"] and row["created_without_improvement"]["tets"]:
+            check(row["created"]["min_radius_ratio"] >= row["created_without_improvement"]["min_radius_ratio"],
+                  "%s, %s: the pass does not make the worst created tet worse" % (row["mesh"], row["strategy"]))
+
     # Deterministic: a second run (checking only at the end) gives the same figures, times aside.
     again_path = os.path.join(out, "stats-again.json")
     again = subprocess.run([tetcut, "stats", "--corpus", corpus, "--check", "end", "--json", again_path],
@@ -152,19 +170,19 @@ def main():
     check(dom.returncode == 0, "chromium --dump-dom exit %d" % dom.returncode)
     for pid in PICTURE_IDS:
         check(('id="%s"' % pid) in dom.stdout, "the loaded page has the picture %s" % pid)
-    for tid in ("table1", "table2", "table2-wide", "strategies"):
+    for tid in ("table1", "table2", "table2-wide", "strategies", "created-histogram", "quality"):
         check(('id="%s"' % tid) in dom.stdout, "the loaded page has the table %s" % tid)
     check(dom.stdout.count("<polygon") > 2000, "the surface pictures have their triangles")
 
     png = os.path.join(out, "report.png")
     if os.path.exists(png):
         os.remove(png)
-    shot = subprocess.run([chromium] + flags + ["--window-size=1200,3400", "--screenshot=" + png, url],
+    shot = subprocess.run([chromium] + flags + ["--window-size=1200,4600", "--screenshot=" + png, url],
                           capture_output=True, text=True, timeout=120)
     if not check(shot.returncode == 0 and os.path.exists(png), "chromium --screenshot wrote " + png):
         return report()
     width, height, rows, bpp = decode_png(open(png, "rb").read())
-    check((width, height) == (1200, 3400), "screenshot size %dx%d" % (width, height))
+    check((width, height) == (1200, 4600), "screenshot size %dx%d" % (width, height))
     tissue = cut = plot = 0
     for line in rows:
         for x in range(0, len(line), bpp):

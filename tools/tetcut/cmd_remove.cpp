@@ -195,17 +195,6 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
   }
   TetMesh& mesh = *built.mesh;
 
-  std::optional<invariants::LocalChecker> local;
-  if (check_mode == scenario::CheckMode::kEvery) local.emplace(mesh.raw_view());
-  std::string first_violation;
-  auto check_request = [&](std::uint64_t index, std::span<const TetId> removed, std::span<const TetId> created) {
-    if (!local || !first_violation.empty()) return;
-    invariants::CheckOptions co;
-    co.operation = "request " + std::to_string(index);
-    const invariants::CheckReport r = local->after_operation(mesh.raw_view(), removed, created, co);
-    if (!r.ok()) first_violation = co.operation + ": " + invariants::to_string(r);
-  };
-
   CutParams params;
   params.strategy = strategy;
   params.improve = !a.no_improve;
@@ -214,6 +203,18 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
     err << "tetcut: " << *invalid << "\n";
     return 2;
   }
+
+  std::optional<invariants::LocalChecker> local;
+  if (check_mode == scenario::CheckMode::kEvery) local.emplace(mesh.raw_view());
+  std::string first_violation;
+  auto check_request = [&](std::uint64_t index, std::span<const TetId> removed, std::span<const TetId> created) {
+    if (!local || !first_violation.empty()) return;
+    invariants::CheckOptions co = scenario::transaction_check_options(params);
+    co.operation = "request " + std::to_string(index);
+    const invariants::CheckReport r = local->after_operation(mesh.raw_view(), removed, created, co);
+    if (!r.ok()) first_violation = co.operation + ": " + invariants::to_string(r);
+  };
+
   Cutter cutter(mesh, params);
   std::uint64_t points_outside = 0, refused = 0;
   std::string first_refusal;

@@ -56,6 +56,8 @@ Json quality(const invariants::QualityStats& q) {
   return Json{{"tets", q.tets},
               {"min_radius_ratio", q.min_radius_ratio},
               {"mean_radius_ratio", q.mean_radius_ratio},
+              {"min_dihedral_deg", q.min_dihedral_deg},
+              {"mean_min_dihedral_deg", q.mean_min_dihedral_deg},
               {"radius_ratio_histogram", q.radius_ratio_histogram}};
 }
 
@@ -128,9 +130,29 @@ Json strategy_row(const stats::StrategyRow& r, const std::string& mesh) {
   row["tets_after"] = r.tets_after;  // at the stop when !ok
   row["worst_radius_ratio"] = r.worst_radius_ratio;
   row["worst_created_radius_ratio"] = r.worst_created_radius_ratio;
+  row["worst_created_min_dihedral_deg"] = r.worst_created_min_dihedral_deg;
+  row["created"] = quality(r.created);
+  row["created_without_improvement"] = quality(r.created_without_improvement);
+  row["ok_without_improvement"] = r.ok_without_improvement;
   row["mean_radius_ratio"] = r.mean_radius_ratio;
   row["p50_us"] = r.p50_us;
   row["p99_us"] = r.p99_us;
+  return row;
+}
+
+Json quality_row(const stats::QualityRow& r) {
+  Json row = {{"mesh", r.mesh.name},
+              {"paper_mesh", r.mesh.number},
+              {"strategy", r.strategy},
+              {"input_worst_radius_ratio", r.input_worst_radius_ratio},
+              {"goal", r.goal},
+              {"goal_met", r.goal_met()},
+              {"created", quality(r.created)},
+              {"created_without_improvement", quality(r.created_without_improvement)},
+              {"ok", r.ok},
+              {"ok_without_improvement", r.ok_without_improvement}};
+  if (!r.ok) row["error"] = r.error;
+  if (!r.ok_without_improvement) row["error_without_improvement"] = r.error_without_improvement;
   return row;
 }
 
@@ -160,10 +182,13 @@ Json stats_json(const stats::StatsReport& report) {
   }
   for (const stats::MeshStats& m : report.wide_meshes) table2_wide.push_back(table2_wide_row(m));
   for (const stats::StrategyRow& r : report.strategies) strategies.push_back(strategy_row(r, report.comparison_mesh));
+  Json quality_rows = Json::array();
+  for (const stats::QualityRow& r : report.quality) quality_rows.push_back(quality_row(r));
   Json out = {{"table1", std::move(table1)},
               {"table2", std::move(table2)},
               {"table2_wide", std::move(table2_wide)},
-              {"strategies", std::move(strategies)}};
+              {"strategies", std::move(strategies)},
+              {"quality", std::move(quality_rows)}};
   if (report.resection) out["resection"] = resection(*report.resection);
   return out;
 }

@@ -162,6 +162,13 @@ std::string mesh_path_from(const std::string& mesh, const std::string& dir) {
   return (relative.empty() || top(m) != top(base) ? m : relative).generic_string();
 }
 
+invariants::CheckOptions transaction_check_options(const CutParams& params) {
+  invariants::CheckOptions o;
+  o.quality_rule = params.improve ? invariants::QualityRule::kNoDegradation : invariants::QualityRule::kReportOnly;
+  o.quality_floor = params.quality_floor;
+  return o;
+}
+
 RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh_out) {
   RunResult result;
   TetMesh mesh;
@@ -184,6 +191,11 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
       s += std::string(s.empty() ? "" : "; ") + invariants::id_string(v.id) + " " + invariants::description(v.id) + ": " + v.detail;
     return s;
   };
+  // What a cut or removal that succeeded created, for the run's quality figures.
+  auto note_created = [&](const CutReport& r) {
+    result.min_created_radius_ratio = std::min(result.min_created_radius_ratio, r.min_radius_ratio);
+    invariants::pool(result.created_quality, invariants::quality_of(mesh.raw_view(), cutter->last_created()));
+  };
   // After every mutating operation: the growth guard, then the local check (or none).
   auto after = [&](const Op& op) {
     if (options.max_tets != 0 && mesh.num_tets() > options.max_tets) {
@@ -193,7 +205,8 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     }
     if (options.check == CheckMode::kNone || !cutter) return true;
     if (options.check == CheckMode::kEvery) {
-      const invariants::CheckReport r = local->after_operation(mesh.raw_view(), cutter->last_removed(), cutter->last_created());
+      const invariants::CheckReport r = local->after_operation(mesh.raw_view(), cutter->last_removed(),
+                                                               cutter->last_created(), transaction_check_options(params));
       if (!r.ok()) {
         stop(op, 1, "invariant violated: " + violations(r));
         return false;
@@ -244,7 +257,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
           result.cuts.push_back({op.line, centre, r});
           result.removals += r.tets_removed;
           result.unresolved += r.unresolved;
-          if (r.ok) result.min_created_radius_ratio = std::min(result.min_created_radius_ratio, r.min_radius_ratio);
+          if (r.ok) note_created(r);
           if (!r.ok) {
             stop(op, 1, "cut failed: " + r.failure);
             return result;
@@ -265,7 +278,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         const CutReport r = cutter->remove(t);
         result.removals += r.tets_removed;
         result.unresolved += r.unresolved;
-        if (r.ok) result.min_created_radius_ratio = std::min(result.min_created_radius_ratio, r.min_radius_ratio);
+        if (r.ok) note_created(r);
         if (!r.ok) {
           stop(op, 1, "removal failed: " + r.failure);
           return result;

@@ -102,20 +102,52 @@ std::string table2_wide_html(const StatsReport& report) {
 std::string strategies_html(const StatsReport& report) {
   std::string h = "<table id=\"strategies\"><tr><th>strategy</th><th>cuts</th><th>requests</th><th>tets created</th>"
                   "<th>tets removed</th><th>removed / request</th><th>unresolved</th><th>tets after</th>"
-                  "<th>worst created</th><th>worst radius ratio</th><th>mean radius ratio</th><th>p50 &micro;s</th>"
+                  "<th>worst created</th><th>min dihedral</th><th>no pass: worst created</th><th>min dihedral</th>"
+                  "<th>worst radius ratio</th><th>mean radius ratio</th><th>p50 &micro;s</th>"
                   "<th>p99 &micro;s</th></tr>\n";
   for (const StrategyRow& r : report.strategies) {
     h += "<tr>" + cell(r.name) + cell(std::to_string(r.cuts)) + cell(std::to_string(r.requests)) +
          cell(std::to_string(r.tets_created)) + cell(std::to_string(r.tets_removed)) +
          cell(fixed(r.removed_per_request, 2)) + cell(std::to_string(r.unresolved)) +
          cell(std::to_string(r.tets_after) + (r.ok ? "" : " *")) + cell(significant(r.worst_created_radius_ratio, 3)) +
-         cell(significant(r.worst_radius_ratio, 3)) +
+         cell(fixed(r.worst_created_min_dihedral_deg, 1)) + cell(created_worst(r.created_without_improvement)) +
+         cell(created_dihedral(r.created_without_improvement)) + cell(significant(r.worst_radius_ratio, 3)) +
          cell(fixed(r.mean_radius_ratio, 3)) + cell(fixed(r.p50_us, 1)) + cell(fixed(r.p99_us, 1)) +
          "</tr>\n";
   }
   h += "</table>\n";
   for (const StrategyRow& r : report.strategies)
     if (!r.ok) h += "<p class=\"warning\">" + render::xml_escape("* " + r.name + ": stopped early (figures at the stop): " + r.error) + "</p>\n";
+  h += "<table id=\"created-histogram\"><tr><th>strategy</th>";
+  for (std::size_t b = 0; b < invariants::kHistogramBins; ++b)
+    h += "<th>" + fixed(0.1 * static_cast<double>(b), 1) + "&ndash;" + fixed(0.1 * static_cast<double>(b + 1), 1) + "</th>";
+  h += "</tr>\n";
+  for (const StrategyRow& r : report.strategies) {
+    h += "<tr>" + cell(r.name);
+    for (std::uint64_t n : r.created.radius_ratio_histogram) h += cell(std::to_string(n));
+    h += "</tr>\n";
+  }
+  return h + "</table>\n";
+}
+
+std::string quality_html(const StatsReport& report) {
+  std::string h = "<table id=\"quality\"><tr><th>mesh</th><th>strategy</th><th>input worst</th><th>goal</th>"
+                  "<th>worst created</th><th>min dihedral</th><th>no pass: worst created</th><th>min dihedral</th>"
+                  "<th>goal met</th></tr>\n";
+  for (const QualityRow& r : report.quality)
+    h += "<tr>" + cell(mesh_label(r.mesh)) + cell(r.strategy) + cell(significant(r.input_worst_radius_ratio, 3)) +
+         cell(significant(r.goal, 3)) + cell(created_worst(r.created) + (r.ok ? "" : " *")) +
+         cell(created_dihedral(r.created)) +
+         cell(created_worst(r.created_without_improvement) + (r.ok_without_improvement ? "" : " *")) +
+         cell(created_dihedral(r.created_without_improvement)) + cell(r.goal_met() ? "yes" : "no") + "</tr>\n";
+  h += "</table>\n";
+  for (const QualityRow& r : report.quality) {
+    if (!r.ok) h += "<p class=\"warning\">" + render::xml_escape("* " + mesh_label(r.mesh) + ", " + r.strategy + ": stopped early: " + r.error) + "</p>\n";
+    if (!r.ok_without_improvement)
+      h += "<p class=\"warning\">" +
+           render::xml_escape("* " + mesh_label(r.mesh) + ", " + r.strategy + ", no pass: stopped early: " + r.error_without_improvement) +
+           "</p>\n";
+  }
   return h;
 }
 
@@ -162,9 +194,18 @@ std::string html_report(const StatsReport& report, const std::string& command) {
   h += "<h2>Strategies on the " + render::xml_escape(report.comparison_mesh) + " scenario</h2>\n"
        "<p>basic (3.4), neighbours (3.5), combined (3.7), and our wider search (not the paper's); the "
        "refinement loop (3.2) splitting with the ten templates or by sequential bisection. Quality: radius "
-       "ratio of the tets the cuts created and of the mesh after the scenario. A run stops when its mesh "
-       "grows past twice its size.</p>\n" +
+       "ratio of the tets the cuts created (and its smallest dihedral angle), with the improvement pass and "
+       "without it (no pass), and of the mesh after the scenario; below, how the created tets' radius ratios "
+       "spread. A run stops when its mesh grows past twice its size.</p>\n" +
        strategies_html(report);
+  if (!report.quality.empty())
+    h += "<h2>Quality of the tets the cuts created</h2>\n"
+         "<p>Per paper scenario and strategy, with the improvement pass that ends each cut (flips, collapses, "
+         "smoothing of the cut's own vertices) and without it: the worst radius ratio and the smallest dihedral "
+         "angle (degrees) of the tets the cuts created. Goal: the worst at least min(0.1, the input's worst), half "
+         "that for basic. A run marked * stopped early (the growth guard, or a cut refused because the pass could "
+         "not meet the floor).</p>\n" +
+         quality_html(report);
   if (report.resection) h += resection_html(*report.resection);
   h += "</body></html>\n";
   return h;

@@ -61,12 +61,30 @@ StrategyRow strategy_row(const std::string& name, const CauteryRun& run) {
   row.removed_per_request = average(row.tets_removed, row.requests);
   row.unresolved = r.unresolved;
   row.tets_after = run.result.tets;
+  row.created = run.result.created_quality;
+  if (row.created.tets > 0) row.worst_created_min_dihedral_deg = row.created.min_dihedral_deg;
   row.worst_radius_ratio = run.quality_after.min_radius_ratio;
   row.mean_radius_ratio = run.quality_after.mean_radius_ratio;
   row.p50_us = percentile(run.cut_us, 0.5);
   row.p99_us = percentile(run.cut_us, 0.99);
   row.ok = run.result.ok;
   row.error = run.result.error;
+  return row;
+}
+
+QualityRow quality_row(const PaperMesh& mesh, const char* strategy, const CauteryRun& with, const CauteryRun& without) {
+  QualityRow row;
+  row.mesh = mesh;
+  row.strategy = strategy;
+  row.input_worst_radius_ratio = with.quality_before.min_radius_ratio;
+  // Issue 29's goal: min(0.1, the input's worst), half that for basic.
+  row.goal = std::min(0.1, row.input_worst_radius_ratio) * (with.strategy == RemovalStrategy::kBasic ? 0.5 : 1.0);
+  row.created = with.result.created_quality;
+  row.created_without_improvement = without.result.created_quality;
+  row.ok = with.result.ok;
+  row.error = with.result.error;
+  row.ok_without_improvement = without.result.ok;
+  row.error_without_improvement = without.result.error;
   return row;
 }
 
@@ -128,11 +146,39 @@ StatsResult compute_stats(const StatsOptions& options) {
     o.strategy = v.strategy;
     o.split = v.split;
     CauteryResult r = run_scenario(comparison->scenario, o);
-    if (!r.run) {
-      out.error = r.error;
+    o.improve = false;
+    CauteryResult without = run_scenario(comparison->scenario, o);
+    if (!r.run || !without.run) {
+      out.error = r.run ? without.error : r.error;
       return out;
     }
-    report.strategies.push_back(strategy_row(v.name, *r.run));
+    StrategyRow row = strategy_row(v.name, *r.run);
+    row.created_without_improvement = without.run->result.created_quality;
+    row.ok_without_improvement = without.run->result.ok;
+    report.strategies.push_back(std::move(row));
+  }
+
+  if (options.quality) {
+    constexpr std::pair<const char*, RemovalStrategy> kQualityStrategies[] = {
+        {"basic", RemovalStrategy::kBasic},
+        {"neighbours", RemovalStrategy::kNeighbours},
+        {"combined", RemovalStrategy::kCombined},
+        {"wide", RemovalStrategy::kWide}};
+    for (const PaperMesh& m : paper_meshes())
+      for (const auto& [name, strategy] : kQualityStrategies) {
+        CauteryOptions o = run_options;
+        // Only basic refines without bound; the others run their scenario to its end, as Table 1.
+        o.max_growth = strategy == RemovalStrategy::kBasic ? kComparisonMaxGrowth : 0;
+        o.strategy = strategy;
+        CauteryResult with = run_scenario(m.scenario, o);
+        o.improve = false;
+        CauteryResult without = run_scenario(m.scenario, o);
+        if (!with.run || !without.run) {
+          out.error = with.run ? without.error : with.error;
+          return out;
+        }
+        report.quality.push_back(quality_row(m, name, *with.run, *without.run));
+      }
   }
 
   if (options.resection) {

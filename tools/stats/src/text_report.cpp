@@ -30,6 +30,13 @@ std::string difference(double ours, double paper, int decimals) {
   return buf;
 }
 
+std::string created_worst(const invariants::QualityStats& q) {
+  return q.tets == 0 ? "-" : significant(q.min_radius_ratio, 3);
+}
+std::string created_dihedral(const invariants::QualityStats& q) {
+  return q.tets == 0 ? "-" : fixed(q.min_dihedral_deg, 1);
+}
+
 namespace {
 
 // Columns padded to their widest cell; the first column left-aligned, the others right.
@@ -132,16 +139,53 @@ std::string text_report(const StatsReport& report) {
          " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";
   TextTable s;
   s.row({"strategy", "cuts", "requests", "tets created", "tets removed", "removed/request", "unresolved", "tets after",
-         "worst created", "worst quality", "mean quality", "p50 us", "p99 us"});
+         "worst created", "min dihedral", "no pass: worst", "min dihedral", "worst quality", "mean quality", "p50 us",
+         "p99 us"});
   for (const StrategyRow& r : report.strategies)
     s.row({r.name, std::to_string(r.cuts), std::to_string(r.requests), std::to_string(r.tets_created),
            std::to_string(r.tets_removed), fixed(r.removed_per_request, 2), std::to_string(r.unresolved),
            std::to_string(r.tets_after) + (r.ok ? "" : " *"), significant(r.worst_created_radius_ratio, 3),
-           significant(r.worst_radius_ratio, 3),
+           fixed(r.worst_created_min_dihedral_deg, 1), created_worst(r.created_without_improvement),
+           created_dihedral(r.created_without_improvement), significant(r.worst_radius_ratio, 3),
            fixed(r.mean_radius_ratio, 3), fixed(r.p50_us, 1), fixed(r.p99_us, 1)});
   out += s.str();
   for (const StrategyRow& r : report.strategies)
     if (!r.ok) out += "  * " + r.name + ": stopped early (figures at the stop): " + r.error + "\n";
+  out += "  worst created: the radius ratio of the worst tet the cuts created (min dihedral: its smallest\n"
+         "  dihedral angle, degrees); no pass: the same scenario with the improvement pass off\n";
+
+  out += "\nRadius ratio of the tets the cuts created on the " + report.comparison_mesh +
+         " scenario, with the improvement pass: how many in each tenth\n\n";
+  TextTable h;
+  std::vector<std::string> header{"strategy"};
+  for (std::size_t b = 0; b < invariants::kHistogramBins; ++b) header.push_back(fixed(0.1 * static_cast<double>(b), 1) + "-");
+  h.row(header);
+  for (const StrategyRow& r : report.strategies) {
+    std::vector<std::string> cells{r.name};
+    for (std::uint64_t n : r.created.radius_ratio_histogram) cells.push_back(std::to_string(n));
+    h.row(cells);
+  }
+  out += h.str();
+
+  if (!report.quality.empty()) {
+    out += "\nQuality of the tets the cuts created, per paper scenario and strategy, with the improvement\n"
+           "pass and without it (radius ratio, smallest dihedral angle in degrees). Goal: the worst\n"
+           "created radius ratio at least min(0.1, the input's worst), half that for basic\n\n";
+    TextTable q;
+    q.row({"mesh", "strategy", "input worst", "goal", "worst created", "min dihedral", "no pass: worst", "min dihedral",
+           "goal met"});
+    for (const QualityRow& r : report.quality)
+      q.row({mesh_label(r.mesh), r.strategy, significant(r.input_worst_radius_ratio, 3), significant(r.goal, 3),
+             created_worst(r.created) + (r.ok ? "" : " *"), created_dihedral(r.created),
+             created_worst(r.created_without_improvement) + (r.ok_without_improvement ? "" : " *"),
+             created_dihedral(r.created_without_improvement), r.goal_met() ? "yes" : "NO"});
+    out += q.str();
+    for (const QualityRow& r : report.quality) {
+      if (!r.ok) out += "  * " + mesh_label(r.mesh) + ", " + r.strategy + ": stopped early: " + r.error + "\n";
+      if (!r.ok_without_improvement)
+        out += "  * " + mesh_label(r.mesh) + ", " + r.strategy + ", no pass: stopped early: " + r.error_without_improvement + "\n";
+    }
+  }
 
   if (report.resection) {
     const CauteryRun& run = report.resection->run;

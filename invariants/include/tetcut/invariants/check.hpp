@@ -126,6 +126,14 @@ struct CheckReport {
   [[nodiscard]] const Violation* find(Invariant id) const;
 };
 
+// The quality of the listed tets alone (say, the tets one cut created), measured as the checks
+// measure every tet; nothing is judged. Dead or out-of-range ids are skipped: this is for
+// statistics, and the checks above are what report a bad id.
+QualityStats quality_of(const RawMeshView& mesh, RawIds tets);
+
+// Pools `more` into `into`: minima of the minima, histograms added, means weighted by tets.
+void pool(QualityStats& into, const QualityStats& more);
+
 // Several lines for people: one per violation, "I5 manifold vertex shells: 3 ...: detail".
 std::string to_string(const CheckReport& report);
 

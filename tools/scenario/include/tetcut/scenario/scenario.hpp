@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "tetcut/cut.hpp"
+#include "tetcut/invariants/check.hpp"
 #include "tetcut/scenario/values.hpp"
 #include "tetcut/vec3.hpp"
 
@@ -88,6 +89,8 @@ struct RunResult {
   std::uint64_t removals = 0;
   std::uint64_t unresolved = 0;
   double min_created_radius_ratio = 1.0;  // the worst tet any cut or removal created (1: none)
+  // Of every tet a cut or a removal created and left live, measured by the checker's geometry.
+  invariants::QualityStats created_quality;
   std::string hash;        // of the final mesh
   std::uint32_t tets = 0;
   RemovalReport removal;   // the paper's statistics over every removal request of the run
@@ -103,6 +106,12 @@ struct RunOptions {
   // (`tetcut cut --frames` writes a snapshot). A message stops the run with exit 2.
   std::function<std::optional<std::string>(const TetMesh&, std::size_t cut_index)> after_cut;
 };
+
+// What the local checker holds one Cutter transaction made with `params` to: I7's no-degradation
+// rule at the cut's own floor (CutParams::quality_floor) when the improvement pass runs; with the
+// pass off the engine promises no floor (the paper's algorithm alone), so I7 reports quality and
+// judges none.
+invariants::CheckOptions transaction_check_options(const CutParams& params);
 
 // Runs the scenario; the final mesh is left in `mesh_out` when given (when the run stops early,
 // the mesh as it was then: after a refused cut, as before that cut).

@@ -35,6 +35,9 @@ struct CauteryOptions {
   // When non-zero, the run stops once the mesh holds more than this many times its initial
   // tets (the basic strategy refines without bound over a sweep).
   std::uint32_t max_growth = 0;
+  // The improvement pass that ends each cut (CutParams::improve); a scenario's own `improve`
+  // line still wins.
+  bool improve = true;
 };
 
 struct CauteryResult {

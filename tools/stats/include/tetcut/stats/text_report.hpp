@@ -16,5 +16,9 @@ std::string fixed(double value, int decimals);
 std::string significant(double value, int digits);
 // "+1.2" / "-0.4", or "-" when either side is NaN.
 std::string difference(double ours, double paper, int decimals);
+// Of created tets: the worst radius ratio ("0.101") and the smallest dihedral angle in degrees
+// ("7.6"), each "-" when none were created.
+std::string created_worst(const invariants::QualityStats& q);
+std::string created_dihedral(const invariants::QualityStats& q);
 
 }  // namespace tetcut::stats
