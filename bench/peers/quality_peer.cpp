@@ -1,10 +1,12 @@
 // tetcut_quality_peer: the shape of the tets tetcut's cuts create, beside what CGAL's
 // tetrahedral_isotropic_remeshing makes of the same cells after the same cut (issue 29 item 3).
 //
-//   tetcut_quality_peer [--cuts N] [--every K] [--rings R] [--iterations N] [--json FILE]
+//   tetcut_quality_peer [--cuts N] [--every K] [--rings R] [--iterations N] [--improve on|off]
+//                       [--json FILE]
 //
 // The gated sweep (bench/gated_sweep.hpp: the bundled 16k liver, tool 8 mm, 252 cuts), default
-// CutParams, runs twice on fresh copies of the mesh:
+// CutParams (--improve off: without the improvement pass, what the paper's algorithm alone hands
+// CGAL), runs twice on fresh copies of the mesh:
 //   1. timing: every cut timed alone, nothing else in the loop (the gate's measurement, without its
 //      cache eviction before the first cut);
 //   2. quality: after every cut, the tets it created (Cutter::last_created()) measured; after
@@ -58,6 +60,7 @@ struct Options {
   std::size_t every = 1;
   unsigned iterations = 1;
   int rings = 0;  // CGAL loads the selection and this many rings of tets around it; -1: the whole mesh
+  bool improve = true;  // CutParams::improve
   std::string json;
 };
 
@@ -104,9 +107,9 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 }
 
 // Pass 1: every cut of the sweep timed alone.
-std::vector<double> time_cuts(const std::vector<tetcut::Vec3>& centres) {
+std::vector<double> time_cuts(const std::vector<tetcut::Vec3>& centres, const Options& options) {
   tetcut::TetMesh mesh = tetcut::bench::corpus_mesh("liver.msh");
-  tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter});
+  tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter, .improve = options.improve});
   std::vector<double> us;
   us.reserve(centres.size());
   for (const tetcut::Vec3& c : centres) {
@@ -173,7 +176,7 @@ CgalFigures remesh_in_cgal(const tetcut::TetMesh& mesh, const std::vector<TetId>
 // tets handed to CGAL.
 std::vector<CutRow> compare_cuts(const std::vector<tetcut::Vec3>& centres, const Options& options) {
   tetcut::TetMesh mesh = tetcut::bench::corpus_mesh("liver.msh");
-  tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter});
+  tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter, .improve = options.improve});
   std::vector<CutRow> rows;
   std::size_t creating = 0;
   for (std::size_t i = 0; i < centres.size(); ++i) {
@@ -333,6 +336,7 @@ bool write_json(const std::string& path, const std::vector<CutRow>& rows, const 
       {"cgal_every", options.every},
       {"cgal_iterations", options.iterations},
       {"cgal_rings", options.rings},
+      {"improve", options.improve},
       {"summary",
        {{"cuts", s.cuts},
         {"cuts_creating", s.creating},
@@ -368,17 +372,21 @@ int main(int argc, char** argv) {
   app.add_option("--rings", options.rings,
                  "CGAL loads the selection and N rings of tets around it (-1: the whole mesh)")
       ->check(CLI::Range(-1, 1000));
+  std::string improve = "on";
+  app.add_option("--improve", improve, "tetcut's improvement pass (CutParams::improve)")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--json", options.json, "also write the figures to FILE");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  options.improve = improve == "on";
 
   std::vector<tetcut::Vec3> centres = tetcut::bench::gated_sweep_centres();
   if (options.cuts > 0 && options.cuts < centres.size()) centres.resize(options.cuts);
 
-  const std::vector<double> us = time_cuts(centres);
+  const std::vector<double> us = time_cuts(centres, options);
   std::vector<CutRow> rows = compare_cuts(centres, options);
   for (std::size_t i = 0; i < rows.size(); ++i) rows[i].tetcut_us = us[i];
   const Summary summary = summarise(rows);

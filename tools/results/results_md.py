@@ -4,12 +4,14 @@ measure them, never copied by hand. `ci/results` runs it on the CI machine; run 
 commit the page whenever the figures move.
 
     results_md.py --bench RESULTS.json [--confirm RERUN.json]... --budgets BUDGETS.json
-                  --stats STATS.json [--build-dir DIR] [--how TEXT] [--out FILE]
+                  --stats STATS.json [--peer PEER.json] [--peer-without-improvement PEER.json]
+                  [--build-dir DIR] [--how TEXT] [--out FILE]
 
 RESULTS.json is ci/bench's Google Benchmark JSON (merged across suites, the callgrind count
 included with --instructions), RERUN.json the re-runs ci/bench made of wall times over budget
 (the gate keeps the fastest run, and so does the page), BUDGETS.json bench/budgets.json,
-STATS.json `tetcut stats --json`'s output. --build-dir is the build the figures came from (its compiler and flags are
+STATS.json `tetcut stats --json`'s output, PEER.json `tetcut_quality_peer --json`'s (with the
+improvement pass, and with --improve off). --build-dir is the build the figures came from (its compiler and flags are
 named in the header), --how says how the benchmarks were run. Without --out the page goes to
 stdout.
 
@@ -34,9 +36,10 @@ LIBRARIES = ["libc6", "libstdc++6", "libtet1.5-dev", "libcgal-dev", "zlib1g-dev"
 
 
 class Inputs:
-    def __init__(self, bench, confirmations, budgets, stats, build_dir, how):
+    def __init__(self, bench, confirmations, budgets, stats, build_dir, how, peer_on=None, peer_off=None):
         self.bench, self.confirmations, self.budgets, self.stats = bench, confirmations, budgets, stats
         self.build_dir, self.how = build_dir, how
+        self.peer_on, self.peer_off = peer_on, peer_off  # tetcut_quality_peer --json, pass on and off
 
     def median(self, benchmark):
         """The entry the gate reads for a benchmark: its median over the repetitions, else its run."""
@@ -310,6 +313,81 @@ def strategies(inputs):
     return lines
 
 
+def created_quality(q):
+    """The worst created tet as "radius ratio / min dihedral", "-" when nothing was created."""
+    if not q or not q.get("tets"):
+        return "-"
+    return f"{short(q['min_radius_ratio'])} / {fmt(q['min_dihedral_deg'], 1)}"
+
+
+def quality(inputs):
+    rows = (inputs.stats or {}).get("quality")
+    if not rows:
+        return None
+    body = []
+    stops = []
+    for r in rows:
+        mark = ""
+        if not r.get("ok", True):
+            reason = re.sub(r"^\S+:\d+: ", "", r.get("error", ""))
+            stops.append(f"{r['paper_mesh']} {r['mesh']}, {r['strategy']}: {reason}")
+            mark = " *"
+        body.append((f"{r['paper_mesh']} {r['mesh']}", r["strategy"], short(r["input_worst_radius_ratio"]),
+                     short(r["goal"]), created_quality(r["created"]) + mark,
+                     created_quality(r["created_without_improvement"]), "yes" if r["goal_met"] else "**no**"))
+    lines = ["## Quality of the tets the cuts create", "",
+             "`tetcut stats`: each paper scenario with each strategy, with the improvement pass that ends every cut "
+             "(flips, collapses, smoothing of the cut's own vertices; `CutParams::improve`) and without it. Each cell "
+             "is the worst tet the cuts created: radius ratio / smallest dihedral angle in degrees, measured by the "
+             "independent checker. Goal (issue 29): radius ratio at least min(0.1, the input's worst), half that for "
+             "basic. The checker holds every cut with the pass to that floor (I7, no degradation).", ""]
+    lines += table(("mesh", "strategy", "input worst", "goal", "with the pass", "without", "goal met"), body, right_from=2)
+    if stops:
+        lines += ["", "\\* stopped early (figures up to the stop): " + "; ".join(stops) + "."]
+    strategies_rows = (inputs.stats or {}).get("strategies") or []
+    if strategies_rows and "created" in strategies_rows[0]:
+        bins = [f"{b / 10:.1f}-" for b in range(10)]
+        hist = [(r["name"],) + tuple(fmt(n, 0) for n in r["created"]["radius_ratio_histogram"]) for r in strategies_rows]
+        lines += ["", f"Radius ratios of the tets the cuts created on the {strategies_rows[0].get('mesh', '')} scenario, "
+                      "with the pass: how many in each tenth.", ""]
+        lines += table(["strategy"] + bins, hist)
+    return lines
+
+
+def quality_peer(inputs):
+    on, off = inputs.peer_on, inputs.peer_off
+    if not on:
+        return None
+
+    def row(name, spread):
+        return (name, f"{short(spread['worst_radius_ratio'])} / {fmt(spread['worst_min_dihedral_deg'], 1)}",
+                f"{short(spread['median_radius_ratio'])} / {fmt(spread['median_min_dihedral_deg'], 1)}")
+
+    body = []
+    for label, run in (("with the pass", on), ("without the pass", off)):
+        if not run:
+            continue
+        s = run["summary"]
+        body.append(row(f"tetcut {label}: created tets, every cut", s["tetcut_created_all"]))
+        body.append(row(f"CGAL on the same cells, after tetcut {label}", s["selection_after_cgal"]))
+    s = on["summary"]
+    lines = ["## Beside CGAL's remeshing", "",
+             "`tetcut_quality_peer` (bench/peers/): the gated liver sweep (16k tets, 8 mm tool, "
+             f"{fmt(s['cuts'], 0)} cuts); after every cut that created tets ({fmt(s['cuts_sampled'], 0)} of them), "
+             "CGAL 5.5's `tetrahedral_isotropic_remeshing` remeshes the created tets and their face neighbours "
+             "(`cell_is_selected_map`), surface and selection boundary kept. Worst and median tet, radius ratio / "
+             "smallest dihedral in degrees.", ""]
+    lines += table(("", "worst", "median"), body)
+    times = [f"tetcut's cut p50 {short(s['tetcut_p50_us'])} us, p99 {short(s['tetcut_p99_us'])} us with the pass"]
+    if off:
+        times.append(f"{short(off['summary']['tetcut_p50_us'])} / {short(off['summary']['tetcut_p99_us'])} us without")
+    times.append(f"CGAL's remeshing of the selection alone p50 {short(s['cgal_remesh_p50_ms'])} ms, "
+                 f"p99 {short(s['cgal_remesh_p99_ms'])} ms")
+    lines += ["", "Times: " + "; ".join(times) + f". CGAL left the selection's worst tet worse than tetcut's in "
+              f"{fmt(s['cgal_lowered_worst_radius_ratio'], 0)} of {fmt(s['cuts_sampled'], 0)} cuts by radius ratio."]
+    return lines
+
+
 def resection(inputs):
     r = (inputs.stats or {}).get("resection")
     if not r:
@@ -324,7 +402,7 @@ def resection(inputs):
 
 
 SECTIONS = [machine, budget_gate, cut_sweeps, removal_requests, instructions, paper_table1, paper_table2,
-            paper_table2_wide, strategies, resection]
+            paper_table2_wide, strategies, quality, quality_peer, resection]
 
 
 def page(inputs):
@@ -357,13 +435,16 @@ def main(argv):
     parser.add_argument("--confirm", action="append", default=[], help="ci/bench's re-runs of wall times over budget")
     parser.add_argument("--budgets", required=True, help="bench/budgets.json")
     parser.add_argument("--stats", help="tetcut stats --json output")
+    parser.add_argument("--peer", help="tetcut_quality_peer --json output (improvement pass on)")
+    parser.add_argument("--peer-without-improvement", help="the same with --improve off")
     parser.add_argument("--build-dir", help="the build the figures came from")
     parser.add_argument("--how", help="how the benchmarks were run")
     parser.add_argument("--out", help="the page (default: stdout)")
     args = parser.parse_args(argv[1:])
     inputs = Inputs(load(args.bench, "benchmark results"), [load(c, "re-run results") for c in args.confirm],
                     load(args.budgets, "budgets"),
-                    load(args.stats, "tetcut stats output"), args.build_dir, args.how)
+                    load(args.stats, "tetcut stats output"), args.build_dir, args.how,
+                    load(args.peer, "quality peer output"), load(args.peer_without_improvement, "quality peer output"))
     text = page(inputs)
     if not args.out:
         sys.stdout.write(text)
