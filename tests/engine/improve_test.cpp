@@ -182,7 +182,7 @@ TEST(Improve, WithoutThePassTheCheckerFindsSliversAndWithItNone) {
   }
 }
 
-TEST(Improve, ACutThePassCannotLiftIsRefusedAndLeavesTheMeshBitIdentical) {
+TEST(Improve, ACutThePassCannotLiftIsRefusedAndLeavesTheMeshAndTheStatisticsAsTheyWere) {
   // A floor no tet can reach (a radius ratio of 1 is the regular tet's): the pass cannot meet
   // min(1, the worst tet replaced) for every child, so the cut is refused, bit for bit.
   TetMesh mesh = corpus_mesh("liver.msh");
@@ -191,9 +191,12 @@ TEST(Improve, ACutThePassCannotLiftIsRefusedAndLeavesTheMeshBitIdentical) {
   CutReport report;
   for (double y = 40; y <= 180 && report.ok; y += 4) {
     const TetMesh snapshot = mesh;
+    const RemovalReport statistics = cutter.removal_report();
     report = cutter.cut({95, y, 100});
     if (!report.ok) {
       EXPECT_NE(report.failure.find("quality floor"), std::string::npos) << report.failure;
+      EXPECT_GT(report.requests, 0u) << "the refused cut made removal requests before the pass";
+      EXPECT_EQ(cutter.removal_report(), statistics) << "a refused cut counts none of its requests";
       EXPECT_EQ(mesh.raw_tets().size(), snapshot.raw_tets().size());
       EXPECT_TRUE(std::equal(mesh.raw_tets().begin(), mesh.raw_tets().end(), snapshot.raw_tets().begin()));
       EXPECT_TRUE(std::equal(mesh.positions().begin(), mesh.positions().end(), snapshot.positions().begin()));

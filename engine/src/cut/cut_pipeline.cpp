@@ -176,14 +176,12 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
     return report;
   }
 
-  mesh_.begin_transaction();
-  cut_start_ = mesh_.savepoint();
-  clear_marks();
+  begin();
   tool_ = tool;
   d_ref_ = d_ref;
   removal_.clear();
   auto fail = [&](std::string why) {
-    mesh_.rollback();
+    roll_back();
     report.ok = false;
     report.failure = std::move(why);
     net_removed_.clear();
@@ -250,16 +248,14 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
     return report;
   }
   const Clock::time_point t0 = Clock::now();
-  mesh_.begin_transaction();
-  cut_start_ = mesh_.savepoint();
-  clear_marks();
+  begin();
   tool_.reset();  // no tool: the request alone, no children join it
   removal_.assign(1, t);
   selected_.insert(t);
   tissue_.insert(t);
   remove_selected(report);
   if (!report.ok) {
-    mesh_.rollback();
+    roll_back();
     return report;
   }
   const Clock::time_point t1 = Clock::now();
@@ -267,7 +263,7 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
   improve(report);
   report.time.improve_us = micros(t1, Clock::now());
   if (!report.quality_met && params_.improve) {
-    mesh_.rollback();
+    roll_back();
     report.ok = false;
     report.failure = floor_failure(report);
     return report;
@@ -275,6 +271,18 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
   finish(report, log);
   report.time.total_us = micros(t0, Clock::now());
   return report;
+}
+
+void Cutter::Pipeline::begin() {
+  mesh_.begin_transaction();
+  cut_start_ = mesh_.savepoint();
+  clear_marks();
+  removal_at_start_ = remover_.report();
+}
+
+void Cutter::Pipeline::roll_back() {
+  mesh_.rollback();
+  remover_.restore_report(removal_at_start_);
 }
 
 void Cutter::Pipeline::remove_selected(CutReport& report) {

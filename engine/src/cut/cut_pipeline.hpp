@@ -35,6 +35,7 @@ class Cutter::Pipeline {
   CutParams params_;
   Remover remover_;
   std::vector<TetId> net_removed_, net_created_;
+  RemovalReport removal_at_start_;  // remover_.report() when the transaction began
 
  private:
   // Removes the selected tets (removal_, growing), directly removable ones first, and fills the
@@ -46,6 +47,11 @@ class Cutter::Pipeline {
   [[nodiscard]] bool selectable(TetId t) const;
   [[nodiscard]] bool pending(TetId t) const;
   void clear_marks();  // a new cut: fresh marks
+  // Opens the transaction a cut or a removal request is (savepoint, fresh marks, the removal
+  // statistics as they stand), and closes one that failed: the mesh rolled back and the
+  // statistics as they were, so that a refused cut counts none of its requests.
+  void begin();
+  void roll_back();
   // Tets the cut made that are still live: what its budget counts.
   [[nodiscard]] std::uint32_t net_made() const { return mesh_.net_tets_made_since(cut_start_); }
   // The improvement pass (improve/improver.hpp) over what the transaction made, into the report.

@@ -110,6 +110,8 @@ class Remover {
   // Sizes all per-tet and per-vertex scratch for meshes up to these capacities (see Cutter).
   void reserve(std::uint32_t tets, std::uint32_t vertices);
   void reset_report() { report_ = {}; }
+  // The statistics as they were before a transaction the caller rolled back (Cutter).
+  void restore_report(const RemovalReport& before) { report_ = before; }
   // For another mesh (or the same one assigned anew): the report and every per-tet mark of the
   // old one are cleared; the workspaces keep their memory, so nothing is reallocated.
   void reset();
