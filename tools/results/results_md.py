@@ -5,13 +5,14 @@ commit the page whenever the figures move.
 
     results_md.py --bench RESULTS.json [--confirm RERUN.json]... --budgets BUDGETS.json
                   --stats STATS.json [--peer PEER.json] [--peer-without-improvement PEER.json]
+                  [--sweeps SWEEPS.json]
                   [--build-dir DIR] [--how TEXT] [--out FILE]
 
 RESULTS.json is ci/bench's Google Benchmark JSON (merged across suites, the callgrind count
 included with --instructions), RERUN.json the re-runs ci/bench made of wall times over budget
 (the gate keeps the fastest run, and so does the page), BUDGETS.json bench/budgets.json,
 STATS.json `tetcut stats --json`'s output, PEER.json `tetcut_quality_peer --json`'s (with the
-improvement pass, and with --improve off). --build-dir is the build the figures came from (its compiler and flags are
+improvement pass, and with --improve off), SWEEPS.json `tetcut_quality_sweeps --json`'s. --build-dir is the build the figures came from (its compiler and flags are
 named in the header), --how says how the benchmarks were run. Without --out the page goes to
 stdout.
 
@@ -36,10 +37,12 @@ LIBRARIES = ["libc6", "libstdc++6", "libtet1.5-dev", "libcgal-dev", "zlib1g-dev"
 
 
 class Inputs:
-    def __init__(self, bench, confirmations, budgets, stats, build_dir, how, peer_on=None, peer_off=None):
+    def __init__(self, bench, confirmations, budgets, stats, build_dir, how, peer_on=None, peer_off=None,
+                 sweeps=None):
         self.bench, self.confirmations, self.budgets, self.stats = bench, confirmations, budgets, stats
         self.build_dir, self.how = build_dir, how
         self.peer_on, self.peer_off = peer_on, peer_off  # tetcut_quality_peer --json, pass on and off
+        self.sweeps = sweeps  # tetcut_quality_sweeps --json
 
     def median(self, benchmark):
         """The entry the gate reads for a benchmark: its median over the repetitions, else its run."""
@@ -388,6 +391,35 @@ def quality_peer(inputs):
     return lines
 
 
+def quality_sweeps(inputs):
+    data = inputs.sweeps
+    if not data or not data.get("rows"):
+        return None
+    body = []
+    for r in data["rows"]:
+        worst = "-"
+        if "worst_created_radius_ratio" in r:
+            worst = f"{short(r['worst_created_radius_ratio'])} / {fmt(r['worst_created_min_dihedral_deg'], 1)}"
+        body.append((r["mesh"], r["tool"], short(r["tool_diameter"]), fmt(r["tets"], 0), fmt(r["cuts"], 0),
+                     fmt(r["refused"], 0), fmt(r["checker_violations"], 0), short(r["input_worst_radius_ratio"]),
+                     worst, fmt(r["max_created_per_cut"], 0), f"{short(r['p50_us'])} / {short(r['p99_us'])}",
+                     "yes" if r["goal_met"] else "**no**"))
+    made_by = {}
+    for r in data["rows"]:
+        made_by.setdefault(r["mesh"], r["made_by"])
+    lines = ["## Random sweeps on meshes from TetGen and CGAL", "",
+             f"`tetcut_quality_sweeps` (bench/quality_sweeps.cpp): {data['sweeps_per_tool']} sweeps per mesh and tool "
+             "along random chords of the bounding box, one cut every half tool diameter, default parameters "
+             "(combined, the improvement pass, floor 0.1), the checker after every cut. Tools: 4, 8 and 12 % of the "
+             "bounding box's diagonal, and *fine*, a tenth of the median edge. Worst created: radius ratio / "
+             "smallest dihedral in degrees; goal min(0.1, the input's worst). A refused cut is one the pass could "
+             "not lift to the floor: it leaves the mesh as it was. Meshes: "
+             + "; ".join(f"{k}: {v}" for k, v in made_by.items()) + ".", ""]
+    lines += table(("mesh", "tool", "diameter", "tets", "cuts", "refused", "checker", "input worst", "worst created",
+                    "max tets / cut", "p50 / p99 us", "goal met"), body, right_from=2)
+    return lines
+
+
 def resection(inputs):
     r = (inputs.stats or {}).get("resection")
     if not r:
@@ -402,7 +434,7 @@ def resection(inputs):
 
 
 SECTIONS = [machine, budget_gate, cut_sweeps, removal_requests, instructions, paper_table1, paper_table2,
-            paper_table2_wide, strategies, quality, quality_peer, resection]
+            paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, resection]
 
 
 def page(inputs):
@@ -437,6 +469,7 @@ def main(argv):
     parser.add_argument("--stats", help="tetcut stats --json output")
     parser.add_argument("--peer", help="tetcut_quality_peer --json output (improvement pass on)")
     parser.add_argument("--peer-without-improvement", help="the same with --improve off")
+    parser.add_argument("--sweeps", help="tetcut_quality_sweeps --json output")
     parser.add_argument("--build-dir", help="the build the figures came from")
     parser.add_argument("--how", help="how the benchmarks were run")
     parser.add_argument("--out", help="the page (default: stdout)")
@@ -444,7 +477,8 @@ def main(argv):
     inputs = Inputs(load(args.bench, "benchmark results"), [load(c, "re-run results") for c in args.confirm],
                     load(args.budgets, "budgets"),
                     load(args.stats, "tetcut stats output"), args.build_dir, args.how,
-                    load(args.peer, "quality peer output"), load(args.peer_without_improvement, "quality peer output"))
+                    load(args.peer, "quality peer output"), load(args.peer_without_improvement, "quality peer output"),
+                    load(args.sweeps, "quality sweeps output"))
     text = page(inputs)
     if not args.out:
         sys.stdout.write(text)

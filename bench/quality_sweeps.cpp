@@ -1,0 +1,274 @@
+// tetcut_quality_sweeps: random cautery sweeps on meshes tetcut did not write, and the shape of
+// the tets the cuts create (issue 29, item 4's sweeps).
+//
+//   tetcut_quality_sweeps [--sweeps N] [--seed S] [--only NAME] [--json FILE]
+//
+// The meshes come from other meshers at other densities: TetGen (through tools/generators) fills
+// a box at three densities, one without TetGen's quality bound (its plain Delaunay
+// tetrahedralization of the box's points), and a cylinder; CGAL Mesh_3 makes a liver of about 6,000 tets from Debian's
+// liver image; and the bundled 16k liver (also Mesh_3). On each mesh, for each tool (4, 8 and
+// 12 % of the bounding box's diagonal, and a fine tool a tenth of the median edge, a fine cautery
+// on a coarse mesh), N sweeps along random chords of the bounding box, one cut every half tool
+// diameter, each sweep on a fresh copy of the mesh, with the default CutParams (combined, the
+// improvement pass on, floor 0.1).
+//
+// After every cut the independent checker runs on what it changed, with I7's no-degradation rule at
+// the cut's floor (scenario::transaction_check_options), and measures the created tets
+// (invariants::quality_of). Per mesh and tool: cuts made and refused (a cut the pass cannot lift
+// to the floor is refused and leaves the mesh as it was), checker violations, the input's worst
+// radius ratio, the goal min(0.1, that), the worst created radius ratio and dihedral angle, the
+// most tets one cut created, and the cut times' p50 and p99.
+//
+// Deterministic but for the times: the meshers are seeded, and so are the chords (SplitMix64).
+// Exit 0; 1 when the checker objected to a cut or a created tet is below its goal; 2 on bad
+// arguments or a mesher failure.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "bench_meshes.hpp"
+#include "core/random.hpp"
+#include "tetcut/cut.hpp"
+#include "tetcut/generators/liver.hpp"
+#include "tetcut/generators/shapes.hpp"
+#include "tetcut/invariants/check.hpp"
+#include "tetcut/mesh_builder.hpp"
+#include "tetcut/percentile.hpp"
+#include "tetcut/scenario/scenario.hpp"
+
+namespace {
+
+using tetcut::TetMesh;
+using tetcut::Vec3;
+namespace gen = tetcut::generators;
+namespace inv = tetcut::invariants;
+
+struct SourceMesh {
+  std::string name, made_by;
+  std::function<gen::GenResult()> make;  // empty: the bundled liver
+};
+
+std::vector<SourceMesh> source_meshes() {
+  return {
+      {"box-coarse", "TetGen, spacing 0.25, -q1.4/12",
+       [] { return gen::generate_box({.spacing = 0.25}); }},
+      {"box-fine", "TetGen, spacing 0.1, -q2.0",
+       [] { return gen::generate_box({.spacing = 0.1, .radius_edge_ratio = 2.0, .min_dihedral_deg = 0.0}); }},
+      {"box-delaunay", "TetGen, spacing 0.15, no quality bound",
+       [] { return gen::generate_box({.spacing = 0.15, .radius_edge_ratio = 0.0, .min_dihedral_deg = 0.0}); }},
+      {"cylinder", "TetGen, radius 1, height 4, 24 sides",
+       [] { return gen::generate_cylinder({.segments = 24}); }},
+      {"liver-6k", "CGAL Mesh_3, about 6,000 tets",
+       [] { return gen::generate_liver({.cell_size = gen::liver_cell_size_for_tets(6000)}); }},
+      {"liver-16k", "CGAL Mesh_3, the bundled liver.msh", {}},
+  };
+}
+
+struct Tool {
+  std::string name;
+  double diameter;
+};
+
+struct Row {
+  std::string mesh, made_by, tool;
+  double diameter = 0;
+  std::uint32_t tets = 0;
+  double input_worst = 1, goal = 0.1;
+  std::uint64_t cuts = 0, refused = 0, violations = 0, max_created = 0;
+  inv::QualityStats created;
+  std::vector<double> cut_us;
+  std::string first_violation, first_refusal;
+  [[nodiscard]] bool goal_met() const { return created.tets == 0 || created.min_radius_ratio >= goal; }
+};
+
+struct Box {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+};
+
+Box bounds(const TetMesh& mesh) {
+  Box b;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (!mesh.is_live(tetcut::VertId{v})) continue;
+    const Vec3 p = mesh.position(tetcut::VertId{v});
+    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
+    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
+  }
+  return b;
+}
+
+double median_edge(const TetMesh& mesh) {
+  std::vector<double> lengths;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    if (!mesh.is_live(tetcut::TetId{t})) continue;
+    const auto v = mesh.tet(tetcut::TetId{t});
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) lengths.push_back(norm(mesh.position(v[j]) - mesh.position(v[i])));
+  }
+  return tetcut::percentile(lengths, 0.5);  // each interior edge once per tet around it: a weighted median
+}
+
+Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int sweeps, std::uint64_t seed) {
+  Row row{.mesh = source.name, .made_by = source.made_by, .tool = tool.name, .diameter = tool.diameter,
+          .tets = base.num_tets()};
+  const inv::QualityStats input = inv::check_mesh(base.raw_view()).quality;
+  row.input_worst = input.min_radius_ratio;
+  row.goal = std::min(0.1, row.input_worst);
+  const Box box = bounds(base);
+  tetcut::SplitMix64 rng(seed);
+  auto point = [&] {
+    return Vec3{box.lo.x + rng.unit() * (box.hi.x - box.lo.x), box.lo.y + rng.unit() * (box.hi.y - box.lo.y),
+                box.lo.z + rng.unit() * (box.hi.z - box.lo.z)};
+  };
+  const tetcut::CutParams params{.tool_diameter = tool.diameter};
+  const inv::CheckOptions check = tetcut::scenario::transaction_check_options(params);
+  for (int s = 0; s < sweeps; ++s) {
+    TetMesh mesh = base;
+    tetcut::Cutter cutter(mesh, params);
+    inv::LocalChecker local(mesh.raw_view());
+    const Vec3 a = point(), b = point();
+    const auto steps = static_cast<int>(norm(b - a) / (0.5 * tool.diameter));
+    for (int k = 0; k <= steps; ++k) {
+      const Vec3 centre = steps == 0 ? a : a + (static_cast<double>(k) / steps) * (b - a);
+      const tetcut::CutReport r = cutter.cut(centre);
+      if (!r.ok) {
+        if (row.refused++ == 0) row.first_refusal = r.failure;
+        continue;
+      }
+      if (r.tets_hit == 0) continue;  // the tool in the air: not a cut
+      ++row.cuts;
+      row.cut_us.push_back(r.time.total_us);
+      row.max_created = std::max<std::uint64_t>(row.max_created, r.tets_created);
+      inv::pool(row.created, inv::quality_of(mesh.raw_view(), cutter.last_created()));
+      const inv::CheckReport report = local.after_operation(mesh.raw_view(), cutter.last_removed(),
+                                                            cutter.last_created(), check);
+      if (!report.ok() && row.violations++ == 0) row.first_violation = inv::to_string(report);
+    }
+  }
+  return row;
+}
+
+std::string figure(double value, const char* format) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, format, value);
+  return buf;
+}
+
+void print(const std::vector<Row>& rows) {
+  std::printf("%-15s %-6s %8s %7s %6s %7s %5s %9s %7s %9s %7s %9s %9s %9s\n", "mesh", "tool", "diameter", "tets",
+              "cuts", "refused", "viol.", "input", "goal", "worst", "min dih", "max/cut", "p50 us", "p99 us");
+  for (const Row& r : rows)
+    std::printf("%-15s %-6s %8.3g %7u %6llu %7llu %5llu %9.3g %7.3g %9s %7s %9llu %9.1f %9.1f%s\n", r.mesh.c_str(),
+                r.tool.c_str(), r.diameter, r.tets, static_cast<unsigned long long>(r.cuts),
+                static_cast<unsigned long long>(r.refused), static_cast<unsigned long long>(r.violations),
+                r.input_worst, r.goal, r.created.tets ? figure(r.created.min_radius_ratio, "%.3g").c_str() : "-",
+                r.created.tets ? figure(r.created.min_dihedral_deg, "%.1f").c_str() : "-",
+                static_cast<unsigned long long>(r.max_created), tetcut::percentile(r.cut_us, 0.5),
+                tetcut::percentile(r.cut_us, 0.99), r.goal_met() ? "" : "  BELOW GOAL");
+  for (const Row& r : rows)
+    if (r.violations) std::printf("%s, %s: %s\n", r.mesh.c_str(), r.tool.c_str(), r.first_violation.c_str());
+}
+
+bool write_json(const std::string& path, const std::vector<Row>& rows, int sweeps, std::uint64_t seed) {
+  nlohmann::json out_rows = nlohmann::json::array();
+  for (const Row& r : rows) {
+    nlohmann::json row = {{"mesh", r.mesh},
+                          {"made_by", r.made_by},
+                          {"tets", r.tets},
+                          {"tool", r.tool},
+                          {"tool_diameter", r.diameter},
+                          {"cuts", r.cuts},
+                          {"refused", r.refused},
+                          {"checker_violations", r.violations},
+                          {"input_worst_radius_ratio", r.input_worst},
+                          {"goal", r.goal},
+                          {"goal_met", r.goal_met()},
+                          {"created_tets", r.created.tets},
+                          {"max_created_per_cut", r.max_created},
+                          {"p50_us", tetcut::percentile(r.cut_us, 0.5)},
+                          {"p99_us", tetcut::percentile(r.cut_us, 0.99)},
+                          {"max_us", r.cut_us.empty() ? 0.0 : *std::max_element(r.cut_us.begin(), r.cut_us.end())}};
+    if (r.created.tets) {
+      row["worst_created_radius_ratio"] = r.created.min_radius_ratio;
+      row["worst_created_min_dihedral_deg"] = r.created.min_dihedral_deg;
+    }
+    if (r.refused) row["first_refusal"] = r.first_refusal;
+    if (r.violations) row["first_violation"] = r.first_violation;
+    out_rows.push_back(std::move(row));
+  }
+  const nlohmann::json out = {{"sweeps_per_tool", sweeps}, {"seed", seed}, {"rows", std::move(out_rows)}};
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream file(tmp);
+    file << out.dump(1) << '\n';
+    if (!file) return false;
+  }
+  return std::rename(tmp.c_str(), path.c_str()) == 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int sweeps = 4;
+  std::uint64_t seed = 29;
+  std::string only, json;
+  CLI::App app{"random cautery sweeps on meshes from TetGen and CGAL: the tets the cuts create (issue 29)"};
+  app.add_option("--sweeps", sweeps, "sweeps per mesh and tool")->check(CLI::Range(1, 1000));
+  app.add_option("--seed", seed, "the chords' random seed");
+  app.add_option("--only", only, "one mesh: box-coarse, box-fine, box-delaunay, cylinder, liver-6k, liver-16k");
+  app.add_option("--json", json, "also write the rows to FILE");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+
+  std::vector<Row> rows;
+  bool known = only.empty();
+  for (const SourceMesh& source : source_meshes()) {
+    if (!only.empty() && source.name != only) continue;
+    known = true;
+    TetMesh base;
+    if (source.make) {
+      gen::GenResult made = source.make();
+      if (!made.ok()) {
+        std::fprintf(stderr, "tetcut_quality_sweeps: %s: %s\n", source.name.c_str(), made.error.c_str());
+        return 2;
+      }
+      tetcut::BuildResult built = tetcut::build_mesh(*made.mesh);
+      if (!built.ok()) {
+        std::fprintf(stderr, "tetcut_quality_sweeps: %s: not a valid manifold mesh: %s\n", source.name.c_str(),
+                     built.problems.front().message.c_str());
+        return 2;
+      }
+      base = std::move(*built.mesh);
+    } else {
+      base = tetcut::bench::corpus_mesh("liver.msh");
+    }
+    const Box box = bounds(base);
+    const double diagonal = norm(box.hi - box.lo);
+    const std::vector<Tool> tools = {{"4%", 0.04 * diagonal},
+                                     {"8%", 0.08 * diagonal},
+                                     {"12%", 0.12 * diagonal},
+                                     {"fine", 0.1 * median_edge(base)}};
+    for (const Tool& tool : tools) rows.push_back(sweep(source, base, tool, sweeps, seed));
+  }
+  if (!known) {
+    std::fprintf(stderr, "tetcut_quality_sweeps: --only %s: no such mesh\n", only.c_str());
+    return 2;
+  }
+  print(rows);
+  if (!json.empty() && !write_json(json, rows, sweeps, seed)) {
+    std::fprintf(stderr, "tetcut_quality_sweeps: cannot write %s\n", json.c_str());
+    return 2;
+  }
+  const bool clean = std::all_of(rows.begin(), rows.end(), [](const Row& r) { return r.violations == 0 && r.goal_met(); });
+  return clean ? 0 : 1;
+}
