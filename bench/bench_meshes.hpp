@@ -2,6 +2,8 @@
 // structured boxes of a requested size. Loaded once per process.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -31,6 +33,21 @@ inline const TetMesh& corpus_mesh(const std::string& name) {
     std::abort();
   }
   return cache.emplace(name, std::move(*built.mesh)).first->second;
+}
+
+// The axis-aligned box around a mesh's live vertices: where the sweeps draw their chords.
+struct Bounds {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+};
+inline Bounds bounds(const TetMesh& mesh) {
+  Bounds b;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (!mesh.is_live(VertId{v})) continue;
+    const Vec3 p = mesh.position(VertId{v});
+    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
+    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
+  }
+  return b;
 }
 
 }  // namespace tetcut::bench

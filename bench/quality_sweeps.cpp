@@ -89,21 +89,6 @@ struct Row {
   [[nodiscard]] bool goal_met() const { return created.tets == 0 || created.min_radius_ratio >= goal; }
 };
 
-struct Box {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-};
-
-Box bounds(const TetMesh& mesh) {
-  Box b;
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (!mesh.is_live(tetcut::VertId{v})) continue;
-    const Vec3 p = mesh.position(tetcut::VertId{v});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
-}
-
 double median_edge(const TetMesh& mesh) {
   std::vector<double> lengths;
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
@@ -121,7 +106,7 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
   const inv::QualityStats input = inv::check_mesh(base.raw_view()).quality;
   row.input_worst = input.min_radius_ratio;
   row.goal = std::min(0.1, row.input_worst);
-  const Box box = bounds(base);
+  const tetcut::bench::Bounds box = tetcut::bench::bounds(base);
   tetcut::SplitMix64 rng(seed);
   auto point = [&] {
     return Vec3{box.lo.x + rng.unit() * (box.hi.x - box.lo.x), box.lo.y + rng.unit() * (box.hi.y - box.lo.y),
@@ -252,7 +237,7 @@ int main(int argc, char** argv) {
     } else {
       base = tetcut::bench::corpus_mesh("liver.msh");
     }
-    const Box box = bounds(base);
+    const tetcut::bench::Bounds box = tetcut::bench::bounds(base);
     const double diagonal = norm(box.hi - box.lo);
     const std::vector<Tool> tools = {{"4%", 0.04 * diagonal},
                                      {"8%", 0.08 * diagonal},

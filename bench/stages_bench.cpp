@@ -30,19 +30,8 @@ using Clock = std::chrono::steady_clock;
 
 constexpr const char* kCorpus[] = {"cylinder.msh", "sheet.msh", "liver-coarse.msh", "liver-refined.msh", "liver.msh"};
 
-struct Bounds {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-};
-Bounds bounds(const tetcut::TetMesh& mesh) {
-  Bounds b;
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (!mesh.is_live(tetcut::VertId{v})) continue;
-    const Vec3 p = mesh.position(tetcut::VertId{v});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
-}
+using tetcut::bench::Bounds;
+using tetcut::bench::bounds;
 
 // Three passes along the longest axis through the middle third of the other two.
 std::vector<Vec3> corpus_sweep(const Bounds& b, double step) {
