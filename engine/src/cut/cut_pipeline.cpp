@@ -161,10 +161,28 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
     report.failure = *invalid;
     return report;
   }
-  const Clock::time_point t0 = Clock::now();
+  const Clock::time_point start = Clock::now();
   detail::planted_slowdown();
   const Ball tool{centre, params_.tool_diameter / 2};
-  const double d_ref = params_.d_ref_factor * params_.tool_diameter;
+  double d_ref = params_.d_ref_factor * params_.tool_diameter;
+  for (std::uint32_t retry = 0;; ++retry) {
+    report = attempt(tool, d_ref, log);
+    report.coarser_retries = retry;
+    report.time.total_us = micros(start, Clock::now());
+    // Only the floor is worth another try: a coarser D_ref makes fewer, larger tets, which the
+    // pass lifts where the fine ones defeated it. A refusal for the budget or a degeneracy is final.
+    const bool floor_unmet = !report.ok && params_.improve && !report.quality_met;
+    if (!floor_unmet || retry == params_.coarser_retries) return report;
+    d_ref *= 2;
+  }
+}
+
+CutReport Cutter::Pipeline::attempt(const Ball& tool, double d_ref, ChangeLog* log) {
+  CutReport report;
+  report.d_ref = d_ref;
+  net_removed_.clear();
+  net_created_.clear();
+  const Clock::time_point t0 = Clock::now();
 
   // Locate (paper 3.1).
   index_.query(mesh_, tool, hit_);

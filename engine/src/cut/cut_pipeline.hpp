@@ -25,6 +25,8 @@ class Cutter::Pipeline {
   void prepare();
   void reset();
   std::optional<std::string> set_params(const CutParams& params);
+  // One cut: attempts at D_ref, then at twice it, ... (CutParams::coarser_retries) while the
+  // improvement pass cannot meet the floor.
   CutReport cut(const Vec3& centre, ChangeLog* log);
   CutReport remove(TetId t, ChangeLog* log);
   TetId tet_containing(const Vec3& p);
@@ -41,6 +43,8 @@ class Cutter::Pipeline {
   // Removes the selected tets (removal_, growing), directly removable ones first, and fills the
   // counts.
   void remove_selected(CutReport& report);
+  // One attempt at the cut with this D_ref: a transaction, committed or rolled back.
+  CutReport attempt(const Ball& tool, double d_ref, ChangeLog* log);
   // Follows what a step made since `point` (the journal's record): which of the new tets are
   // pieces of selected tissue inside the tool, and so selected in turn.
   void follow(const TetMesh::Savepoint& point);
