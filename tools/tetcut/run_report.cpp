@@ -30,6 +30,7 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"refine_us", r.time.refine_us},
               {"select_us", r.time.select_us},
               {"remove_us", r.time.remove_us},
+              {"improve_us", r.time.improve_us},
               {"tets_hit", r.tets_hit},
               {"refine_iterations", r.refine_iterations},
               {"edges_split", r.edges_split},
@@ -44,7 +45,14 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"resolved_by_refinement", r.resolved_by_refinement},
               {"resolved_by_fallback", r.resolved_by_fallback},
               {"unresolved", r.unresolved},
-              {"min_radius_ratio", r.min_radius_ratio}};
+              {"min_radius_ratio", r.min_radius_ratio},
+              {"min_radius_ratio_before_improvement", r.min_radius_ratio_before_improvement},
+              {"quality_floor", r.quality_floor},
+              {"improvement_flips", r.improvement_flips},
+              {"improvement_collapses", r.improvement_collapses},
+              {"improvement_moves", r.improvement_moves},
+              {"d_ref", r.d_ref},
+              {"coarser_retries", r.coarser_retries}};
 }
 
 struct Totals {
