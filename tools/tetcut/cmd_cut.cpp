@@ -23,8 +23,8 @@ constexpr double kMaxCuts = 100000;
 
 struct CutArgs {
   std::optional<std::string> mesh, frames;
-  std::optional<double> diameter, step, dref_factor, p, quality_floor;
-  bool no_improve = false;
+  std::optional<double> diameter, step, dref_factor, p;
+  opt::Improvement improvement;
   std::optional<Vec3> from, to;
   std::optional<std::uint64_t> depth;
   std::optional<RemovalStrategy> strategy;
@@ -44,9 +44,7 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::number(app, "--dref-factor", a.dref_factor, "D_ref = F x diameter (paper 3.2; default 1.5)", "F");
   opt::number(app, "--p", a.p, "shell edge ratio of the refinement loop (paper 3.2; default 1.5)", "P");
   opt::count(app, "--depth", a.depth, "neighbour search depth (paper 3.5; default 10, at most 64)");
-  opt::flag(app, "--no-improve", a.no_improve, "no improvement pass after each cut: the paper's algorithm alone");
-  opt::number(app, "--quality-floor", a.quality_floor,
-              "the radius ratio the improvement pass lifts created tets to (I7's F; default 0.1)", "F");
+  opt::improvement(app, a.improvement, "cut");
   opt::check_mode(app, a.check, "the local check after every cut (default), the full one at the end, or none");
   opt::text(app, "--out", a.outputs.mesh_path, "the final mesh", "M");
   opt::text(app, "--report", a.outputs.report_path,
@@ -63,8 +61,7 @@ std::optional<std::string> cut_params(const CutArgs& a, CutParams& params) {
   if (a.split) params.split_method = *a.split;
   if (a.dref_factor) params.d_ref_factor = *a.dref_factor;
   if (a.p) params.p = *a.p;
-  if (a.quality_floor) params.quality_floor = *a.quality_floor;
-  params.improve = !a.no_improve;
+  opt::improvement_params(a.improvement, params);
   if (a.depth) {
     if (*a.depth > 64) return "--depth: at most 64";
     params.search_depth = static_cast<std::uint32_t>(*a.depth);

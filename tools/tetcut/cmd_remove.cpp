@@ -62,8 +62,7 @@ struct RemoveArgs {
   std::optional<std::uint64_t> seed;
   std::optional<RemovalStrategy> strategy;
   std::optional<scenario::CheckMode> check;
-  std::optional<double> quality_floor;
-  bool no_improve = false;
+  opt::Improvement improvement;
 };
 
 void add_options(CLI::App& app, RemoveArgs& a) {
@@ -74,9 +73,7 @@ void add_options(CLI::App& app, RemoveArgs& a) {
   opt::text(app, "--random", a.random, "request N tets (or all) on the current boundary, one at a time", "N|all");
   opt::count(app, "--seed", a.seed, "the seed of --random", "S");
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
-  opt::flag(app, "--no-improve", a.no_improve, "no improvement pass after each request: the paper's algorithm alone");
-  opt::number(app, "--quality-floor", a.quality_floor,
-              "the radius ratio the improvement pass lifts created tets to (I7's F; default 0.1)", "F");
+  opt::improvement(app, a.improvement, "request");
   opt::check_mode(app, a.check, "local check after every request and full check at the end; end (default): full "
                                 "check at the end; none");
   opt::text(app, "-o", a.output, "the mesh after the removals", "OUT")->required();
@@ -197,8 +194,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
 
   CutParams params;
   params.strategy = strategy;
-  params.improve = !a.no_improve;
-  if (a.quality_floor) params.quality_floor = *a.quality_floor;
+  opt::improvement_params(a.improvement, params);
   if (auto invalid = validate(params)) {
     err << "tetcut: " << *invalid << "\n";
     return 2;

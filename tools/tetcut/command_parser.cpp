@@ -137,6 +137,17 @@ CLI::Option* check_level(CLI::App& app, std::optional<invariants::CheckLevel>& t
                 [](const std::string& s) { return scenario::parse_check_level(s); }, "must be local, full or exact");
 }
 
+void improvement(CLI::App& app, Improvement& target, const std::string& unit) {
+  flag(app, "--no-improve", target.off, "no improvement pass after each " + unit + ": the paper's algorithm alone");
+  number(app, "--quality-floor", target.floor,
+         "the radius ratio the improvement pass lifts created tets to (I7's F; default 0.1)", "F");
+}
+
+void improvement_params(const Improvement& options, CutParams& params) {
+  params.improve = !options.off;
+  if (options.floor) params.quality_floor = *options.floor;
+}
+
 }  // namespace opt
 
 CommandParser::CommandParser(std::string name, std::string synopsis, std::string description, std::string footer)

@@ -25,6 +25,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command.hpp"
+#include "tetcut/cut.hpp"
 #include "tetcut/scenario/values.hpp"
 
 namespace tetcut::cli {
@@ -76,6 +77,14 @@ CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<
                           const std::string& help);
 CLI::Option* check_mode(CLI::App& app, std::optional<scenario::CheckMode>& target, const std::string& help);
 CLI::Option* check_level(CLI::App& app, std::optional<invariants::CheckLevel>& target, const std::string& help);
+// The improvement pass that ends each `unit` ("cut", "request"): --no-improve and --quality-floor,
+// read into CutParams by improvement_params().
+struct Improvement {
+  bool off = false;
+  std::optional<double> floor;
+};
+void improvement(CLI::App& app, Improvement& target, const std::string& unit);
+void improvement_params(const Improvement& options, CutParams& params);
 }  // namespace opt
 
 class CommandParser {
