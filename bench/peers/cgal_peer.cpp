@@ -106,6 +106,7 @@ const char* cgal_version() { return CGAL_VERSION_STR; }
 struct CgalTetMesh::Impl {
   C3t3 c3t3;
   std::vector<CellHandle> cell_of_tet;  // cell i is tet i of the last load; empty after remesh()
+  std::vector<std::uint32_t> pending;    // remove_cells(): the cells not yet removed
 };
 
 CgalTetMesh::CgalTetMesh() : impl_(std::make_unique<Impl>()) {}
@@ -182,10 +183,70 @@ CgalLoadResult CgalTetMesh::load(std::span<const Vec3> positions,
     ++out.boundary_facets;
   }
   impl_->c3t3.rescan_after_load_of_triangulation();  // the complex's cell count
+  // face_status() counts each edge's facets in the complex once, on its first call, O(#facets),
+  // and keeps the counts as facets come and go: paid here rather than by the first removal.
+  (void)impl_->c3t3.face_status(*tr.finite_edges_begin());
 
   out.cells = static_cast<std::uint32_t>(tets.size());
   out.vertices = static_cast<std::uint32_t>(points.size());
   out.seconds = seconds_since(start);
+  return out;
+}
+
+namespace {
+
+// Takes cell `c` out of the complex, or puts it back (`in`), with its facets: a facet is in the
+// complex when exactly one of its two cells is (the domain's boundary).
+void set_cell_in_complex(C3t3& c3t3, const CellHandle& c, bool in) {
+  if (in) c3t3.add_to_complex(c, kDomain);
+  else c3t3.remove_from_complex(c);
+  for (int i = 0; i < 4; ++i) {
+    const Facet f(c, i);
+    const bool other_in = c3t3.is_in_complex(c->neighbor(i));
+    if (in != other_in) c3t3.add_to_complex(f, kSurface);
+    else c3t3.remove_from_complex(f);
+  }
+}
+
+bool touches_singularity(const C3t3& c3t3, const CellHandle& c) {
+  for (int i = 0; i < 4; ++i)
+    if (c3t3.face_status(c->vertex(i)) == C3t3::SINGULAR) return true;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (c3t3.face_status(Triangulation::Edge(c, a, b)) == C3t3::SINGULAR) return true;
+  return false;
+}
+
+}  // namespace
+
+CgalRemovalResult CgalTetMesh::remove_cells(std::span<const std::uint32_t> cells,
+                                            std::vector<std::uint32_t>& removed_out) {
+  CgalRemovalResult out;
+  C3t3& c3t3 = impl_->c3t3;
+  const std::vector<CellHandle>& cell_of_tet = impl_->cell_of_tet;
+  std::vector<std::uint32_t>& pending = impl_->pending;
+  pending.clear();
+  for (std::uint32_t i : cells)
+    if (i < cell_of_tet.size() && c3t3.is_in_complex(cell_of_tet[i])) pending.push_back(i);
+  for (bool progress = true; progress && !pending.empty();) {
+    progress = false;
+    std::size_t kept = 0;
+    for (std::uint32_t i : pending) {
+      const CellHandle c = cell_of_tet[i];
+      if (!c3t3.is_in_complex(c)) continue;  // a repeat
+      set_cell_in_complex(c3t3, c, false);
+      if (touches_singularity(c3t3, c)) {
+        set_cell_in_complex(c3t3, c, true);  // undone: the complex is as it was
+        pending[kept++] = i;
+        continue;
+      }
+      removed_out.push_back(i);
+      ++out.removed;
+      progress = true;
+    }
+    pending.resize(kept);
+  }
+  out.refused = static_cast<std::uint32_t>(pending.size());
   return out;
 }
 

@@ -1,7 +1,6 @@
-// CGAL 5.5 as tetcut's peer (issue 29 item 3; issue 31's "CGAL, remove then classify" is meant
-// to live here too): a tet mesh given as plain arrays is loaded into a CGAL
-// Mesh_complex_3_in_triangulation_3 over a Tetrahedral_remeshing::Remeshing_triangulation_3, and
-// CGAL's own operations run on it.
+// CGAL 5.5 as tetcut's peer (issue 29 item 3, and issue 31's "CGAL, remove then classify"): a
+// tet mesh given as plain arrays is loaded into a CGAL Mesh_complex_3_in_triangulation_3 over a
+// Tetrahedral_remeshing::Remeshing_triangulation_3, and CGAL's own operations run on it.
 //
 // This header names no CGAL type: everything CGAL is in cgal_peer.cpp, the one translation unit
 // of the benchmarks that includes CGAL (it compiles in about a minute; nothing else should pay
@@ -19,6 +18,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "tetcut/raw_mesh.hpp"
 #include "tetcut/vec3.hpp"
@@ -59,6 +59,11 @@ struct RemeshResult {
   double seconds = 0;  // CGAL::tetrahedral_isotropic_remeshing alone
 };
 
+struct CgalRemovalResult {
+  std::uint32_t removed = 0;  // cells taken out of the complex
+  std::uint32_t refused = 0;  // cells left in it: every attempt made a vertex or an edge SINGULAR
+};
+
 // The CGAL release this was compiled against ("5.5.1"), for reports.
 const char* cgal_version();
 
@@ -87,6 +92,17 @@ class CgalTetMesh {
   // Leaves the loaded mesh remeshed, the selection still marked: load() again before another
   // remesh(). Fails (the mesh untouched) when nothing is loaded or an index is out of range.
   RemeshResult remesh(std::span<const std::uint32_t> selected, const RemeshOptions& options = {});
+
+  // Issue 31, "remove then classify", as CGAL's meshers keep their output manifold: each of the
+  // cells `cells` (indices into the tets last loaded) still in the complex is taken out of it,
+  // its four facets updated (a facet that was on the boundary leaves the complex, one shared
+  // with a cell still in it joins it: removing a cell changes no facet by itself), and its four
+  // vertices and six edges classified with C3T3::face_status; when one is SINGULAR the removal
+  // is undone. A cell refused may become removable once a neighbour is gone, so the list is
+  // passed over again while a pass removes something. `removed_out` receives the cells taken
+  // out, in order. Needs a load() and no remesh() since; repeats and cells already out are
+  // skipped. Allocates only inside CGAL (its edge counter is a std::map).
+  CgalRemovalResult remove_cells(std::span<const std::uint32_t> cells, std::vector<std::uint32_t>& removed_out);
 
  private:
   struct Impl;  // the C3T3 and the cell handles by input index (cgal_peer.cpp)
