@@ -30,6 +30,8 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bench"))
 from budget_gate import Gate, markdown_table, measured_entry  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bench", "peers"))
+import peers_table  # noqa: E402
 
 # The Debian packages whose code is built into, or runs inside, what is measured.
 LIBRARIES = ["libc6", "libstdc++6", "libtet1.5-dev", "libcgal-dev", "zlib1g-dev", "liblzma-dev",
@@ -433,8 +435,22 @@ def resection(inputs):
             f"{fmt(after.get('mean_radius_ratio'), 3)} after. `tetcut stats --html` draws it."]
 
 
+def peers(inputs):
+    found = peers_table.runs(inputs.bench or {})
+    if not found:
+        return None
+    return ["## Peers on the same cuts", "",
+            "`bench/peers/peers_bench.cpp` (issue 31): the gated liver sweep and one held-back random sweep per "
+            "bundled mesh, through tetcut, blind removal (the tets whose centroid is in the tool, as SOFA and iMSTK "
+            "remove them), CGAL 5.5's complex with `face_status` classification and undo, and TetGen 1.5's `-r` "
+            "with a volume bound in the tool (8 cuts from the first that removes tissue), the independent checker "
+            "after every cut. Singular vertices and edges are summed over the cuts' local reports (one a later cut "
+            "touches again counts again) and counted once in the final mesh. Ratios are tetcut over the peer; "
+            "`bench/budgets.json` gates the p50 ratios of the gated sweep.", ""] + peers_table.tables(found, peers_table.md_table)
+
+
 SECTIONS = [machine, budget_gate, cut_sweeps, removal_requests, instructions, paper_table1, paper_table2,
-            paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, resection]
+            paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, peers, resection]
 
 
 def page(inputs):
