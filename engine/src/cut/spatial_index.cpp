@@ -1,13 +1,25 @@
 #include "cut/spatial_index.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
 
 #include "core/random.hpp"
 #include "tetcut/detail/local_tables.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut {
+namespace {
+
+// std::nextafter(x, +inf) and std::nextafter(x, 0) for a float x >= 0, as its bits: the same
+// values without a call into libm, twice per tet indexed.
+float next_up(float x) {
+  return x == std::numeric_limits<float>::infinity() ? x : std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) + 1);
+}
+float next_down(float x) { return x == 0.0f ? x : std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) - 1); }
+
+}  // namespace
 
 std::int32_t SpatialIndex::cell_of(double x) const {
   // Clamped to 21 bits of signed range: a mesh a million cells wide is already absurd.
@@ -109,8 +121,8 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   // and the inner one shrinks by that (and the radii are rounded outwards, inwards).
   const float fx = static_cast<float>(c.x), fy = static_cast<float>(c.y), fz = static_cast<float>(c.z);
   const double slack = 1e-6 * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z)) + 1e-30;
-  const float outer = std::nextafter(static_cast<float>(std::sqrt(r2) * (1.0 + 1e-6) + slack), INFINITY);
-  const float inner_f = inner > 2 * slack ? std::nextafter(static_cast<float>(inner * (1.0 - 1e-6) - slack), 0.0f) : 0.0f;
+  const float outer = next_up(static_cast<float>(std::sqrt(r2) * (1.0 + 1e-6) + slack));
+  const float inner_f = inner > 2 * slack ? next_down(static_cast<float>(inner * (1.0 - 1e-6) - slack)) : 0.0f;
   const double radius = outer;
   const std::int32_t i = cell_of(c.x), j = cell_of(c.y), k = cell_of(c.z);
   if (occupied_lo_[0] > occupied_hi_[0]) {
@@ -173,17 +185,18 @@ void SpatialIndex::apply(const TetMesh& mesh, const ChangeLog& log, std::size_t 
   }
 }
 
-// Distance from p to the box of cell `key` (0 inside it).
+// Distance from coordinate q to slab i of cells along one axis (0 inside it).
+double SpatialIndex::axis_gap(std::int32_t i, double q) const {
+  const double lo = i * cell_size_, hi = lo + cell_size_;
+  return q < lo ? lo - q : q > hi ? q - hi : 0.0;
+}
+
+// Distance from p to the box of cell `key` (0 inside it). query() computes the same sum axis by
+// axis in its loops: keep the two in step (the same bits decide which cells are passed over).
 double SpatialIndex::gap_to_cell(const Vec3& p, std::uint64_t key) const {
   const std::array<std::int32_t, 3> ijk = unpack(key);
-  const double q[3] = {p.x, p.y, p.z};
-  double g2 = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    const double lo = ijk[a] * cell_size_, hi = lo + cell_size_;
-    const double g = q[a] < lo ? lo - q[a] : q[a] > hi ? q[a] - hi : 0.0;
-    g2 += g * g;
-  }
-  return std::sqrt(g2);
+  const double gx = axis_gap(ijk[0], p.x), gy = axis_gap(ijk[1], p.y), gz = axis_gap(ijk[2], p.z);
+  return std::sqrt(gx * gx + gy * gy + gz * gz);
 }
 
 void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out) {
@@ -211,21 +224,36 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
       if (!cell.used) continue;
       const std::array<std::int32_t, 3> ijk = unpack(cell.key);
       if (ijk[0] < lo[0] || ijk[0] > hi[0] || ijk[1] < lo[1] || ijk[1] > hi[1] || ijk[2] < lo[2] || ijk[2] > hi[2]) continue;
-      collect(mesh, cell, ball, out);
+      collect(mesh, cell, ball, gap_to_cell(ball.centre, cell.key), out);
     }
   } else {
     cells_visited_ += box_cells;
-    for (std::int32_t i = lo[0]; i <= hi[0]; ++i)
-      for (std::int32_t j = lo[1]; j <= hi[1]; ++j)
-        for (std::int32_t k = lo[2]; k <= hi[2]; ++k)
-          if (const std::size_t s = find_slot(pack(i, j, k)); s != kNoSlot) collect(mesh, table_[s], ball, out);
+    // A cell's gap to the centre, summed axis by axis as the loops go (the bits gap_to_cell()
+    // gives): a cell, a row or a slab farther than the radius plus the largest sphere ever indexed
+    // holds no tet that can meet the ball, and is passed over before any hash lookup. collect()
+    // would pass over each such cell anyway (its own sphere is no larger), only later.
+    const double reach = ball.radius + reach_;
+    for (std::int32_t i = lo[0]; i <= hi[0]; ++i) {
+      const double gx = axis_gap(i, c.x), x2 = gx * gx;
+      if (std::sqrt(x2) > reach) continue;
+      for (std::int32_t j = lo[1]; j <= hi[1]; ++j) {
+        const double gy = axis_gap(j, c.y), xy2 = x2 + gy * gy;
+        if (std::sqrt(xy2) > reach) continue;
+        for (std::int32_t k = lo[2]; k <= hi[2]; ++k) {
+          const double gz = axis_gap(k, c.z), gap = std::sqrt(xy2 + gz * gz);
+          if (gap > reach) continue;
+          if (const std::size_t s = find_slot(pack(i, j, k)); s != kNoSlot) collect(mesh, table_[s], ball, gap, out);
+        }
+      }
+    }
   }
   std::sort(out.begin(), out.end());
 }
 
-// Appends the tets of one cell that meet the ball.
-void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out) const {
-  if (cell.head == kNone || gap_to_cell(ball.centre, cell.key) > ball.radius + cell.reach) return;
+// Appends the tets of one cell that meet the ball; `gap` is the cell's distance to its centre.
+void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, double gap,
+                           std::vector<TetId>& out) const {
+  if (cell.head == kNone || gap > ball.radius + cell.reach) return;
   for (std::uint32_t b = cell.head; b != kNone; b = blocks_[b].next) {
     const Block& block = blocks_[b];
     for (std::uint32_t e = 0; e < block.count; ++e) {

@@ -93,7 +93,8 @@ class SpatialIndex {
   [[nodiscard]] std::int32_t cell_of(double x) const;
   [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
   [[nodiscard]] static std::array<std::int32_t, 3> unpack(std::uint64_t key);
-  void collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, std::vector<TetId>& out) const;
+  void collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, double gap, std::vector<TetId>& out) const;
+  [[nodiscard]] double axis_gap(std::int32_t i, double q) const;
   [[nodiscard]] double gap_to_cell(const Vec3& p, std::uint64_t key) const;
   static constexpr std::size_t kNoSlot = ~std::size_t{0};
   [[nodiscard]] std::size_t find_slot(std::uint64_t key) const;
