@@ -101,7 +101,8 @@ class CgalTetMesh {
   // is undone. A cell refused may become removable once a neighbour is gone, so the list is
   // passed over again while a pass removes something. `removed_out` receives the cells taken
   // out, in order. Needs a load() and no remesh() since; repeats and cells already out are
-  // skipped. Allocates only inside CGAL (its edge counter is a std::map).
+  // skipped. Allocates inside CGAL (its edge counter is a std::map) and while its list of
+  // pending cells grows to the largest selection.
   CgalRemovalResult remove_cells(std::span<const std::uint32_t> cells, std::vector<std::uint32_t>& removed_out);
 
  private:
