@@ -88,7 +88,31 @@ Changes changes_of(const ChangeLog& log) {
   return c;
 }
 
-Vec3 point_from(const std::array<double, 3>& p, const char* name) {
+// A point from any array-like of 3 real numbers. A tuple or list of floats, what a loop passes
+// per cut, is read directly (a few tens of ns, against the few hundred of a generic conversion:
+// it is most of what Python adds to a cut, bench/python); anything else goes through numpy.
+Vec3 point_from(py::handle obj, const char* name) {
+  double p[3];
+  bool read = false;
+  if ((PyTuple_Check(obj.ptr()) || PyList_Check(obj.ptr())) && PySequence_Fast_GET_SIZE(obj.ptr()) == 3) {
+    PyObject** items = PySequence_Fast_ITEMS(obj.ptr());
+    read = true;
+    for (int k = 0; k < 3; ++k) {
+      if (PyFloat_CheckExact(items[k])) p[k] = PyFloat_AS_DOUBLE(items[k]);
+      else if (PyLong_CheckExact(items[k])) p[k] = PyLong_AsDouble(items[k]);
+      else read = false;
+    }
+    if (read && PyErr_Occurred()) throw py::error_already_set();  // an int too large for a double
+  }
+  if (!read) {
+    const py::array a = py::module_::import("numpy").attr("asarray")(obj);
+    const char kind = a.dtype().kind();
+    if ((kind != 'f' && kind != 'i' && kind != 'u') || a.ndim() != 1 || a.shape(0) != 3) {
+      throw py::type_error(std::string("tetcut: ") + name + ": expected 3 real numbers");
+    }
+    const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    for (int k = 0; k < 3; ++k) p[k] = d.data()[k];
+  }
   for (double x : p) {
     if (!std::isfinite(x)) throw py::value_error(std::string("tetcut: ") + name + ": coordinates must be finite");
   }
@@ -185,7 +209,10 @@ SplitMethod split_from(const std::string& s) {
 }
 
 py::dict stats_of(const PyCutter& cutter) {
-  const RemovalReport r = cutter.removal_report();
+  const RemovalReport r = [&] {
+    MeshUse use(*cutter.mesh());  // not while another thread's cut adds to it
+    return cutter.removal_report();
+  }();
   const stats::Table1Row t1 = stats::table1_row(r);
   const stats::Table2Row t2 = stats::table2_row(r);
   py::dict removal;
@@ -226,6 +253,40 @@ py::dict stats_of(const PyCutter& cutter) {
   out["table2"] = table2;
   return out;
 }
+
+// Cutter.cut(centre), as a METH_FASTCALL method of the class: pybind11's generic dispatcher
+// (argument vectors, overload resolution, the return type looked up by name) costs about as much
+// again as all the rest of what Python adds to a cut, and the goal is at most 2 us in all
+// (python/bench/test_overhead.py). Same conversions, same exceptions as the other methods.
+const py::detail::type_info* report_type = nullptr;
+
+PyObject* cut_fast(PyObject* self, PyObject* const* args, Py_ssize_t nargs, PyObject* kwnames) {
+  try {
+    const Py_ssize_t nkw = kwnames ? PyTuple_GET_SIZE(kwnames) : 0;
+    if (nargs + nkw != 1 || (nkw == 1 && PyUnicode_CompareWithASCIIString(PyTuple_GET_ITEM(kwnames, 0), "centre") != 0)) {
+      throw py::type_error("tetcut: Cutter.cut() takes one argument, centre");
+    }
+    PyCutter& cutter = py::cast<PyCutter&>(py::handle(self));
+    auto* report = new Report(cutter.cut(point_from(args[0], "centre")));
+    return py::detail::type_caster_generic::cast(report, py::return_value_policy::take_ownership, {}, report_type,
+                                                 nullptr, nullptr)
+        .ptr();
+  } catch (py::error_already_set& e) {
+    e.restore();
+  } catch (py::builtin_exception& e) {
+    e.set_error();
+  } catch (const std::bad_alloc&) {
+    PyErr_NoMemory();
+  } catch (const std::exception& e) {
+    PyErr_SetString(PyExc_RuntimeError, e.what());
+  }
+  return nullptr;
+}
+
+PyMethodDef cut_method = {
+    "cut", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&cut_fast)), METH_FASTCALL | METH_KEYWORDS,
+    "cut(centre) -> CutReport\n\nOne cut with the tool centred there (3 real numbers): atomic (report.ok False: the "
+    "mesh is bit-identical to before). Releases the GIL."};
 
 }  // namespace
 
@@ -299,12 +360,12 @@ mesh.vertex_ids name them): apply removals first, then creations.)doc")
                std::to_string(r.report.tets_removed) + " removed, " + std::to_string(r.report.tets_created) + " created>";
       });
 
-  py::class_<PyCutter>(m, "Cutter", R"doc(
+  py::class_<PyCutter> cutter(m, "Cutter", R"doc(
 The cautery tool on a mesh (the engine's Cutter): indexes the mesh once, then cuts in O(tool).
 
 Cutter(mesh, tool_diameter=1.0, strategy="combined", ...): the parameters of CutParams
-(engine/include/tetcut/cut.hpp); ValueError for one out of range. Keeps the mesh alive.)doc")
-      .def(py::init([](MeshPtr mesh, double tool_diameter, const std::string& strategy, const std::string& split,
+(engine/include/tetcut/cut.hpp); ValueError for one out of range. Keeps the mesh alive.)doc");
+  cutter.def(py::init([](MeshPtr mesh, double tool_diameter, const std::string& strategy, const std::string& split,
                        double d_ref_factor, double p, std::uint32_t search_depth, std::uint32_t max_refine_iterations,
                        std::uint32_t max_tets_created, bool improve, double quality_floor, std::uint32_t coarser_retries) {
              CutParams params{.tool_diameter = tool_diameter, .d_ref_factor = d_ref_factor, .p = p,
@@ -318,12 +379,8 @@ Cutter(mesh, tool_diameter=1.0, strategy="combined", ...): the parameters of Cut
            py::arg("split") = "templates", py::arg("d_ref_factor") = 1.5, py::arg("p") = 1.5,
            py::arg("search_depth") = 10, py::arg("max_refine_iterations") = 8, py::arg("max_tets_created") = 20000,
            py::arg("improve") = true, py::arg("quality_floor") = 0.1, py::arg("coarser_retries") = 2)
-      .def("cut", [](PyCutter& c, const std::array<double, 3>& centre) { return c.cut(point_from(centre, "centre")); },
-           py::arg("centre"),
-           "One cut with the tool centred there: atomic (report.ok False: the mesh is bit-identical to before). "
-           "Releases the GIL.")
       .def("sweep",
-           [](PyCutter& c, const std::array<double, 3>& start, const std::array<double, 3>& end, double step) {
+           [](PyCutter& c, py::handle start, py::handle end, double step) {
              return c.sweep(point_from(start, "start"), point_from(end, "end"), step);
            },
            py::arg("start"), py::arg("end"), py::arg("step"),
@@ -337,6 +394,10 @@ Cutter(mesh, tool_diameter=1.0, strategy="combined", ...): the parameters of Cut
                     })
       .def_property_readonly("strategy", [](const PyCutter& c) { return std::string(to_string(c.params().strategy)); })
       .def_property_readonly("mesh", &PyCutter::mesh);
+  // cut(): the one call a simulation loop makes per frame, bound without pybind11's dispatcher.
+  report_type = py::detail::get_type_info(typeid(Report));
+  cutter.attr("cut") = py::reinterpret_steal<py::object>(
+      PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cutter.ptr()), &cut_method));
 
   m.def("stats", &stats_of, py::arg("cutter"), R"doc(
 The paper's statistics (Tables 1 and 2, section 3.6) over every removal request this Cutter made

@@ -7,6 +7,10 @@ import pathlib
 import numpy as np
 import pytest
 
+# Under ASan, ctest preloads the sanitizer runtime into this interpreter (python/tests/CMakeLists.txt);
+# the `tetcut` processes the tests start carry their own, and must not get a second one.
+os.environ.pop("LD_PRELOAD", None)
+
 SOURCE = pathlib.Path(os.environ.get("TETCUT_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 CORPUS = SOURCE / "corpus" / "meshes"
 

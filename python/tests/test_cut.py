@@ -80,8 +80,19 @@ def test_bad_parameters_raise(box):
     cutter = tetcut.Cutter(box, tool_diameter=1.0)
     with pytest.raises(ValueError, match="finite"):
         cutter.cut((np.nan, 0, 0))
-    with pytest.raises(TypeError):
-        cutter.cut((1, 2))
+    for bad in [(1, 2), "abc", [[1, 2, 3]], (1, 2, "3"), None]:
+        with pytest.raises(TypeError, match="centre: expected 3 real numbers"):
+            cutter.cut(bad)
+    with pytest.raises(TypeError, match="one argument"):
+        cutter.cut()
+    with pytest.raises(TypeError, match="one argument"):
+        cutter.cut((1, 2, 3), 4)
+    with pytest.raises(TypeError, match="one argument"):
+        cutter.cut(center=(1, 2, 3))
+    with pytest.raises(OverflowError):
+        cutter.cut((10**400, 0, 0))
+    assert cutter.cut(centre=np.array([50, 50, 50], dtype=np.float32)).ok
+    assert cutter.cut([50, 50, 50]).ok and cutter.cut((np.float64(50), 50.0, 50)).ok
     with pytest.raises(ValueError, match="step"):
         cutter.sweep((0, 0, 0), (1, 1, 1), 0.0)
     with pytest.raises(ValueError, match="100000"):
