@@ -17,7 +17,8 @@ The reward is kept up to date from each cut's change log in O(changed), not reco
 the mesh: the volume inside the target of every live tet is held by tet id, the tets the cut
 removed are subtracted and the ones it created added.
 
-Run it: `examples/python/cautery_env.py [--steps N]` (a greedy policy that heads for the target).
+Run it: `examples/python/cautery_env.py [--steps N]` (a baseline policy that heads for the target
+and sweeps it).
 """
 import argparse
 import pathlib
@@ -101,20 +102,38 @@ class CauteryEnv:
         self.outside[tet_ids] = np.where(in_target, 0.0, volume)
 
 
-def greedy_policy(observation, env):
-    """Head for the target's centre."""
-    return env.target_centre - observation["tool"]
+class RasterPolicy:
+    """Head for the target, then sweep it: waypoints on a grid inside the target ball, visited in
+    a serpentine order. A baseline to beat, not a learned policy."""
+
+    def __init__(self, env, spacing=None):
+        spacing = spacing or 0.75 * env.tool_diameter
+        r = env.target_radius
+        axis = np.arange(-r, r + 1e-9, spacing)
+        points = []
+        for i, z in enumerate(axis):
+            for j, y in enumerate(axis if i % 2 == 0 else axis[::-1]):
+                for x in (axis if j % 2 == 0 else axis[::-1]):
+                    if x * x + y * y + z * z <= r * r:
+                        points.append(env.target_centre + (x, y, z))
+        self.waypoints = points
+
+    def __call__(self, observation):
+        while self.waypoints and np.linalg.norm(self.waypoints[0] - observation["tool"]) < 0.5:
+            self.waypoints.pop(0)
+        return (self.waypoints[0] if self.waypoints else observation["tool"]) - observation["tool"]
 
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--steps", type=int, default=40)
+    parser.add_argument("--steps", type=int, default=120)
     args = parser.parse_args(argv)
     env = CauteryEnv(max_steps=args.steps)
     observation = env.reset()
+    policy = RasterPolicy(env)
     total = 0.0
     for _ in range(args.steps):
-        observation, reward, done, info = env.step(greedy_policy(observation, env))
+        observation, reward, done, info = env.step(policy(observation))
         total += reward
         print(f"step {env.steps:3d} tool {np.round(env.tool, 1)} reward {reward:9.2f} "
               f"target left {info['target_left']:.3f} surface {len(observation['triangles'])} triangles")

@@ -32,6 +32,7 @@ def draw(ax, mesh, original_points, title):
     ax.add_collection3d(Poly3DCollection(corners, facecolors=colours, edgecolors="none"))
     lo, hi = points.min(axis=0), points.max(axis=0)
     ax.set_xlim(lo[0], hi[0]), ax.set_ylim(lo[1], hi[1]), ax.set_zlim(lo[2], hi[2])
+    ax.set_box_aspect(hi - lo)  # millimetres alike on every axis
     ax.set_title(f"{title}: {mesh.num_tets} tets, {exposed.sum()} cut triangles")
     ax.view_init(elev=25, azim=-60)
 
