@@ -38,7 +38,8 @@ inv::CheckLevel level_from(const std::string& s) {
   throw py::value_error("tetcut: level: local, full or exact, not '" + s + "'");
 }
 
-std::vector<PyViolation> check(MeshHandle& h, const std::string& level, double radius_ratio_floor) {
+std::vector<PyViolation> check(const MeshPtr& held, const std::string& level, double radius_ratio_floor) {
+  MeshHandle& h = *held;
   inv::CheckOptions options;
   options.level = level_from(level);
   options.radius_ratio_floor = radius_ratio_floor;
@@ -60,8 +61,9 @@ std::vector<PyViolation> check(MeshHandle& h, const std::string& level, double r
 }  // namespace
 
 void bind_check(py::module_& m) {
-  py::class_<PyViolation>(m, "Violation", "One violated invariant, as the checker reports it.")
-      .def_readonly("id", &PyViolation::id, "\"I1\" .. \"I9\" (docs/design.md, invariants).")
+  py::class_<PyViolation> violation(m, "Violation", "One violated invariant, as the checker reports it.");
+  made_by_the_module_only(violation);
+  violation.def_readonly("id", &PyViolation::id, "\"I1\" .. \"I9\" (docs/design.md, invariants).")
       .def_readonly("name", &PyViolation::name, "What it means: \"manifold vertex shells\".")
       .def_readonly("count", &PyViolation::count, "Offending elements in all.")
       .def_property_readonly("tets", [](const PyViolation& v) { return int64_array(v.tets); },
@@ -71,7 +73,7 @@ void bind_check(py::module_& m) {
       .def_readonly("detail", &PyViolation::detail, "One line: the first offence.")
       .def("__repr__", [](const PyViolation& v) { return v.id + " " + v.name + ": " + v.detail; });
 
-  m.def("check", &check, py::arg("mesh"), py::kw_only(), py::arg("level") = "full", py::arg("radius_ratio_floor") = 0.0,
+  m.def("check", &check, py::arg("mesh").none(false), py::kw_only(), py::arg("level") = "full", py::arg("radius_ratio_floor") = 0.0,
         R"doc(
 Runs the independent invariant checker and returns the violations (an empty list: valid).
 

@@ -196,6 +196,9 @@ class PyCutter {
   std::uint64_t seen_version_ = 0;
 };
 
+// Shared: methods take the holder, which pybind11 refuses for an instance __init__ never made.
+using CutterPtr = std::shared_ptr<PyCutter>;
+
 RemovalStrategy strategy_from(const std::string& s) {
   const auto v = parse_removal_strategy(s);
   if (!v) throw py::value_error("tetcut: strategy: basic, neighbours, combined or wide, not '" + s + "'");
@@ -208,7 +211,8 @@ SplitMethod split_from(const std::string& s) {
   return *v;
 }
 
-py::dict stats_of(const PyCutter& cutter) {
+py::dict stats_of(const CutterPtr& held) {
+  const PyCutter& cutter = *held;
   const RemovalReport r = [&] {
     MeshUse use(*cutter.mesh());  // not while another thread's cut adds to it
     return cutter.removal_report();
@@ -266,7 +270,9 @@ PyObject* cut_fast(PyObject* self, PyObject* const* args, Py_ssize_t nargs, PyOb
     if (nargs + nkw != 1 || (nkw == 1 && PyUnicode_CompareWithASCIIString(PyTuple_GET_ITEM(kwnames, 0), "centre") != 0)) {
       throw py::type_error("tetcut: Cutter.cut() takes one argument, centre");
     }
-    PyCutter& cutter = py::cast<PyCutter&>(py::handle(self));
+    // As a holder: an instance made by __new__ without __init__ has none, and is refused here.
+    const auto held = py::cast<CutterPtr>(py::handle(self));
+    PyCutter& cutter = *held;
     auto* report = new Report(cutter.cut(point_from(args[0], "centre")));
     return py::detail::type_caster_generic::cast(report, py::return_value_policy::take_ownership, {}, report_type,
                                                  nullptr, nullptr)
@@ -291,10 +297,11 @@ PyMethodDef cut_method = {
 }  // namespace
 
 void bind_cutter(py::module_& m) {
-  py::class_<Changes>(m, "Changes", R"doc(
+  py::class_<Changes> changes(m, "Changes", R"doc(
 A cut's net change (the engine's ChangeLog) as numpy arrays of engine ids (mesh.tet_ids and
-mesh.vertex_ids name them): apply removals first, then creations.)doc")
-      .def_readonly("removed", &Changes::removed, "#R int64: tets live before the cut and gone after, sorted.")
+mesh.vertex_ids name them): apply removals first, then creations.)doc");
+  made_by_the_module_only(changes);
+  changes.def_readonly("removed", &Changes::removed, "#R int64: tets live before the cut and gone after, sorted.")
       .def_readonly("created", &Changes::created, "#C int64: tets live after and not before, sorted.")
       .def_readonly("parent", &Changes::parent, "#C int64: each created tet's first parent (its only one for a split).")
       .def_readonly("parents", &Changes::parents, "All parents, flat: created[i]'s are parents[parents_offsets[i]:parents_offsets[i+1]].")
@@ -308,8 +315,9 @@ mesh.vertex_ids name them): apply removals first, then creations.)doc")
       .def_readonly("new_vertex_weights", &Changes::new_vertex_weights, "#N by 4 float64: their weights (sum 1).")
       .def_readonly("removed_vertices", &Changes::removed_vertices, "int64: vertices no tet uses any more.");
 
-  py::class_<Report>(m, "CutReport", "What one cut did (the engine's CutReport); report.changes as numpy arrays.")
-      .def_property_readonly("centre", [](const Report& r) { return std::array<double, 3>{r.centre.x, r.centre.y, r.centre.z}; })
+  py::class_<Report> report(m, "CutReport", "What one cut did (the engine's CutReport); report.changes as numpy arrays.");
+  made_by_the_module_only(report);
+  report.def_property_readonly("centre", [](const Report& r) { return std::array<double, 3>{r.centre.x, r.centre.y, r.centre.z}; })
       .def_property_readonly("ok", [](const Report& r) { return r.report.ok; }, "False: refused and rolled back (failure says why).")
       .def_property_readonly("failure", [](const Report& r) { return r.report.failure; })
       .def_property_readonly("tets_hit", [](const Report& r) { return r.report.tets_hit; })
@@ -360,7 +368,7 @@ mesh.vertex_ids name them): apply removals first, then creations.)doc")
                std::to_string(r.report.tets_removed) + " removed, " + std::to_string(r.report.tets_created) + " created>";
       });
 
-  py::class_<PyCutter> cutter(m, "Cutter", R"doc(
+  py::class_<PyCutter, CutterPtr> cutter(m, "Cutter", R"doc(
 The cautery tool on a mesh (the engine's Cutter): indexes the mesh once, then cuts in O(tool).
 
 Cutter(mesh, tool_diameter=1.0, strategy="combined", ...): the parameters of CutParams
@@ -373,33 +381,33 @@ Cutter(mesh, tool_diameter=1.0, strategy="combined", ...): the parameters of Cut
                               .max_tets_created = max_tets_created, .strategy = strategy_from(strategy),
                               .split_method = split_from(split), .improve = improve, .quality_floor = quality_floor,
                               .coarser_retries = coarser_retries};
-             return std::make_unique<PyCutter>(std::move(mesh), params);
+             return std::make_shared<PyCutter>(std::move(mesh), params);
            }),
-           py::arg("mesh"), py::kw_only(), py::arg("tool_diameter") = 1.0, py::arg("strategy") = "combined",
+           py::arg("mesh").none(false), py::kw_only(), py::arg("tool_diameter") = 1.0, py::arg("strategy") = "combined",
            py::arg("split") = "templates", py::arg("d_ref_factor") = 1.5, py::arg("p") = 1.5,
            py::arg("search_depth") = 10, py::arg("max_refine_iterations") = 8, py::arg("max_tets_created") = 20000,
            py::arg("improve") = true, py::arg("quality_floor") = 0.1, py::arg("coarser_retries") = 2)
       .def("sweep",
-           [](PyCutter& c, py::handle start, py::handle end, double step) {
-             return c.sweep(point_from(start, "start"), point_from(end, "end"), step);
+           [](const CutterPtr& c, py::handle start, py::handle end, double step) {
+             return c->sweep(point_from(start, "start"), point_from(end, "end"), step);
            },
            py::arg("start"), py::arg("end"), py::arg("step"),
            "One cut every `step` from start to end (end included when a whole number of steps away), as "
            "`tetcut cut --from --to --step`; stops after a refused cut. Releases the GIL.")
-      .def_property("tool_diameter", [](const PyCutter& c) { return c.params().tool_diameter; },
-                    [](PyCutter& c, double d) {
-                      CutParams p = c.params();
+      .def_property("tool_diameter", [](const CutterPtr& c) { return c->params().tool_diameter; },
+                    [](const CutterPtr& c, double d) {
+                      CutParams p = c->params();
                       p.tool_diameter = d;
-                      c.set_params(p);
+                      c->set_params(p);
                     })
-      .def_property_readonly("strategy", [](const PyCutter& c) { return std::string(to_string(c.params().strategy)); })
-      .def_property_readonly("mesh", &PyCutter::mesh);
+      .def_property_readonly("strategy", [](const CutterPtr& c) { return std::string(to_string(c->params().strategy)); })
+      .def_property_readonly("mesh", [](const CutterPtr& c) { return c->mesh(); });
   // cut(): the one call a simulation loop makes per frame, bound without pybind11's dispatcher.
   report_type = py::detail::get_type_info(typeid(Report));
   cutter.attr("cut") = py::reinterpret_steal<py::object>(
       PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cutter.ptr()), &cut_method));
 
-  m.def("stats", &stats_of, py::arg("cutter"), R"doc(
+  m.def("stats", &stats_of, py::arg("cutter").none(false), R"doc(
 The paper's statistics (Tables 1 and 2, section 3.6) over every removal request this Cutter made
 since it was made or last re-indexed: {"removal": counts, "table1": {...}, "table2": {...}}, as
 `tetcut stats` computes its rows (tools/stats/removal_tables). A NaN is a ratio over nothing. Not

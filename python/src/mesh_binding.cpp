@@ -191,8 +191,8 @@ py::object to_meshio(const MeshPtr& h);
 }  // namespace
 
 void bind_mesh(py::module_& m) {
-  py::class_<SlotViewLock>(m, "_SlotViewLock",
-                           "Keeps a mesh alive and unchanged while a slot view of it exists (internal).");
+  made_by_the_module_only(py::class_<SlotViewLock>(
+      m, "_SlotViewLock", "Keeps a mesh alive and unchanged while a slot view of it exists (internal)."));
 
   py::class_<MeshHandle, MeshPtr> mesh(m, "Mesh", R"doc(
 A manifold tetrahedral mesh (the engine's TetMesh), validated when made.
@@ -204,14 +204,17 @@ input), ValueError / TypeError for a wrong shape or dtype.
 )doc");
   mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"));
 
-  mesh.def_property_readonly("num_tets", [](const MeshHandle& h) { return h.mesh.num_tets(); },
+  mesh.def_property_readonly("num_tets", [](const MeshPtr& held) {
+        MeshHandle& h = *held; return h.mesh.num_tets(); },
                              "Live tets.");
-  mesh.def_property_readonly("num_vertices", [](const MeshHandle& h) { return h.mesh.num_vertices(); },
+  mesh.def_property_readonly("num_vertices", [](const MeshPtr& held) {
+        MeshHandle& h = *held; return h.mesh.num_vertices(); },
                              "Live vertices (used by a live tet).");
 
   mesh.def_property_readonly(
       "points",
-      [](MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         py::array_t<double> a({static_cast<py::ssize_t>(h.mesh.num_vertices()), py::ssize_t{3}});
         auto w = a.mutable_unchecked<2>();
@@ -227,7 +230,8 @@ input), ValueError / TypeError for a wrong shape or dtype.
       "#V by 3 float64: the live vertices in id order (a copy).");
   mesh.def_property_readonly(
       "vertex_ids",
-      [](MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         std::vector<std::int64_t> ids;
         ids.reserve(h.mesh.num_vertices());
@@ -238,7 +242,8 @@ input), ValueError / TypeError for a wrong shape or dtype.
       "#V int64: the engine id of each row of `points` (the ids report.changes speaks of).");
   mesh.def_property_readonly(
       "tets",
-      [](MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         std::int64_t live = 0;
         const std::vector<std::int64_t> row = vertex_rows(h.mesh, live);
@@ -255,7 +260,8 @@ input), ValueError / TypeError for a wrong shape or dtype.
       "#T by 4 int64: the live tets in id order, as rows of `points` (a copy).");
   mesh.def_property_readonly(
       "tet_ids",
-      [](MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         std::vector<std::int64_t> ids;
         ids.reserve(h.mesh.num_tets());
@@ -290,7 +296,8 @@ a view never dangles. Delete it before cutting again.)doc");
       "like slot_tets.");
   mesh.def_property_readonly(
       "live_tet_mask",
-      [](MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         const auto tets = h.mesh.raw_tets();
         py::array_t<bool> a(static_cast<py::ssize_t>(tets.size()));
@@ -300,7 +307,8 @@ a view never dangles. Delete it before cutting again.)doc");
       "Slots bool (a copy): which rows of slot_tets are live tets.");
   mesh.def_property_readonly(
       "live_vertex_mask",
-      [](MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         py::array_t<bool> a(static_cast<py::ssize_t>(h.mesh.vertex_capacity()));
         for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v) a.mutable_data()[v] = h.mesh.is_live(VertId{v});
@@ -310,7 +318,8 @@ a view never dangles. Delete it before cutting again.)doc");
 
   mesh.def(
       "surface",
-      [](MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         std::int64_t live = 0;
         const std::vector<std::int64_t> row = vertex_rows(h.mesh, live);
@@ -328,14 +337,17 @@ a view never dangles. Delete it before cutting again.)doc");
       "#F by 3 int64: the boundary triangles as rows of `points`, counter-clockwise seen from outside. "
       "O(#T).");
   mesh.def(
-      "volume", [](MeshHandle& h) { MeshUse use(h); return h.mesh.total_volume(); }, "Total volume. O(#T).");
+      "volume", [](const MeshPtr& held) {
+        MeshHandle& h = *held; MeshUse use(h); return h.mesh.total_volume(); }, "Total volume. O(#T).");
   mesh.def(
-      "hash", [](MeshHandle& h) { MeshUse use(h); return hash_to_hex(canonical_hash(h.mesh)); },
+      "hash", [](const MeshPtr& held) {
+        MeshHandle& h = *held; MeshUse use(h); return hash_to_hex(canonical_hash(h.mesh)); },
       "The canonical hash (16 hex digits) `tetcut` prints: independent of id numbering. O(#T log #T).");
 
   mesh.def_property_readonly(
       "attribute_names",
-      [](const MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         std::vector<std::string> names;
         for (std::uint32_t c = 0; c < h.mesh.attributes().channel_count(); ++c)
           names.push_back(h.mesh.attributes().channel(c).name);
@@ -344,7 +356,8 @@ a view never dangles. Delete it before cutting again.)doc");
       "The per-vertex attribute channels, in the order added.");
   mesh.def(
       "vertex_attribute",
-      [](MeshHandle& h, const std::string& name) {
+      [](const MeshPtr& held, const std::string& name) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         const VertexAttributes& attributes = h.mesh.attributes();
         const auto c = attributes.find(name);
@@ -363,7 +376,8 @@ a view never dangles. Delete it before cutting again.)doc");
       "they split (paper 3.2).");
   mesh.def(
       "set_vertex_attribute",
-      [](MeshHandle& h, const std::string& name, py::handle values) {
+      [](const MeshPtr& held, const std::string& name, py::handle values) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         py::array a = as_array(values);
         const char kind = a.dtype().kind();
@@ -392,7 +406,8 @@ a view never dangles. Delete it before cutting again.)doc");
 
   mesh.def(
       "write",
-      [](MeshHandle& h, const std::string& path, bool binary, const std::string& compression) {
+      [](const MeshPtr& held, const std::string& path, bool binary, const std::string& compression) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         WriteOptions options{.binary = binary};
         if (compression == "zlib") options.compression = Compression::kZlib;
@@ -412,7 +427,8 @@ a view never dangles. Delete it before cutting again.)doc");
 
   mesh.def(
       "compact",
-      [](MeshHandle& h) {
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
         MeshUse use(h);
         require_no_slot_views(h);
         const Renumbering r = h.mesh.compact();
@@ -429,7 +445,8 @@ a view never dangles. Delete it before cutting again.)doc");
 
   mesh.def("to_meshio", &to_meshio,
            "A meshio.Mesh: points, one 'tetra' cell block, each attribute channel as point_data.");
-  mesh.def("__repr__", [](const MeshHandle& h) {
+  mesh.def("__repr__", [](const MeshPtr& held) {
+        MeshHandle& h = *held;
     return "<tetcut.Mesh " + std::to_string(h.mesh.num_vertices()) + " vertices, " + std::to_string(h.mesh.num_tets()) +
            " tets>";
   });

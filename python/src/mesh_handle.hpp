@@ -45,6 +45,18 @@ class MeshUse {
   MeshHandle& handle_;
 };
 
+// For the classes only the module makes (CutReport, Changes, Violation, the slot views' lock):
+// Python's T.__new__(T) would give an instance with no C++ value behind it, which a method
+// would then read. pybind11 makes its instances without tp_new, so refusing it costs nothing.
+// (Mesh and Cutter, which Python does make, take their holder in every method instead:
+// pybind11 refuses an instance whose __init__ never ran.)
+inline void made_by_the_module_only(pybind11::handle cls) {
+  reinterpret_cast<PyTypeObject*>(cls.ptr())->tp_new = [](PyTypeObject* type, PyObject*, PyObject*) -> PyObject* {
+    PyErr_Format(PyExc_TypeError, "%s objects are made by tetcut, not directly", type->tp_name);
+    return nullptr;
+  };
+}
+
 // Before a mutation: no slot view may be alive (see the top of this file).
 void require_no_slot_views(const MeshHandle& handle);
 

@@ -154,3 +154,25 @@ def test_check_levels_and_violations(box):
     assert repr(v).startswith("I7 ")
     with pytest.raises(ValueError, match="local, full or exact"):
         tetcut.check(box, level="strict")
+
+
+def test_misuse_raises_instead_of_crashing(box):
+    half_made_mesh = tetcut.Mesh.__new__(tetcut.Mesh)  # __init__ never ran
+    for use in [lambda: half_made_mesh.points, lambda: half_made_mesh.num_tets, lambda: half_made_mesh.hash(),
+                lambda: tetcut.check(half_made_mesh), lambda: tetcut.Cutter(half_made_mesh)]:
+        with pytest.raises((TypeError, RuntimeError)):
+            use()
+    half_made_cutter = tetcut.Cutter.__new__(tetcut.Cutter)
+    for use in [lambda: half_made_cutter.cut((0, 0, 0)), lambda: half_made_cutter.sweep((0, 0, 0), (1, 1, 1), 1),
+                lambda: half_made_cutter.tool_diameter, lambda: tetcut.stats(half_made_cutter)]:
+        with pytest.raises((TypeError, RuntimeError)):
+            use()
+    for none_use in [lambda: tetcut.Cutter(None), lambda: tetcut.check(None), lambda: tetcut.stats(None),
+                     lambda: tetcut.Cutter.cut(box, (0, 0, 0))]:
+        with pytest.raises(TypeError):
+            none_use()
+    for cls in [tetcut.CutReport, tetcut.Changes, tetcut.Violation]:
+        with pytest.raises(TypeError, match="made by tetcut"):
+            cls()
+        with pytest.raises(TypeError):
+            cls.__new__(cls)
