@@ -3,6 +3,7 @@
 
     readme_test.py tour README.md TETCUT SOURCE_DIR WORK_DIR
     readme_test.py library README.md SOURCE_DIR WORK_DIR BUILD_DIR CXX CXX_FLAGS BUILD_TYPE
+    readme_test.py python README.md SOURCE_DIR WORK_DIR
 
 tour: every ```sh block of the README, in order, as one shell session (so `export` carries over),
 one command a line, in a fresh WORK_DIR with TETCUT's folder first on PATH; each command must
@@ -14,6 +15,10 @@ library: the README's ```cmake block and its ```cpp block as an outside project 
 and main.cpp), configured against this build tree's tetcut package (find_package through
 tetcut_DIR, as tests/consumer does), built with this build's compiler and flags, and run on the
 bundled liver: it must exit 0 after printing its cuts.
+
+python: the README's ```python block, run as written by this interpreter (PYTHONPATH must reach
+the built module: ctest docs.readme_python sets it) in a fresh WORK_DIR that sees the bundled
+corpus as `corpus/`; it must exit 0 after printing its cuts.
 
 A plain ``` block (the set-up commands ci/bench and ci/test, which take minutes) is not run.
 """
@@ -99,11 +104,32 @@ def library(readme, source, work, build, cxx, cxx_flags, build_type):
     return 0
 
 
+def python(readme, source, work):
+    code = blocks(readme, "python")
+    if len(code) != 1:
+        print(f"FAIL: expected one ```python block in {readme}, found {len(code)}")
+        return 1
+    fresh(work)
+    os.symlink(os.path.join(source, "corpus"), os.path.join(work, "corpus"))
+    script = os.path.join(work, "session.py")
+    with open(script, "w", encoding="utf-8") as f:
+        f.write(code[0])
+    run = subprocess.run([sys.executable, script], cwd=work, capture_output=True, text=True)
+    print(run.stdout, run.stderr)
+    if run.returncode != 0 or "removed" not in run.stdout:
+        print(f"FAIL: the README's Python session exited {run.returncode}")
+        return 1
+    print(f"the README's Python session ({len(code[0].splitlines())} lines) ran")
+    return 0
+
+
 def main(argv):
     if len(argv) >= 6 and argv[1] == "tour":
         return tour(*argv[2:6])
     if len(argv) >= 9 and argv[1] == "library":
         return library(*argv[2:9])
+    if len(argv) >= 5 and argv[1] == "python":
+        return python(*argv[2:5])
     print(__doc__, file=sys.stderr)
     return 2
 

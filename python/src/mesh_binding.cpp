@@ -1,0 +1,507 @@
+// tetcut.read, tetcut.Mesh, tetcut.from_meshio: a mesh in and out of numpy and meshio.
+//
+// Conventions are numpy's and meshio's, not the engine's: `points` (#V by 3 float64) and `tets`
+// (#T by 4 int64, rows of `points`) hold the live entities only, renumbered densely in id order
+// (what TetMesh::to_raw() writes), as copies; `vertex_ids` and `tet_ids` give the engine id of
+// each row, the ids a cut's report.changes and the checker's violations speak of. The engine's own
+// slot arrays (tombstones included, indexed by id) are there too, read-only and without a copy,
+// as slot views; see mesh_handle.hpp for why a slot view locks the mesh.
+//
+// Bad input raises, never crashes: a file the CLI would refuse raises ValueError with the very
+// line `tetcut` prints (tools/tetcut/mesh_input.cpp formats both), arrays of the wrong shape or
+// dtype raise ValueError / TypeError naming the argument, and what the mesh builder refuses
+// (NaN, dangling or repeated ids, inverted tets, non-manifold input) raises ValueError with the
+// builder's first problem, as `tetcut cut` and `tetcut remove` print it.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mesh_handle.hpp"
+#include "mesh_input.hpp"  // tools/tetcut: the CLI's reader and its one-line messages
+#include "tetcut/canonical_hash.hpp"
+#include "tetcut/detail/local_tables.hpp"
+#include "tetcut/io.hpp"
+#include "tetcut/mesh_builder.hpp"
+
+namespace py = pybind11;
+
+namespace tetcut::python {
+
+void require_no_slot_views(const MeshHandle& handle) {
+  if (handle.slot_views != 0) {
+    throw std::runtime_error("tetcut: " + std::to_string(handle.slot_views) +
+                             " slot view(s) of this mesh are alive (mesh.slot_tets, mesh.slot_points): a change "
+                             "would grow or rewrite the arrays they point into; delete them first, or use the "
+                             "copies mesh.tets and mesh.points");
+  }
+}
+
+namespace {
+
+// The engine id -> row of `points` for every vertex slot (-1: not live), in id order.
+std::vector<std::int64_t> vertex_rows(const TetMesh& mesh, std::int64_t& live) {
+  std::vector<std::int64_t> row(mesh.vertex_capacity(), -1);
+  live = 0;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (mesh.is_live(VertId{v})) row[v] = live++;
+  }
+  return row;
+}
+
+std::string shape_text(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) s += (i ? ", " : "") + std::to_string(a.shape(i));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+py::array as_array(py::handle obj) { return py::module_::import("numpy").attr("asarray")(obj); }
+
+void require_shape(const py::array& a, const char* name, py::ssize_t columns, const char* shape) {
+  if (a.ndim() != 2 || a.shape(1) != columns) {
+    throw py::value_error(std::string("tetcut: ") + name + ": expected an array of shape " + shape + ", got shape " +
+                          shape_text(a));
+  }
+}
+
+// `points`: any real array-like of shape (#V, 3), copied as float64.
+std::vector<Vec3> points_from(py::handle obj) {
+  const py::array a = as_array(obj);
+  const char kind = a.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u') {
+    throw py::type_error(std::string("tetcut: points: expected real numbers, got dtype ") +
+                         py::str(a.dtype()).cast<std::string>());
+  }
+  require_shape(a, "points", 3, "(#V, 3)");
+  const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  const auto r = d.unchecked<2>();
+  std::vector<Vec3> out(static_cast<std::size_t>(r.shape(0)));
+  for (py::ssize_t i = 0; i < r.shape(0); ++i) out[i] = {r(i, 0), r(i, 1), r(i, 2)};
+  return out;
+}
+
+template <class Int>
+std::vector<std::array<std::uint32_t, 4>> tet_rows(const py::array& a) {
+  const auto d = py::array_t<Int, py::array::c_style | py::array::forcecast>::ensure(a);
+  const auto r = d.template unchecked<2>();
+  std::vector<std::array<std::uint32_t, 4>> out(static_cast<std::size_t>(r.shape(0)));
+  for (py::ssize_t i = 0; i < r.shape(0); ++i) {
+    for (int k = 0; k < 4; ++k) {
+      const Int v = r(i, k);
+      if constexpr (std::numeric_limits<Int>::is_signed) {
+        if (v < 0) {
+          throw py::value_error("tetcut: tets: negative vertex index " + std::to_string(v) + " in row " +
+                                std::to_string(i));
+        }
+      }
+      // The builder names indices past #V (dangling); past 32 bits they cannot even be stored.
+      if (static_cast<std::uint64_t>(v) >= kDeadTetMarker) {
+        throw py::value_error("tetcut: tets: vertex index " + std::to_string(v) + " in row " + std::to_string(i) +
+                              " is out of range");
+      }
+      out[i][k] = static_cast<std::uint32_t>(v);
+    }
+  }
+  return out;
+}
+
+// `tets`: any integer array-like of shape (#T, 4), indices into points.
+std::vector<std::array<std::uint32_t, 4>> tets_from(py::handle obj) {
+  const py::array a = as_array(obj);
+  const char kind = a.dtype().kind();
+  if (kind != 'i' && kind != 'u') {
+    throw py::type_error(std::string("tetcut: tets: expected integer vertex indices, got dtype ") +
+                         py::str(a.dtype()).cast<std::string>());
+  }
+  require_shape(a, "tets", 4, "(#T, 4)");
+  if (a.shape(0) == 0) throw py::value_error("tetcut: tets: no tetrahedra");
+  return kind == 'i' ? tet_rows<std::int64_t>(a) : tet_rows<std::uint64_t>(a);
+}
+
+// The builder's verdict, with the words `tetcut cut` and `tetcut remove` use.
+MeshPtr build(const RawMesh& raw, const std::string& where) {
+  BuildResult built = build_mesh(raw);
+  if (!built.ok()) {
+    throw py::value_error("tetcut: " + where + "not a valid manifold mesh: " + built.problems.front().message +
+                          " (" + std::to_string(built.problems.size()) + " problem(s); see tetcut check)");
+  }
+  auto handle = std::make_shared<MeshHandle>();
+  handle->mesh = std::move(*built.mesh);
+  return handle;
+}
+
+MeshPtr from_arrays(py::handle points, py::handle tets) {
+  RawMesh raw;
+  raw.positions = points_from(points);
+  raw.tets = tets_from(tets);
+  return build(raw, "");
+}
+
+// The CLI's reader, its notes turned into Python warnings and its failure into ValueError.
+MeshPtr read(const std::string& path) {
+  std::ostringstream err;
+  std::optional<RawMesh> raw = cli::load_mesh(path, err);
+  std::istringstream lines(err.str());
+  std::string line, failure;
+  while (std::getline(lines, line)) {
+    if (line.find(": note: ") != std::string::npos) {
+      if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) < 0) throw py::error_already_set();
+    } else if (!line.empty()) {
+      failure = line;
+    }
+  }
+  if (!raw) throw py::value_error(failure.empty() ? "tetcut: " + path + ": unreadable mesh" : failure);
+  return build(*raw, path + ": ");
+}
+
+py::array_t<std::int64_t> ids_array(const std::vector<std::int64_t>& ids) {
+  py::array_t<std::int64_t> a(static_cast<py::ssize_t>(ids.size()));
+  std::copy(ids.begin(), ids.end(), a.mutable_data());
+  return a;
+}
+
+// A read-only array over memory the mesh owns, whose base keeps the mesh alive and locked.
+class SlotViewLock {
+ public:
+  explicit SlotViewLock(MeshPtr handle) : handle_(std::move(handle)) { ++handle_->slot_views; }
+  ~SlotViewLock() { --handle_->slot_views; }
+  SlotViewLock(const SlotViewLock&) = delete;
+  SlotViewLock& operator=(const SlotViewLock&) = delete;
+
+ private:
+  MeshPtr handle_;
+};
+
+template <class T>
+py::array slot_view(const MeshPtr& handle, std::vector<py::ssize_t> shape, const T* data) {
+  py::object lock = py::cast(new SlotViewLock(handle), py::return_value_policy::take_ownership);
+  py::array a(py::dtype::of<T>(), std::move(shape), {}, data, lock);
+  a.attr("flags").attr("writeable") = false;
+  return a;
+}
+
+py::object to_meshio(const MeshPtr& h);
+
+}  // namespace
+
+void bind_mesh(py::module_& m) {
+  made_by_the_module_only(py::class_<SlotViewLock>(
+      m, "_SlotViewLock", "Keeps a mesh alive and unchanged while a slot view of it exists (internal)."));
+
+  py::class_<MeshHandle, MeshPtr> mesh(m, "Mesh", R"doc(
+A manifold tetrahedral mesh (the engine's TetMesh), validated when made.
+
+Mesh(points, tets): points #V by 3 (any real array-like), tets #T by 4 (integer vertex indices,
+0-based, positively oriented). Both are copied. Raises ValueError with the message `tetcut`
+prints for what it refuses (NaN, dangling or repeated indices, inverted tets, a non-manifold
+input), ValueError / TypeError for a wrong shape or dtype.
+)doc");
+  mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"));
+
+  mesh.def_property_readonly("num_tets", [](const MeshPtr& held) {
+        MeshHandle& h = *held; return h.mesh.num_tets(); },
+                             "Live tets.");
+  mesh.def_property_readonly("num_vertices", [](const MeshPtr& held) {
+        MeshHandle& h = *held; return h.mesh.num_vertices(); },
+                             "Live vertices (used by a live tet).");
+
+  mesh.def_property_readonly(
+      "points",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        py::array_t<double> a({static_cast<py::ssize_t>(h.mesh.num_vertices()), py::ssize_t{3}});
+        auto w = a.mutable_unchecked<2>();
+        py::ssize_t row = 0;
+        for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v) {
+          if (!h.mesh.is_live(VertId{v})) continue;
+          const Vec3& p = h.mesh.position(VertId{v});
+          w(row, 0) = p.x, w(row, 1) = p.y, w(row, 2) = p.z;
+          ++row;
+        }
+        return a;
+      },
+      "#V by 3 float64: the live vertices in id order (a copy).");
+  mesh.def_property_readonly(
+      "vertex_ids",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        std::vector<std::int64_t> ids;
+        ids.reserve(h.mesh.num_vertices());
+        for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v)
+          if (h.mesh.is_live(VertId{v})) ids.push_back(v);
+        return ids_array(ids);
+      },
+      "#V int64: the engine id of each row of `points` (the ids report.changes speaks of).");
+  mesh.def_property_readonly(
+      "tets",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        std::int64_t live = 0;
+        const std::vector<std::int64_t> row = vertex_rows(h.mesh, live);
+        py::array_t<std::int64_t> a({static_cast<py::ssize_t>(h.mesh.num_tets()), py::ssize_t{4}});
+        auto w = a.mutable_unchecked<2>();
+        py::ssize_t r = 0;
+        for (const auto& t : h.mesh.raw_tets()) {
+          if (t[0] == kDeadTetMarker) continue;
+          for (int k = 0; k < 4; ++k) w(r, k) = row[t[k]];
+          ++r;
+        }
+        return a;
+      },
+      "#T by 4 int64: the live tets in id order, as rows of `points` (a copy).");
+  mesh.def_property_readonly(
+      "tet_ids",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        std::vector<std::int64_t> ids;
+        ids.reserve(h.mesh.num_tets());
+        const auto tets = h.mesh.raw_tets();
+        for (std::uint32_t t = 0; t < tets.size(); ++t)
+          if (tets[t][0] != kDeadTetMarker) ids.push_back(t);
+        return ids_array(ids);
+      },
+      "#T int64: the engine id of each row of `tets`.");
+
+  mesh.def_property_readonly(
+      "slot_tets",
+      [](const MeshPtr& h) {
+        MeshUse use(*h);
+        const auto tets = h->mesh.raw_tets();
+        return slot_view(h, {static_cast<py::ssize_t>(tets.size()), 4}, tets.data()->data());
+      },
+      R"doc(Slots by 4 uint32, read-only, no copy: the engine's tet array indexed by tet id, vertex
+ids as entries (rows of slot_points); a removed tet's slot has 0xFFFFFFFF in column 0 (see
+live_tet_mask). While this view (or any array made from it) is alive the mesh refuses every
+change (a cut, a sweep, compact) with RuntimeError, since a cut grows and rewrites these arrays:
+a view never dangles. Delete it before cutting again.)doc");
+  mesh.def_property_readonly(
+      "slot_points",
+      [](const MeshPtr& h) {
+        MeshUse use(*h);
+        const auto p = h->mesh.positions();
+        static_assert(sizeof(Vec3) == 3 * sizeof(double));
+        return slot_view(h, {static_cast<py::ssize_t>(p.size()), 3}, &p.data()->x);
+      },
+      "Vertex slots by 3 float64, read-only, no copy: positions indexed by vertex id. Locks the mesh "
+      "like slot_tets.");
+  mesh.def_property_readonly(
+      "live_tet_mask",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        const auto tets = h.mesh.raw_tets();
+        py::array_t<bool> a(static_cast<py::ssize_t>(tets.size()));
+        for (std::size_t t = 0; t < tets.size(); ++t) a.mutable_data()[t] = tets[t][0] != kDeadTetMarker;
+        return a;
+      },
+      "Slots bool (a copy): which rows of slot_tets are live tets.");
+  mesh.def_property_readonly(
+      "live_vertex_mask",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        py::array_t<bool> a(static_cast<py::ssize_t>(h.mesh.vertex_capacity()));
+        for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v) a.mutable_data()[v] = h.mesh.is_live(VertId{v});
+        return a;
+      },
+      "Vertex slots bool (a copy): which rows of slot_points are live vertices.");
+
+  mesh.def(
+      "surface",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        std::int64_t live = 0;
+        const std::vector<std::int64_t> row = vertex_rows(h.mesh, live);
+        std::vector<FaceRef> faces;
+        h.mesh.boundary_faces(faces);
+        py::array_t<std::int64_t> a({static_cast<py::ssize_t>(faces.size()), py::ssize_t{3}});
+        auto w = a.mutable_unchecked<2>();
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+          for (int k = 0; k < 3; ++k) {
+            w(i, k) = row[h.mesh.vertex(faces[i].tet, kFaceVerts[faces[i].face][k]).value];
+          }
+        }
+        return a;
+      },
+      "#F by 3 int64: the boundary triangles as rows of `points`, counter-clockwise seen from outside. "
+      "O(#T).");
+  mesh.def(
+      "volume", [](const MeshPtr& held) {
+        MeshHandle& h = *held; MeshUse use(h); return h.mesh.total_volume(); }, "Total volume. O(#T).");
+  mesh.def(
+      "hash", [](const MeshPtr& held) {
+        MeshHandle& h = *held; MeshUse use(h); return hash_to_hex(canonical_hash(h.mesh)); },
+      "The canonical hash (16 hex digits) `tetcut` prints: independent of id numbering. O(#T log #T).");
+
+  mesh.def_property_readonly(
+      "attribute_names",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        std::vector<std::string> names;
+        for (std::uint32_t c = 0; c < h.mesh.attributes().channel_count(); ++c)
+          names.push_back(h.mesh.attributes().channel(c).name);
+        return names;
+      },
+      "The per-vertex attribute channels, in the order added.");
+  mesh.def(
+      "vertex_attribute",
+      [](const MeshPtr& held, const std::string& name) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        const VertexAttributes& attributes = h.mesh.attributes();
+        const auto c = attributes.find(name);
+        if (!c) throw py::key_error("tetcut: no vertex attribute named '" + name + "'");
+        const std::uint32_t width = attributes.channel(*c).width;
+        py::array_t<double> a({static_cast<py::ssize_t>(h.mesh.num_vertices()), static_cast<py::ssize_t>(width)});
+        double* out = a.mutable_data();
+        for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v) {
+          if (!h.mesh.is_live(VertId{v})) continue;
+          for (double x : attributes.value(*c, VertId{v})) *out++ = x;
+        }
+        return a;
+      },
+      py::arg("name"),
+      "#V by width float64 (a copy), rows as `points`. Cuts interpolate every channel along the edges "
+      "they split (paper 3.2).");
+  mesh.def(
+      "set_vertex_attribute",
+      [](const MeshPtr& held, const std::string& name, py::handle values) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        py::array a = as_array(values);
+        const char kind = a.dtype().kind();
+        if (kind != 'f' && kind != 'i' && kind != 'u') {
+          throw py::type_error("tetcut: " + name + ": expected real numbers, got dtype " +
+                               py::str(a.dtype()).cast<std::string>());
+        }
+        if (a.ndim() == 1) a = a.attr("reshape")(-1, 1);
+        if (a.ndim() != 2 || a.shape(0) != h.mesh.num_vertices() || a.shape(1) < 1) {
+          throw py::value_error("tetcut: " + name + ": expected shape (" + std::to_string(h.mesh.num_vertices()) +
+                                ",) or (" + std::to_string(h.mesh.num_vertices()) + ", width), got shape " +
+                                shape_text(a));
+        }
+        VertexAttributes& attributes = h.mesh.attributes();
+        const auto c = attributes.add_channel(name, static_cast<std::uint32_t>(a.shape(1)));
+        if (!c) throw py::value_error("tetcut: " + name + ": the channel exists with another width");
+        const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+        const double* in = d.data();
+        for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v) {
+          if (!h.mesh.is_live(VertId{v})) continue;
+          for (double& x : attributes.value(*c, VertId{v})) x = *in++;
+        }
+      },
+      py::arg("name"), py::arg("values"),
+      "Adds (or overwrites) a channel from #V values or #V by width values, rows as `points`.");
+
+  mesh.def(
+      "write",
+      [](const MeshPtr& held, const std::string& path, bool binary, const std::string& compression) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        WriteOptions options{.binary = binary};
+        if (compression == "zlib") options.compression = Compression::kZlib;
+        else if (compression == "lzma") options.compression = Compression::kLzma;
+        else if (compression != "none") throw py::value_error("tetcut: compression: none, zlib or lzma");
+        const RawMesh raw = h.mesh.to_raw();
+        WriteResult written;
+        {
+          py::gil_scoped_release release;
+          written = write_mesh(path, raw, options);
+        }
+        if (!written.ok) throw py::value_error("tetcut: " + written.error);
+      },
+      py::arg("path"), py::kw_only(), py::arg("binary") = false, py::arg("compression") = "none",
+      "Writes the live mesh (rows as `points` and `tets`), format by extension (.msh 2.2, .vtu, .vtk, "
+      ".mesh, .node/.ele), through a temporary file and a rename. Attributes are not written.");
+
+  mesh.def(
+      "compact",
+      [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        require_no_slot_views(h);
+        const Renumbering r = h.mesh.compact();
+        ++h.version;
+        std::vector<std::int64_t> tets(r.tet_old_to_new.size()), verts(r.vert_old_to_new.size());
+        for (std::size_t i = 0; i < tets.size(); ++i)
+          tets[i] = r.tet_old_to_new[i].valid() ? r.tet_old_to_new[i].value : -1;
+        for (std::size_t i = 0; i < verts.size(); ++i)
+          verts[i] = r.vert_old_to_new[i].valid() ? r.vert_old_to_new[i].value : -1;
+        return py::make_tuple(ids_array(tets), ids_array(verts));
+      },
+      "Renumbers tets and vertices densely; returns (tet_old_to_new, vertex_old_to_new), -1 for removed ids. "
+      "Cutters on the mesh re-index before their next cut.");
+
+  mesh.def("to_meshio", &to_meshio,
+           "A meshio.Mesh: points, one 'tetra' cell block, each attribute channel as point_data.");
+  mesh.def("__repr__", [](const MeshPtr& held) {
+        MeshHandle& h = *held;
+    return "<tetcut.Mesh " + std::to_string(h.mesh.num_vertices()) + " vertices, " + std::to_string(h.mesh.num_tets()) +
+           " tets>";
+  });
+
+  m.def("read", &read, py::arg("path"), R"doc(
+Reads a mesh file (Gmsh, VTK legacy and XML, medit, TetGen; format by content, else by
+extension) and builds it. Raises ValueError with the line `tetcut` prints ("tetcut: FILE:LINE:
+reason"); the reader's notes come as UserWarning.)doc");
+
+  m.def(
+      "from_meshio",
+      [](py::handle meshio_mesh) {
+        py::list blocks;
+        for (py::handle block : meshio_mesh.attr("cells")) {
+          if (block.attr("type").cast<std::string>() == "tetra") blocks.append(block.attr("data"));
+        }
+        if (blocks.empty()) throw py::value_error("tetcut: the meshio mesh has no 'tetra' cells");
+        py::object tets = py::module_::import("numpy").attr("concatenate")(blocks);
+        MeshPtr h = from_arrays(meshio_mesh.attr("points"), tets);
+        // Point data on the points the mesh kept (a point no tet uses is dropped, as in `points`).
+        const py::ssize_t n = py::len(meshio_mesh.attr("points"));
+        py::object mesh = py::cast(h);
+        std::vector<std::int64_t> kept;
+        for (std::uint32_t v = 0; v < h->mesh.vertex_capacity(); ++v)
+          if (h->mesh.is_live(VertId{v})) kept.push_back(v);
+        for (auto item : meshio_mesh.attr("point_data").cast<py::dict>()) {
+          py::array values = as_array(item.second);
+          const char kind = values.dtype().kind();
+          if (values.ndim() < 1 || values.ndim() > 2 || values.shape(0) != n || (kind != 'f' && kind != 'i' && kind != 'u'))
+            continue;
+          mesh.attr("set_vertex_attribute")(item.first, values[ids_array(kept)]);
+        }
+        return h;
+      },
+      py::arg("mesh"),
+      "A Mesh from a meshio.Mesh: its points, its 'tetra' cells, its real point_data as attributes. Validated as "
+      "Mesh(points, tets) is.");
+}
+
+namespace {
+
+py::object to_meshio(const MeshPtr& h) {
+  py::module_ meshio = py::module_::import("meshio");
+  py::object mesh = py::cast(h);
+  py::dict point_data;
+  for (std::uint32_t c = 0; c < h->mesh.attributes().channel_count(); ++c) {
+    const std::string name = h->mesh.attributes().channel(c).name;
+    py::array values = mesh.attr("vertex_attribute")(name);
+    point_data[py::str(name)] = values.shape(1) == 1 ? values.attr("reshape")(-1) : values;
+  }
+  py::list cells;
+  cells.append(py::make_tuple("tetra", mesh.attr("tets")));
+  return meshio.attr("Mesh")(mesh.attr("points"), cells, py::arg("point_data") = point_data);
+}
+
+}  // namespace
+
+}  // namespace tetcut::python

@@ -1,0 +1,68 @@
+// The Python `tetcut.Mesh`: a TetMesh shared between the Python object and every Cutter on it,
+// with what the binding needs to keep Python's promises on top of the engine's:
+//
+//   - a cut runs with the GIL released (design: the simulator's other threads keep running), so
+//     nothing else may touch the mesh meanwhile: every method takes the mesh's Use, and a second
+//     user (another thread's cut, a read of mesh.points) gets RuntimeError instead of a race;
+//   - several Cutters may share one mesh: each remembers the mesh's version when it last
+//     indexed or cut it, and re-indexes (Cutter::reset) when another one has cut since;
+//   - slot views (mesh.slot_tets, mesh.slot_points) point into the engine's own arrays, which a
+//     cut may grow (reallocate) or rewrite: while one is alive the mesh refuses to change, so a
+//     view can never dangle.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+
+#include "tetcut/mesh.hpp"
+
+namespace tetcut::python {
+
+struct MeshHandle {
+  TetMesh mesh;
+  std::atomic<bool> in_use{false};
+  std::uint64_t version = 0;  // mutations so far (cuts, compactions)
+  std::uint32_t slot_views = 0;  // alive slot views; changed with the GIL held
+};
+using MeshPtr = std::shared_ptr<MeshHandle>;
+
+// Exclusive use of a mesh for one call: taken with the GIL held, kept while the GIL is released.
+class MeshUse {
+ public:
+  explicit MeshUse(MeshHandle& handle) : handle_(handle) {
+    if (handle_.in_use.exchange(true)) {
+      throw std::runtime_error("tetcut: the mesh is in use by a cut in another thread");
+    }
+  }
+  ~MeshUse() { handle_.in_use.store(false); }
+  MeshUse(const MeshUse&) = delete;
+  MeshUse& operator=(const MeshUse&) = delete;
+
+ private:
+  MeshHandle& handle_;
+};
+
+// For the classes only the module makes (CutReport, Changes, Violation, the slot views' lock):
+// Python's T.__new__(T) would give an instance with no C++ value behind it, which a method
+// would then read. pybind11 makes its instances without tp_new, so refusing it costs nothing.
+// (Mesh and Cutter, which Python does make, take their holder in every method instead:
+// pybind11 refuses an instance whose __init__ never ran.)
+inline void made_by_the_module_only(pybind11::handle cls) {
+  reinterpret_cast<PyTypeObject*>(cls.ptr())->tp_new = [](PyTypeObject* type, PyObject*, PyObject*) -> PyObject* {
+    PyErr_Format(PyExc_TypeError, "%s objects are made by tetcut, not directly", type->tp_name);
+    return nullptr;
+  };
+}
+
+// Before a mutation: no slot view may be alive (see the top of this file).
+void require_no_slot_views(const MeshHandle& handle);
+
+// The bindings, one concept per file (mesh_binding.cpp, cutter_binding.cpp, check_binding.cpp).
+void bind_mesh(pybind11::module_& m);
+void bind_cutter(pybind11::module_& m);
+void bind_check(pybind11::module_& m);
+
+}  // namespace tetcut::python

@@ -1,0 +1,14 @@
+// The `tetcut` Python module: the engine, the checker and the change log, numpy in and out
+// (issue 33). Each part is bound in its own file; python/tetcut.pyi is the hand-written stub
+// (Debian has no stub generator that keeps docstrings), held to this module by mypy's stubtest.
+#include <pybind11/pybind11.h>
+
+#include "mesh_handle.hpp"
+
+PYBIND11_MODULE(tetcut, m) {
+  m.doc() = "tetcut: manifold-preserving tissue removal on tetrahedral meshes (Forest, Delingette, Ayache 2002).";
+  m.attr("__version__") = TETCUT_VERSION;
+  tetcut::python::bind_mesh(m);
+  tetcut::python::bind_cutter(m);
+  tetcut::python::bind_check(m);
+}

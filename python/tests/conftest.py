@@ -1,0 +1,63 @@
+"""Fixtures of the tetcut module's pytest suite (ctest python.pytest runs it with /usr/bin/python3,
+PYTHONPATH at the built module, TETCUT_CLI at the built `tetcut`, TETCUT_SOURCE_DIR at the tree)."""
+import itertools
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+# Under ASan, ctest preloads the sanitizer runtime into this interpreter (python/tests/CMakeLists.txt);
+# the `tetcut` processes the tests start carry their own, and must not get a second one.
+os.environ.pop("LD_PRELOAD", None)
+
+SOURCE = pathlib.Path(os.environ.get("TETCUT_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+CORPUS = SOURCE / "corpus" / "meshes"
+
+# The README's sweep (README.md, "Cut."): 8 mm tool, y from 40 to 180, one cut every 4 mm.
+README_SWEEP = dict(start=(95.0, 40.0, 100.0), end=(95.0, 180.0, 100.0), step=4.0)
+README_DIAMETER = 8.0
+
+
+def box_arrays(n=3, size=1.0):
+    """A cube of n^3 cells, each split into the 6 tets around its main diagonal (Kuhn), which
+    meet conformally across cells; every tet positively oriented."""
+    axis = np.linspace(0.0, size, n + 1)
+    points = np.array([(x, y, z) for x in axis for y in axis for z in axis])
+    index = lambda i, j, k: (i * (n + 1) + j) * (n + 1) + k
+    tets = []
+    for i, j, k in itertools.product(range(n), repeat=3):
+        for perm in itertools.permutations(range(3)):
+            corner = [i, j, k]
+            path = [index(*corner)]
+            for axis_step in perm:
+                corner[axis_step] += 1
+                path.append(index(*corner))
+            tets.append(path)
+    tets = np.array(tets, dtype=np.int64)
+    p = points[tets]
+    volume = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0])
+    flip = volume < 0
+    tets[flip, 0], tets[flip, 1] = tets[flip, 1].copy(), tets[flip, 0].copy()
+    return points, tets
+
+
+@pytest.fixture
+def box():
+    import tetcut
+    points, tets = box_arrays(4, 4.0)
+    return tetcut.Mesh(points, tets)
+
+
+@pytest.fixture(scope="session")
+def cli():
+    path = os.environ.get("TETCUT_CLI")
+    if not path:
+        pytest.fail("TETCUT_CLI is not set: run the suite through ctest (python.pytest)")
+    return path
+
+
+@pytest.fixture
+def liver():
+    import tetcut
+    return tetcut.read(str(CORPUS / "liver.msh"))

@@ -1,0 +1,178 @@
+"""tetcut.Cutter: cuts, sweeps, the report and its changes, the GIL, tetcut.stats and tetcut.check."""
+import re
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import tetcut
+from conftest import CORPUS, README_DIAMETER, README_SWEEP
+
+
+def test_the_readme_sweep_gives_the_hash_tetcut_cut_prints(cli, tmp_path):
+    liver = str(CORPUS / "liver.msh")
+    s, e, step = README_SWEEP["start"], README_SWEEP["end"], README_SWEEP["step"]
+    run = subprocess.run([cli, "cut", liver, "--diameter", str(README_DIAMETER), "--from", ",".join(map(str, s)),
+                          "--to", ",".join(map(str, e)), "--step", str(step)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    expected = re.search(r"^hash ([0-9a-f]{16})$", run.stdout, re.M).group(1)
+    mesh = tetcut.read(liver)
+    reports = tetcut.Cutter(mesh, tool_diameter=README_DIAMETER).sweep(**README_SWEEP)
+    assert len(reports) == 36 and all(r.ok for r in reports)
+    assert mesh.hash() == expected
+    # The same cuts one by one from Python: the same mesh.
+    again = tetcut.read(liver)
+    cutter = tetcut.Cutter(again, tool_diameter=README_DIAMETER)
+    for r in reports:
+        assert cutter.cut(r.centre).tets_removed == r.tets_removed
+    assert again.hash() == expected
+
+
+def test_report_fields_and_changes_agree_with_the_mesh(box):
+    cutter = tetcut.Cutter(box, tool_diameter=1.5, strategy="combined")
+    live_before = set(box.tet_ids)
+    verts_before = set(box.vertex_ids)
+    report = cutter.cut(np.array([2.0, 2.0, 4.0]))
+    assert report.ok and report.failure == ""
+    assert report.tets_removed > 0 and report.tets_hit > 0 and report.quality_met
+    assert report.d_ref == pytest.approx(1.5 * 1.5)
+    assert report.time_us["total"] > 0 and report.wall_us >= report.time_us["total"] * 0.5
+    assert list(report.centre) == [2.0, 2.0, 4.0]
+    c = report.changes
+    assert c is report.changes  # built once
+    live_after = set(box.tet_ids)
+    assert set(c.removed) == live_before - live_after
+    assert set(c.created) == live_after - live_before
+    assert len(c.parent) == len(c.created) == len(c.parents_offsets) - 1
+    assert set(c.parent) <= set(c.removed)
+    assert set(c.parents) <= set(c.removed)
+    assert c.parents_offsets[-1] == len(c.parents)
+    assert set(c.new_vertices) == set(box.vertex_ids) - verts_before
+    on_edge = c.new_vertex_edges[:, 0] >= 0
+    assert set(c.new_vertex_edges[on_edge].ravel()) <= verts_before
+    np.testing.assert_allclose(c.new_vertex_weights.sum(axis=1), 1.0)
+    # Positions of new vertices: the convex combination of old ones the log says.
+    rows = {v: i for i, v in enumerate(box.vertex_ids)}
+    slot = dict(zip(box.vertex_ids, box.points))
+    for v, frm, w in zip(c.new_vertices, c.new_vertex_from, c.new_vertex_weights):
+        if frm[0] >= 0 and all(f in rows for f in frm if f >= 0):
+            expected = sum(wk * slot[f] for f, wk in zip(frm, w) if f >= 0)
+            np.testing.assert_allclose(slot[v], expected, atol=1e-9)
+    assert set(c.removed_vertices) == verts_before - set(box.vertex_ids)
+    assert "removed" in repr(report)
+    assert tetcut.check(box) == []
+
+
+def test_a_cut_in_the_air_changes_nothing(box):
+    before = box.hash()
+    r = tetcut.Cutter(box, tool_diameter=1.0).cut((50, 50, 50))
+    assert r.ok and r.tets_removed == 0 and len(r.changes.removed) == 0
+    assert box.hash() == before
+
+
+def test_bad_parameters_raise(box):
+    for kwargs, words in [({"tool_diameter": -1}, "diameter"), ({"tool_diameter": float("nan")}, "diameter"),
+                          ({"strategy": "greedy"}, "strategy: basic, neighbours, combined or wide"),
+                          ({"split": "halves"}, "split"), ({"quality_floor": 2.0}, "floor")]:
+        with pytest.raises(ValueError, match=words):
+            tetcut.Cutter(box, **kwargs)
+    cutter = tetcut.Cutter(box, tool_diameter=1.0)
+    with pytest.raises(ValueError, match="finite"):
+        cutter.cut((np.nan, 0, 0))
+    for bad in [(1, 2), "abc", [[1, 2, 3]], (1, 2, "3"), None]:
+        with pytest.raises(TypeError, match="centre: expected 3 real numbers"):
+            cutter.cut(bad)
+    with pytest.raises(TypeError, match="one argument"):
+        cutter.cut()
+    with pytest.raises(TypeError, match="one argument"):
+        cutter.cut((1, 2, 3), 4)
+    with pytest.raises(TypeError, match="one argument"):
+        cutter.cut(center=(1, 2, 3))
+    with pytest.raises(OverflowError):
+        cutter.cut((10**400, 0, 0))
+    assert cutter.cut(centre=np.array([50, 50, 50], dtype=np.float32)).ok
+    assert cutter.cut([50, 50, 50]).ok and cutter.cut((np.float64(50), 50.0, 50)).ok
+    with pytest.raises(ValueError, match="step"):
+        cutter.sweep((0, 0, 0), (1, 1, 1), 0.0)
+    with pytest.raises(ValueError, match="100000"):
+        cutter.sweep((0, 0, 0), (1e6, 0, 0), 1.0)
+    with pytest.raises(ValueError):
+        cutter.tool_diameter = 0.0
+    assert cutter.tool_diameter == 1.0
+    cutter.tool_diameter = 2.0
+    assert cutter.tool_diameter == 2.0 and cutter.strategy == "combined" and cutter.mesh is box
+
+
+def test_two_cutters_on_one_mesh_stay_consistent(box):
+    a, b = tetcut.Cutter(box, tool_diameter=1.5), tetcut.Cutter(box, tool_diameter=1.5)
+    a.cut((2, 2, 4))
+    b.cut((2, 2, 3.5))  # b re-indexes: a's cut changed the mesh behind its index
+    a.cut((2, 2, 3))
+    assert tetcut.check(box, level="full") == []
+
+
+def test_the_cut_releases_the_gil_and_the_mesh_stays_locked():
+    # Were the GIL held, this thread could not run while the sweep does, and would never find the
+    # mesh in use. A sweep lasts milliseconds: a few attempts make a busy machine's scheduling moot.
+    for attempt in range(5):
+        liver = tetcut.read(str(CORPUS / "liver.msh"))
+        cutter = tetcut.Cutter(liver, tool_diameter=README_DIAMETER)
+        seen_busy, done = [], []
+        worker = threading.Thread(target=lambda: done.append(cutter.sweep(README_SWEEP["start"], README_SWEEP["end"], 1.0)))
+        worker.start()
+        while worker.is_alive():
+            try:
+                liver.points
+            except RuntimeError as e:  # the sweep holds the mesh while the GIL is free
+                seen_busy.append(str(e))
+        worker.join()
+        assert len(done[0]) == 141 and tetcut.check(liver) == []
+        if seen_busy:
+            break
+    assert seen_busy and "in use by a cut in another thread" in seen_busy[0]
+
+
+def test_stats_are_the_papers_tables_of_the_requests(liver):
+    cutter = tetcut.Cutter(liver, tool_diameter=README_DIAMETER)
+    reports = cutter.sweep(**README_SWEEP)
+    s = tetcut.stats(cutter)
+    assert set(s) == {"removal", "table1", "table2"}
+    assert s["removal"]["tets_removed"] >= sum(r.requests for r in reports) > 0
+    assert s["table1"]["operations"] == s["removal"]["requested"]
+    assert s["table1"]["removable_pct"] == pytest.approx(100.0 * s["removal"]["direct"] / s["removal"]["requested"])
+    assert s["table2"]["combined_unresolved_pct"] == 0.0
+
+
+def test_check_levels_and_violations(box):
+    assert tetcut.check(box, level="local") == tetcut.check(box, level="exact") == []
+    violations = tetcut.check(box, radius_ratio_floor=0.99)
+    assert [v.id for v in violations] == ["I7"]
+    v = violations[0]
+    assert v.count > 0 and 0 < len(v.tets) <= 8 and v.detail and "quality" in v.name
+    assert set(v.tets) <= set(box.tet_ids)
+    assert repr(v).startswith("I7 ")
+    with pytest.raises(ValueError, match="local, full or exact"):
+        tetcut.check(box, level="strict")
+
+
+def test_misuse_raises_instead_of_crashing(box):
+    half_made_mesh = tetcut.Mesh.__new__(tetcut.Mesh)  # __init__ never ran
+    for use in [lambda: half_made_mesh.points, lambda: half_made_mesh.num_tets, lambda: half_made_mesh.hash(),
+                lambda: tetcut.check(half_made_mesh), lambda: tetcut.Cutter(half_made_mesh)]:
+        with pytest.raises((TypeError, RuntimeError)):
+            use()
+    half_made_cutter = tetcut.Cutter.__new__(tetcut.Cutter)
+    for use in [lambda: half_made_cutter.cut((0, 0, 0)), lambda: half_made_cutter.sweep((0, 0, 0), (1, 1, 1), 1),
+                lambda: half_made_cutter.tool_diameter, lambda: tetcut.stats(half_made_cutter)]:
+        with pytest.raises((TypeError, RuntimeError)):
+            use()
+    for none_use in [lambda: tetcut.Cutter(None), lambda: tetcut.check(None), lambda: tetcut.stats(None),
+                     lambda: tetcut.Cutter.cut(box, (0, 0, 0))]:
+        with pytest.raises(TypeError):
+            none_use()
+    for cls in [tetcut.CutReport, tetcut.Changes, tetcut.Violation]:
+        with pytest.raises(TypeError, match="made by tetcut"):
+            cls()
+        with pytest.raises(TypeError):
+            cls.__new__(cls)

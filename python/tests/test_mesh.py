@@ -1,0 +1,155 @@
+"""tetcut.read, tetcut.Mesh, its arrays, slot views, attributes and files; bad input raising."""
+import subprocess
+
+import numpy as np
+import pytest
+
+import tetcut
+from conftest import CORPUS, box_arrays
+
+
+def test_mesh_from_arrays_copies_and_gives_them_back():
+    points, tets = box_arrays(2)
+    mesh = tetcut.Mesh(points, tets)
+    assert mesh.num_tets == len(tets) == 48
+    assert mesh.num_vertices == len(points)
+    np.testing.assert_array_equal(mesh.points, points)
+    np.testing.assert_array_equal(mesh.tets, tets)
+    np.testing.assert_array_equal(mesh.tet_ids, np.arange(len(tets)))
+    np.testing.assert_array_equal(mesh.vertex_ids, np.arange(len(points)))
+    points[0] = 99.0  # a copy was taken
+    assert mesh.points[0, 0] == 0.0
+    assert mesh.points.dtype == np.float64 and mesh.tets.dtype == np.int64
+    assert mesh.volume() == pytest.approx(1.0)
+
+
+def test_mesh_accepts_any_array_like():
+    points, tets = box_arrays(1)
+    mesh = tetcut.Mesh(points.tolist(), tets.astype(np.uint32).tolist())
+    assert mesh.hash() == tetcut.Mesh(points.astype(np.float32), tets.astype(np.int16)).hash()
+
+
+@pytest.mark.parametrize("points, tets, error, words", [
+    (np.zeros((4, 2)), [[0, 1, 2, 3]], ValueError, "points: expected an array of shape (#V, 3), got shape (4, 2)"),
+    (np.zeros(12), [[0, 1, 2, 3]], ValueError, "got shape (12,)"),
+    (np.eye(4)[:, :3], [[0, 1, 2]], ValueError, "tets: expected an array of shape (#T, 4), got shape (1, 3)"),
+    (np.eye(4)[:, :3], [[0.0, 1.0, 2.0, 3.0]], TypeError, "tets: expected integer vertex indices, got dtype float64"),
+    (np.array([["a", "b", "c"]]), [[0, 1, 2, 3]], TypeError, "points: expected real numbers"),
+    (np.eye(4)[:, :3], np.zeros((0, 4), int), ValueError, "tets: no tetrahedra"),
+    (np.eye(4)[:, :3], [[0, 1, -2, 3]], ValueError, "tets: negative vertex index -2 in row 0"),
+    (np.eye(4)[:, :3], [[0, 1, 2, 2**40]], ValueError, "is out of range"),
+    (np.eye(4)[:, :3], [[0, 1, 2, 7]], ValueError, "not a valid manifold mesh"),
+])
+def test_bad_arrays_raise_naming_the_argument(points, tets, error, words):
+    with pytest.raises(error) as e:
+        tetcut.Mesh(points, tets)
+    assert words in str(e.value)
+
+
+def test_nan_and_inverted_tets_are_refused_by_the_builder():
+    points, tets = box_arrays(1)
+    bad = points.copy()
+    bad[3, 1] = np.nan
+    with pytest.raises(ValueError, match="not a valid manifold mesh: .*(finite|NaN)"):
+        tetcut.Mesh(bad, tets)
+    inverted = tets.copy()
+    inverted[0, [0, 1]] = inverted[0, [1, 0]]
+    with pytest.raises(ValueError, match="not a valid manifold mesh"):
+        tetcut.Mesh(points, inverted)
+
+
+def test_read_errors_are_the_clis_line(tmp_path, cli):
+    broken = tmp_path / "broken.msh"
+    broken.write_text("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 0 0 0\nnot a node\n$EndNodes\n")
+    for path in [broken, tmp_path / "missing.vtu"]:
+        run = subprocess.run([cli, "check", str(path)], capture_output=True, text=True)
+        assert run.returncode == 2
+        with pytest.raises(ValueError) as e:
+            tetcut.read(str(path))
+        assert str(e.value) == run.stderr.strip().splitlines()[-1]
+        assert str(path) in str(e.value)
+
+
+def test_write_then_read_gives_the_same_mesh(tmp_path, box):
+    for name, options in [("m.msh", {}), ("m.vtu", {"binary": True, "compression": "zlib"}), ("m.vtk", {}),
+                          ("m.mesh", {})]:
+        box.write(str(tmp_path / name), **options)
+        again = tetcut.read(str(tmp_path / name))
+        assert again.hash() == box.hash()
+        np.testing.assert_array_equal(again.tets, box.tets)
+    with pytest.raises(ValueError, match="compression"):
+        box.write(str(tmp_path / "x.vtu"), compression="gzip")
+    with pytest.raises(ValueError):
+        box.write(str(tmp_path / "no-such-folder" / "x.vtu"))
+
+
+def test_hash_is_the_clis(cli):
+    path = CORPUS / "cylinder.msh"
+    run = subprocess.run([cli, "info", str(path)], capture_output=True, text=True, check=True)
+    assert f"{tetcut.read(str(path)).hash()}" in run.stdout
+
+
+def test_surface_is_closed_and_outward(box):
+    faces = box.surface()
+    assert faces.shape == (6 * 4 * 4 * 2, 3)
+    p = box.points[faces]
+    normals = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    centre = box.points.mean(axis=0)
+    assert np.all(np.einsum("ij,ij->i", normals, p.mean(axis=1) - centre) > 0)
+
+
+def test_slot_views_lock_the_mesh_until_deleted(box):
+    cutter = tetcut.Cutter(box, tool_diameter=1.5)
+    slots = box.slot_tets
+    assert not slots.flags.writeable
+    np.testing.assert_array_equal(slots[box.live_tet_mask].astype(np.int64), box.tets)
+    points = box.slot_points[1:]  # a view of the view keeps the lock
+    del slots
+    with pytest.raises(RuntimeError, match="slot view"):
+        cutter.cut((2, 2, 4))
+    with pytest.raises(RuntimeError, match="slot view"):
+        box.compact()
+    del points
+    assert cutter.cut((2, 2, 4)).tets_removed > 0
+    live = box.live_tet_mask
+    assert live.sum() == box.num_tets and not live.all()  # tombstones
+    np.testing.assert_array_equal(np.flatnonzero(live), box.tet_ids)
+    np.testing.assert_array_equal(np.flatnonzero(box.live_vertex_mask), box.vertex_ids)
+
+
+def test_compact_renumbers_and_cutters_follow(box):
+    cutter = tetcut.Cutter(box, tool_diameter=1.5)
+    cutter.cut((0, 0, 0))
+    before = box.hash()
+    old_ids = box.tet_ids
+    tet_map, vert_map = box.compact()
+    assert box.hash() == before
+    np.testing.assert_array_equal(tet_map[old_ids], np.arange(box.num_tets))
+    np.testing.assert_array_equal(box.tet_ids, np.arange(box.num_tets))
+    assert (tet_map == -1).sum() == len(tet_map) - box.num_tets
+    assert cutter.cut((4, 4, 4)).ok
+    assert tetcut.check(box) == []
+
+
+def test_attributes_follow_the_cut(box):
+    assert box.attribute_names == []
+    box.set_vertex_attribute("temperature", 2.0 * box.points[:, 0])
+    box.set_vertex_attribute("texcoord", box.points[:, :2])
+    assert box.attribute_names == ["temperature", "texcoord"]
+    tetcut.Cutter(box, tool_diameter=1.5).cut((2, 2, 4.1))
+    # Edge splits interpolate every channel linearly: a linear field stays the same function.
+    np.testing.assert_allclose(box.vertex_attribute("temperature")[:, 0], 2.0 * box.points[:, 0], atol=1e-12)
+    np.testing.assert_allclose(box.vertex_attribute("texcoord"), box.points[:, :2], atol=1e-12)
+    with pytest.raises(KeyError):
+        box.vertex_attribute("pressure")
+    with pytest.raises(ValueError, match="another width"):
+        box.set_vertex_attribute("texcoord", box.points)
+    with pytest.raises(ValueError, match="expected shape"):
+        box.set_vertex_attribute("x", np.zeros(3))
+    with pytest.raises(TypeError):
+        box.set_vertex_attribute("x", np.array(["a"] * box.num_vertices))
+
+
+def test_read_the_bundled_liver(liver):
+    assert liver.num_tets > 1000
+    assert repr(liver).startswith("<tetcut.Mesh ")

@@ -1,0 +1,217 @@
+"""tetcut: manifold-preserving tissue removal on tetrahedral meshes (Forest, Delingette, Ayache 2002).
+
+Hand-written stub of the pybind11 module (python/src/); ctest python.stubtest holds it to the
+module with mypy's stubtest. Shapes as the docs write them: "#T by 4".
+"""
+from typing import Any, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+_Point = Union[Sequence[float], npt.ArrayLike]
+
+class _SlotViewLock:
+    """Keeps a mesh alive and unchanged while a slot view of it exists (internal)."""
+
+class Mesh:
+    """A manifold tetrahedral mesh, validated when made.
+
+    Mesh(points, tets): points #V by 3 (any real array-like), tets #T by 4 (integer vertex
+    indices, 0-based, positively oriented), both copied. ValueError with the message `tetcut`
+    prints for what it refuses (NaN, dangling or repeated indices, inverted tets, non-manifold
+    input); ValueError / TypeError for a wrong shape or dtype.
+    """
+
+    def __init__(self, points: npt.ArrayLike, tets: npt.ArrayLike) -> None: ...
+    @property
+    def num_tets(self) -> int: ...
+    @property
+    def num_vertices(self) -> int: ...
+    @property
+    def points(self) -> npt.NDArray[np.float64]:
+        """#V by 3: the live vertices in id order (a copy)."""
+    @property
+    def vertex_ids(self) -> npt.NDArray[np.int64]:
+        """#V: the engine id of each row of `points`."""
+    @property
+    def tets(self) -> npt.NDArray[np.int64]:
+        """#T by 4: the live tets in id order, as rows of `points` (a copy)."""
+    @property
+    def tet_ids(self) -> npt.NDArray[np.int64]:
+        """#T: the engine id of each row of `tets`."""
+    @property
+    def slot_tets(self) -> npt.NDArray[np.uint32]:
+        """Slots by 4, read-only, no copy; locks the mesh against change while alive."""
+    @property
+    def slot_points(self) -> npt.NDArray[np.float64]:
+        """Vertex slots by 3, read-only, no copy; locks the mesh like slot_tets."""
+    @property
+    def live_tet_mask(self) -> npt.NDArray[np.bool_]: ...
+    @property
+    def live_vertex_mask(self) -> npt.NDArray[np.bool_]: ...
+    @property
+    def attribute_names(self) -> list[str]: ...
+    def surface(self) -> npt.NDArray[np.int64]:
+        """#F by 3: boundary triangles as rows of `points`, counter-clockwise seen from outside."""
+    def volume(self) -> float: ...
+    def hash(self) -> str:
+        """The canonical hash `tetcut` prints (16 hex digits)."""
+    def vertex_attribute(self, name: str) -> npt.NDArray[np.float64]: ...
+    def set_vertex_attribute(self, name: str, values: npt.ArrayLike) -> None: ...
+    def write(self, path: str, *, binary: bool = False, compression: str = "none") -> None: ...
+    def compact(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
+    def to_meshio(self) -> Any:
+        """A meshio.Mesh: points, one 'tetra' block, attributes as point_data."""
+
+def read(path: str) -> Mesh:
+    """Reads and builds a mesh file; ValueError with the line `tetcut` prints."""
+
+def from_meshio(mesh: Any) -> Mesh:
+    """A Mesh from a meshio.Mesh's points, 'tetra' cells and real point_data."""
+
+class Changes:
+    """A cut's net change as numpy arrays of engine ids."""
+
+    @property
+    def removed(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def created(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def parent(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def parents(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def parents_offsets(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def new_vertices(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def new_vertex_edges(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def new_vertex_t(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def new_vertex_from(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def new_vertex_weights(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def removed_vertices(self) -> npt.NDArray[np.int64]: ...
+
+class CutReport:
+    """What one cut did; `changes` builds numpy arrays on first access."""
+
+    @property
+    def centre(self) -> list[float]: ...
+    @property
+    def ok(self) -> bool: ...
+    @property
+    def failure(self) -> str: ...
+    @property
+    def tets_hit(self) -> int: ...
+    @property
+    def refine_iterations(self) -> int: ...
+    @property
+    def edges_split(self) -> int: ...
+    @property
+    def tets_refined(self) -> int: ...
+    @property
+    def requested(self) -> int: ...
+    @property
+    def requests(self) -> int: ...
+    @property
+    def tets_removed(self) -> int: ...
+    @property
+    def tets_created(self) -> int: ...
+    @property
+    def direct(self) -> int: ...
+    @property
+    def vertex_singularities(self) -> int: ...
+    @property
+    def edge_singularities(self) -> int: ...
+    @property
+    def resolved_by_neighbours(self) -> int: ...
+    @property
+    def resolved_by_refinement(self) -> int: ...
+    @property
+    def resolved_by_fallback(self) -> int: ...
+    @property
+    def unresolved(self) -> int: ...
+    @property
+    def min_radius_ratio(self) -> float: ...
+    @property
+    def min_radius_ratio_before_improvement(self) -> float: ...
+    @property
+    def quality_floor(self) -> float: ...
+    @property
+    def quality_met(self) -> bool: ...
+    @property
+    def improvement_flips(self) -> int: ...
+    @property
+    def improvement_collapses(self) -> int: ...
+    @property
+    def improvement_moves(self) -> int: ...
+    @property
+    def d_ref(self) -> float: ...
+    @property
+    def coarser_retries(self) -> int: ...
+    @property
+    def wall_us(self) -> float:
+        """Wall time of the engine's cut alone, timed around the C++ call."""
+    @property
+    def time_us(self) -> dict[str, float]: ...
+    @property
+    def changes(self) -> Changes: ...
+
+class Cutter:
+    """The cautery tool on a mesh: indexes it once, then cuts in O(tool). Keeps the mesh alive."""
+
+    def __init__(
+        self,
+        mesh: Mesh,
+        *,
+        tool_diameter: float = 1.0,
+        strategy: str = "combined",
+        split: str = "templates",
+        d_ref_factor: float = 1.5,
+        p: float = 1.5,
+        search_depth: int = 10,
+        max_refine_iterations: int = 8,
+        max_tets_created: int = 20000,
+        improve: bool = True,
+        quality_floor: float = 0.1,
+        coarser_retries: int = 2,
+    ) -> None: ...
+    def cut(self, centre: _Point) -> CutReport:
+        """One atomic cut (ok False: refused, the mesh untouched). Releases the GIL."""
+    def sweep(self, start: _Point, end: _Point, step: float) -> list[CutReport]:
+        """One cut every `step` from start to end, as `tetcut cut --from --to --step`."""
+    @property
+    def tool_diameter(self) -> float: ...
+    @tool_diameter.setter
+    def tool_diameter(self, value: float) -> None: ...
+    @property
+    def strategy(self) -> str: ...
+    @property
+    def mesh(self) -> Mesh: ...
+
+class Violation:
+    """One violated invariant."""
+
+    @property
+    def id(self) -> str: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def count(self) -> int: ...
+    @property
+    def tets(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def vertices(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def detail(self) -> str: ...
+
+def check(mesh: Mesh, *, level: str = "full", radius_ratio_floor: float = 0.0) -> list[Violation]:
+    """The independent checker's violations (empty: valid); level local|full|exact."""
+
+def stats(cutter: Cutter) -> dict[str, dict[str, float]]:
+    """The paper's Tables 1 and 2 over a Cutter's removal requests."""
