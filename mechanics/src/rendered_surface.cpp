@@ -45,6 +45,7 @@ void RenderedSurface::reserve(std::uint32_t tets, std::uint32_t vertices) {
   triangles_.reserve(triangles);
   free_triangles_.reserve(triangles);
   candidates_.reserve(4096);
+  created_faces_.reserve(4096);
   shell_.reserve(256);
   if (index_.size() < 2 * triangles) grow_index(std::bit_ceil(2 * triangles));
 }
@@ -157,23 +158,13 @@ Vec3 RenderedSurface::normal(VertId v) const {
   return n > 0 ? (1.0 / n) * s : Vec3{};
 }
 
-FaceRef RenderedSurface::live_face(const TetMesh& mesh, const Key& key) {
-  const VertId a{key[0]}, b{key[1]}, c{key[2]};
-  if (!mesh.is_live(a) || !mesh.is_live(b) || !mesh.is_live(c)) return {};
-  mesh.vertex_shell(a, shell_);
-  for (TetId t : shell_) {
-    const int lb = mesh.local_index(t, b), lc = mesh.local_index(t, c);
-    if (lb < 0 || lc < 0) continue;
-    return {t, static_cast<std::uint8_t>(6 - mesh.local_index(t, a) - lb - lc)};
-  }
-  return {};
-}
-
 std::uint32_t RenderedSurface::apply(const TetMesh& mesh, const ChangeLog& log) {
   grow(mesh.tet_capacity(), mesh.vertex_capacity());
   std::uint32_t unknown = 0;
   candidates_.clear();
-  // The removed tets' faces leave the surface; each may now be laid bare on an untouched tet.
+  created_faces_.clear();
+  // The removed tets' faces leave the surface. One that was interior may now be laid bare on an
+  // untouched tet: a candidate.
   for (TetId t : log.removed) {
     auto& tv = tets_[t.value];
     if (tv[0] == kDead) {
@@ -182,8 +173,11 @@ std::uint32_t RenderedSurface::apply(const TetMesh& mesh, const ChangeLog& log) 
     }
     for (const auto& f : kFaceVerts) {
       const Key key = sorted_key(tv[f[0]], tv[f[1]], tv[f[2]]);
-      if (const std::uint32_t slot = find(key); slot != kEmpty) erase(slot);
-      candidates_.push_back(key);
+      if (const std::uint32_t slot = find(key); slot != kEmpty) {
+        erase(slot);  // it was on the surface: nothing lies beyond it
+      } else {
+        candidates_.push_back(key);
+      }
     }
     tv = {kDead, kDead, kDead, kDead};
   }
@@ -193,15 +187,38 @@ std::uint32_t RenderedSurface::apply(const TetMesh& mesh, const ChangeLog& log) 
     tets_[c.tet.value] = {v[0].value, v[1].value, v[2].value, v[3].value};
     for (int face = 0; face < 4; ++face) {
       const auto& f = kFaceVerts[face];
-      const std::uint32_t slot = find(sorted_key(v[f[0]].value, v[f[1]].value, v[f[2]].value));
-      if (slot != kEmpty) erase(slot);
+      const Key key = sorted_key(v[f[0]].value, v[f[1]].value, v[f[2]].value);
+      if (const std::uint32_t slot = find(key); slot != kEmpty) erase(slot);
       if (mesh.is_boundary_face(c.tet, face)) insert(mesh, c.tet, face);
+      created_faces_.push_back(key);
     }
   }
-  for (const Key& key : candidates_) {
-    if (find(key) != kEmpty) continue;
-    const FaceRef f = live_face(mesh, key);
-    if (f.valid() && mesh.is_boundary_face(f.tet, f.face)) insert(mesh, f.tet, f.face);
+  // A candidate twice is a face between two removed tets; one a created tet has is settled. The
+  // rest face an untouched tet, found in the shell of their smallest vertex (sorted, so that
+  // one shell serves all the faces around that vertex).
+  std::sort(candidates_.begin(), candidates_.end());
+  std::sort(created_faces_.begin(), created_faces_.end());
+  VertId shell_of = kNoVert;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const Key& key = candidates_[i];
+    if (i + 1 < candidates_.size() && candidates_[i + 1] == key) {
+      ++i;
+      continue;
+    }
+    if (std::binary_search(created_faces_.begin(), created_faces_.end(), key)) continue;
+    const VertId a{key[0]}, b{key[1]}, c{key[2]};
+    if (!mesh.is_live(a) || !mesh.is_live(b) || !mesh.is_live(c)) continue;
+    if (shell_of != a) {
+      mesh.vertex_shell(a, shell_);
+      shell_of = a;
+    }
+    for (TetId t : shell_) {
+      const int lb = mesh.local_index(t, b), lc = mesh.local_index(t, c);
+      if (lb < 0 || lc < 0) continue;
+      const int face = 6 - mesh.local_index(t, a) - lb - lc;
+      if (mesh.is_boundary_face(t, face)) insert(mesh, t, face);
+      break;
+    }
   }
   return unknown;
 }

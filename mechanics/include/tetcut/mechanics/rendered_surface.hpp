@@ -63,9 +63,6 @@ class RenderedSurface {
   void insert(const TetMesh& mesh, TetId t, int face);
   void erase(std::uint32_t slot);
   void account(const Triangle& t, double sign);
-  // The face (a, b, c) as a face of a live tet of the mesh now: (tet, local face), invalid if
-  // no tet has it.
-  FaceRef live_face(const TetMesh& mesh, const Key& key);
 
   std::vector<std::array<std::uint32_t, 4>> tets_;  // the model's copy: removed tets lose theirs
   std::vector<Vec3> normal_sum_;
@@ -75,7 +72,7 @@ class RenderedSurface {
   std::vector<std::uint32_t> free_triangles_;
   std::vector<std::uint32_t> index_;  // open addressing by sorted key -> slot
   std::uint32_t live_triangles_ = 0;
-  std::vector<Key> candidates_;
+  std::vector<Key> candidates_, created_faces_;
   std::vector<TetId> shell_;
 };
 

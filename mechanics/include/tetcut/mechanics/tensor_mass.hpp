@@ -54,7 +54,7 @@ namespace tetcut::mechanics {
 using Tensor3 = std::array<double, 9>;  // 3x3, row-major
 
 struct ModelParams {
-  std::vector<Material> materials{Material{}};  // by label; a label past the end takes the last
+  std::vector<Material> materials = std::vector<Material>(1);  // by label (default: one, liver-like); a label past the end takes the last
   double length_unit = 1e-3;                    // metres per mesh unit
   double damping = 0.0;                         // gamma, 1/s (mass-proportional)
   Vec3 gravity{};                               // m / s2
