@@ -173,7 +173,7 @@ TEST(TensorMass, ACantileverSettlesUnderGravityWithoutBlowingUp) {
   TensorMassModel model(mesh, p);
   EXPECT_GT(model.fix_where(mesh, [](const Vec3& x) { return x.x < 1e-9; }), 0u);
   const double dt = 0.9 * model.stable_time_step(mesh).dt;
-  for (int i = 0; i < 20000; ++i) model.step(dt);
+  for (int i = 0; i < 3000; ++i) model.step(dt);  // seconds of simulated time: many damping times
   double tip = 0;
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
     const Vec3& u = model.displacement(VertId{v});
