@@ -189,6 +189,25 @@ TEST(TensorMass, ACantileverSettlesUnderGravityWithoutBlowingUp) {
   EXPECT_LT(e.total(), 0.0) << "gravity's work exceeds the stored energy at rest";
 }
 
+TEST(TensorMass, AVertexACutCreatesIsFixedWhenAllItsOriginsAre) {
+  TetMesh mesh = box_mesh(4, {40, 40, 40});
+  TensorMassModel model(mesh, ModelParams{});
+  ASSERT_GT(model.fix_where(mesh, [](const Vec3& x) { return x.x <= 20; }), 0u);
+  Cutter cutter(mesh, {.tool_diameter = 5});  // D_ref 7.5 against edges of 10: it refines
+  ChangeLog log;
+  ASSERT_TRUE(cutter.cut({20, 20, 40}, &log).ok);  // on the top face, across the fixed half's edge
+  model.apply(mesh, log);
+  std::uint32_t fixed = 0, free = 0;
+  for (const CreatedVertex& v : log.vertices) {
+    bool all = true;
+    for (std::uint8_t i = 0; i < v.count; ++i) all = all && mesh.position(v.from[i]).x <= 20;
+    EXPECT_EQ(model.is_fixed(v.vertex), all) << "vertex " << v.vertex.value;
+    (all ? fixed : free) += 1;
+  }
+  EXPECT_GT(fixed, 0u);
+  EXPECT_GT(free, 0u);
+}
+
 TEST(TensorMass, TheToolMeetsTheDeformedTissueAndCutsItsRestShape) {
   // The tool is where the simulator draws it, among the deformed tissue; the engine cuts the
   // rest mesh. rest_point() maps the tool's centre through the deformed tet that holds it.
