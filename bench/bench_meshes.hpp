@@ -50,4 +50,22 @@ inline Bounds bounds(const TetMesh& mesh) {
   return b;
 }
 
+// 64 disjoint copies of the bundled liver side by side (~1M tets), copy 0 the original: a sweep
+// over copy 0 does exactly the work it does on the lone liver, and only the size of the mesh
+// around it differs (cut_bench.cpp keeps its own copy of this for BM_CutScalingSameWork).
+inline const TetMesh& replicated_corpus_liver() {
+  static const TetMesh mesh = [] {
+    const RawMesh one = corpus_mesh("liver.msh").to_raw();
+    RawMesh all;
+    for (int copy = 0; copy < 64; ++copy) {
+      const Vec3 shift{250.0 * (copy % 8), 250.0 * (copy / 8), 0.0};
+      const auto base = static_cast<std::uint32_t>(all.positions.size());
+      for (const Vec3& p : one.positions) all.positions.push_back(p + shift);
+      for (const auto& t : one.tets) all.tets.push_back({t[0] + base, t[1] + base, t[2] + base, t[3] + base});
+    }
+    return std::move(*build_mesh(all).mesh);
+  }();
+  return mesh;
+}
+
 }  // namespace tetcut::bench

@@ -52,6 +52,11 @@ const std::vector<CommandCase>& cases() {
       {"stats", {"--corpus", "--mesh", "--check", "--json", "--html", "--pictures"}, {}, ""},
       {"replay", {"INPUT", "--target", "--scenario-out"}, {}, ""},
       {"minimize", {"SCENARIO", "-o", "--max-runs"}, {"BOX", "-o", "OUT", "--max-runs", "inf"}, "--max-runs"},
+      {"simulate",
+       {"INPUT", "--sweep", "--diameter", "--strategy", "--fix", "--gravity", "--young", "--poisson", "--density",
+        "--unit", "--damping", "--dt", "--steps", "--settle", "--frames", "--frame-every", "--report"},
+       {"BOX", "--diameter", "1e3x", "--sweep", "0,0,0", "1,1,1", "0.5"},
+       "--diameter"},
   };
   return kCases;
 }

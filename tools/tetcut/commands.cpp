@@ -18,6 +18,7 @@ constexpr std::array kCommands = {
     CommandInfo{"remove", "removes tetrahedra without breaking the manifold (paper 3.3-3.7)", &cmd_remove},
     CommandInfo{"cut", "a cautery sweep, one cut per step", &cmd_cut},
     CommandInfo{"run", "runs a scenario file", &cmd_run},
+    CommandInfo{"simulate", "elastic tissue stepped while the cautery cuts it, .vtu frames", &cmd_simulate},
     CommandInfo{"stats", "the paper's Tables 1 and 2, a strategy comparison and an HTML report", &cmd_stats},
     CommandInfo{"replay", "decodes a fuzz input into a scenario and runs it", &cmd_replay},
     CommandInfo{"minimize", "shrinks a failing scenario while it still fails", &cmd_minimize},

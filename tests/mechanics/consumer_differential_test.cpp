@@ -1,0 +1,158 @@
+// The consumers against a rebuild after every cut (issue 30, differential.hpp): every bundled
+// mesh and every removal strategy, a lancet sweep, the invariant checker after each cut too;
+// then the planted bugs a consumer could be fed (a corrupted copy of a cut's log) and the proof
+// that the differential check catches each.
+#include <gtest/gtest.h>
+
+#include <tuple>
+
+#include "mechanics_test_support.hpp"
+#include "tetcut/cut.hpp"
+#include "tetcut/invariants/check.hpp"
+#include "tetcut/mechanics/differential.hpp"
+
+namespace tetcut {
+namespace {
+
+using mechanics::DifferentialCheck;
+
+// Release: 6 cuts per sweep; under the sanitizers 3 (each cut's check is O(#T) and the brute
+// location of its new tets O(#created x #T): the ASan build runs the same code ten times slower).
+int sweep_cuts() { return testing::sanitized_build() ? 3 : 6; }
+
+class ConsumerSweep : public ::testing::TestWithParam<std::tuple<std::string, RemovalStrategy>> {};
+
+TEST_P(ConsumerSweep, IncrementalConsumersEqualARebuildAfterEveryCut) {
+  const auto& [file, strategy] = GetParam();
+  TetMesh mesh = testing::load_bundled(file);
+  const testing::Bounds box = testing::bounds_of(mesh);
+  // Tools of 0.6 and 1.5 mean edges in turn: the small one refines (D_ref = 0.9 mean edges),
+  // the large one removes whole tets.
+  const double edge = mesh.mean_edge_length();
+  Cutter cutter(mesh, {.tool_diameter = edge, .strategy = strategy});
+  int index = 0;
+  DifferentialCheck check(mesh, testing::four_materials(), testing::hashed_labels(mesh));
+  invariants::LocalChecker local(mesh.raw_view());
+  std::uint32_t removed = 0, created = 0;
+  for (const Vec3& centre : testing::lancet_sweep(box, sweep_cuts())) {
+    check.before(mesh);
+    CutParams params = cutter.params();
+    params.tool_diameter = (index++ % 2 == 0 ? 0.6 : 1.5) * edge;
+    ASSERT_FALSE(cutter.set_params(params));
+    ChangeLog log;
+    const CutReport r = cutter.cut(centre, &log);
+    removed += static_cast<std::uint32_t>(log.removed.size());
+    created += static_cast<std::uint32_t>(log.created.size());
+    const invariants::CheckReport l = local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created());
+    ASSERT_TRUE(l.ok()) << invariants::id_string(l.violations.front().id) << ": " << l.violations.front().detail;
+    const auto problem = check.after(mesh, log);
+    ASSERT_FALSE(problem) << *problem << " (cut at " << centre.x << "," << centre.y << "," << centre.z
+                          << (r.ok ? "" : ", rolled back") << ")";
+  }
+  EXPECT_GT(removed, 0u);
+  EXPECT_GT(created, 0u) << "no cut refined anything: the sweep tests only removal";
+  std::printf("worst relative difference from the rebuild: %.3g (tolerance %.0e)\n", check.worst_relative_error(),
+              mechanics::kDifferentialTolerance);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Bundled, ConsumerSweep,
+    ::testing::Combine(::testing::Values("cylinder.msh", "sheet.msh", "liver-coarse.msh", "liver-local.msh",
+                                         "liver-refined.msh", "liver.msh"),
+                       ::testing::Values(RemovalStrategy::kBasic, RemovalStrategy::kNeighbours,
+                                         RemovalStrategy::kCombined, RemovalStrategy::kWide)),
+    [](const auto& info) {
+      std::string n = std::get<0>(info.param);
+      n = n.substr(0, n.find('.'));
+      for (char& c : n)
+        if (c == '-') c = '_';
+      return n + "_" + to_string(std::get<1>(info.param));
+    });
+
+// ---- planted bugs: a corrupted copy of the log, applied to one check; the honest log to a twin.
+
+struct PlantedRun {
+  std::optional<std::string> honest, planted;
+  bool planted_something = false;
+};
+
+// Cuts along a sweep of liver-coarse; at the first cut where `corrupt` finds something to
+// corrupt, the twin checks diverge: returns what each said.
+template <class Corrupt>
+PlantedRun run_planted(Corrupt corrupt) {
+  TetMesh mesh = testing::load_bundled("liver-coarse.msh");
+  const testing::Bounds box = testing::bounds_of(mesh);
+  Cutter cutter(mesh, {.tool_diameter = box.diagonal() / 25});
+  DifferentialCheck honest(mesh, testing::four_materials(), testing::hashed_labels(mesh));
+  DifferentialCheck planted(mesh, testing::four_materials(), testing::hashed_labels(mesh));
+  PlantedRun run;
+  for (const Vec3& centre : testing::lancet_sweep(box, 8)) {
+    honest.before(mesh);
+    planted.before(mesh);
+    const std::uint32_t capacity_before = mesh.tet_capacity();
+    ChangeLog log;
+    cutter.cut(centre, &log);
+    ChangeLog bad = log;
+    run.planted_something = corrupt(mesh, capacity_before, bad);
+    run.honest = honest.after(mesh, log);
+    run.planted = planted.after(mesh, bad);
+    if (run.planted_something || run.honest) break;
+  }
+  return run;
+}
+
+TEST(PlantedLogBug, ADroppedRemovedTetFailsTheDifferentialCheck) {
+  const PlantedRun run = run_planted([](const TetMesh&, std::uint32_t, ChangeLog& log) {
+    if (log.removed.empty()) return false;
+    log.removed.erase(log.removed.begin() + static_cast<std::ptrdiff_t>(log.removed.size() / 2));
+    return true;
+  });
+  ASSERT_TRUE(run.planted_something);
+  EXPECT_FALSE(run.honest) << *run.honest;
+  ASSERT_TRUE(run.planted) << "the check passed a log that forgot a removed tet";
+  // Caught by the comparison with the rebuild (the tet is still in the model), not only by the
+  // log's own consistency.
+  EXPECT_NE(run.planted->find("in the incremental model only"), std::string::npos) << *run.planted;
+}
+
+TEST(PlantedLogBug, AnIntermediateParentFailsTheDifferentialCheck) {
+  const PlantedRun run = run_planted([](const TetMesh& mesh, std::uint32_t capacity_before, ChangeLog& log) {
+    // Ids the cut appended and that are dead at its end: tets it made and removed or split again
+    // (a transaction reuses no id, change_log.hpp), i.e. the intermediate tets.
+    std::vector<TetId> intermediate;
+    for (std::uint32_t t = capacity_before; t < mesh.tet_capacity(); ++t)
+      if (!mesh.is_live(TetId{t})) intermediate.push_back(TetId{t});
+    if (intermediate.empty()) return false;
+    std::size_t k = 0, named = 0;
+    for (CreatedTet& c : log.created) {
+      if (c.parents_count != 1) continue;
+      c.parent = log.parents[c.parents_begin] = intermediate[k++ % intermediate.size()];
+      ++named;
+    }
+    return named > 0;
+  });
+  ASSERT_TRUE(run.planted_something) << "no cut of the sweep made an intermediate tet";
+  EXPECT_FALSE(run.honest) << *run.honest;
+  ASSERT_TRUE(run.planted) << "the check passed a log that names intermediate parents";
+  // Caught by the comparison: the children took a label from a tet the model never had.
+  EXPECT_NE(run.planted->find("label"), std::string::npos) << *run.planted;
+}
+
+TEST(PlantedLogBug, AWrongVertexOriginFailsTheDifferentialCheck) {
+  const PlantedRun run = run_planted([](const TetMesh&, std::uint32_t, ChangeLog& log) {
+    for (CreatedVertex& v : log.vertices) {
+      if (!v.on_edge()) continue;
+      v.weight[0] += 0.25;  // a point of the same edge, but not where the vertex is
+      v.weight[1] -= 0.25;
+      return true;
+    }
+    return false;
+  });
+  ASSERT_TRUE(run.planted_something);
+  EXPECT_FALSE(run.honest) << *run.honest;
+  ASSERT_TRUE(run.planted) << "the check passed a vertex interpolated from the wrong weights";
+  EXPECT_NE(run.planted->find("interpolation"), std::string::npos) << *run.planted;
+}
+
+}  // namespace
+}  // namespace tetcut
