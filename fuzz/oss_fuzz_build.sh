@@ -22,7 +22,7 @@ src=$(cd "$here/.." && pwd)
 CXXFLAGS=${CXXFLAGS:-}
 work=${WORK:-$(mktemp -d)}
 build=$work/tetcut-fuzz-build
-default_targets="msh22 msh41 msh10 vtu vtk medit tetgen off stl obj mixed_ops checker_differential removal_sequence cut_sequence"
+default_targets="msh22 msh41 msh10 vtu vtk medit tetgen off stl obj mixed_ops checker_differential removal_sequence cut_sequence consumer_differential"
 read -r -a targets <<<"${TETCUT_FUZZ_TARGETS:-$default_targets}"
 
 # Limits per kind of input: a file, or an operation sequence (fuzz/operations/).
