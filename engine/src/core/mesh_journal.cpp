@@ -242,20 +242,26 @@ void TetMesh::ancestors_at_start(TetId t, std::vector<TetId>& out) {
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
 }
 
-// Barycentric coordinates of v's position in a tet live at begin_transaction() that contains it:
-// among the ancestors of a tet around v (every tet lies in its ancestors, move_vertex() sees to it
-// for the tets it reshapes; so they cover v), the one where v is deepest inside. Coordinates within rounding of 0 are dropped. For a vertex move_vertex() moved, or one
-// whose edge joins vertices of different old tets (a split after a flip).
+// Barycentric coordinates of v's position in a tet live at begin_transaction() that contains it,
+// for a vertex move_vertex() moved, or one whose edge joins vertices of different old tets (a
+// split after a flip). First among the ancestors of a tet around v: every tet lies in its
+// ancestors while v stays inside the region the transaction started with. Smoothing may move a
+// vertex of the cut's own surface off its faces' planes (improve/smoothing.hpp, by at most 5 % of
+// an edge), into the cavity: there v lies in a tet the cut removed, an ancestor of no tet around
+// v. So when v is outside every ancestor, the search widens to every tet live at the start that
+// the transaction changed (the journal's first entries: O(journal), on this rare path only).
+// Among the tets searched, the one where v is deepest inside; coordinates within rounding of 0
+// are dropped (and a vertex outside every one of them, were that to happen, is clamped onto the
+// nearest).
 void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
-  locate_scratch_.clear();
-  ancestors_at_start(vert_tet_[v.value], locate_scratch_);
   const Vec3& p = positions_[v.value];
   double best_min = -std::numeric_limits<double>::infinity();
-  for (TetId root : locate_scratch_) {
+  auto consider = [&](TetId root) {
     const TetVerts c = tet_at_start(root);
+    if (c[0].value == kDeadTetMarker) return;
     const Vec3 x[4] = {positions_[c[0].value], positions_[c[1].value], positions_[c[2].value], positions_[c[3].value]};
     const double whole = signed_volume6(x[0], x[1], x[2], x[3]);
-    if (!(whole > 0.0)) continue;
+    if (!(whole > 0.0)) return;
     std::array<double, 4> w{};
     for (int i = 0; i < 4; ++i) {
       Vec3 y[4] = {x[0], x[1], x[2], x[3]};
@@ -263,7 +269,7 @@ void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
       w[i] = signed_volume6(y[0], y[1], y[2], y[3]) / whole;
     }
     const double lowest = std::min(std::min(w[0], w[1]), std::min(w[2], w[3]));
-    if (lowest <= best_min) continue;
+    if (lowest <= best_min) return;
     best_min = lowest;
     double sum = 0.0;
     for (double& wi : w) sum += wi = std::max(wi, 0.0);
@@ -273,6 +279,14 @@ void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
       out.from[out.count] = c[i];
       out.weight[out.count++] = w[i] / sum;
     }
+  };
+  locate_scratch_.clear();
+  ancestors_at_start(vert_tet_[v.value], locate_scratch_);
+  for (TetId root : locate_scratch_) consider(root);
+  // Outside by more than rounding (barycentric coordinates are relative to the tet's size).
+  if (best_min < -1e-12) {
+    for (const JournalEntry& e : journal_.entries)
+      if (e.array == Array::kTetVerts && e.index < journal_.start.tets) consider(TetId{e.index});
   }
   assert(out.count > 0 && "a vertex made in the transaction lies in no tet that was there before it");
 }
