@@ -40,8 +40,9 @@ LIBRARIES = ["libc6", "libstdc++6", "libtet1.5-dev", "libcgal-dev", "zlib1g-dev"
 
 class Inputs:
     def __init__(self, bench, confirmations, budgets, stats, build_dir, how, peer_on=None, peer_off=None,
-                 sweeps=None):
+                 sweeps=None, mechanics=None):
         self.bench, self.confirmations, self.budgets, self.stats = bench, confirmations, budgets, stats
+        self.mechanics = mechanics  # bench/mechanics_bench's Google Benchmark JSON
         self.build_dir, self.how = build_dir, how
         self.peer_on, self.peer_off = peer_on, peer_off  # tetcut_quality_peer --json, pass on and off
         self.sweeps = sweeps  # tetcut_quality_sweeps --json
@@ -449,8 +450,40 @@ def peers(inputs):
             "`bench/budgets.json` gates the p50 ratios of the gated sweep.", ""] + peers_table.tables(found, peers_table.md_table)
 
 
+def mechanics(inputs):
+    runs = {b["name"]: b for b in (inputs.mechanics or {}).get("benchmarks", []) if b.get("run_type") != "aggregate"}
+    frame = runs.get("BM_HapticFrame/iterations:1")
+    scaling = runs.get("BM_UpdateScalingSameWork/iterations:1")
+    if not frame or not scaling:
+        return None
+    body = ["## The change log's consumers: elasticity and the rendered surface", "",
+            "`bench/mechanics_bench.cpp` (issue 30, [mechanics.md](mechanics.md)): `tetcut::mechanics`' tensor-mass "
+            "model and rendered surface, updated from each cut's change log. Not gated: the haptic frame's p99 "
+            "is a wall time that the machine's load moves.", "",
+            "| figure | goal | measured |", "|---|---|---|",
+            f"| haptic frame on the 16k liver (cut + model and surface update + one step), {frame['frames']:.0f} frames "
+            f"| p99 <= 1,000 us | p50 {frame['p50_us']:.0f} us, p99 {frame['p99_us']:.0f} us, max {frame['max_us']:.0f} us "
+            f"(thread CPU p99 {frame['cpu_p99_us']:.0f} us) |",
+            f"| model + surface update per cut | - | p50 {frame['update_p50_us']:.1f} us, p99 {frame['update_p99_us']:.0f} us; "
+            f"{frame['consumer_allocations']:.0f} allocations |",
+            f"| update, same work, 1M / 16k liver | <= {scaling['goal_ratio']:.1f} | p50 {scaling['p50_ratio_1M_over_16k']:.2f}, "
+            f"p99 {scaling['p99_ratio_1M_over_16k']:.2f} |"]
+    strategies = ["basic", "neighbours", "combined", "wide"]
+    for i, name in enumerate(strategies):
+        r = runs.get(f"BM_StableStepAfterResection/{i}/iterations:1")
+        if r:
+            body.append(f"| stable time step after the bundled liver resection, {name} | - | "
+                        f"{r['stable_dt_after_us']:.1f} us against {r['stable_dt_before_us']:.1f} us before "
+                        f"({r['ratio_after_over_before']:.2f}) |")
+    step, sparse = runs.get("BM_ExplicitStep"), runs.get("BM_ExplicitStepSparse")
+    if step and sparse:
+        body.append(f"| one explicit step, 16k liver: tensor loop / Eigen sparse product | - | "
+                    f"{step['real_time']:.0f} us / {sparse['real_time']:.0f} us |")
+    return body
+
+
 SECTIONS = [machine, budget_gate, cut_sweeps, removal_requests, instructions, paper_table1, paper_table2,
-            paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, peers, resection]
+            paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, peers, mechanics, resection]
 
 
 def page(inputs):
@@ -486,6 +519,7 @@ def main(argv):
     parser.add_argument("--peer", help="tetcut_quality_peer --json output (improvement pass on)")
     parser.add_argument("--peer-without-improvement", help="the same with --improve off")
     parser.add_argument("--sweeps", help="tetcut_quality_sweeps --json output")
+    parser.add_argument("--mechanics", help="bench/mechanics_bench's JSON output")
     parser.add_argument("--build-dir", help="the build the figures came from")
     parser.add_argument("--how", help="how the benchmarks were run")
     parser.add_argument("--out", help="the page (default: stdout)")
@@ -494,7 +528,7 @@ def main(argv):
                     load(args.budgets, "budgets"),
                     load(args.stats, "tetcut stats output"), args.build_dir, args.how,
                     load(args.peer, "quality peer output"), load(args.peer_without_improvement, "quality peer output"),
-                    load(args.sweeps, "quality sweeps output"))
+                    load(args.sweeps, "quality sweeps output"), load(args.mechanics, "mechanics benchmark output"))
     text = page(inputs)
     if not args.out:
         sys.stdout.write(text)
