@@ -8,8 +8,9 @@
 //                     <= 10), then that path extended by each component it splits a shell into;
 //                     for an edge singularity the tets left of T around the edge, right of T,
 //                     then all of them. The smallest removable candidate wins. May fail.
-//   basic (3.4)       split every edge at the singular vertex (or touching the singular edge),
-//                     then remove the small tets around it together with T's children.
+//   basic (3.4)       at every singular vertex and edge of T, split every edge at it, then
+//                     remove the small tets there together with T's children; as written, with
+//                     no repair of ours (the fallback below is counted apart).
 //   combined (3.7)    neighbours; if that fails, the optimized local refinement: split only the
 //                     edges along the shortest path (vertex) or of one side (edge) and remove
 //                     the small tets there with T's children. The default.
