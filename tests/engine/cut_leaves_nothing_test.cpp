@@ -234,10 +234,17 @@ TEST(CutLeavesNothing, PiecesOfKeptTetsInTheToolAreRemovedOrCounted) {
       }
     }
     EXPECT_TRUE(mesh_is_valid(mesh));
+    std::printf("[leftovers] %s: %d pieces of kept tets requested, %d left in the tool\n", to_string(strategy), pieces,
+                left);
+    if (strategy == RemovalStrategy::kCombined) {
+      // The reported case: 3.7 split unselected neighbours here, and their one request each
+      // emptied the tool. (Basic's pieces, split again by their own 3.4, are counted instead.)
+      EXPECT_GT(pieces, 0) << "no removal-time split left a piece of a kept tet in the tool";
+      EXPECT_EQ(left, 0);
+    }
+    pieces = left = 0;
   }
   EXPECT_GT(cuts, 50);
-  EXPECT_GT(pieces, 0) << "no removal-time split left a piece of a kept tet in the tool";
-  std::printf("[leftovers] %d pieces of kept tets requested over %d cuts, %d left in the tool\n", pieces, cuts, left);
 }
 
 // The cuts the issue reported: one basic cut into the bundled liver left 15 (and 8) tets in the
