@@ -24,6 +24,7 @@ Json removal_counts(const RemovalReport& r) {
               {"resolved_by_fallback", r.resolved_by_fallback},
               {"selected_in_sets", r.selected_in_sets},
               {"attempts_undone", r.attempts_undone},
+              {"fallback_refused", r.fallback_refused},
               {"unresolved", r.unresolved},
               {"tets_removed", r.tets_removed},
               {"tets_created", r.tets_created}};
@@ -126,6 +127,7 @@ Json strategy_row(const stats::StrategyRow& r, const std::string& mesh) {
               {"tets_removed", r.tets_removed},
               {"removed_per_request", r.removed_per_request},
               {"unresolved", r.unresolved},
+              {"fallback_refused", r.fallback_refused},
               {"ok", r.ok}};
   if (!r.ok) row["error"] = r.error;
   row["tets_after"] = r.tets_after;  // at the stop when !ok

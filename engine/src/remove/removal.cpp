@@ -217,6 +217,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
     if (const std::uint32_t n = w.fallback.remove(ctx, t)) {
       result.outcome = RemovalOutcome::kFallback;
       result.tets_removed = n;
+    } else if (!ctx.over_budget) {
+      ++report_.fallback_refused;
     }
   }
 

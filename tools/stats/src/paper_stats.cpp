@@ -60,6 +60,7 @@ StrategyRow strategy_row(const std::string& name, const CauteryRun& run) {
   }
   row.removed_per_request = average(row.tets_removed, row.requests);
   row.unresolved = r.unresolved;
+  row.fallback_refused = r.fallback_refused;
   row.tets_after = run.result.tets;
   row.created = run.result.created_quality;
   if (row.created.tets > 0) row.worst_created_min_dihedral_deg = row.created.min_dihedral_deg;

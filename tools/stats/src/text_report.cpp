@@ -157,13 +157,14 @@ std::string text_report(const StatsReport& report) {
   out += "\nStrategies on the " + report.comparison_mesh +
          " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";
   TextTable s;
-  s.row({"strategy", "cuts", "requests", "tets created", "tets removed", "removed/request", "unresolved", "tets after",
+  s.row({"strategy", "cuts", "requests", "tets created", "tets removed", "removed/request", "unresolved",
+         "fallback refused", "tets after",
          "worst created", "min dihedral", "no pass: worst", "min dihedral", "worst quality", "mean quality", "p50 us",
          "p99 us"});
   for (const StrategyRow& r : report.strategies)
     s.row({r.name, std::to_string(r.cuts), std::to_string(r.requests), std::to_string(r.tets_created),
            std::to_string(r.tets_removed), fixed(r.removed_per_request, 2), std::to_string(r.unresolved),
-           std::to_string(r.tets_after) + (r.ok ? "" : " *"), significant(r.worst_created_radius_ratio, 3),
+           std::to_string(r.fallback_refused), std::to_string(r.tets_after) + (r.ok ? "" : " *"), significant(r.worst_created_radius_ratio, 3),
            fixed(r.worst_created_min_dihedral_deg, 1), created_worst(r.created_without_improvement),
            created_dihedral(r.created_without_improvement), significant(r.worst_radius_ratio, 3),
            fixed(r.mean_radius_ratio, 3), fixed(r.p50_us, 1), fixed(r.p99_us, 1)});

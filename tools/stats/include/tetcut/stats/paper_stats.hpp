@@ -61,6 +61,7 @@ struct StrategyRow {
   std::uint64_t tets_removed = 0;
   double removed_per_request = 0;       // tets_removed / requests
   std::uint64_t unresolved = 0;         // distinct tets left in place at the end
+  std::uint64_t fallback_refused = 0;   // fallbacks the splitter refused (RemovalReport)
   std::uint32_t tets_after = 0;         // these three: at the stop when !ok
   double worst_radius_ratio = 0, mean_radius_ratio = 0;  // of the mesh after the scenario
   double worst_created_radius_ratio = 1;                 // of the tets the cuts created
