@@ -115,8 +115,6 @@ TEST(NormalSurfaceFallback, RemovesEveryTetOfTheFuzzMeshes) {
 // configuration of docs/removal-proof.md), and the construction then removes T all the same.
 TEST(NormalSurfaceFallback, TakesOverWherePaper34sSetIsNotRemovable) {
   int refused = 0, tried = 0;
-  detail::WideSearchLimits no_repair;
-  no_repair.max_rounds = 0;  // the paper's set as it stands
   for (const char* name : {"cylinder-small.msh", "sheet-small.msh", "liver-small.msh"}) {
     ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/fuzz/meshes/" + name);
     ASSERT_TRUE(read.mesh.has_value());
@@ -132,7 +130,7 @@ TEST(NormalSurfaceFallback, TakesOverWherePaper34sSetIsNotRemovable) {
       detail::RefinementStrategies paper;
       mesh.begin_transaction();
       detail::RemovalContext ctx = request.context(mesh);
-      const std::uint32_t n = paper.basic(ctx, t, first, no_repair);
+      const std::uint32_t n = paper.basic(ctx, t);
       if (n > 0) {
         mesh.commit();
         continue;

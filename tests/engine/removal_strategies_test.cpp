@@ -3,6 +3,9 @@
 // bookkeeping a simulator relies on (change log, atomicity, statistics).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+
 #include "removal_test_support.hpp"
 #include "remove/neighbour_search.hpp"
 #include "tetcut/canonical_hash.hpp"
@@ -55,8 +58,11 @@ TEST_P(ASingularity, IsResolvedByEachStrategy) {
     RemovalResult result;
     ASSERT_TRUE(remove_checked(remover, mesh, t, local, &result));
     EXPECT_EQ(result.first.kind, kind);
-    EXPECT_EQ(result.outcome, strategy == RemovalStrategy::kBasic ? RemovalOutcome::kRefinement
-                                                                   : RemovalOutcome::kNeighbours);
+    // Basic at the edge: T's edges from the singular edge's ends to its other vertices are
+    // cube edges on the surface, the configuration where 3.4's set is not removable
+    // (docs/removal-proof.md); the fallback removes T instead.
+    const RemovalOutcome basic = kind == SingularityKind::kVertex ? RemovalOutcome::kRefinement : RemovalOutcome::kFallback;
+    EXPECT_EQ(result.outcome, strategy == RemovalStrategy::kBasic ? basic : RemovalOutcome::kNeighbours);
     EXPECT_TRUE(mesh_is_valid(mesh));
     expect_region_gone(mesh, centre, before, vol);
     const auto& report = remover.report();
@@ -257,6 +263,125 @@ TEST(RemovalStrategies, TheNeighbourSearchKeepsThePathThat37RefinesAlong) {
   }
   EXPECT_GT(with_path, 20);
   EXPECT_GT(edges, 0);
+}
+
+// The live tets that contain every vertex of `verts` (scanned from the raw tets, not the shells).
+std::uint32_t live_tets_with(const TetMesh& mesh, std::initializer_list<VertId> verts) {
+  std::uint32_t n = 0;
+  for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
+    if (!mesh.is_live(TetId{i})) continue;
+    const auto tv = mesh.tet(TetId{i});
+    n += std::all_of(verts.begin(), verts.end(), [&](VertId v) { return std::find(tv.begin(), tv.end(), v) != tv.end(); })
+             ? 1u
+             : 0u;
+  }
+  return n;
+}
+
+// Paper 3.4 as written: "if a topological singularity occurs at a vertex (resp. edge) then all
+// edges adjacent to that vertex (resp. edge) are split and we then remove all refined tetrahedra
+// adjacent to that vertex (resp. edge)". An interior tet of a box with several vertices on the
+// surface has a singularity at each (at a vertex, or at an edge of T on the surface): 3.4 must
+// resolve every one of them, so when its set goes, no tet is left at any singular vertex (its
+// whole star went) nor on any singular edge. Where the set is not removable (docs/removal-
+// proof.md) the fallback removes T instead, counted apart.
+TEST(RemovalStrategies, BasicRefinesAtEverySingularityOfT) {
+  const TetMesh original = box(3, 3, 3);
+  SetRemovalWorkspace ws;
+  int several = 0, refined = 0, fell_back = 0;
+  for (std::uint32_t i = 0; i < original.tet_capacity(); ++i) {
+    const TetId t{i};
+    if (!original.is_live(t) || original.boundary_face_count(t) != 0) continue;
+    std::vector<VertId> vertices;
+    std::vector<Edge> edges;
+    const TetId one[1] = {t};
+    for (VertId x : original.tet(t)) {
+      const Removability at_x = ws.check_at(original, one, x);
+      if (at_x.kind == SingularityKind::kVertex) vertices.push_back(x);
+      if (at_x.kind == SingularityKind::kEdge) edges.push_back(at_x.edge);
+    }
+    if (vertices.size() + edges.size() < 2) continue;
+    ++several;
+    SCOPED_TRACE("tet " + std::to_string(i));
+    TetMesh mesh = original;
+    invariants::LocalChecker local(mesh.raw_view());
+    Remover remover({.strategy = RemovalStrategy::kBasic});
+    RemovalResult result;
+    ASSERT_TRUE(remove_checked(remover, mesh, t, local, &result));
+    EXPECT_FALSE(mesh.is_live(t));
+    if (result.outcome == RemovalOutcome::kFallback) {
+      ++fell_back;
+      continue;
+    }
+    ASSERT_EQ(result.outcome, RemovalOutcome::kRefinement);
+    ++refined;
+    for (VertId v : vertices) EXPECT_EQ(live_tets_with(mesh, {v}), 0u) << "singular vertex " << v.value;
+    for (const Edge& e : edges) EXPECT_EQ(live_tets_with(mesh, {e.a, e.b}), 0u) << "singular edge " << e.a.value << "-" << e.b.value;
+    EXPECT_TRUE(mesh_is_valid(mesh));
+  }
+  EXPECT_GT(several, 4);
+  EXPECT_GT(refined, 0);
+  std::printf("[basic] %d interior tets with several singularities: %d by 3.4's set, %d by the fallback\n", several,
+              refined, fell_back);
+}
+
+// A cone over an L-shaped region of an n x n grid (the squares with i >= n/2 and j >= n/2 left
+// out): the apex's shell is every tet, its border the cone's sides, and the reflex corner of the
+// L is a border vertex that a path of tets can touch without ending there.
+RawMesh cone_over_l(std::uint32_t n) {
+  RawMesh raw = cone_over_grid(n);
+  std::vector<std::array<std::uint32_t, 4>> kept;
+  for (std::size_t k = 0; k < raw.tets.size(); ++k) {
+    const std::uint32_t square = static_cast<std::uint32_t>(k / 2), i = square % n, j = square / n;
+    if (i < n / 2 || j < n / 2) kept.push_back(raw.tets[k]);
+  }
+  raw.tets = kept;
+  return raw;
+}
+
+// Paper 3.5 as written: the breadth-first search does not stop at the first path. Where the
+// shortest path from T to the border of the singular vertex's shell is not removable (and no
+// extension of it is), a further path within depth 10 is tested, and the smallest removable set
+// found is kept. Checked on every singular tet of hand-made cones: whatever the search returns is
+// removable by the set test and by the independent checker, and contains T; and there are tets
+// whose first path fails where a later one succeeds.
+TEST(RemovalStrategies, TheNeighbourSearchTriesFurtherPaths) {
+  int later_path = 0, tested = 0;
+  for (std::uint32_t n : {4u, 6u}) {
+    for (const RawMesh& raw : {cone_over_grid(n), cone_over_l(n)}) {
+      const TetMesh mesh = build_or_fail(raw);
+      SetRemovalWorkspace ws;
+      detail::NeighbourSearch search;
+      std::vector<TetId> found, first_path;
+      for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
+        const TetId t{i};
+        const Removability first = removability(mesh, t);
+        if (first.kind != SingularityKind::kVertex) continue;
+        ++tested;
+        const bool ok = search.find(mesh, ws, t, first, 10, 64, found);
+        first_path.clear();
+        ASSERT_TRUE(detail::shortest_path_to_border(mesh, ws, t, first.vertex, 10, first_path));
+        first_path.insert(first_path.begin(), t);
+        const bool first_removable = ws.check(mesh, first_path).removable();
+        if (!ok) {
+          EXPECT_FALSE(first_removable) << "tet " << i;
+          continue;
+        }
+        EXPECT_TRUE(std::find(found.begin(), found.end(), t) != found.end());
+        EXPECT_TRUE(ws.check(mesh, found).removable());
+        EXPECT_TRUE(still_valid_without(mesh, found)) << "tet " << i;
+        if (first_removable) {
+          EXPECT_EQ(found.size(), first_path.size()) << "the shortest path, removable, is the smallest set";
+        } else if (std::any_of(first_path.begin(), first_path.end(),
+                               [&](TetId u) { return std::find(found.begin(), found.end(), u) == found.end(); })) {
+          ++later_path;  // not the first path nor an extension of it: a further path won
+        }
+      }
+    }
+  }
+  EXPECT_GT(tested, 20);
+  EXPECT_GT(later_path, 0);
+  std::printf("[3.5] %d vertex singularities, %d resolved by a path after the first\n", tested, later_path);
 }
 
 TEST(RemovalStrategies, NamesRoundTrip) {

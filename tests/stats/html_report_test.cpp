@@ -21,6 +21,10 @@ StatsReport small_report() {
     s.removal.requested = 10;
     s.removal.direct = 7;
     s.removal.vertex_singularities = 3;
+    // All ten on the surface when requested (Table 1's population).
+    s.removal.surface_requested = 10;
+    s.removal.surface_direct = 7;
+    s.removal.surface_vertex_singularities = 3;
     s.table1 = table1_row(s.removal);
     s.table2 = table2_row(s.removal);
     report.meshes.push_back(s);

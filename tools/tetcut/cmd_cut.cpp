@@ -28,6 +28,7 @@ struct CutArgs {
   std::optional<Vec3> from, to;
   std::optional<std::uint64_t> depth;
   std::optional<RemovalStrategy> strategy;
+  std::optional<RemovalOrder> order;
   std::optional<SplitMethod> split;
   std::optional<scenario::CheckMode> check;
   RunOutputs outputs;
@@ -40,6 +41,7 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::point(app, "--to", a.to, "where it ends (included when a whole number of steps away)")->required();
   opt::number(app, "--step", a.step, "the distance between two cuts (> 0)", "S")->required();
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
+  opt::order(app, "--order", a.order, "which selected tet a cut requests next (default direct-first)");
   opt::split_method(app, "--split", a.split, "refinement (default templates)");
   opt::number(app, "--dref-factor", a.dref_factor, "D_ref = F x diameter (paper 3.2; default 1.5)", "F");
   opt::number(app, "--p", a.p, "shell edge ratio of the refinement loop (paper 3.2; default 1.5)", "P");
@@ -58,6 +60,7 @@ void add_options(CLI::App& app, CutArgs& a) {
 std::optional<std::string> cut_params(const CutArgs& a, CutParams& params) {
   params.tool_diameter = *a.diameter;
   if (a.strategy) params.strategy = *a.strategy;
+  if (a.order) params.order = *a.order;
   if (a.split) params.split_method = *a.split;
   if (a.dref_factor) params.d_ref_factor = *a.dref_factor;
   if (a.p) params.p = *a.p;
@@ -77,7 +80,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CutArgs a;
   CommandParser parser(
       "cut",
-      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--split M] "
+      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--order O] [--split M] "
       "[--no-improve] [--quality-floor F] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"

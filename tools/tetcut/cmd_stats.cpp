@@ -25,13 +25,17 @@ std::string command_line(Args args) {
 int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   std::optional<std::string> corpus, mesh, json, html, pictures;
   std::optional<scenario::CheckMode> check;
+  bool no_improve = false;
   CommandParser parser(
-      "stats", "tetcut stats [--corpus DIR] [--mesh NAME] [--check every|end] [--json FILE] [--html FILE] [--pictures DIR]",
+      "stats",
+      "tetcut stats [--corpus DIR] [--mesh NAME] [--check every|end] [--no-improve] [--json FILE] [--html FILE] "
+      "[--pictures DIR]",
       "Redoes the paper's experiment (section 3.6): five meshes of its kinds (cylinder, sheet, coarse\n"
       "liver, finer liver, locally refined liver), each cut by the cautery scenario in\n"
       "CORPUS/scenarios/paper/ with the combined strategy, and prints Tables 1 and 2 with the paper's\n"
       "figures and the difference beside ours, and Table 2 again for our wider search (strategy wide)\n"
-      "beside the paper's. Then compares the strategies (basic, neighbours, combined, wide; templates\n"
+      "beside the paper's, and Tables 1 and 2 once more with the paper's removal order (one by one)\n"
+      "in place of ours (directly removable tets first). Then compares the strategies (basic, neighbours, combined, wide; templates\n"
       "and bisection) on one of those scenarios, and runs the liver resection\n"
       "(CORPUS/scenarios/liver-resection.scn) for the report's plots and pictures.\n"
       "\n"
@@ -46,6 +50,8 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
             "DIR");
   opt::text(app, "--mesh", mesh, "the strategy comparison's mesh (default liver-refined)", "NAME");
   opt::check_mode(app, check, "the local checker after every cut (default) or the full one at the end");
+  opt::flag(app, "--no-improve", no_improve,
+            "the Tables' runs and the strategy comparison without the improvement pass (the paper has none)");
   opt::text(app, "--json", json,
             "everything as JSON: keys table1, table2 (one row per mesh, with paper and diff), table2_wide (our "
             "wider search's rows), strategies (one row per strategy), resection",
@@ -77,6 +83,7 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
     return parser.usage_error("--mesh: one of cylinder, sheet, liver-coarse, liver-refined, liver-local", err);
   if (check == scenario::CheckMode::kNone) return parser.usage_error("--check: must be every or end", err);
   options.check_every_cut = check.value_or(scenario::CheckMode::kEvery) == scenario::CheckMode::kEvery;
+  options.improve = !no_improve;
 
   const stats::StatsResult result = stats::compute_stats(options);
   if (!result.report) {
@@ -122,6 +129,7 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   };
   must_complete(report.meshes, "combined");
   must_complete(report.wide_meshes, "wide");
+  must_complete(report.paper_order_meshes, "combined (paper order)");
   if (report.resection && !report.resection->run.result.ok) {
     err << "tetcut: " << report.resection->run.result.error << "\n";
     code = kExitViolated;

@@ -120,6 +120,12 @@ CLI::Option* strategy(CLI::App& app, const std::string& name, std::optional<Remo
                 "must be basic, neighbours, combined or wide");
 }
 
+CLI::Option* order(CLI::App& app, const std::string& name, std::optional<RemovalOrder>& target,
+                   const std::string& help) {
+  return parsed(app, name, target, help, "paper|direct-first",
+                [](const std::string& s) { return parse_removal_order(s); }, "must be paper or direct-first");
+}
+
 CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<SplitMethod>& target,
                           const std::string& help) {
   return parsed(app, name, target, help, "templates|bisection",

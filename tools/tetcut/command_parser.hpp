@@ -73,6 +73,9 @@ CLI::Option* flag(CLI::App& app, const std::string& name, bool& target, const st
 // The shared vocabulary of values.hpp, each read by its one parser.
 CLI::Option* strategy(CLI::App& app, const std::string& name, std::optional<RemovalStrategy>& target,
                       const std::string& help);
+// --order paper|direct-first (CutParams::order).
+CLI::Option* order(CLI::App& app, const std::string& name, std::optional<RemovalOrder>& target,
+                   const std::string& help);
 CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<SplitMethod>& target,
                           const std::string& help);
 CLI::Option* check_mode(CLI::App& app, std::optional<scenario::CheckMode>& target, const std::string& help);

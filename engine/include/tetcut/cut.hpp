@@ -9,7 +9,7 @@
 //            tool's size to within one small tet.
 //   remove   every directly removable selected tet first (3.3), again until none is left; then
 //            the strategy (cut_strategies.hpp) on one stuck tet, on the surface first (outside in),
-//            and again. When a strategy refines a selected tet, its pieces that pass the same
+//            and again (CutParams::order: or the paper's one by one). When a strategy refines a selected tet, its pieces that pass the same
 //            test join T_removal; pieces of a kept tet stay kept (selection is decided once,
 //            on the refined region). Every selected tet is removed or counted unresolved.
 //   improve  flips, collapses, smoothing of the cut's own vertices (improve/improver.hpp) until
@@ -54,6 +54,7 @@ struct CutParams {
   std::uint32_t max_tets_created = 20000;  // net tets a cut may create; more is refused early
   RemovalStrategy strategy = RemovalStrategy::kCombined;   // cut_strategies.hpp
   SplitMethod split_method = SplitMethod::kTemplates;
+  RemovalOrder order = RemovalOrder::kDirectFirst;        // cut_strategies.hpp
   // The improvement pass that ends a cut or a removal request (flips, smoothing of the cut's own
   // vertices): it lifts every tet the cut made to min(quality_floor, the worst tet it replaced),
   // the floor the invariant checker holds every transaction to (I7). Off: the paper's algorithm
@@ -91,6 +92,11 @@ struct CutReport {
   // unresolved: requests of this cut left in place (a tet left twice counts twice; the
   // removal_report() counts distinct tets, as the paper's tables do).
   std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_fallback = 0, unresolved = 0;
+  // Pieces of unselected tets that a removal-time split (3.4, 3.7, the fallback) left inside the
+  // tool and that their one request (no cascade) did not remove either: tissue left in the tool
+  // besides the unresolved requests. 0 and 0 unresolved: the tool is empty.
+  std::uint32_t left_in_tool = 0;
+  std::uint32_t kept_pieces_requested = 0;  // such pieces requested (each once), in `requests` too
   double min_radius_ratio = 1.0;     // worst tet created (1 when none), after the improvement pass
   double min_radius_ratio_before_improvement = 1.0;
   double quality_floor = 1.0;        // min(F, worst tet replaced): what every created tet must reach

@@ -22,6 +22,22 @@ const char* to_string(RemovalStrategy strategy);
 // "basic", "neighbours" (or "neighbors"), "combined", "wide".
 std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text);
 
+// In which order a cut requests its selected tets (T_removal, paper 3.3):
+//   kDirectFirst  every directly removable selected tet first, again until none is left, then
+//                 one stuck tet (on the surface first), and again. The default: a strategy's
+//                 larger set then meets fewer singularities.
+//   kPaper        "removing one-by-one all tetrahedra in T_removal" (3.3): the next request is
+//                 the first pending selected tet, in T_removal's order, that has a face on the
+//                 surface (the cautery works from the surface in, and Table 1 is about
+//                 "removing a tetrahedron on the mesh surface"); a tool inside the mesh, with
+//                 none on the surface, takes the first pending one. Removable or not, it is
+//                 requested as it comes.
+enum class RemovalOrder : std::uint8_t { kDirectFirst, kPaper };
+
+const char* to_string(RemovalOrder order);
+// "direct-first", "paper".
+std::optional<RemovalOrder> parse_removal_order(std::string_view text);
+
 // kTemplates: every marked edge of a tet at once, by the tet's split template (paper 3.2).
 // kBisection: one edge at a time across its whole shell (the baseline the templates beat).
 enum class SplitMethod : std::uint8_t { kTemplates, kBisection };

@@ -35,6 +35,15 @@ struct RemovalReport {
   std::uint64_t tets_created = 0;               // by refinement
   std::uint64_t edges_split = 0;
   std::uint64_t attempts_undone = 0;            // 3.4 / 3.7 attempts rolled back to the fallback
+  // Fallbacks the splitter refused (a child the exact predicate finds flat: a sliver's split at
+  // its midpoint), the request then left unresolved; the budget's refusals are not counted here.
+  std::uint64_t fallback_refused = 0;
+  // Table 1's population as the paper titles it ("removing a tetrahedron on the mesh surface"):
+  // the distinct requested tets that had a face on the surface when requested, and their fates.
+  std::uint64_t surface_requested = 0;
+  std::uint64_t surface_direct = 0;
+  std::uint64_t surface_vertex_singularities = 0;
+  std::uint64_t surface_edge_singularities = 0;
 
   // Tets removed per request over the requests removed without refinement (1 for a direct
   // removal). 0 when there are none.

@@ -246,6 +246,7 @@ CutReport Cutter::Pipeline::attempt(const Ball& tool, double d_ref, ChangeLog* l
   improve(report);
   report.time.improve_us = micros(t4, Clock::now());
   if (!report.quality_met && params_.improve) return fail(floor_failure(report));
+  count_left_in_tool(report);
   finish(report, log);
   report.time.total_us = micros(t0, Clock::now());
   return report;
@@ -325,7 +326,8 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
   };
   for (TetId t : removal_) enqueue(t);
   // `first`: removability(mesh_, t), just computed.
-  auto request = [&](TetId t, const Removability& first) {
+  // `pieces`: follow what the request made (the selection's loop); off for the leftovers below.
+  auto request = [&](TetId t, const Removability& first, bool pieces = true) {
     tried_.insert(t);
     ++report.requests;
     RequestLimits limits;
@@ -334,9 +336,11 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     const std::size_t selected_before = removal_.size();
     const TetMesh::Savepoint before_request = mesh_.savepoint();
     const RemovalResult r = remover_.remove(mesh_, t, first, limits);
-    follow(before_request);
-    for (std::size_t i = selected_before; i < removal_.size(); ++i) enqueue(removal_[i]);
-    for (TetId e : remover_.last_exposed()) enqueue(e);
+    if (pieces) {
+      follow(before_request);
+      for (std::size_t i = selected_before; i < removal_.size(); ++i) enqueue(removal_[i]);
+      for (TetId e : remover_.last_exposed()) enqueue(e);
+    }
     if (r.over_budget || net_made() > params_.max_tets_created) {
       report = before;
       report.ok = false;
@@ -346,6 +350,20 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     count_request(report, r);
     return true;
   };
+  // The paper's order (cut_strategies.hpp): the first pending tet on the surface, else the
+  // first pending, each requested as it comes. T_removal grows at its end (followed pieces).
+  auto next_pending = [&] {
+    for (TetId t : removal_)
+      if (pending(t) && mesh_.boundary_face_count(t) > 0) return t;
+    for (TetId t : removal_)
+      if (pending(t)) return t;
+    return kNoTet;
+  };
+  if (params_.order == RemovalOrder::kPaper) {
+    for (TetId t = next_pending(); t.valid(); t = next_pending())
+      if (!request(t, removability(mesh_, t))) return;
+    work_.clear();
+  }
   for (;;) {
     // Every directly removable selected tet first, until none is left (paper 3.3): a strategy's
     // larger set then meets fewer singularities.
@@ -359,22 +377,34 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     }
     // Then one stuck tet, outside in: on the surface first (the paper's statistics are about
     // "removing a tetrahedron on the mesh surface", 3.3), else any (a tool inside the mesh).
-    TetId stuck = kNoTet;
-    for (TetId t : removal_)
-      if (pending(t) && mesh_.boundary_face_count(t) > 0) {
-        stuck = t;
-        break;
-      }
-    if (!stuck.valid())
-      for (TetId t : removal_)
-        if (pending(t)) {
-          stuck = t;
-          break;
-        }
+    const TetId stuck = next_pending();
     if (!stuck.valid()) break;
     if (!request(stuck, removability(mesh_, stuck))) return;
   }
   report.requested = static_cast<std::uint32_t>(removal_.size());
+  if (!tool_) return;
+
+  // Pieces of kept tets inside the tool: a removal-time split (3.4, 3.7, the fallback) cuts
+  // unselected neighbours too, and a piece whose centroid falls in the ball is tissue in the tool
+  // that follow() does not select (selecting it would cascade, each request splitting further
+  // kept tets). Each such piece is requested once, what its own request makes is not followed,
+  // and what stays is counted: a report with nothing unresolved and nothing left in the tool
+  // means the tool is empty.
+  work_.clear();
+  for (const TetMesh::TetBirth& birth : mesh_.tets_made_since(cut_start_))
+    if (mesh_.is_live(birth.tet) && !tissue_.contains(birth.tet) && selectable(birth.tet)) work_.push_back(birth.tet);
+  for (TetId t : work_) {
+    if (!mesh_.is_live(t) || tried_.contains(t)) continue;
+    ++report.kept_pieces_requested;
+    if (!request(t, removability(mesh_, t), false)) return;
+  }
+}
+
+void Cutter::Pipeline::count_left_in_tool(CutReport& report) {
+  // After the improvement pass, whose flips and collapses make tets too. The tets that were there
+  // before the cut and meet the tool were all selected (and went, or count as unresolved).
+  for (const TetMesh::TetBirth& birth : mesh_.tets_made_since(cut_start_))
+    if (mesh_.is_live(birth.tet) && !tissue_.contains(birth.tet) && selectable(birth.tet)) ++report.left_in_tool;
 }
 
 std::string Cutter::Pipeline::floor_failure(const CutReport& report) {

@@ -43,6 +43,8 @@ class Cutter::Pipeline {
   // Removes the selected tets (removal_, growing), directly removable ones first, and fills the
   // counts.
   void remove_selected(CutReport& report);
+  // CutReport::left_in_tool: the live tets the cut made, inside the tool, not selected tissue.
+  void count_left_in_tool(CutReport& report);
   // One attempt at the cut with this D_ref: a transaction, committed or rolled back.
   CutReport attempt(const Ball& tool, double d_ref, ChangeLog* log);
   // Follows what a step made since `point` (the journal's record): which of the new tets are

@@ -15,6 +15,8 @@ constexpr Spellings<RemovalStrategy> kStrategyNames[] = {{"basic", RemovalStrate
                                                          {"neighbors", RemovalStrategy::kNeighbours},
                                                          {"combined", RemovalStrategy::kCombined},
                                                          {"wide", RemovalStrategy::kWide}};
+constexpr Spellings<RemovalOrder> kOrderNames[] = {{"direct-first", RemovalOrder::kDirectFirst},
+                                                   {"paper", RemovalOrder::kPaper}};
 constexpr Spellings<SplitMethod> kSplitMethodNames[] = {{"templates", SplitMethod::kTemplates},
                                                         {"bisection", SplitMethod::kBisection}};
 
@@ -39,6 +41,10 @@ const char* to_string(RemovalStrategy strategy) { return name_of(kStrategyNames,
 std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text) {
   return value_of(kStrategyNames, text);
 }
+
+const char* to_string(RemovalOrder order) { return name_of(kOrderNames, order); }
+
+std::optional<RemovalOrder> parse_removal_order(std::string_view text) { return value_of(kOrderNames, text); }
 
 const char* to_string(SplitMethod method) { return name_of(kSplitMethodNames, method); }
 

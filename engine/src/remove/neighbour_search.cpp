@@ -24,7 +24,7 @@ void sides_of_edge(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, VertId
 }
 
 void NeighbourSearch::reserve() {
-  for (auto* v : {&base_, &candidate_, &parts_}) reserve_touched(*v, 256);
+  for (auto* v : {&base_, &candidate_, &parts_, &ends_, &shortest_}) reserve_touched(*v, 256);
   reserve_touched(sizes_, 64);
 }
 
@@ -42,6 +42,7 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
                            int max_depth, std::uint32_t max_set_size, std::vector<TetId>& out) {
   out.clear();
   path_found_ = false;
+  shortest_.clear();
   if (first.kind == SingularityKind::kEdge) {
     sides_of_edge(mesh, ws, t, first.edge.a, first.edge.b, parts_, sizes_);
     const TetId one[1] = {t};
@@ -55,26 +56,40 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
   }
   if (first.kind != SingularityKind::kVertex) return false;
 
-  base_.assign(1, t);
-  if (!shortest_path_to_border(mesh, ws, t, first.vertex, max_depth, parts_)) return false;
-  base_.insert(base_.end(), parts_.begin(), parts_.end());
-  path_found_ = true;
-  const Removability check = ws.check(mesh, base_);
-  if (check.removable()) {
-    out = base_;
-    return true;
-  }
-  // The path divides the remaining tets around one vertex (or edge) into pieces: extend it by
-  // each piece (ws still has base_ marked from the check).
-  parts_.clear();
-  sizes_.clear();
-  ws.remaining_pieces(mesh, check, parts_, sizes_);
-  if (sizes_.size() < 2) return false;
-  std::size_t offset = 0;
-  for (std::uint32_t n : sizes_) {
-    consider(mesh, ws, base_, std::span<const TetId>(parts_.data() + offset, n), max_set_size, out,
-             {static_cast<std::uint32_t>(base_.size()), check.vertices_passed});
-    offset += n;
+  // Breadth-first from T through v's shell to every border tet within max_depth: one path per
+  // end, shortest first.
+  const TetId one[1] = {t};
+  ws.mark(mesh, one);
+  if (!ws.border_paths(mesh, first.vertex, t, max_depth, ends_)) return false;
+  if (ends_.empty()) ends_.push_back(kNoTet);  // T itself opens onto the border at v: T alone
+  for (std::size_t k = 0; k < ends_.size(); ++k) {
+    base_.assign(1, t);
+    if (ends_[k].valid()) ws.border_path(ends_[k], base_);
+    if (k == 0) {
+      shortest_.assign(base_.begin(), base_.end());  // what 3.7 refines along
+      path_found_ = true;
+    }
+    // Later paths are no shorter: once a removable set is as small as this path, none can win.
+    if (base_.size() > max_set_size || (!out.empty() && base_.size() >= out.size())) break;
+    const Removability check = ws.check(mesh, base_);
+    if (check.removable()) {
+      out = base_;
+      break;
+    }
+    // "The path ... often divides the adjacency of one of the tetrahedron vertices into two
+    // connected components": the path extended by each (ws still has base_ marked). An edge
+    // pinched by the path is left to the wide search (ours).
+    if (check.kind != SingularityKind::kVertex) continue;
+    parts_.clear();
+    sizes_.clear();
+    ws.remaining_pieces(mesh, check, parts_, sizes_);
+    if (sizes_.size() < 2) continue;
+    std::size_t offset = 0;
+    for (std::uint32_t n : sizes_) {
+      consider(mesh, ws, base_, std::span<const TetId>(parts_.data() + offset, n), max_set_size, out,
+               {static_cast<std::uint32_t>(base_.size()), check.vertices_passed});
+      offset += n;
+    }
   }
   return !out.empty();
 }

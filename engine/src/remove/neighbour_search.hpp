@@ -1,19 +1,22 @@
 // Paper 3.5, as written: remove T with the smallest set of its neighbours that suppresses the
 // singularity without creating another one.
 //
-// Vertex singularity at v (cases 1 and 2). In the shell of v, find the shortest path of tets
-// from T to the border of the shell (breadth-first, depth <= 10: figure 4). Test T plus the
-// path. If that fails, "the path often divides the adjacency of one of the tetrahedron vertices
-// into two connected components": test T plus the path extended by each component of the
-// offending vertex's remaining shell (for an offending edge, each run of tets left around it).
-// The smallest removable candidate is kept; none gives the empty set.
+// Vertex singularity at v (cases 1 and 2). In the shell of v, search breadth-first from T to
+// the border of the shell (depth <= 10: figure 4); every border tet reached gives a path, the
+// shortest first. Test T plus each path. Where one fails, "the path often divides the adjacency
+// of one of the tetrahedron vertices into two connected components": test T plus the path
+// extended by each component of the offending vertex's remaining shell; a removable one is kept
+// "if no smaller removable set is determined" by the paths that follow. The search stops when
+// the next path is no smaller than the set kept; "no paths nor extended paths" removable gives
+// the empty set. An offence at an edge the path pinches is not extended here (the wide search
+// does that: ours, not the paper's).
 //
 // Edge singularity at e (case 3). T lies inside the open ring of tets around the boundary edge
 // e: test T with the tets on its left, with those on its right (the smaller wins), then with
 // all of them. None gives the empty set.
 //
-// Cost: O(shell of v or e) plus one set test per candidate (at most 2 + components). Never
-// mutates the mesh.
+// Cost: O(shell of v or e) plus one set test per candidate (per path at most 1 + components;
+// paths bounded by the border tets within depth 10). Never mutates the mesh.
 #pragma once
 
 #include <cstdint>
@@ -35,7 +38,9 @@ class NeighbourSearch {
   // After find() on a vertex singularity: T followed by the shortest path it tested, which
   // 3.7 refines along ("we also store the shortest path ... eventually used for the optimized
   // local refinement"); empty when find() found none or met an edge singularity.
-  [[nodiscard]] std::span<const TetId> path() const { return path_found_ ? std::span<const TetId>(base_) : std::span<const TetId>(); }
+  [[nodiscard]] std::span<const TetId> path() const {
+    return path_found_ ? std::span<const TetId>(shortest_) : std::span<const TetId>();
+  }
   // Working sizes, allocated and touched now (a larger search grows them once).
   void reserve();
 
@@ -46,7 +51,9 @@ class NeighbourSearch {
                 std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out,
                 TestedPrefix tested = {});
   std::vector<TetId> base_, candidate_, parts_;
-  bool path_found_ = false;  // base_ is T and its shortest path
+  std::vector<TetId> ends_;      // the border tets the breadth-first search reached
+  std::vector<TetId> shortest_;  // T and the first (shortest) path
+  bool path_found_ = false;      // shortest_ holds it
   std::vector<std::uint32_t> sizes_;
 };
 

@@ -26,7 +26,7 @@ void RefinementStrategies::reserve() {
   reserve_touched(plan_.edges, 512);
   reserve_touched(plan_.parents, 512);
   plan_.groups.reserve(8);  // T has four vertices
-  for (auto* v : {&path_, &runs_, &pieces_, &set_, &larger_, &repaired_}) reserve_touched(*v, 512);
+  for (auto* v : {&path_, &runs_, &pieces_, &set_, &larger_, &repaired_, &shell_}) reserve_touched(*v, 512);
   for (auto* v : {&run_sizes_, &piece_sizes_}) reserve_touched(*v, 64);
 }
 
@@ -49,17 +49,52 @@ void RefinementStrategies::seal(RefinementPlan& plan) {
     std::sort(plan.parents.begin() + g.begin, plan.parents.begin() + g.begin + g.size);
 }
 
-void RefinementStrategies::plan_basic(const TetMesh& mesh, TetId t, const Removability& first, RefinementPlan& plan) {
+void RefinementStrategies::plan_basic(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, RefinementPlan& plan) {
   plan.edges.clear();
-  if (first.kind == SingularityKind::kVertex) {
-    mesh.vertex_shell(first.vertex, plan.parents);
-    add_edges_from(mesh, first.vertex, plan.parents, {}, plan);
-    plan.groups.assign(1, {{first.vertex, VertId{}}, 0, static_cast<std::uint32_t>(plan.parents.size())});
-  } else {
-    const VertId ends[2] = {first.edge.a, first.edge.b};
-    mesh.edge_shell(t, mesh.local_edge(t, ends[0], ends[1]), plan.parents);
-    for (VertId end : ends) add_edges_from(mesh, end, plan.parents, ends, plan);
-    plan.groups.assign(1, {{ends[0], ends[1]}, 0, static_cast<std::uint32_t>(plan.parents.size())});
+  plan.parents.clear();
+  plan.groups.clear();
+  // Every singularity T alone would leave, from the set test's verdict at each of T's vertices
+  // (exact, where 3.3's cases name only one): a vertex, or an edge of T pinched at it.
+  const TetId one[1] = {t};
+  std::array<VertId, 4> vertices{};
+  std::array<Edge, 4> edges{};
+  int nv = 0, ne = 0;
+  for (VertId x : mesh.tet(t)) {
+    const Removability at_x = ws.check_at(mesh, one, x);
+    if (at_x.kind == SingularityKind::kVertex) vertices[nv++] = at_x.vertex;
+    if (at_x.kind == SingularityKind::kEdge &&
+        std::none_of(edges.begin(), edges.begin() + ne, [&](const Edge& e) {
+          return (e.a == at_x.edge.a && e.b == at_x.edge.b) || (e.a == at_x.edge.b && e.b == at_x.edge.a);
+        }))
+      edges[ne++] = at_x.edge;
+  }
+  auto singular = [&](VertId x) { return std::find(vertices.begin(), vertices.begin() + nv, x) != vertices.begin() + nv; };
+  // A vertex: every edge at it split, the children at it (its whole star) go.
+  for (int i = 0; i < nv; ++i) {
+    const auto begin = static_cast<std::uint32_t>(plan.parents.size());
+    mesh.vertex_shell(vertices[i], shell_);
+    plan.parents.insert(plan.parents.end(), shell_.begin(), shell_.end());
+    add_edges_from(mesh, vertices[i], shell_, {}, plan);
+    plan.groups.push_back({{vertices[i], VertId{}}, begin, static_cast<std::uint32_t>(plan.parents.size()) - begin});
+  }
+  // An edge (a, b): every edge from a or b to its ring split, the children on the edge go. When an
+  // end is a singular vertex too, that vertex's refinement splits the edge itself: the other end's
+  // children around the ring go instead (the tube along the edge); both ends: nothing to add.
+  for (int i = 0; i < ne; ++i) {
+    const VertId ends[2] = {edges[i].a, edges[i].b};
+    if (singular(ends[0]) && singular(ends[1])) continue;
+    const auto begin = static_cast<std::uint32_t>(plan.parents.size());
+    mesh.edge_shell(t, mesh.local_edge(t, ends[0], ends[1]), shell_);
+    plan.parents.insert(plan.parents.end(), shell_.begin(), shell_.end());
+    const auto size = static_cast<std::uint32_t>(plan.parents.size()) - begin;
+    if (singular(ends[0]) || singular(ends[1])) {
+      const VertId other = singular(ends[0]) ? ends[1] : ends[0];
+      add_edges_from(mesh, other, shell_, {}, plan);
+      plan.groups.push_back({{other, VertId{}}, begin, size});
+    } else {
+      for (VertId end : ends) add_edges_from(mesh, end, shell_, ends, plan);
+      plan.groups.push_back({{ends[0], ends[1]}, begin, size});
+    }
   }
   seal(plan);
 }
@@ -141,7 +176,7 @@ void RefinementStrategies::plan_edge_side(const TetMesh& mesh, TetId t, std::spa
 // ---- applying a plan ---------------------------------------------------------------------------
 
 std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId t, const RefinementPlan& plan,
-                                                     const WideSearchLimits& repair) {
+                                                     const WideSearchLimits* repair) {
   const TetMesh::Savepoint before = ctx.mesh.savepoint();
   if (!ctx.split(plan.edges)) return 0;
   set_.clear();
@@ -163,7 +198,7 @@ std::uint32_t RefinementStrategies::split_and_remove(RemovalContext& ctx, TetId 
     }
   }
   if (!t_split) set_.push_back(t);
-  close_pinched_midpoints(ctx, plan, ctx.mesh.vertices_made_since(before), repair.max_set_size);
+  if (repair) close_pinched_midpoints(ctx, plan, ctx.mesh.vertices_made_since(before), repair->max_set_size);
   if (ctx.with_selected_children(set_, ctx.mesh.tets_made_since(before), larger_))
     if (const std::uint32_t n = remove_or_repair(ctx, larger_, repair)) return n;
   if (const std::uint32_t n = remove_or_repair(ctx, set_, repair)) return n;
@@ -183,13 +218,13 @@ void RefinementStrategies::close_pinched_midpoints(RemovalContext& ctx, const Re
 }
 
 std::uint32_t RefinementStrategies::remove_or_repair(RemovalContext& ctx, const std::vector<TetId>& set,
-                                                     const WideSearchLimits& repair) {
+                                                     const WideSearchLimits* repair) {
   const Removability check = ctx.ws.check(ctx.mesh, set);
   if (check.removable()) {
     ctx.remove_set(set);
     return static_cast<std::uint32_t>(set.size());
   }
-  if (search_.find(ctx.mesh, ctx.ws, set, check, repair, repaired_)) {
+  if (repair && search_.find(ctx.mesh, ctx.ws, set, check, *repair, repaired_)) {
     ctx.remove_set(repaired_);
     return static_cast<std::uint32_t>(repaired_.size());
   }
@@ -198,17 +233,17 @@ std::uint32_t RefinementStrategies::remove_or_repair(RemovalContext& ctx, const 
 
 // ---- the two strategies ------------------------------------------------------------------------
 
-std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t, const Removability& first,
-                                          const WideSearchLimits& repair) {
-  plan_basic(ctx.mesh, t, first, plan_);
-  return split_and_remove(ctx, t, plan_, repair);
+std::uint32_t RefinementStrategies::basic(RemovalContext& ctx, TetId t) {
+  plan_basic(ctx.mesh, ctx.ws, t, plan_);
+  // The paper's set as it stands: no repair (the fallback follows in the dispatcher).
+  return split_and_remove(ctx, t, plan_, nullptr);
 }
 
 std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, const Removability& first,
                                               const WideSearchLimits& repair, std::span<const TetId> searched_path) {
   if (first.kind == SingularityKind::kVertex) {
     if (!plan_optimized_vertex(ctx.mesh, ctx.ws, t, first, repair, searched_path, plan_)) return 0;
-    return split_and_remove(ctx, t, plan_, repair);
+    return split_and_remove(ctx, t, plan_, &repair);
   }
   // One side of T around the edge, the smaller first (paper 3.7: "the rightmost or leftmost").
   const VertId ends[2] = {first.edge.a, first.edge.b};
@@ -219,7 +254,7 @@ std::uint32_t RefinementStrategies::optimized(RemovalContext& ctx, TetId t, cons
   const int smaller = run_sizes_[0] <= run_sizes_[1] ? 0 : 1;
   for (const int side : {smaller, 1 - smaller}) {
     plan_edge_side(ctx.mesh, t, ends, sides[side], plan_);
-    if (const std::uint32_t n = split_and_remove(ctx, t, plan_, repair)) return n;
+    if (const std::uint32_t n = split_and_remove(ctx, t, plan_, &repair)) return n;
     if (ctx.over_budget) return 0;
   }
   return 0;

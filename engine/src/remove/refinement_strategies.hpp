@@ -1,9 +1,13 @@
 // Paper 3.4 and 3.7: resolve a singularity by refining around it, then removing the small tets
 // at the singularity together with T's children.
 //
-//   3.4 (basic)      split every edge at the singular vertex v (every edge from an end of the
-//                    singular edge e to the tets around e); the set is the children containing v
-//                    (containing e) and T's children.
+//   3.4 (basic)      as written: at every singularity T alone would leave (each singular vertex
+//                    v and edge e of T, from the set test at each of T's vertices), split every
+//                    edge at v (every edge from an end of e to the tets around e); the set is the
+//                    children containing a singular v (containing e) and T's children. Where e has
+//                    a singular end, that end's split cuts e: the children at the other end around
+//                    e's ring go instead. No repair: a set that fails is rolled back (the
+//                    dispatcher's fallback follows, counted apart).
 //   3.7 (optimized)  split only the edges at v of T and of the tets on the shortest path from T
 //                    to the border of v's shell (paper 3.5's path); for an edge, only those of
 //                    the tets on one side of T around e (the smaller side first, then the
@@ -22,10 +26,10 @@
 //
 // The paper says of 3.4 "we can formally prove that these set of tetrahedra can always be
 // removed"; they cannot always (docs/removal-proof.md gives the configuration: a boundary edge
-// from another surface vertex of T to v). So a set that is not removable is repaired among the
-// small tets by the wide search (wide_search.hpp: no further split); if that fails too, the
-// split is rolled back to the savepoint taken before it and the caller uses the fallback, which
-// creates many more tets. Where T has several planned vertices, the midpoint of T's edge between
+// from another surface vertex of T to v). 3.4's set that is not removable is rolled back to the
+// savepoint taken before its split, and the caller uses the fallback. 3.7's is first repaired
+// among the small tets by the wide search (wide_search.hpp: no further split; ours, not the
+// paper's), then rolled back likewise. Where T has several planned vertices, the midpoint of T's edge between
 // two of them is where their corner runs can pinch: the split's set is tested there alone and
 // extended there before the full test, so that the repair search is rarely needed.
 #pragma once
@@ -68,7 +72,7 @@ class RefinementStrategies {
   // Working sizes, allocated and touched now (a larger request grows them once).
   void reserve();
   // Each returns the size of the set removed, 0 when the attempt failed (the mesh as before).
-  std::uint32_t basic(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair);
+  std::uint32_t basic(RemovalContext& ctx, TetId t);
   // `searched_path`: T and its shortest path at the singular vertex, if 3.5 just found them on
   // this mesh (paper 3.7 stores the path of 3.5's search); empty: 3.7 finds it.
   std::uint32_t optimized(RemovalContext& ctx, TetId t, const Removability& first, const WideSearchLimits& repair,
@@ -76,8 +80,9 @@ class RefinementStrategies {
 
  private:
   // ---- planning, on the unchanged mesh ----
-  // 3.4: every edge at the singular vertex, or from the singular edge's ends to its ring.
-  void plan_basic(const TetMesh& mesh, TetId t, const Removability& first, RefinementPlan& plan);
+  // 3.4: a group per singularity of T: every edge at a singular vertex, or from a singular
+  // edge's ends to its ring.
+  void plan_basic(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, RefinementPlan& plan);
   // 3.7 at a vertex singularity: a group at the singular vertex and at each other vertex of T
   // where T alone fails (plan_at_vertex), then the edges. False when a vertex has no plan.
   bool plan_optimized_vertex(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first,
@@ -109,8 +114,9 @@ class RefinementStrategies {
   // ---- applying a plan ----
   // Splits the plan's edges, then removes T's children and, for each group, the children of its
   // parents that contain the group's vertices, if removable; otherwise rolls back.
+  // `repair` null: the set as planned, nothing of ours (3.4).
   std::uint32_t split_and_remove(RemovalContext& ctx, TetId t, const RefinementPlan& plan,
-                                 const WideSearchLimits& repair);
+                                 const WideSearchLimits* repair);
   // After a split with several corner groups: the midpoint of an edge of T between two planned
   // vertices is where their corner runs can pinch (docs/removal-proof.md, "3.7, planned"). Each
   // such midpoint is tested alone and, where set_ fails there, set_ is extended by extend_at(),
@@ -119,7 +125,7 @@ class RefinementStrategies {
                                std::span<const TetMesh::VertexBirth> midpoints, std::uint32_t max_set_size);
   // Removes `set` if removable, else its repair by the wide search if one is found; returns the
   // size removed, 0 for neither (the mesh untouched).
-  std::uint32_t remove_or_repair(RemovalContext& ctx, const std::vector<TetId>& set, const WideSearchLimits& repair);
+  std::uint32_t remove_or_repair(RemovalContext& ctx, const std::vector<TetId>& set, const WideSearchLimits* repair);
 
   WideSearch search_;
   RefinementPlan plan_;  // the attempt's plan: its memory reused from one request to the next
@@ -129,6 +135,7 @@ class RefinementStrategies {
   std::vector<TetId> pieces_;             // extend_at(): what a failing set leaves at a vertex
   std::vector<std::uint32_t> piece_sizes_;
   std::vector<TetId> set_, larger_, repaired_;  // the applied set, with selected children, repaired
+  std::vector<TetId> shell_;              // plan_basic(): a singularity's shell
 };
 
 }  // namespace tetcut::detail

@@ -45,6 +45,12 @@ void count_request(RemovalReport& report, const RemovalResult& result) {
     ++report.requested;
     if (kind == SingularityKind::kVertex) ++report.vertex_singularities;
     if (kind == SingularityKind::kEdge) ++report.edge_singularities;
+    if (result.first.paper_case >= 2) {  // a face on the surface (paper 3.3: case 1 has none)
+      ++report.surface_requested;
+      if (kind == SingularityKind::kNone) ++report.surface_direct;
+      if (kind == SingularityKind::kVertex) ++report.surface_vertex_singularities;
+      if (kind == SingularityKind::kEdge) ++report.surface_edge_singularities;
+    }
   }
   if (result.outcome != RemovalOutcome::kUnresolved) {
     ++report.removed;
@@ -156,7 +162,9 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
   result.repeat = w.met_unresolved.contains(t);
   auto count_selected = [&](std::span<const TetId> set) {
     if (!limits.selection) return static_cast<std::uint32_t>(1);  // the requested tet
-    std::uint32_t n = 0;
+    // The requested tet counts even when the caller did not select it (a cut's piece of a kept
+    // tet left in the tool): it is a tet that should go.
+    std::uint32_t n = limits.selection->contains(t) ? 0u : 1u;
     for (TetId u : set) n += limits.selection->contains(u) ? 1u : 0u;
     return n;
   };
@@ -193,7 +201,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
   if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kNeighbours) {
     const bool optimized = options_.strategy != RemovalStrategy::kBasic;
     const std::uint32_t n = optimized ? w.refinement.optimized(ctx, t, first, w.limits, searched_path)
-                                      : w.refinement.basic(ctx, t, first, w.limits);
+                                      : w.refinement.basic(ctx, t);
     if (n > 0) {
       result.outcome = RemovalOutcome::kRefinement;
       result.optimized_refinement = optimized;
@@ -209,6 +217,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
     if (const std::uint32_t n = w.fallback.remove(ctx, t)) {
       result.outcome = RemovalOutcome::kFallback;
       result.tets_removed = n;
+    } else if (!ctx.over_budget) {
+      ++report_.fallback_refused;
     }
   }
 

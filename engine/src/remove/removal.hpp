@@ -3,13 +3,15 @@
 // A request names one tet T. If the O(1) test of removability.hpp accepts it, T goes alone
 // ("direct"). Otherwise removing T alone would make a vertex or an edge singular, and a
 // strategy removes a larger set instead:
-//   neighbours (3.5)  the paper's search as written: for a vertex singularity the shortest path
-//                     of tets from T to the border of the vertex's shell (breadth-first, depth
-//                     <= 10), then that path extended by each component it splits a shell into;
+//   neighbours (3.5)  the paper's search as written: for a vertex singularity every path of tets
+//                     from T to the border of the vertex's shell (breadth-first, depth <= 10,
+//                     shortest first), each extended by the components it splits a vertex's
+//                     shell into when it fails;
 //                     for an edge singularity the tets left of T around the edge, right of T,
 //                     then all of them. The smallest removable candidate wins. May fail.
-//   basic (3.4)       split every edge at the singular vertex (or touching the singular edge),
-//                     then remove the small tets around it together with T's children.
+//   basic (3.4)       at every singular vertex and edge of T, split every edge at it, then
+//                     remove the small tets there together with T's children; as written, with
+//                     no repair of ours (the fallback below is counted apart).
 //   combined (3.7)    neighbours; if that fails, the optimized local refinement: split only the
 //                     edges along the shortest path (vertex) or of one side (edge) and remove
 //                     the small tets there with T's children. The default.

@@ -35,6 +35,11 @@ RemovalReport& RemovalReport::operator+=(const RemovalReport& o) {
   tets_created += o.tets_created;
   edges_split += o.edges_split;
   attempts_undone += o.attempts_undone;
+  fallback_refused += o.fallback_refused;
+  surface_requested += o.surface_requested;
+  surface_direct += o.surface_direct;
+  surface_vertex_singularities += o.surface_vertex_singularities;
+  surface_edge_singularities += o.surface_edge_singularities;
   return *this;
 }
 

@@ -287,6 +287,51 @@ bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId se
   return false;
 }
 
+bool SetRemovalWorkspace::border_paths(const TetMesh& mesh, VertId v, TetId seed, int max_depth,
+                                       std::vector<TetId>& ends) {
+  collect_shell(mesh, v, seed);
+  visited_.clear();
+  bfs_parent_.clear();
+  queue_.clear();
+  depth_.clear();
+  ends.clear();
+  auto has_border_face = [&](TetId t) {
+    const int lv = mesh.local_index(t, v);
+    for (int f = 0; f < 4; ++f)
+      if (f != lv && mesh.is_boundary_face(t, f)) return true;
+    return false;
+  };
+  for (TetId t : shell_) {
+    if (!marked(t)) continue;
+    if (has_border_face(t)) return true;
+    visited_.insert(t);
+    queue_.push_back(t);
+    depth_.push_back(0);
+  }
+  for (std::size_t i = 0; i < queue_.size(); ++i) {
+    const TetId cur = queue_[i];
+    const int d = depth_[i];
+    if (d > 0 && has_border_face(cur)) {
+      ends.push_back(cur);
+      continue;
+    }
+    if (d >= max_depth) continue;
+    visit_fresh_shell_neighbours(mesh, v, cur, [&](TetId n) {
+      bfs_parent_.set(n, cur);
+      queue_.push_back(n);
+      depth_.push_back(static_cast<std::uint8_t>(d + 1));
+    });
+  }
+  return !ends.empty();
+}
+
+void SetRemovalWorkspace::border_path(TetId end, std::vector<TetId>& out) const {
+  // The start tets were reached from nowhere: the walk back stops at them.
+  const std::size_t begin = out.size();
+  for (TetId p = end; bfs_parent_.contains(p); p = bfs_parent_.get(p, kNoTet)) out.push_back(p);
+  std::reverse(out.begin() + static_cast<std::ptrdiff_t>(begin), out.end());
+}
+
 void SetRemovalWorkspace::remaining_runs(const TetMesh& mesh, TetId seed, int local_edge,
                                          std::vector<TetId>& tets, std::vector<std::uint32_t>& sizes) {
   const bool open = mesh.edge_shell(seed, local_edge, ring_);

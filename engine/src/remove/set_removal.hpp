@@ -73,6 +73,18 @@ class SetRemovalWorkspace {
   // marked tet already has a boundary face through v.
   bool path_to_border(const TetMesh& mesh, VertId v, TetId seed, int max_depth, std::vector<TetId>& out);
 
+  // Paper 3.5 as written ("if no smaller removable set is determined"): the same breadth-first
+  // search carried on past the first border tet, to every tet with a border face through v
+  // within `max_depth` tets; a border tet is an end, not walked through (a path through it is
+  // longer than the one ending there). The ends into `ends` in the order met, so by path
+  // length; border_path() gives each end's path. False when there is none; true with `ends`
+  // empty when a marked tet already has a border face through v.
+  bool border_paths(const TetMesh& mesh, VertId v, TetId seed, int max_depth, std::vector<TetId>& ends);
+  // The path of the last border_paths() to one of its ends (marked start excluded, nearest to
+  // the set first), appended to `out`. Valid until the next path search: the set tests and the
+  // component walks in between leave it alone.
+  void border_path(TetId end, std::vector<TetId>& out) const;
+
   // The unmarked tets around the edge (seed, local_edge) in rotation order, split into maximal
   // runs of consecutive tets: appended to `tets` run after run, sizes to `sizes`.
   void remaining_runs(const TetMesh& mesh, TetId seed, int local_edge, std::vector<TetId>& tets,

@@ -25,7 +25,7 @@ std::vector<std::string> tokens_of(const std::string& line) {
 
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
-         w == "split" || w == "improve" || w == "quality_floor";
+         w == "order" || w == "split" || w == "improve" || w == "quality_floor";
 }
 
 // Applies a parameter line to `params`; a message when the value is not acceptable.
@@ -35,6 +35,10 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
     const auto s = parse_strategy(value);
     if (!s) return "strategy must be basic, neighbours, combined or wide";
     next.strategy = *s;
+  } else if (name == "order") {
+    const auto o = parse_removal_order(value);
+    if (!o) return std::string("order must be paper or direct-first");
+    next.order = *o;
   } else if (name == "split") {
     const auto m = parse_split_method(value);
     if (!m) return "split must be templates or bisection";

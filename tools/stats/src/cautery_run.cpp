@@ -51,6 +51,7 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   CutParams params;
   params.strategy = options.strategy;
   params.split_method = options.split;
+  params.order = options.order;
   params.improve = options.improve;
   scenario::RunOptions run_options;
   run_options.check = options.check_every_cut ? scenario::CheckMode::kEvery : scenario::CheckMode::kEnd;

@@ -78,7 +78,7 @@ std::string table2_html(const StatsReport& report) {
 std::string table2_wide_html(const StatsReport& report) {
   std::string h = "<table id=\"table2-wide\"><tr><th rowspan=\"2\">mesh</th>"
                   "<th colspan=\"4\">vertex singularities</th><th colspan=\"4\">edge singularities</th>"
-                  "<th colspan=\"2\">global card. / selected</th><th rowspan=\"2\">wide:<br>% unresolved</th></tr><tr>";
+                  "<th colspan=\"2\">global card. / operation</th><th rowspan=\"2\">wide:<br>% unresolved</th></tr><tr>";
   for (int i = 0; i < 2; ++i) h += "<th>% unres.</th><th>3.5</th><th>card.</th><th>3.5</th>";
   h += "<th>wide</th><th>3.5</th></tr>\n";
   for (std::size_t i = 0; i < report.wide_meshes.size(); ++i) {

@@ -16,10 +16,11 @@ double average(std::uint64_t sum, std::uint64_t count) {
 
 Table1Row table1_row(const RemovalReport& r) {
   Table1Row row;
-  row.operations = r.requested;
-  row.removable_pct = percent(r.direct, r.requested);
-  row.vertex_pct = percent(r.vertex_singularities, r.requested);
-  row.edge_pct = percent(r.edge_singularities, r.requested);
+  row.operations = r.surface_requested;
+  row.all_operations = r.requested;
+  row.removable_pct = percent(r.surface_direct, r.surface_requested);
+  row.vertex_pct = percent(r.surface_vertex_singularities, r.surface_requested);
+  row.edge_pct = percent(r.surface_edge_singularities, r.surface_requested);
   return row;
 }
 
@@ -31,8 +32,8 @@ Table2Row table2_row(const RemovalReport& r) {
   row.edge_cardinality = average(r.edge_neighbour_set_tets, r.edge_resolved_by_neighbours);
   const std::uint64_t by_neighbours_or_direct = r.direct + r.resolved_by_neighbours;
   row.global_unresolved_pct = percent(r.requested - by_neighbours_or_direct, r.requested);
-  row.global_cardinality = average(r.direct + r.neighbour_set_tets, r.selected_in_sets);
-  row.global_cardinality_per_request = average(r.direct + r.neighbour_set_tets, by_neighbours_or_direct);
+  row.global_cardinality = average(r.direct + r.neighbour_set_tets, by_neighbours_or_direct);
+  row.global_cardinality_per_selected = average(r.direct + r.neighbour_set_tets, r.selected_in_sets);
   row.combined_unresolved_pct = percent(r.unresolved, r.requested);
   return row;
 }

@@ -70,34 +70,38 @@ class TextTable {
 
 }  // namespace
 
-std::string text_report(const StatsReport& report) {
+namespace {
+
+// Tables 1 and 2 of one set of runs (combined, in one removal order), ours beside the paper's.
+std::string tables_1_and_2(const std::vector<MeshStats>& meshes, const std::string& order) {
   std::string out;
-  out += "Table 1. Removing a tet on the surface: how often it is removable directly, or would make a\n"
-         "vertex or an edge singular (paper 3.6, combined strategy). ours / paper / difference\n\n";
+  out += "Table 1. Removing a tet on the surface (requested with a face on the surface, as the paper's\n"
+         "title says): how often it is removable directly, or would make a vertex or an edge singular\n"
+         "(paper 3.6, combined strategy, " + order + " order). ours / paper / difference; all ops: every\n"
+         "distinct request, interior tets included\n\n";
   TextTable t1;
-  t1.row({"mesh", "tets", "cuts", "operations", "paper", "% removable", "paper", "diff", "% vertex", "paper", "diff",
-          "% edge", "paper", "diff"});
-  for (std::size_t i = 0; i < report.meshes.size(); ++i) {
-    const MeshStats& m = report.meshes[i];
+  t1.row({"mesh", "tets", "cuts", "operations", "paper", "all ops", "% removable", "paper", "diff", "% vertex", "paper",
+          "diff", "% edge", "paper", "diff"});
+  for (const MeshStats& m : meshes) {
     const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
     t1.row({mesh_label(m.mesh), std::to_string(m.tets_before), std::to_string(m.cuts), std::to_string(m.table1.operations),
-            std::to_string(p.operations), fixed(m.table1.removable_pct, 1), fixed(p.removable_pct, 1),
-            difference(m.table1.removable_pct, p.removable_pct, 1), fixed(m.table1.vertex_pct, 1),
-            fixed(p.vertex_pct, 1), difference(m.table1.vertex_pct, p.vertex_pct, 1), fixed(m.table1.edge_pct, 1),
-            fixed(p.edge_pct, 1), difference(m.table1.edge_pct, p.edge_pct, 1)});
+            std::to_string(p.operations), std::to_string(m.table1.all_operations), fixed(m.table1.removable_pct, 1),
+            fixed(p.removable_pct, 1), difference(m.table1.removable_pct, p.removable_pct, 1),
+            fixed(m.table1.vertex_pct, 1), fixed(p.vertex_pct, 1), difference(m.table1.vertex_pct, p.vertex_pct, 1),
+            fixed(m.table1.edge_pct, 1), fixed(p.edge_pct, 1), difference(m.table1.edge_pct, p.edge_pct, 1)});
   }
   out += t1.str();
 
-  out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one: % of singularities it\n"
-         "did not resolve and the mean size of the sets it removed. ours / paper / difference. The\n"
-         "global cardinality is per selected tet taken (card./sel., the paper's figure: tets removed when\n"
-         "a single tet should be removed) and, for comparison, per request (card./req.); the last column\n"
-         "is what the combined strategy left in place (must be 0)\n\n";
+  out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one (" + order + " order): % of\n"
+         "singularities it did not resolve and the mean size of the sets it removed. ours / paper /\n"
+         "difference. The global cardinality is per operation resolved directly or by neighbours\n"
+         "(card./op., the paper's column: its figures reconstruct so) and, beside it, per selected tet the\n"
+         "sets took (card./sel.); the last column is what the combined strategy left in place (must be 0)\n\n";
   TextTable t2;
   t2.row({"mesh", "vertex % unres.", "paper", "diff", "card.", "paper", "diff", "edge % unres.", "paper", "diff",
-          "card.", "paper", "diff", "global % unres.", "paper", "diff", "card./sel.", "paper", "diff", "card./req.",
+          "card.", "paper", "diff", "global % unres.", "paper", "diff", "card./op.", "paper", "diff", "card./sel.",
           "combined % unres."});
-  for (const MeshStats& m : report.meshes) {
+  for (const MeshStats& m : meshes) {
     const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table2Row& o = m.table2;
     t2.row({mesh_label(m.mesh), fixed(o.vertex_unresolved_pct, 1), fixed(p.vertex_unresolved_pct, 1),
@@ -109,18 +113,26 @@ std::string text_report(const StatsReport& report) {
             fixed(o.global_unresolved_pct, 1), fixed(p.global_unresolved_pct, 1),
             difference(o.global_unresolved_pct, p.global_unresolved_pct, 1), fixed(o.global_cardinality, 2),
             fixed(p.global_cardinality, 1), difference(o.global_cardinality, p.global_cardinality, 2),
-            fixed(o.global_cardinality_per_request, 2), fixed(o.combined_unresolved_pct, 1)});
+            fixed(o.global_cardinality_per_selected, 2), fixed(o.combined_unresolved_pct, 1)});
   }
   out += t2.str();
-  for (const MeshStats& m : report.meshes)
+  for (const MeshStats& m : meshes)
     if (!m.ok) out += "  " + mesh_label(m.mesh) + ": the scenario stopped early: " + m.error + "\n";
+  return out;
+}
 
+}  // namespace
+
+std::string text_report(const StatsReport& report) {
+  std::string out;
+  out += std::string("Improvement pass: ") + (report.improve ? "on" : "off (--no-improve)") + "\n\n";
+  out += tables_1_and_2(report.meshes, "direct-first");
   out += "\nTable 2, our wider search (strategy wide, not the paper's: whole vertex shells and rounds of\n"
          "repairs, smallest set first) in place of 3.5 on the same scenarios: each figure of the wide\n"
          "search, then the paper's search's (3.5) from Table 2; the last column is what the wide strategy\n"
          "left in place (must be 0)\n\n";
   TextTable tw;
-  tw.row({"mesh", "vertex % unres.", "3.5", "card.", "3.5", "edge % unres.", "3.5", "card.", "3.5", "card./sel.", "3.5",
+  tw.row({"mesh", "vertex % unres.", "3.5", "card.", "3.5", "edge % unres.", "3.5", "card.", "3.5", "card./op.", "3.5",
           "wide % unres."});
   for (std::size_t i = 0; i < report.wide_meshes.size(); ++i) {
     const MeshStats& m = report.wide_meshes[i];
@@ -135,16 +147,24 @@ std::string text_report(const StatsReport& report) {
   for (const MeshStats& m : report.wide_meshes)
     if (!m.ok) out += "  " + mesh_label(m.mesh) + ": the wide run stopped early: " + m.error + "\n";
 
+  if (!report.paper_order_meshes.empty()) {
+    out += "\nThe same scenarios in the paper's order (3.3: \"removing one-by-one all tetrahedra in\n"
+           "T_removal\": the first pending selected tet with a face on the surface, removable or not), in\n"
+           "place of ours (every directly removable tet first):\n\n";
+    out += tables_1_and_2(report.paper_order_meshes, "paper");
+  }
+
   out += "\nStrategies on the " + report.comparison_mesh +
          " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";
   TextTable s;
-  s.row({"strategy", "cuts", "requests", "tets created", "tets removed", "removed/request", "unresolved", "tets after",
+  s.row({"strategy", "cuts", "requests", "tets created", "tets removed", "removed/request", "unresolved",
+         "fallback refused", "tets after",
          "worst created", "min dihedral", "no pass: worst", "min dihedral", "worst quality", "mean quality", "p50 us",
          "p99 us"});
   for (const StrategyRow& r : report.strategies)
     s.row({r.name, std::to_string(r.cuts), std::to_string(r.requests), std::to_string(r.tets_created),
            std::to_string(r.tets_removed), fixed(r.removed_per_request, 2), std::to_string(r.unresolved),
-           std::to_string(r.tets_after) + (r.ok ? "" : " *"), significant(r.worst_created_radius_ratio, 3),
+           std::to_string(r.fallback_refused), std::to_string(r.tets_after) + (r.ok ? "" : " *"), significant(r.worst_created_radius_ratio, 3),
            fixed(r.worst_created_min_dihedral_deg, 1), created_worst(r.created_without_improvement),
            created_dihedral(r.created_without_improvement), significant(r.worst_radius_ratio, 3),
            fixed(r.mean_radius_ratio, 3), fixed(r.p50_us, 1), fixed(r.p99_us, 1)});

@@ -7,6 +7,8 @@
 //   diameter D                    tool diameter           (also: dref_factor F, p P, depth N,
 //                                                          iterations N, split templates|bisection)
 //   strategy S                    basic|neighbours|combined|wide
+//   order O                       paper|direct-first: which selected tet a cut requests next
+//                                 (CutParams::order, cut_strategies.hpp)
 //   improve on|off                the improvement pass that ends each cut (CutParams::improve)
 //   quality_floor F               the radius ratio it lifts created tets to (CutParams, I7's F)
 //   cut X,Y,Z                     one cut with the tool centred there

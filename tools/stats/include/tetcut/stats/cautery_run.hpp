@@ -28,6 +28,7 @@ struct CauteryRun {
 struct CauteryOptions {
   RemovalStrategy strategy = RemovalStrategy::kCombined;
   SplitMethod split = SplitMethod::kTemplates;
+  RemovalOrder order = RemovalOrder::kDirectFirst;  // CutParams::order; a scenario's own line wins
   // Run the local checker after every cut (the scenario runner's default). The statistics do
   // not depend on it; `tetcut stats --check end` skips it for speed and checks the end only.
   bool check_every_cut = true;

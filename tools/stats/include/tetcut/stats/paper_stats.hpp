@@ -61,6 +61,7 @@ struct StrategyRow {
   std::uint64_t tets_removed = 0;
   double removed_per_request = 0;       // tets_removed / requests
   std::uint64_t unresolved = 0;         // distinct tets left in place at the end
+  std::uint64_t fallback_refused = 0;   // fallbacks the splitter refused (RemovalReport)
   std::uint32_t tets_after = 0;         // these three: at the stop when !ok
   double worst_radius_ratio = 0, mean_radius_ratio = 0;  // of the mesh after the scenario
   double worst_created_radius_ratio = 1;                 // of the tets the cuts created
@@ -104,6 +105,9 @@ struct StatsOptions {
   bool check_every_cut = true;
   bool resection = true;                // run the liver resection (needed for the pictures)
   bool quality = true;                  // the quality rows (40 runs: 5 scenarios, 4 strategies, pass on and off)
+  // The improvement pass in the Tables' runs and the comparison (the paper has none: off measures
+  // its algorithm alone). The quality rows run both ways regardless.
+  bool improve = true;
 };
 
 struct StatsReport {
@@ -111,6 +115,10 @@ struct StatsReport {
   // The same scenarios with the wide search in place of 3.5 (3.7 and the fallback behind it, as
   // in combined), one per entry of `meshes`: its own Table 2 rows (the paper has no such search).
   std::vector<MeshStats> wide_meshes;
+  // The same scenarios with combined and the paper's order (CutParams::order: one by one, outside
+  // in) in place of direct-first: Tables 1 and 2 again, the ablation of the order.
+  std::vector<MeshStats> paper_order_meshes;
+  bool improve = true;                  // the runs' improvement pass (StatsOptions::improve)
   std::string comparison_mesh;
   std::vector<StrategyRow> strategies;
   std::vector<QualityRow> quality;      // per paper scenario, per strategy
