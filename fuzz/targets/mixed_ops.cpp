@@ -77,8 +77,10 @@ void check_created_vertices(const CheckedMesh& checked, const ChangeLog& log, bo
     Vec3 want{};
     for (int i = 0; i < c.count; ++i) {
       which.append(1, ' ').append(std::to_string(c.from[i].value)).append(1, ':').append(std::to_string(c.weight[i]));
-      checked.require(c.weight[i] > 0.0 && c.from[i] != c.vertex && mesh.is_live(c.from[i]), "interpolation",
-                      which + ": not a positive weight on another live vertex");
+      // Negative only for a vertex smoothing moved just outside the old region (change_log.hpp):
+      // what must hold is that the weights reproduce its position, checked below.
+      checked.require(c.weight[i] != 0.0 && c.from[i] != c.vertex && mesh.is_live(c.from[i]), "interpolation",
+                      which + ": not a weight on another live vertex");
       sum += c.weight[i];
       want = want + c.weight[i] * mesh.position(c.from[i]);
       scale += norm(mesh.position(c.from[i]));

@@ -225,6 +225,8 @@ py::dict stats_of(const CutterPtr& held) {
   removal["removed"] = r.removed;
   removal["unresolved"] = r.unresolved;
   removal["direct"] = r.direct;
+  removal["surface_requested"] = r.surface_requested;  // Table 1's population: a face on the surface
+  removal["surface_direct"] = r.surface_direct;
   removal["vertex_singularities"] = r.vertex_singularities;
   removal["edge_singularities"] = r.edge_singularities;
   removal["resolved_by_neighbours"] = r.resolved_by_neighbours;
@@ -239,6 +241,7 @@ py::dict stats_of(const CutterPtr& held) {
   removal["cardinality_per_selected"] = r.cardinality_per_selected();
   py::dict table1;
   table1["operations"] = t1.operations;
+  table1["all_operations"] = t1.all_operations;
   table1["removable_pct"] = t1.removable_pct;
   table1["vertex_pct"] = t1.vertex_pct;
   table1["edge_pct"] = t1.edge_pct;
@@ -249,7 +252,7 @@ py::dict stats_of(const CutterPtr& held) {
   table2["edge_cardinality"] = t2.edge_cardinality;
   table2["global_unresolved_pct"] = t2.global_unresolved_pct;
   table2["global_cardinality"] = t2.global_cardinality;
-  table2["global_cardinality_per_request"] = t2.global_cardinality_per_request;
+  table2["global_cardinality_per_selected"] = t2.global_cardinality_per_selected;
   table2["combined_unresolved_pct"] = t2.combined_unresolved_pct;
   py::dict out;
   out["removal"] = removal;

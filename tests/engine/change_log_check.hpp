@@ -38,7 +38,7 @@ inline int expect_log_describes(const TetMesh& before, const TetMesh& mesh, cons
     double sum = 0.0;
     for (int i = 0; i < v.count; ++i) {
       EXPECT_TRUE(before.is_live(v.from[i]));
-      EXPECT_GT(v.weight[i], 0.0);
+      EXPECT_NE(v.weight[i], 0.0);  // negative only for a vertex moved just outside (change_log.hpp)
       p = p + v.weight[i] * before.position(v.from[i]);
       sum += v.weight[i];
     }

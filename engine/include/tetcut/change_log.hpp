@@ -38,8 +38,11 @@ struct CreatedTet {
 struct CreatedVertex {
   VertId vertex;
   // Position and every attribute channel: sum over i < count of weight[i] * (the value of from[i]
-  // before the operation), to rounding (the mesh's own position is the reference). Weights are
-  // positive and sum to 1. count 2: on the old edge (from[0], from[1]) at t = weight[1].
+  // before the operation), to rounding (the mesh's own position is the reference). Weights sum to
+  // 1 and are positive, but for a vertex smoothing moved just outside the region the operation
+  // started with (the organ's surface within the cut's reach may move outward by up to 5 % of an
+  // edge: improve/smoothing.hpp): its coordinates in the nearest old tet, one or more slightly
+  // negative, extrapolate. count 2: on the old edge (from[0], from[1]) at t = weight[1].
   std::array<VertId, 4> from{};
   std::array<double, 4> weight{};
   std::uint8_t count = 0;

@@ -6,6 +6,7 @@
 // commit() derives the net ChangeLog a consumer applies.
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -251,9 +252,13 @@ void TetMesh::ancestors_at_start(TetId t, std::vector<TetId>& out) {
 // v. So when v is outside every ancestor, the search widens to every tet live at the start that
 // the transaction changed (the journal's first entries: O(journal), on this rare path only).
 // Among the tets searched, the one where v is deepest inside; coordinates within rounding of 0
-// are dropped (and a vertex outside every one of them, were that to happen, is clamped onto the
-// nearest).
+// are dropped. A vertex of the organ's own surface within the cut's reach may also move outward,
+// off the region the transaction started with (by at most 5 % of an edge): it is then in no tet
+// searched, and its coordinates in the nearest one have a small negative entry (an extrapolation
+// that reproduces its position; change_log.hpp says so).
 void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
+  // Barycentric coordinates are relative to the tet's size: below this, outside by rounding only.
+  constexpr double kOutsideRounding = 1e-12;
   const Vec3& p = positions_[v.value];
   double best_min = -std::numeric_limits<double>::infinity();
   auto consider = [&](TetId root) {
@@ -271,11 +276,15 @@ void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
     const double lowest = std::min(std::min(w[0], w[1]), std::min(w[2], w[3]));
     if (lowest <= best_min) return;
     best_min = lowest;
+    // Inside to within rounding: coordinates clamped at 0. Outside (v moved off the region the
+    // transaction started with): the coordinates as they are, one or more slightly negative, so
+    // that they still reproduce v's position.
+    const bool inside = lowest >= -kOutsideRounding;
     double sum = 0.0;
-    for (double& wi : w) sum += wi = std::max(wi, 0.0);
+    for (double& wi : w) sum += wi = inside ? std::max(wi, 0.0) : wi;
     out.count = 0;
     for (int i = 0; i < 4; ++i) {
-      if (w[i] / sum <= 1e-12) continue;
+      if (std::abs(w[i] / sum) <= 1e-12) continue;
       out.from[out.count] = c[i];
       out.weight[out.count++] = w[i] / sum;
     }
@@ -283,8 +292,7 @@ void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
   locate_scratch_.clear();
   ancestors_at_start(vert_tet_[v.value], locate_scratch_);
   for (TetId root : locate_scratch_) consider(root);
-  // Outside by more than rounding (barycentric coordinates are relative to the tet's size).
-  if (best_min < -1e-12) {
+  if (best_min < -kOutsideRounding) {
     for (const JournalEntry& e : journal_.entries)
       if (e.array == Array::kTetVerts && e.index < journal_.start.tets) consider(TetId{e.index});
   }
