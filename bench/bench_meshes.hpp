@@ -52,7 +52,7 @@ inline Bounds bounds(const TetMesh& mesh) {
 
 // 64 disjoint copies of the bundled liver side by side (~1M tets), copy 0 the original: a sweep
 // over copy 0 does exactly the work it does on the lone liver, and only the size of the mesh
-// around it differs (cut_bench.cpp keeps its own copy of this for BM_CutScalingSameWork).
+// around it differs (cut_bench.cpp BM_CutScalingSameWork, mechanics_bench.cpp BM_UpdateScalingSameWork).
 inline const TetMesh& replicated_corpus_liver() {
   static const TetMesh mesh = [] {
     const RawMesh one = corpus_mesh("liver.msh").to_raw();

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "bench_meshes.hpp"
+#include "counting_allocator.hpp"
 #include "gated_sweep.hpp"
 #include "refine/edge_split.hpp"
 #include "tetcut/cut.hpp"
@@ -30,24 +31,6 @@
 #include "tetcut/percentile.hpp"
 
 using tetcut::percentile;
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}  // namespace
-
-// Counting allocator: every heap allocation in the process goes through here. None of these is
-// inlined: inlined, GCC 12 sees `malloc` freed by `operator delete` (or `free` on a pointer from
-// `operator new`) and warns -Wmismatched-new-delete, although the pairs match underneath.
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void* operator new[](std::size_t size) { return operator new(size); }
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete[](void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -70,24 +53,6 @@ const tetcut::TetMesh& liver_at(int level) {
     mesh.compact();
   }
   return cache.emplace(level, std::move(mesh)).first->second;
-}
-
-// 64 disjoint copies of the bundled liver side by side (~1M tets): copy 0 is the original, so a
-// sweep over it does exactly the work it does on the lone liver, and only the size of the mesh
-// around it differs.
-const tetcut::TetMesh& replicated_liver() {
-  static const tetcut::TetMesh mesh = [] {
-    const tetcut::RawMesh one = tetcut::bench::corpus_mesh("liver.msh").to_raw();
-    tetcut::RawMesh all;
-    for (int copy = 0; copy < 64; ++copy) {
-      const tetcut::Vec3 shift{250.0 * (copy % 8), 250.0 * (copy / 8), 0.0};
-      const auto base = static_cast<std::uint32_t>(all.positions.size());
-      for (const tetcut::Vec3& p : one.positions) all.positions.push_back(p + shift);
-      for (const auto& t : one.tets) all.tets.push_back({t[0] + base, t[1] + base, t[2] + base, t[3] + base});
-    }
-    return std::move(*tetcut::build_mesh(all).mesh);
-  }();
-  return mesh;
 }
 
 struct SweepResult {
@@ -115,19 +80,19 @@ void evict_caches() {
 // depended on what the previous repetition left in them (5-8 us warm against 12-20 us cold in
 // one process, and the gate's median of three repetitions mixed the two).
 void run_sweep(int level, SweepResult& out) {
-  const tetcut::TetMesh& base = level >= 0 ? liver_at(level) : replicated_liver();
+  const tetcut::TetMesh& base = level >= 0 ? liver_at(level) : tetcut::bench::replicated_corpus_liver();
   level = std::max(level, 0);
   static const std::vector<tetcut::Vec3> centres = tetcut::bench::gated_sweep_centres();
   tetcut::TetMesh mesh = base;
   tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter / (1 << level)});
   evict_caches();
   for (std::size_t i = 0; i < centres.size(); ++i) {
-    const std::uint64_t before = g_allocations.load(std::memory_order_relaxed);
+    const std::uint64_t before = tetcut::bench::allocations();
     const auto t0 = std::chrono::steady_clock::now();
     const tetcut::CutReport r = cutter.cut(centres[i]);
     const auto t1 = std::chrono::steady_clock::now();
     // Read before this loop's own bookkeeping allocates (the sample lists grow).
-    out.allocations += g_allocations.load(std::memory_order_relaxed) - before;
+    out.allocations += tetcut::bench::allocations() - before;
     ++out.counted_cuts;
     out.samples_us.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
     if (i == 0) out.first_us.push_back(out.samples_us.back());
@@ -184,13 +149,13 @@ BENCHMARK(BM_CutScaling)->Iterations(1)->Unit(benchmark::kMillisecond);
 // (~1M tets), the sweep on copy 0 in both. This isolates what the mesh's size alone costs.
 void BM_CutScalingSameWork(benchmark::State& state) {
   liver_at(0);
-  replicated_liver();
+  tetcut::bench::replicated_corpus_liver();
   SweepResult small, large;
   for (auto _ : state) {
     run_sweep(0, small);
     run_sweep(-1, large);
   }
-  state.counters["tets_large"] = static_cast<double>(replicated_liver().num_tets());
+  state.counters["tets_large"] = static_cast<double>(tetcut::bench::replicated_corpus_liver().num_tets());
   state.counters["p50_ratio_1M_over_16k"] = percentile(large.samples_us, 0.5) / percentile(small.samples_us, 0.5);
   state.counters["p99_ratio_1M_over_16k"] = percentile(large.samples_us, 0.99) / percentile(small.samples_us, 0.99);
 }

@@ -25,29 +25,13 @@
 #include <vector>
 
 #include "bench_meshes.hpp"
+#include "counting_allocator.hpp"
 #include "gated_sweep.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/mechanics/rendered_surface.hpp"
 #include "tetcut/mechanics/sparse_reference.hpp"
 #include "tetcut/mechanics/tensor_mass.hpp"
 #include "tetcut/percentile.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}  // namespace
-
-// Counting allocator (as cut_bench.cpp's): the update and the step must allocate nothing once
-// the consumers are built. Not inlined, for the reason cut_bench.cpp gives.
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void* operator new[](std::size_t size) { return operator new(size); }
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete[](void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -95,13 +79,13 @@ void BM_HapticFrame(benchmark::State& state) {
       const auto t0 = std::chrono::steady_clock::now();
       cutter.cut(c, &log);
       const auto t1 = std::chrono::steady_clock::now();
-      const std::uint64_t allocations_before = g_allocations.load(std::memory_order_relaxed);
+      const std::uint64_t allocations_before = tetcut::bench::allocations();
       model.apply(mesh, log);
       const auto t_model = std::chrono::steady_clock::now();
       surface.apply(mesh, log);
       const auto t2 = std::chrono::steady_clock::now();
       model.step(dt);
-      consumer_allocations += g_allocations.load(std::memory_order_relaxed) - allocations_before;
+      consumer_allocations += tetcut::bench::allocations() - allocations_before;
       model_us.push_back(std::chrono::duration<double, std::micro>(t_model - t1).count());
       step_us.push_back(since_us(t2));
       update_us.push_back(std::chrono::duration<double, std::micro>(t2 - t1).count());
