@@ -248,8 +248,13 @@ void SetRemovalWorkspace::remaining_pieces(const TetMesh& mesh, const Removabili
   }
 }
 
-bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId seed, int max_depth,
-                                         std::vector<TetId>& out) {
+// The breadth-first search both path queries run (paper 3.5): from the marked tets around v,
+// through unmarked tets around v, at most max_depth steps. Each tet reached with a border face
+// through v goes to at_border(), which returns true to stop the search; a border tet is not
+// walked through. True when stopped, or at once (nothing reported) when a marked tet already
+// has a border face through v.
+template <class AtBorder>
+bool SetRemovalWorkspace::search_to_border(const TetMesh& mesh, VertId v, TetId seed, int max_depth, AtBorder&& at_border) {
   collect_shell(mesh, v, seed);
   visited_.clear();
   bfs_parent_.clear();
@@ -272,10 +277,8 @@ bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId se
     const TetId cur = queue_[i];
     const int d = depth_[i];
     if (d > 0 && has_border_face(cur)) {
-      const std::size_t begin = out.size();
-      for (TetId p = cur; !marked(p); p = bfs_parent_.get(p, kNoTet)) out.push_back(p);
-      std::reverse(out.begin() + static_cast<std::ptrdiff_t>(begin), out.end());
-      return true;
+      if (at_border(cur)) return true;
+      continue;
     }
     if (d >= max_depth) continue;
     visit_fresh_shell_neighbours(mesh, v, cur, [&](TetId n) {
@@ -287,42 +290,22 @@ bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId se
   return false;
 }
 
+bool SetRemovalWorkspace::path_to_border(const TetMesh& mesh, VertId v, TetId seed, int max_depth,
+                                         std::vector<TetId>& out) {
+  return search_to_border(mesh, v, seed, max_depth, [&](TetId end) {
+    border_path(end, out);
+    return true;  // the nearest border tet ends the search
+  });
+}
+
 bool SetRemovalWorkspace::border_paths(const TetMesh& mesh, VertId v, TetId seed, int max_depth,
                                        std::vector<TetId>& ends) {
-  collect_shell(mesh, v, seed);
-  visited_.clear();
-  bfs_parent_.clear();
-  queue_.clear();
-  depth_.clear();
   ends.clear();
-  auto has_border_face = [&](TetId t) {
-    const int lv = mesh.local_index(t, v);
-    for (int f = 0; f < 4; ++f)
-      if (f != lv && mesh.is_boundary_face(t, f)) return true;
+  const bool opens = search_to_border(mesh, v, seed, max_depth, [&](TetId end) {
+    ends.push_back(end);
     return false;
-  };
-  for (TetId t : shell_) {
-    if (!marked(t)) continue;
-    if (has_border_face(t)) return true;
-    visited_.insert(t);
-    queue_.push_back(t);
-    depth_.push_back(0);
-  }
-  for (std::size_t i = 0; i < queue_.size(); ++i) {
-    const TetId cur = queue_[i];
-    const int d = depth_[i];
-    if (d > 0 && has_border_face(cur)) {
-      ends.push_back(cur);
-      continue;
-    }
-    if (d >= max_depth) continue;
-    visit_fresh_shell_neighbours(mesh, v, cur, [&](TetId n) {
-      bfs_parent_.set(n, cur);
-      queue_.push_back(n);
-      depth_.push_back(static_cast<std::uint8_t>(d + 1));
-    });
-  }
-  return !ends.empty();
+  });
+  return opens || !ends.empty();
 }
 
 void SetRemovalWorkspace::border_path(TetId end, std::vector<TetId>& out) const {

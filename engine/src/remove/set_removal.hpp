@@ -97,6 +97,9 @@ class SetRemovalWorkspace {
  private:
   // The whole shell of v into shell_ (and in_shell_).
   void collect_shell(const TetMesh& mesh, VertId v, TetId seed);
+  // The breadth-first search of path_to_border() and border_paths() (set_removal.cpp).
+  template <class AtBorder>
+  bool search_to_border(const TetMesh& mesh, VertId v, TetId seed, int max_depth, AtBorder&& at_border);
   // The breadth-first step both shell walks take: each unmarked neighbour of `cur` across a face
   // through v not visited yet is marked visited and handed to `visit`.
   template <class Visit>
