@@ -392,7 +392,7 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
   // means the tool is empty.
   work_.clear();
   for (const TetMesh::TetBirth& birth : mesh_.tets_made_since(cut_start_))
-    if (mesh_.is_live(birth.tet) && !tissue_.contains(birth.tet) && selectable(birth.tet)) work_.push_back(birth.tet);
+    if (piece_in_tool(birth.tet)) work_.push_back(birth.tet);
   for (TetId t : work_) {
     if (!mesh_.is_live(t) || tried_.contains(t)) continue;
     ++report.kept_pieces_requested;
@@ -400,11 +400,15 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
   }
 }
 
+bool Cutter::Pipeline::piece_in_tool(TetId t) const {
+  return mesh_.is_live(t) && !tissue_.contains(t) && selectable(t);
+}
+
 void Cutter::Pipeline::count_left_in_tool(CutReport& report) {
   // After the improvement pass, whose flips and collapses make tets too. The tets that were there
   // before the cut and meet the tool were all selected (and went, or count as unresolved).
   for (const TetMesh::TetBirth& birth : mesh_.tets_made_since(cut_start_))
-    if (mesh_.is_live(birth.tet) && !tissue_.contains(birth.tet) && selectable(birth.tet)) ++report.left_in_tool;
+    if (piece_in_tool(birth.tet)) ++report.left_in_tool;
 }
 
 std::string Cutter::Pipeline::floor_failure(const CutReport& report) {

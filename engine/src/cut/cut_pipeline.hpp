@@ -51,6 +51,8 @@ class Cutter::Pipeline {
   // pieces of selected tissue inside the tool, and so selected in turn.
   void follow(const TetMesh::Savepoint& point);
   [[nodiscard]] bool selectable(TetId t) const;
+  // A tet the cut made, still there, not selected, and selectable: tissue left in the tool.
+  [[nodiscard]] bool piece_in_tool(TetId t) const;
   [[nodiscard]] bool pending(TetId t) const;
   void clear_marks();  // a new cut: fresh marks
   // Opens the transaction a cut or a removal request is (savepoint, fresh marks, the removal
