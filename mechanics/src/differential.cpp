@@ -189,7 +189,7 @@ void DifferentialCheck::before(const TetMesh& mesh) {
 
 std::uint32_t DifferentialCheck::locate_label(const Vec3& p) const {
   for (std::uint32_t t = 0; t < before_tets_.size(); ++t) {  // id order: the lowest containing tet
-    if (before_tets_[t][0] == kDeadTetMarker) continue;
+    if (gone_[t] == 0) continue;
     const auto& box = before_boxes_[t];
     if (p.x < box[0].x || p.y < box[0].y || p.z < box[0].z || p.x > box[1].x || p.y > box[1].y || p.z > box[1].z)
       continue;
@@ -201,11 +201,28 @@ std::uint32_t DifferentialCheck::locate_label(const Vec3& p) const {
   return TensorMassModel::kNoLabel;
 }
 
+std::optional<std::string> DifferentialCheck::label_from_parents(const ChangeLog& log, TetId t,
+                                                                  std::uint32_t& label) const {
+  const auto entry = std::find_if(log.created.begin(), log.created.end(), [&](const CreatedTet& c) { return c.tet == t; });
+  if (entry == log.created.end()) return say("tet ", t.value, ": new after the cut, but not in the log's created tets");
+  const auto parents = log.parents_of(*entry);
+  if (parents.empty()) return say("tet ", t.value, ": created without a parent");
+  for (TetId p : parents)
+    if (p.value >= gone_.size() || gone_[p.value] == 0)
+      return say("tet ", t.value, ": parent ", p.value, " is not a pre-cut tet the cut took away");
+  label = before_labels_[parents.front().value];
+  return std::nullopt;
+}
+
 std::optional<std::string> DifferentialCheck::after(const TetMesh& mesh, const ChangeLog& log) {
   const ApplyProblems problems = model_.apply(mesh, log);
   const std::uint32_t unknown = surface_.apply(mesh, log);
-  // The witness's labels: a tet there before keeps its own; another takes the pre-cut tet's
-  // that contains its centroid.
+  // The witness's labels: a tet there before keeps its own; another takes the label of the
+  // pre-cut tet gone after the cut that contains its centroid (label_rule.hpp).
+  gone_.assign(before_tets_.size(), 0);
+  for (std::uint32_t t = 0; t < before_tets_.size(); ++t)
+    gone_[t] = before_tets_[t][0] != kDeadTetMarker &&
+               (!mesh.is_live(TetId{t}) || mesh.raw_tets()[t] != before_tets_[t]);
   labels_.assign(mesh.tet_capacity(), TensorMassModel::kNoLabel);
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
     const TetId id{t};
@@ -217,6 +234,8 @@ std::optional<std::string> DifferentialCheck::after(const TetMesh& mesh, const C
     }
     labels_[t] = locate_label(tet_centroid(mesh.position(VertId{now[0]}), mesh.position(VertId{now[1]}),
                                            mesh.position(VertId{now[2]}), mesh.position(VertId{now[3]})));
+    if (labels_[t] == TensorMassModel::kNoLabel)
+      if (auto d = label_from_parents(log, id, labels_[t])) return "mechanics: " + *d;
   }
   const TensorMassModel rebuilt(mesh, params_, labels_);
   if (auto d = compare(model_, rebuilt, mesh, tolerance_, &worst_)) return "mechanics: " + *d;

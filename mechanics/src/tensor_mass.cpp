@@ -244,18 +244,25 @@ std::uint32_t TensorMassModel::inherited_label(const TetMesh& mesh, const Change
   const auto parents = log.parents_of(c);
   for (TetId p : parents)
     if (!std::binary_search(log.removed.begin(), log.removed.end(), p)) ++problems.parent_not_removed;
-  if (parents.size() == 1) return has_tet(parents[0]) ? labels_[parents[0].value] : kNoLabel;
   const auto cv = mesh.tet(c.tet);
   const Vec3 centroid = tet_centroid(mesh.position(cv[0]), mesh.position(cv[1]), mesh.position(cv[2]),
                                      mesh.position(cv[3]));
-  std::uint32_t fallback = kNoLabel;
-  for (TetId p : parents) {  // sorted by id: the lowest containing parent wins
-    if (!has_tet(p)) continue;
+  const auto contains = [&](TetId p) {
+    if (!has_tet(p)) return false;
     const auto& pv = tets_[p.value];
-    if (tet_contains(rest_[pv[0]], rest_[pv[1]], rest_[pv[2]], rest_[pv[3]], centroid)) return labels_[p.value];
-    if (fallback == kNoLabel) fallback = labels_[p.value];
-  }
-  return fallback;
+    return tet_contains(rest_[pv[0]], rest_[pv[1]], rest_[pv[2]], rest_[pv[3]], centroid);
+  };
+  // label_rule.hpp's three steps. 1: the parents (sorted by id: the lowest containing one wins).
+  for (TetId p : parents)
+    if (contains(p)) return labels_[p.value];
+  // 2: the child pokes out of its parents (a vertex moved off the surface): every tet the cut
+  // removed, in id order. Rare, so the scan over the log costs nothing in the common case.
+  for (TetId p : log.removed)
+    if (contains(p)) return labels_[p.value];
+  // 3: the centroid left the mesh: the lowest-id parent's.
+  for (TetId p : parents)
+    if (has_tet(p)) return labels_[p.value];
+  return kNoLabel;
 }
 
 ApplyProblems TensorMassModel::apply(const TetMesh& mesh, const ChangeLog& log) {

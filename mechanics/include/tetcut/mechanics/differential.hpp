@@ -24,8 +24,11 @@
 //                     channels (attributes.hpp), to 1e-12 of the field's size (the same weights,
 //                     summed in another order).
 //   labels            the witness keeps the pre-cut tets; a tet that was not there takes the label
-//                     of the lowest-id pre-cut tet containing its centroid (label_rule.hpp), found
-//                     by a search of every pre-cut tet, not through the log.
+//                     of the lowest-id pre-cut tet gone after the cut that contains its centroid
+//                     (label_rule.hpp, steps 1 and 2), found by a search of every pre-cut tet, not
+//                     through the log. Only a centroid no such tet contains (a smoothing moved
+//                     the surface outward: step 3) takes its label from the log's parents, each
+//                     checked to be a pre-cut tet the cut took away.
 //
 // Cost O(#T) per cut (the rebuild, the snapshot, the comparison): tests and fuzzers only.
 #pragma once
@@ -74,7 +77,12 @@ class DifferentialCheck {
  private:
   [[nodiscard]] Vec3 field_u(const Vec3& x) const;
   [[nodiscard]] Vec3 field_v(const Vec3& x) const;
+  // The label of the lowest-id pre-cut tet gone after the cut that contains p; kNoLabel if none.
   [[nodiscard]] std::uint32_t locate_label(const Vec3& p) const;
+  // Step 3 for created tet t: the lowest-id parent's label, or a reason the log's parents of t
+  // are not pre-cut tets the cut took away.
+  [[nodiscard]] std::optional<std::string> label_from_parents(const ChangeLog& log, TetId t,
+                                                              std::uint32_t& label) const;
 
   ModelParams params_;
   double tolerance_;
@@ -85,6 +93,7 @@ class DifferentialCheck {
   std::vector<Vec3> before_positions_;
   std::vector<std::array<Vec3, 2>> before_boxes_;
   std::vector<std::uint32_t> before_labels_;
+  std::vector<std::uint8_t> gone_;  // per pre-cut tet: live before, not there unchanged after
   std::uint32_t channel_u_ = 0, channel_v_ = 0;
   Vec3 origin_{};
   double field_scale_ = 1.0;

@@ -1,9 +1,17 @@
-// Which label a tet a cut creates takes: its parent's, and for a child with several parents (a
-// flip's, a smoothing's: change_log.hpp) the label of the lowest-id parent whose closed rest
-// shape contains the child's centroid, by the exact orientation predicate. A child lies inside
-// the union of its parents, so some parent contains its centroid; the rule is a function of the
-// geometry alone, which is what lets a differential test recompute it without the log (the
-// parent that contains the centroid is also the pre-cut tet that contains it).
+// Which label a tet a cut creates takes, by three steps on its centroid (tet_centroid) and the
+// closed rest shapes before the cut (tet_contains, the exact orientation predicate):
+//   1. the lowest-id parent that contains the centroid (change_log.hpp: a split's child has one
+//      parent, a flip's or a smoothing's several);
+//   2. else the lowest-id tet the cut removed that contains it;
+//   3. else the lowest-id parent's.
+// A child of a split or a flip lies inside the union of its parents, so step 1 decides; so does
+// a smoothing's away from the surface. Steps 2 and 3 exist because smoothing may move a vertex
+// off the surface (improve/smoothing.hpp: within 1e-9 of its planes, and on the cut's own surface
+// within 5 % of an edge): a child may then poke into a tet the tool removed (step 2), or out of
+// the mesh altogether (step 3, where the geometry names no tet and the parents decide).
+// Steps 1 and 2 are a function of the geometry alone, the lowest-id removed tet that contains the
+// centroid (they differ only when the centroid lies on a face a parent shares with a lower-id
+// removed tet), which is what lets a differential test recompute them without the log.
 #pragma once
 
 #include "tetcut/vec3.hpp"
