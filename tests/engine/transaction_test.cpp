@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "change_log_check.hpp"
 #include "core/random.hpp"
@@ -117,6 +118,69 @@ TEST(Transaction, SavepointsRollBackBitForBitAndNest) {
   random_operation(mesh, rng, splitter);
   mesh.rollback();
   expect_identical(mesh, start);
+}
+
+// The live tets' vertices by id at one moment (nullopt: dead): what changes_since() is compared
+// with, read from the mesh without the journal.
+std::vector<std::optional<TetMesh::TetVerts>> live_tets(const TetMesh& mesh) {
+  std::vector<std::optional<TetMesh::TetVerts>> out(mesh.tet_capacity());
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
+    if (mesh.is_live(TetId{t})) out[t] = mesh.tet(TetId{t});
+  return out;
+}
+
+// changes_since(p) is the difference of two snapshots: removed, the ids live at p and not live
+// now with the same vertices; created, the ids live now and not live at p with them; both sorted.
+void expect_net_change(TetMesh& mesh, const TetMesh::Savepoint& p, const std::vector<std::optional<TetMesh::TetVerts>>& at_p) {
+  std::vector<TetId> removed, created, want_removed, want_created;
+  mesh.changes_since(p, removed, created);
+  const auto now = live_tets(mesh);
+  for (std::uint32_t t = 0; t < std::max(now.size(), at_p.size()); ++t) {
+    const std::optional<TetMesh::TetVerts> then = t < at_p.size() ? at_p[t] : std::nullopt;
+    const std::optional<TetMesh::TetVerts> current = t < now.size() ? now[t] : std::nullopt;
+    if (then == current) continue;
+    if (then) want_removed.push_back(TetId{t});
+    if (current) want_created.push_back(TetId{t});
+  }
+  EXPECT_EQ(removed, want_removed);
+  EXPECT_EQ(created, want_created);
+}
+
+TEST(Transaction, ChangesSinceASavepointAreTheDifferenceOfTwoSnapshotsThroughRollbacks) {
+  SplitMix64 rng(41);
+  EdgeSplitter splitter;
+  // Some history first: ids are made from the free list as well as appended.
+  TetMesh mesh = box_with_history(rng, splitter);
+  mesh.begin_transaction();
+  const TetMesh::Savepoint start = mesh.savepoint();
+  const auto at_start = live_tets(mesh);
+  random_operation(mesh, rng, splitter);
+  random_operation(mesh, rng, splitter);
+  const TetMesh::Savepoint first = mesh.savepoint();
+  const auto at_first = live_tets(mesh);
+  random_operation(mesh, rng, splitter);
+  const TetMesh::Savepoint second = mesh.savepoint();
+  const auto at_second = live_tets(mesh);
+  random_operation(mesh, rng, splitter);
+  random_operation(mesh, rng, splitter);
+  expect_net_change(mesh, start, at_start);
+  expect_net_change(mesh, first, at_first);
+  expect_net_change(mesh, second, at_second);
+  // Undone work leaves births and freed ids behind in the scratch state: none may show.
+  mesh.rollback_to(second);
+  random_operation(mesh, rng, splitter);
+  expect_net_change(mesh, start, at_start);
+  expect_net_change(mesh, first, at_first);
+  expect_net_change(mesh, second, at_second);
+  mesh.rollback_to(first);
+  random_operation(mesh, rng, splitter);
+  expect_net_change(mesh, start, at_start);
+  expect_net_change(mesh, first, at_first);
+  std::vector<TetId> removed, created;
+  mesh.changes_since(start, removed, created);
+  EXPECT_FALSE(removed.empty());
+  EXPECT_FALSE(created.empty());
+  mesh.commit();
 }
 
 TEST(Transaction, NoIdIsReusedInsideATransactionAndChangesAreNet) {

@@ -153,30 +153,6 @@ void TetMesh::rollback() {
   commit();  // nothing is pending any more: the start had no pending ids
 }
 
-void TetMesh::changes_since(const Savepoint& p, std::vector<TetId>& removed, std::vector<TetId>& created) {
-  removed.clear();
-  created.clear();
-  if (!journal_.active) return;
-  net_seen_.clear();
-  // The first entry after p of a row that existed at p holds its state at p.
-  for (std::size_t i = p.entries; i < journal_.entries.size(); ++i) {
-    const JournalEntry& e = journal_.entries[i];
-    if (e.array != Array::kTetVerts || e.index >= p.tets || !net_seen_.insert(TetId{e.index})) continue;
-    std::array<std::uint32_t, 4> old;
-    std::memcpy(old.data(), e.old.data(), 16);
-    const bool was_live = old[0] != kDeadTetMarker;
-    const bool is_live = tet_verts_[e.index][0] != kDeadTetMarker;
-    const bool same = was_live && is_live && old == tet_verts_[e.index];
-    if (same) continue;
-    if (was_live) removed.push_back(TetId{e.index});
-    if (is_live) created.push_back(TetId{e.index});
-  }
-  for (std::uint32_t t = p.tets; t < tet_capacity(); ++t)
-    if (tet_verts_[t][0] != kDeadTetMarker) created.push_back(TetId{t});
-  std::sort(removed.begin(), removed.end());
-  std::sort(created.begin(), created.end());
-}
-
 // ---- the record of change -------------------------------------------------------------------
 
 TetMesh::TetVerts TetMesh::tet_at_start(TetId t) {
@@ -212,6 +188,26 @@ const typename Births::value_type* current_birth(const Births& births, const std
 }
 
 }  // namespace
+
+// From the births and the pending list, not the journal's entries (several per tet made or
+// removed, and every neighbour glued): inside a transaction an id freed waits on the pending list
+// until commit(), so each id is made at most once, and only by replace_tets(), which records the
+// birth. So the ids live now and dead at p are the births since p still live, and the ids live at
+// p and dead now are those freed since p (the pending list down to its head at p) not made since
+// p. No mutation changes a live tet's vertices in place.
+void TetMesh::changes_since(const Savepoint& p, std::vector<TetId>& removed, std::vector<TetId>& created) {
+  removed.clear();
+  created.clear();
+  if (!journal_.active) return;
+  for (std::size_t i = p.tet_births; i < journal_.tet_births.size(); ++i)
+    if (is_live(journal_.tet_births[i].tet)) created.push_back(journal_.tet_births[i].tet);
+  for (TetId t = pending_tet_head_; t != p.pending_tet_head; t = TetId{tet_verts_[t.value][1]}) {
+    const TetBirth* birth = current_birth(journal_.tet_births, journal_.birth_of.find(t), t);
+    if (!birth || birth < journal_.tet_births.data() + p.tet_births) removed.push_back(t);
+  }
+  std::sort(removed.begin(), removed.end());
+  std::sort(created.begin(), created.end());
+}
 
 void TetMesh::ancestors_at_start(TetId t, std::vector<TetId>& out) {
   // A split's child has one parent, and so usually has its whole line: follow it without the

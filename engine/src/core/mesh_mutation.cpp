@@ -279,7 +279,6 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
   reserve_touched(tet_verts_, tets);
   reserve_touched(tet_adj_, tets);
   removing_.reserve(tets);
-  net_seen_.reserve(tets);
   ancestor_seen_.reserve(tets);
   vertex_noted_.reserve(vertices);
   vertex_seen_.reserve(vertices);

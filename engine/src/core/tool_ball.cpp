@@ -47,7 +47,6 @@ double distance_to_tet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& 
 }
 
 bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const Vec3 p[4] = {a, b, c, d};
   const double r2 = ball.radius * ball.radius;
   auto axis_gap = [&](double centre, double p0, double p1, double p2, double p3) {
     const double lo = std::min(std::min(p0, p1), std::min(p2, p3)), hi = std::max(std::max(p0, p1), std::max(p2, p3));
@@ -56,8 +55,8 @@ bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, c
   const double gx = axis_gap(ball.centre.x, a.x, b.x, c.x, d.x), gy = axis_gap(ball.centre.y, a.y, b.y, c.y, d.y),
                gz = axis_gap(ball.centre.z, a.z, b.z, c.z, d.z);
   if (gx * gx + gy * gy + gz * gz > r2) return false;
-  for (const Vec3& q : p) {
-    const Vec3 delta = q - ball.centre;
+  for (const Vec3* q : {&a, &b, &c, &d}) {
+    const Vec3 delta = *q - ball.centre;
     if (dot(delta, delta) <= r2) return true;
   }
   // A point (the spatial index's "which tet holds p"): exactness decides points on a face.
@@ -70,6 +69,8 @@ bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, c
   // keeps its exact answer. This is the common case of every query (most candidates near the
   // ball's surface), about a tenth of the cost of distance_to_tet().
   // (A negatively oriented tet, which the mesh never holds, has its normals flipped.)
+  // The corners are copied only here, past the early answers that most candidates get.
+  const Vec3 p[4] = {a, b, c, d};
   const double orient = dot(b - a, cross(c - a, d - a)) < 0.0 ? -1.0 : 1.0;
   bool in_front[4];
   bool inside = true;

@@ -64,19 +64,19 @@ class SpatialIndex {
 
  private:
   static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
-  // A tet's centroid, the radius of a sphere about it that holds the tet (rounded up) and of
-  // one the tet holds (rounded down), in single precision: 24 bytes, so a block is a few cache
-  // lines. The bounds absorb the rounding of the centroid, so both tests stay conservative.
-  struct Entry {
-    float x = 0, y = 0, z = 0;
-    float outer = 0, inner = 0;
-    std::uint32_t tet = kNone;
-  };
+  // A block holds a cell's entries field by field. An entry is a tet's centroid, the radius of a
+  // sphere about it that holds the tet (rounded up) and of one the tet holds (rounded down), in
+  // single precision: 24 bytes. The bounds absorb the rounding of the centroid, so both tests stay
+  // conservative. Field by field, so that collect() can reject a whole block's far entries with a
+  // few vector instructions before it looks at any entry one by one.
   static constexpr std::uint32_t kBlockEntries = 12;
   struct Block {
     std::uint32_t count = 0;
     std::uint32_t next = kNone, prev = kNone;  // in the cell's chain
-    Entry entries[kBlockEntries];
+    std::uint32_t slot = kNone;                // the cell's slot in table_ (kept when the table grows)
+    float x[kBlockEntries]{}, y[kBlockEntries]{}, z[kBlockEntries]{};
+    float outer[kBlockEntries]{}, inner[kBlockEntries]{};
+    std::uint32_t tet[kBlockEntries]{};
   };
   struct Slot {
     std::uint64_t key = 0;
@@ -98,7 +98,7 @@ class SpatialIndex {
   [[nodiscard]] double gap_to_cell(const Vec3& p, std::uint64_t key) const;
   static constexpr std::size_t kNoSlot = ~std::size_t{0};
   [[nodiscard]] std::size_t find_slot(std::uint64_t key) const;
-  Slot& cell_for(std::uint64_t key);
+  std::size_t cell_for(std::uint64_t key);  // the slot, made if new
   std::uint32_t new_block();
   void grow_table();
 
