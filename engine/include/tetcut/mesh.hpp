@@ -267,8 +267,8 @@ class TetMesh {
   [[nodiscard]] bool made_in_transaction(VertId v) const { return journal_.vertex_birth_of.contains(v); }
 
   // The net effect since `point` (a savepoint of the open transaction), sorted by id: `removed`
-  // gets the ids live then and dead now, `created` the ids live now and dead then. O(journal
-  // since the point).
+  // gets the ids live then and dead now, `created` the ids live now and dead then. O(tets made
+  // and freed since the point), from the births and the freed ids, not the journal.
   void changes_since(const Savepoint& point, std::vector<TetId>& removed, std::vector<TetId>& created);
   // The same since begin_transaction(): what the local checker needs, whatever mix of
   // operations ran.
@@ -382,7 +382,15 @@ class TetMesh {
     StampedMap<TetId, std::uint32_t> first_verts_entry;
     std::size_t first_verts_indexed = 0;
   };
-  void note(Array array, std::uint32_t index);
+  // Journals the old value of array[index], unless no transaction is open or the element was
+  // appended in it (rollback truncates those): inline, since most elements a cut writes are new.
+  void note(Array array, std::uint32_t index) {
+    if (!journal_.active) return;
+    const bool is_tet = array == Array::kTetVerts || array == Array::kTetAdj;
+    if (index >= (is_tet ? journal_.recorded_tets : journal_.recorded_vertices)) return;
+    record_old_value(array, index);
+  }
+  void record_old_value(Array array, std::uint32_t index);
   // Origins of vertices made in the transaction (ChangeLog::vertices): composed along the edges
   // they were put on, or located in an old tet (mesh_journal.cpp).
   void compose_origin(VertId a, VertId b, double t, CreatedVertex& out) const;
@@ -400,7 +408,6 @@ class TetMesh {
   std::vector<VertId> scratch_verts_;
   StampedSet<TetId> removing_;      // replace_tets(): the tets this call removes
   StampedSet<VertId> vertex_noted_;  // replace_tets(): vertex journaled in this call
-  StampedSet<TetId> net_seen_;       // changes_since(): a tet's first entry after the point seen
   void touch_vertex(std::uint32_t v);
 };
 

@@ -75,10 +75,7 @@ void TetMesh::commit(ChangeLog* log) {
 
 // Records the old value of one element before it is written. Elements appended after the newest
 // savepoint need no record: a rollback truncates the arrays to their old sizes.
-void TetMesh::note(Array array, std::uint32_t index) {
-  if (!journal_.active) return;
-  const bool is_tet = array == Array::kTetVerts || array == Array::kTetAdj;
-  if (index >= (is_tet ? journal_.recorded_tets : journal_.recorded_vertices)) return;
+void TetMesh::record_old_value(Array array, std::uint32_t index) {
   JournalEntry e{array, index, {}};
   switch (array) {
     case Array::kTetVerts: std::memcpy(e.old.data(), tet_verts_[index].data(), 16); break;
