@@ -52,6 +52,17 @@ enum class SplitPoint : std::uint8_t {
   kPositiveChildren,
 };
 inline constexpr std::array<double, 7> kSplitParameters = {0.5, 0.4375, 0.5625, 0.375, 0.625, 0.25, 0.75};
+static_assert(kSplitParameters[0] == 0.5, "the midpoint first: ties keep it");
+static_assert(
+    [] {
+      for (double t : kSplitParameters) {
+        bool mirrored = false;
+        for (double u : kSplitParameters) mirrored |= u == 1.0 - t;
+        if (!(t > 0.0 && t < 1.0) || !mirrored) return false;
+      }
+      return true;
+    }(),
+    "inside (0, 1) and symmetric about 1/2, whichever end an edge is named from");
 
 struct SplitResult {
   SplitRefusal refusal = SplitRefusal::kNone;
