@@ -379,6 +379,60 @@ TEST(EdgeSplit, RefusesANonEdgeAndADegenerateChildLeavingTheMeshUntouched) {
   EXPECT_GT(accepted, 0);
 }
 
+// SplitPoint::kPositiveChildren (the removal fallback's): where the midpoints make every child
+// positive it is the midpoint split bit for bit; where they do not, it moves the points along
+// their edges, and the moved points are shared by every tet around their edge. Two slivers on
+// either side of the face abc (d and e about a midpoint's rounding off its plane), the three
+// edges of abc split: each point lies in both tets, so the full checker's conformity (I2, I3)
+// judges the sharing.
+TEST(EdgeSplit, MovedSplitPointsSaveSliversAndLeaveEveryOtherSplitAlone) {
+  SplitMix64 rng(5);
+  const Vec3 a{0.1, 0.2, 0.3}, b{1.7, 0.9, 0.35}, c{0.4, 1.3, 0.8};
+  const Vec3 normal = cross(b - a, c - a);
+  auto near_face = [&](double side) {
+    const double s = rng.unit(), t = rng.unit() * (1 - s);
+    return a + s * (b - a) + t * (c - a) + (side * 7e-17 * (1 + rng.unit())) * normal;
+  };
+  int same = 0, refused = 0, saved = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Vec3 d = near_face(1.0), e = near_face(-1.0);
+    BuildResult built = build_mesh({{a, b, c, d, e}, {{0, 1, 2, 3}, {0, 2, 1, 4}}});
+    if (!built.ok()) continue;  // flat after all
+    const std::vector<Edge> face = {{VertId{0}, VertId{1}}, {VertId{1}, VertId{2}}, {VertId{2}, VertId{0}}};
+    EdgeSplitter splitter;
+    TetMesh at_midpoints = *built.mesh, moved = *built.mesh;
+    const SplitResult m = splitter.split(at_midpoints, face, SplitMethod::kTemplates);
+    moved.begin_transaction();
+    const TetMesh::Savepoint before = moved.savepoint();
+    const SplitResult r = splitter.split(moved, face, SplitMethod::kTemplates, nullptr, UINT64_MAX, SplitPoint::kPositiveChildren);
+    std::vector<double> ts;
+    for (const TetMesh::VertexBirth& v : moved.vertices_made_since(before)) ts.push_back(v.t);
+    moved.commit();
+    if (m.ok()) {
+      ++same;
+      EXPECT_TRUE(r.ok());
+      EXPECT_EQ(canonical_hash(moved), canonical_hash(at_midpoints)) << "trial " << trial;
+      continue;
+    }
+    ASSERT_EQ(m.refusal, SplitRefusal::kDegenerateChild);
+    ++refused;
+    if (!r.ok()) {
+      EXPECT_EQ(moved.num_tets(), 2u) << "a refused split leaves the mesh untouched";
+      continue;
+    }
+    ++saved;
+    EXPECT_EQ(ts.size(), 3u);
+    for (double t : ts) EXPECT_NE(std::find(kSplitParameters.begin(), kSplitParameters.end(), t), kSplitParameters.end());
+    EXPECT_TRUE(std::any_of(ts.begin(), ts.end(), [](double t) { return t != 0.5; })) << "trial " << trial;
+    EXPECT_EQ(moved.num_tets(), 8u);  // 3 edges on a face: 4 children in each tet
+    EXPECT_TRUE(testing::mesh_is_valid(moved)) << "trial " << trial;
+  }
+  std::printf("[split] slivers: midpoints fine %d, refused %d, saved by moved points %d\n", same, refused, saved);
+  EXPECT_GT(same, 0);
+  ASSERT_GT(refused, 0) << "no sliver made the midpoint split fail: the test tests nothing";
+  EXPECT_GE(4 * saved, 3 * refused);
+}
+
 // Issue 4's table: the worst radius ratio of the children relative to their parent's, for each
 // configuration, templates against bisection, over all vertex orders of a regular tet.
 TEST(EdgeSplit, QualityTableTemplatesAgainstBisection) {

@@ -5,14 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "checked.hpp"
+#include "core/random.hpp"
 #include "removal_test_support.hpp"
 #include "remove/normal_surface_fallback.hpp"
 #include "remove/refinement_strategies.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/io.hpp"
+#include "tetcut/predicates.hpp"
 
 namespace tetcut::testing {
 namespace {
@@ -149,6 +152,66 @@ TEST(NormalSurfaceFallback, TakesOverWherePaper34sSetIsNotRemovable) {
   EXPECT_GT(tried, 50);
   EXPECT_GT(refused, 0) << "3.4's set was removable on all " << tried << " singular tets";
   std::printf("[fallback] paper 3.4's set not removable for %d of %d singular tets\n", refused, tried);
+}
+
+// The proof does not need midpoints (docs/removal-proof.md, "Any split point"). T with a sliver U
+// on its face abc: U's apex e lies about a midpoint's rounding (1e-16) away from the plane of abc,
+// so the rounded midpoints of ea, eb, ec can fall on or across a face plane and a child of U be
+// flat or inverted. There the midpoint split is refused, and the fallback moves the points and
+// removes T all the same: nearly always at this height (closer to the plane, where a child's sign
+// is the rounding's alone, about half the time: the search tries 7 points per edge, not all).
+TEST(NormalSurfaceFallback, MovesTheSplitPointsWhereASliversMidpointChildIsNotPositive) {
+  SplitMix64 rng(7);
+  const Vec3 a{0.1, 0.2, 0.3}, b{1.7, 0.9, 0.35}, c{0.4, 1.3, 0.8};
+  const Vec3 normal = cross(b - a, c - a);
+  const Vec3 d = (1.0 / 3.0) * (a + b + c) + 0.8 * normal;  // T = abcd, a fine tet
+  int refused_at_midpoints = 0, removed = 0, trials = 0;
+  for (; trials < 2000 && refused_at_midpoints < 20; ++trials) {
+    const double s = rng.unit(), t = rng.unit() * (1 - s);
+    const Vec3 e = a + s * (b - a) + t * (c - a) - (7e-17 * (1 + rng.unit())) * normal;
+    BuildResult built = build_mesh({{a, b, c, d, e}, {{0, 1, 2, 3}, {0, 2, 1, 4}}});
+    if (!built.ok()) continue;  // U flat after all
+    const TetMesh original = std::move(*built.mesh);
+    const TetId tet_t{0};
+    const std::vector<Edge> to_e = {{VertId{0}, VertId{4}}, {VertId{1}, VertId{4}}, {VertId{2}, VertId{4}}};
+
+    // The precondition: the midpoints make a child of U that is not positive.
+    TetMesh at_midpoints = original;
+    EdgeSplitter splitter;
+    if (splitter.split(at_midpoints, to_e, SplitMethod::kTemplates).refusal != SplitRefusal::kDegenerateChild) continue;
+    ++refused_at_midpoints;
+
+    TetMesh mesh = original;
+    Request request;
+    detail::NormalSurfaceFallback fallback;
+    mesh.begin_transaction();
+    detail::RemovalContext ctx = request.context(mesh);
+    const TetMesh::Savepoint before = mesh.savepoint();
+    const std::uint32_t n = fallback.remove(ctx, tet_t);
+    if (n == 0) {  // refused: the mesh as it was
+      mesh.commit();
+      EXPECT_EQ(canonical_hash(mesh), canonical_hash(original)) << "trial " << trials;
+      continue;
+    }
+    ++removed;
+    // The points moved off the midpoint where needed; every child positive (exact predicate).
+    bool moved = false;
+    for (const TetMesh::VertexBirth& v : mesh.vertices_made_since(before)) moved |= v.t != 0.5;
+    EXPECT_TRUE(moved) << "trial " << trials << ": the midpoints were refused, yet every point is one";
+    for (const TetMesh::TetBirth& child : mesh.tets_made_since(before))
+      if (mesh.is_live(child.tet)) {
+        const TetMesh::TetVerts v = mesh.tet(child.tet);
+        EXPECT_GT(orientation(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])), 0)
+            << "trial " << trials;
+      }
+    mesh.commit();
+    EXPECT_FALSE(mesh.is_live(tet_t));
+    EXPECT_TRUE(mesh_is_valid(mesh)) << "trial " << trials;
+  }
+  std::printf("[fallback] midpoints refused for %d slivers of %d; the moved points removed T for %d\n",
+              refused_at_midpoints, trials, removed);
+  ASSERT_GT(refused_at_midpoints, 0) << "no sliver made the midpoint split fail: the test tests nothing";
+  EXPECT_GE(4 * removed, 3 * refused_at_midpoints) << "the moved points should save most of them";
 }
 
 }  // namespace

@@ -9,7 +9,7 @@ namespace tetcut::detail {
 void NormalSurfaceFallback::reserve() {
   reserve_touched(edges_, 1024);
   for (auto* v : {&shell_, &set_, &larger_}) reserve_touched(*v, 1024);
-  reserve_touched(midpoints_, 1024);
+  reserve_touched(split_points_, 1024);
 }
 
 void NormalSurfaceFallback::plan(const TetMesh& mesh, TetId t, std::vector<Edge>& edges) {
@@ -34,16 +34,18 @@ void NormalSurfaceFallback::plan(const TetMesh& mesh, TetId t, std::vector<Edge>
 std::uint32_t NormalSurfaceFallback::remove(RemovalContext& ctx, TetId t) {
   plan(ctx.mesh, t, edges_);
   const TetMesh::Savepoint before = ctx.mesh.savepoint();
-  if (!ctx.split(edges_)) return 0;
+  // The proof is combinatorial: any point inside each edge will do, so where a midpoint would
+  // make a child flat or inverted (a sliver in the stars), the splitter moves it.
+  if (!ctx.split(edges_, SplitPoint::kPositiveChildren)) return 0;
 
-  // f = 1 at T's corners (T is untouched), 1/2 at the new midpoints, 0 elsewhere.
+  // f = 1 at T's corners (T is untouched), 1/2 at the new vertices, 0 elsewhere.
   const TetMesh::TetVerts corners = ctx.mesh.tet(t);
-  midpoints_.clear();
-  for (const TetMesh::VertexBirth& v : ctx.mesh.vertices_made_since(before)) midpoints_.push_back(v.vertex.value);
-  std::sort(midpoints_.begin(), midpoints_.end());
+  split_points_.clear();
+  for (const TetMesh::VertexBirth& v : ctx.mesh.vertices_made_since(before)) split_points_.push_back(v.vertex.value);
+  std::sort(split_points_.begin(), split_points_.end());
   auto f_at_least_half = [&](VertId w) {
     return std::find(corners.begin(), corners.end(), w) != corners.end() ||
-           std::binary_search(midpoints_.begin(), midpoints_.end(), w.value);
+           std::binary_search(split_points_.begin(), split_points_.end(), w.value);
   };
   set_.assign(1, t);
   for (const TetMesh::TetBirth& c : ctx.mesh.tets_made_since(before)) {

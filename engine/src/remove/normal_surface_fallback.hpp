@@ -8,6 +8,11 @@
 // original mesh; remove T and every child whose vertices all have f >= 1/2. What remains is
 // the mesh cut along that normal surface, which is a 3-manifold: the set is removable.
 //
+// The argument is combinatorial, so any point inside each edge will do in place of its
+// midpoint (the new vertex then takes the value 1/2 of the function interpolated on the split
+// mesh): where a midpoint would make a child flat or inverted, the splitter moves the point
+// (SplitPoint::kPositiveChildren; docs/removal-proof.md, "Any split point").
+//
 // T itself is never split (none of its edges has exactly one end in T), and every other tet of
 // the stars is. Cost: O(star of T) edges and children; the split is planned and checked by the
 // splitter before the mesh changes, and the caller's tet budget is checked on the plan.
@@ -25,7 +30,7 @@ class NormalSurfaceFallback {
   // Working sizes, allocated and touched now (a larger request grows them once).
   void reserve();
   // Removes T with the half-star around it; returns the size of the set, 0 when the splitter
-  // refused (a degenerate child or the budget: the mesh as before).
+  // refused (a child not positive at any of its split points, or the budget: the mesh as before).
   std::uint32_t remove(RemovalContext& ctx, TetId t);
 
   // The plan alone: the edges with exactly one end in T, one hint each.
@@ -34,7 +39,7 @@ class NormalSurfaceFallback {
  private:
   std::vector<Edge> edges_;
   std::vector<TetId> shell_, set_, larger_;
-  std::vector<std::uint32_t> midpoints_;  // sorted: the vertices with f = 1/2
+  std::vector<std::uint32_t> split_points_;  // sorted: the new vertices, f = 1/2
 };
 
 }  // namespace tetcut::detail

@@ -2,12 +2,12 @@
 
 namespace tetcut::detail {
 
-bool RemovalContext::split(std::span<const Edge> edges) {
+bool RemovalContext::split(std::span<const Edge> edges, SplitPoint point) {
   // Every tet the request made so far counts, children split again included, as they did when
   // the splits were planned.
   const std::uint32_t made = static_cast<std::uint32_t>(mesh.tets_made_since(start).size());
   const std::uint32_t allowed = budget > made ? budget - made : 0;
-  const SplitResult r = splitter.split(mesh, edges, SplitMethod::kTemplates, nullptr, allowed);
+  const SplitResult r = splitter.split(mesh, edges, SplitMethod::kTemplates, nullptr, allowed, point);
   if (r.refusal == SplitRefusal::kOverBudget) over_budget = true;
   return r.ok();
 }

@@ -28,8 +28,9 @@ struct RemovalContext {
 
   // Splits `edges` (templates). False, the mesh untouched, if the splitter refuses (degenerate
   // child, over budget). Its children and midpoints are what the mesh made since a savepoint
-  // taken before the call (TetMesh::tets_made_since).
-  bool split(std::span<const Edge> edges);
+  // taken before the call (TetMesh::tets_made_since). `point`: where the new vertices go (the
+  // fallback, whose proof holds for any point inside each edge, lets the splitter move them).
+  bool split(std::span<const Edge> edges, SplitPoint point = SplitPoint::kMidpoint);
   // Removes a set that set_removable() accepted, recording the tets it exposes.
   void remove_set(std::span<const TetId> set);
 
