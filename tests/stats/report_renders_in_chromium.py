@@ -223,12 +223,13 @@ def main():
     png = os.path.join(out, "report.png")
     if os.path.exists(png):
         os.remove(png)
-    shot = subprocess.run([chromium] + flags + ["--window-size=1200,4600", "--screenshot=" + png, url],
+    # Tall enough for the page down to the resection's pictures, below Tables 1 and 2 in both orders.
+    shot = subprocess.run([chromium] + flags + ["--window-size=1200,5400", "--screenshot=" + png, url],
                           capture_output=True, text=True, timeout=120)
     if not check(shot.returncode == 0 and os.path.exists(png), "chromium --screenshot wrote " + png):
         return report()
     width, height, rows, bpp = decode_png(open(png, "rb").read())
-    check((width, height) == (1200, 4600), "screenshot size %dx%d" % (width, height))
+    check((width, height) == (1200, 5400), "screenshot size %dx%d" % (width, height))
     tissue = cut = plot = 0
     for line in rows:
         for x in range(0, len(line), bpp):

@@ -19,7 +19,9 @@ table { border-collapse: collapse; margin: 1em 0; font-size: 0.85em; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.5em; text-align: right; }
 th { background: #f0f0f0; } td:first-child, th:first-child { text-align: left; }
 td.paper { color: #666; } td.diff { color: #666; font-style: italic; }
-td.ci, td.count { color: #444; font-size: 0.9em; } td.outside { font-weight: bold; color: #a40; }
+td.ci, td.count { color: #444; font-size: 0.9em; white-space: nowrap; }
+td.outside { font-weight: bold; background: #fde; }
+.wide { overflow-x: auto; max-width: 100%; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; }
 .figures figure { margin: 0; } figcaption { font-size: 0.85em; color: #444; max-width: 480px; }
 code { background: #f4f4f4; padding: 0.1em 0.3em; }
@@ -219,32 +221,21 @@ std::string html_report(const StatsReport& report, const std::string& command) {
        " runs of its mesh's scenario, the tool path shifted by a seeded offset each time (the first as "
        "written), and gives our estimate, its 95 % interval and the raw counts it rests on: the Wilson score "
        "interval of the pooled events for a rate, the percentile bootstrap of the pooled ratio over the runs "
-       "(2000 resamples, seeded) for a mean set size. A paper figure outside our interval is in bold.</p>\n";
-  h += "<h2>Table 1. Singularities met when removing a surface tet (our order: direct first)</h2>\n" +
-       table1_html(report.meshes, "table1");
+       "(2000 resamples, seeded) for a mean set size. A paper figure outside our interval is in bold on pink.</p>\n";
+  h += "<h2>Table 1. Singularities met when removing a surface tet (our order: direct first)</h2>\n<div class=\"wide\">" + table1_html(report.meshes, "table1") + "</div>\n";
   h += "<h2>Table 2. The neighbour strategy (our order: direct first)</h2>\n"
        "<p>% of singularities the neighbour search (paper 3.5) did not resolve, and the mean number of "
        "tets it removed when it did; global: over all operations, direct removals counting 1, the "
        "cardinality per operation resolved (the paper's column: its figures reconstruct so) and per "
        "selected tet taken (ours). Our runs use the combined strategy (3.7), whose optimized refinement "
-       "and fallback resolved the rest: its own unresolved share is the last column.</p>\n" +
-       table2_html(report.meshes, "table2");
+       "and fallback resolved the rest: its own unresolved share is the last column.</p>\n<div class=\"wide\">" + table2_html(report.meshes, "table2") + "</div>\n";
   if (!report.paper_order_meshes.empty()) {
     h += "<h2>Table 1 in the paper's order</h2>\n"
          "<p>The same scenarios with the paper's removal order (3.3: \"removing one-by-one all tetrahedra in "
          "T_removal\": the first pending selected tet with a face on the surface, removable or not) in place "
-         "of ours (every directly removable tet first).</p>\n" +
-         table1_html(report.paper_order_meshes, "table1-paper-order");
-    h += "<h2>Table 2 in the paper's order</h2>\n" + table2_html(report.paper_order_meshes, "table2-paper-order");
+         "of ours (every directly removable tet first).</p>\n<div class=\"wide\">" + table1_html(report.paper_order_meshes, "table1-paper-order") + "</div>\n";
+    h += std::string("<h2>Table 2 in the paper's order</h2>\n<div class=\"wide\">") + table2_html(report.paper_order_meshes, "table2-paper-order") + "</div>\n";
   }
-  h += "<h2>Where 3.5 fails at an edge singularity</h2>\n"
-       "<p>Each edge singularity the paper's search met (over every run, our order, then the paper's): T "
-       "with the tets on one side of the singular edge e (left, then right), then with all of them "
-       "(whole), and what each set test said: removable, not tested (skipped: a removable set no larger "
-       "was found first), or the vertex or edge at which the set would be singular.</p>\n" +
-       edge_configurations_html(report.meshes, "edge-search");
-  if (!report.paper_order_meshes.empty())
-    h += edge_configurations_html(report.paper_order_meshes, "edge-search-paper-order");
   h += "<h2>Table 2, our wider search</h2>\n"
        "<p>The same scenarios with the strategy <code>wide</code> (not the paper's: whole vertex shells and "
        "rounds of repairs, smallest set first) in place of the paper's search; the paper's search (3.5, "
@@ -266,6 +257,14 @@ std::string html_report(const StatsReport& report, const std::string& command) {
          "not meet the floor).</p>\n" +
          quality_html(report);
   if (report.resection) h += resection_html(*report.resection);
+  h += "<h2>Where 3.5 fails at an edge singularity</h2>\n"
+       "<p>Each edge singularity the paper's search met (over every run, our order, then the paper's): T "
+       "with the tets on one side of the singular edge e (left, then right), then with all of them "
+       "(whole), and what each set test said: removable, not tested (skipped: a removable set no larger "
+       "was found first), or the vertex or edge at which the set would be singular.</p>\n" +
+       edge_configurations_html(report.meshes, "edge-search");
+  if (!report.paper_order_meshes.empty())
+    h += edge_configurations_html(report.paper_order_meshes, "edge-search-paper-order");
   h += "</body></html>\n";
   return h;
 }
