@@ -191,19 +191,22 @@ std::string text_report(const StatsReport& report) {
   out += tables_1_and_2(report.meshes, "direct-first");
   out += "\nTable 2, our wider search (strategy wide, not the paper's: whole vertex shells and rounds of\n"
          "repairs, smallest set first) in place of 3.5 on the same scenarios: each figure of the wide\n"
-         "search, then the paper's search's (3.5) from Table 2; the last column is what the wide strategy\n"
-         "left in place (must be 0)\n\n";
+         "search with its 95 % interval (and counts), then the paper's search's (3.5) from Table 2; the last\n"
+         "column is what the wide strategy left in place (must be 0)\n\n";
   TextTable tw;
-  tw.row({"mesh", "vertex % unres.", "3.5", "card.", "3.5", "edge % unres.", "3.5", "card.", "3.5", "card./op.", "3.5",
-          "wide % unres."});
+  tw.row({"mesh", "vertex % unres.", "95 %", "count", "3.5", "card.", "95 %", "3.5", "edge % unres.", "95 %", "count",
+          "3.5", "card.", "95 %", "3.5", "card./op.", "95 %", "3.5", "wide % unres."});
   for (std::size_t i = 0; i < report.wide_meshes.size(); ++i) {
     const MeshStats& m = report.wide_meshes[i];
-    const Table2Row& w = m.table2;
+    const Table2Intervals& w = m.table2_ci;
     const Table2Row& o = report.meshes[i].table2;
-    tw.row({mesh_label(m.mesh), fixed(w.vertex_unresolved_pct, 1), fixed(o.vertex_unresolved_pct, 1),
-            fixed(w.vertex_cardinality, 1), fixed(o.vertex_cardinality, 1), fixed(w.edge_unresolved_pct, 1),
-            fixed(o.edge_unresolved_pct, 1), fixed(w.edge_cardinality, 1), fixed(o.edge_cardinality, 1),
-            fixed(w.global_cardinality, 2), fixed(o.global_cardinality, 2), fixed(w.combined_unresolved_pct, 1)});
+    tw.row({mesh_label(m.mesh), fixed(w.vertex_unresolved.value, 1), interval_text(w.vertex_unresolved, 1),
+            count_text(w.vertex_unresolved), fixed(o.vertex_unresolved_pct, 1), fixed(w.vertex_cardinality.value, 1),
+            interval_text(w.vertex_cardinality, 2), fixed(o.vertex_cardinality, 1), fixed(w.edge_unresolved.value, 1),
+            interval_text(w.edge_unresolved, 1), count_text(w.edge_unresolved), fixed(o.edge_unresolved_pct, 1),
+            fixed(w.edge_cardinality.value, 1), interval_text(w.edge_cardinality, 2), fixed(o.edge_cardinality, 1),
+            fixed(w.global_cardinality.value, 2), interval_text(w.global_cardinality, 2), fixed(o.global_cardinality, 2),
+            fixed(w.combined_unresolved.value, 1)});
   }
   out += tw.str();
   for (const MeshStats& m : report.wide_meshes)
