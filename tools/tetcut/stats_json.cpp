@@ -141,7 +141,9 @@ std::array<Figure, 6> table2_figures(const stats::MeshStats& m) {
 }
 
 // Table 2's cells with their intervals and counts: the keys of table2 and table2_wide.
-void table2_intervals(Json& row, const stats::MeshStats& m) {
+// `unresolved_key` names what the whole strategy left: combined_unresolved_pct, or the wide row's
+// wide_unresolved_pct.
+void table2_intervals(Json& row, const stats::MeshStats& m, const char* unresolved_key = "combined_unresolved_pct") {
   const stats::Table2Intervals& t = m.table2_ci;
   const std::pair<const char*, const stats::CellEstimate*> cells[] = {
       {"vertex_unresolved_pct", &t.vertex_unresolved},
@@ -151,7 +153,7 @@ void table2_intervals(Json& row, const stats::MeshStats& m) {
       {"global_unresolved_pct", &t.global_unresolved},
       {"global_cardinality_per_operation", &t.global_cardinality},
       {"global_cardinality_per_selected", &t.global_cardinality_per_selected},
-      {"combined_unresolved_pct", &t.combined_unresolved}};
+      {unresolved_key, &t.combined_unresolved}};
   intervals(row, cells);
   sweeps(row, m);
 }
@@ -174,7 +176,7 @@ Json table2_row(const stats::MeshStats& m) {
 Json table2_wide_row(const stats::MeshStats& m) {
   Json row = {{"mesh", m.mesh.name}, {"paper_mesh", m.mesh.number}};
   for (const Figure& f : table2_figures(m)) row[f.key] = f.ours;
-  table2_intervals(row, m);
+  table2_intervals(row, m, "wide_unresolved_pct");
   row["global_cardinality_per_selected"] = m.table2.global_cardinality_per_selected;
   row["wide_unresolved_pct"] = m.table2.combined_unresolved_pct;
   row["ok"] = m.ok;
