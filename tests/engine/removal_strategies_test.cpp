@@ -42,6 +42,32 @@ TetMesh mesh_with_singularity(SingularityKind kind) {
   return mesh;
 }
 
+// Issue 32 item 7: every distinct edge singularity 3.5 searched has one configuration in the
+// report (the neighbours and combined strategies; basic and wide do not run 3.5), and those
+// with a removable candidate are the ones the neighbours resolved.
+void expect_edge_search_logged(RemovalStrategy strategy, const RemovalReport& report) {
+  const bool searches = strategy == RemovalStrategy::kNeighbours || strategy == RemovalStrategy::kCombined;
+  EXPECT_EQ(report.edge_search.total(), searches ? report.edge_singularities : 0u);
+  std::uint64_t with_removable = 0;
+  for (int c = 0; c < EdgeSearchTally::kConfigurations; ++c)
+    for (int k = 0; k < 3; ++k)
+      if (EdgeSearchTally::verdict(static_cast<std::uint16_t>(c), k) == EdgeCandidateVerdict::kRemovable) {
+        with_removable += report.edge_search.counts[static_cast<std::size_t>(c)];
+        break;
+      }
+  if (searches && report.repeated_requests == 0) {
+    EXPECT_EQ(with_removable, report.edge_resolved_by_neighbours);
+  }
+}
+
+// The one configuration a report with a single edge singularity logged.
+std::uint16_t logged_configuration(const RemovalReport& report) {
+  for (int c = 0; c < EdgeSearchTally::kConfigurations; ++c)
+    if (report.edge_search.counts[static_cast<std::size_t>(c)] != 0) return static_cast<std::uint16_t>(c);
+  ADD_FAILURE() << "no edge search logged";
+  return 0;
+}
+
 class ASingularity : public ::testing::TestWithParam<SingularityKind> {};
 
 TEST_P(ASingularity, IsResolvedByEachStrategy) {
@@ -78,6 +104,16 @@ TEST_P(ASingularity, IsResolvedByEachStrategy) {
         EXPECT_LE(result.tets_removed, 3u);
         EXPECT_DOUBLE_EQ(report.mean_cardinality(), double(result.tets_removed));
       }
+      expect_edge_search_logged(strategy, report);
+      if (strategy == RemovalStrategy::kNeighbours || strategy == RemovalStrategy::kCombined) {
+        // Item 7's log: the side tried first is removable here (T and one or two tets of the
+        // cube's ring), so the other side is tested only when smaller, and the whole set never.
+        const std::uint16_t config = logged_configuration(report);
+        const auto left = EdgeSearchTally::verdict(config, 0), right = EdgeSearchTally::verdict(config, 1);
+        EXPECT_TRUE(left == EdgeCandidateVerdict::kRemovable || right == EdgeCandidateVerdict::kRemovable)
+            << to_string(left) << " / " << to_string(right);
+        EXPECT_EQ(EdgeSearchTally::verdict(config, 2), EdgeCandidateVerdict::kSkipped);
+      }
     }
   }
 }
@@ -105,6 +141,7 @@ TEST(RemovalStrategies, EdgeSingularitiesInABoxAreResolvedWithValidMeshes) {
         picker.add(remover.last_exposed());
       }
       met = remover.report().edge_singularities;
+      expect_edge_search_logged(strategy, remover.report());
       EXPECT_TRUE(mesh_is_valid(mesh));
     }
     EXPECT_GT(met, 0u);
@@ -382,6 +419,19 @@ TEST(RemovalStrategies, TheNeighbourSearchTriesFurtherPaths) {
   EXPECT_GT(tested, 20);
   EXPECT_GT(later_path, 0);
   std::printf("[3.5] %d vertex singularities, %d resolved by a path after the first\n", tested, later_path);
+}
+
+TEST(RemovalStrategies, AnEdgeConfigurationEncodesItsThreeVerdicts) {
+  for (int l = 0; l < kEdgeCandidateVerdicts; ++l)
+    for (int r = 0; r < kEdgeCandidateVerdicts; ++r)
+      for (int w = 0; w < kEdgeCandidateVerdicts; ++w) {
+        const auto c = EdgeSearchTally::configuration(EdgeCandidateVerdict(l), EdgeCandidateVerdict(r),
+                                                      EdgeCandidateVerdict(w));
+        ASSERT_LT(c, EdgeSearchTally::kConfigurations);
+        EXPECT_EQ(EdgeSearchTally::verdict(c, 0), EdgeCandidateVerdict(l));
+        EXPECT_EQ(EdgeSearchTally::verdict(c, 1), EdgeCandidateVerdict(r));
+        EXPECT_EQ(EdgeSearchTally::verdict(c, 2), EdgeCandidateVerdict(w));
+      }
 }
 
 TEST(RemovalStrategies, NamesRoundTrip) {

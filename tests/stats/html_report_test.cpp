@@ -27,11 +27,16 @@ StatsReport small_report() {
     s.removal.surface_vertex_singularities = 3;
     s.table1 = table1_row(s.removal);
     s.table2 = table2_row(s.removal);
+    s.sweeps = {s.removal};
+    s.table1_ci = table1_intervals(s.sweeps);
+    s.table2_ci = table2_intervals(s.sweeps);
     report.meshes.push_back(s);
     // The wide search resolved all three vertex singularities with 5 tets each; 3.5 none.
     s.removal.resolved_by_neighbours = s.removal.vertex_resolved_by_neighbours = 3;
     s.removal.vertex_neighbour_set_tets = s.removal.neighbour_set_tets = 15;
     s.table2 = table2_row(s.removal);
+    s.sweeps = {s.removal};
+    s.table2_ci = table2_intervals(s.sweeps);
     report.wide_meshes.push_back(s);
   }
   report.comparison_mesh = "liver-refined";
@@ -56,15 +61,22 @@ TEST(HtmlReport, IsOneSelfContainedPageWithItsFourTables) {
 
 TEST(HtmlReport, PutsThePapersFiguresBesideOurs) {
   const std::string html = html_report(small_report(), "");
-  // Ours 70.0 % removable on the cylinder, the paper's 89.3, the difference -19.3.
+  // Ours 70.0 % removable on the cylinder (7 of 10, Wilson 95 %: [39.7, 89.2]), the paper's
+  // 89.3 just outside it, the difference -19.3.
   const auto row = html.find("<td>1 cylinder</td>");
   ASSERT_NE(row, std::string::npos);
-  const auto ours = html.find("<td>70.0</td>", row), paper = html.find("<td class=\"paper\">89.3</td>", row),
+  const auto ours = html.find("<td>70.0</td>", row), interval = html.find("<td class=\"ci\">[39.68, 89.22]</td>", row),
+             count = html.find("<td class=\"count\">7/10</td>", row),
+             paper = html.find("<td class=\"paper outside\">89.3</td>", row),
              diff = html.find("<td class=\"diff\">-19.3</td>", row);
   ASSERT_NE(ours, std::string::npos);
+  ASSERT_NE(interval, std::string::npos);
+  ASSERT_NE(count, std::string::npos);
   ASSERT_NE(paper, std::string::npos);
   ASSERT_NE(diff, std::string::npos);
-  EXPECT_LT(ours, paper);
+  EXPECT_LT(ours, interval);
+  EXPECT_LT(interval, count);
+  EXPECT_LT(count, paper);
   EXPECT_LT(paper, diff);
 }
 

@@ -22,6 +22,12 @@ CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-back
                   "--no-first-run", "--hide-scrollbars"]
 PICTURE_IDS = ["latency-plot", "quality-histogram", "liver-before", "liver-after"]
 MESHES = ["cylinder", "sheet", "liver-coarse", "liver-refined", "liver-local"]
+SWEEPS = 2
+# Table 2's mean set sizes: the JSON key and the counts of removal_counts() its ratio is made of.
+MEAN_SIZES = {
+    "vertex_cardinality": (("vertex_neighbour_set_tets",), ("vertex_resolved_by_neighbours",)),
+    "edge_cardinality": (("edge_neighbour_set_tets",), ("edge_resolved_by_neighbours",)),
+}
 
 failures = []
 
@@ -92,7 +98,10 @@ def main():
         if os.path.exists(p):
             os.remove(p)
 
-    run = subprocess.run([tetcut, "stats", "--corpus", corpus, "--json", json_path, "--html", html_path],
+    # The reduced experiment (2 seeded sweeps a mesh, not the 10 of docs/paper.md's figures): the
+    # same code paths, a fifth of the runs.
+    run = subprocess.run([tetcut, "stats", "--corpus", corpus, "--sweeps", str(SWEEPS), "--json", json_path,
+                          "--html", html_path],
                          capture_output=True, text=True, timeout=500)
     if not check(run.returncode == 0, "tetcut stats exit %d: %s" % (run.returncode, run.stderr.strip())):
         return report()
@@ -146,9 +155,45 @@ def main():
             check(row["created"]["min_radius_ratio"] >= row["created_without_improvement"]["min_radius_ratio"],
                   "%s, %s: the pass does not make the worst created tet worse" % (row["mesh"], row["strategy"]))
 
+    # Issue 32 item 6: every rate cell's interval is scipy's Wilson score interval of its counts;
+    # every mean size's bootstrap interval lies between the smallest and largest ratio of one sweep
+    # (a pooled ratio of resampled sweeps cannot leave that range), and its counts are the sweeps'.
+    from scipy.stats import binomtest
+    for table in ("table1", "table2", "table1_paper_order", "table2_paper_order", "table2_wide"):
+        for row in stats.get(table, []):
+            where = "%s %s" % (table, row["mesh"])
+            check(row.get("sweeps") == SWEEPS and row["offsets"][0] == [0, 0, 0] and len(row["offsets"]) == SWEEPS,
+                  "%s: %d sweeps, the first as written" % (where, SWEEPS))
+            for key, (lo, hi) in row.get("ci95", {}).items():
+                k, n = row["count"][key]
+                if key.endswith("_pct"):
+                    if n == 0:
+                        check(lo is None and hi is None, "%s %s: no interval without trials" % (where, key))
+                        continue
+                    ci = binomtest(k, n).proportion_ci(method="wilson")
+                    check(abs(lo - 100 * ci.low) < 1e-9 and abs(hi - 100 * ci.high) < 1e-9,
+                          "%s %s: Wilson [%r, %r] for %d/%d, scipy [%r, %r]"
+                          % (where, key, lo, hi, k, n, 100 * ci.low, 100 * ci.high))
+                elif key in MEAN_SIZES and n > 0:
+                    num_keys, den_keys = MEAN_SIZES[key]
+                    per_sweep = [(sum(c[x] for x in num_keys), sum(c[x] for x in den_keys)) for c in row["sweep_counts"]]
+                    check((sum(a for a, _ in per_sweep), sum(b for _, b in per_sweep)) == (k, n),
+                          "%s %s: the counts are the sweeps' sums" % (where, key))
+                    ratios = [a / b for a, b in per_sweep if b > 0]
+                    check(min(ratios) - 1e-12 <= lo <= hi <= max(ratios) + 1e-12,
+                          "%s %s: bootstrap [%r, %r] within the sweeps' ratios %r" % (where, key, lo, hi, ratios))
+    # Issue 32 item 7: one logged configuration per edge singularity 3.5 searched.
+    for table in ("table2", "table2_paper_order"):
+        for row in stats.get(table, []):
+            logged = sum(c["count"] for c in row.get("edge_search", []))
+            check(logged == row["counts"]["edge_singularities"],
+                  "%s %s: %d edge configurations logged for %d edge singularities"
+                  % (table, row["mesh"], logged, row["counts"]["edge_singularities"]))
+
     # Deterministic: a second run (checking only at the end) gives the same figures, times aside.
     again_path = os.path.join(out, "stats-again.json")
-    again = subprocess.run([tetcut, "stats", "--corpus", corpus, "--check", "end", "--json", again_path],
+    again = subprocess.run([tetcut, "stats", "--corpus", corpus, "--sweeps", str(SWEEPS), "--check", "end", "--json",
+                            again_path],
                            capture_output=True, text=True, timeout=500)
     if check(again.returncode == 0, "second tetcut stats exit %d" % again.returncode):
         check(without_times(json.load(open(again_path))) == without_times(stats),
@@ -170,19 +215,21 @@ def main():
     check(dom.returncode == 0, "chromium --dump-dom exit %d" % dom.returncode)
     for pid in PICTURE_IDS:
         check(('id="%s"' % pid) in dom.stdout, "the loaded page has the picture %s" % pid)
-    for tid in ("table1", "table2", "table2-wide", "strategies", "created-histogram", "quality"):
+    for tid in ("table1", "table2", "table1-paper-order", "table2-paper-order", "edge-search", "table2-wide", "strategies",
+                "created-histogram", "quality"):
         check(('id="%s"' % tid) in dom.stdout, "the loaded page has the table %s" % tid)
     check(dom.stdout.count("<polygon") > 2000, "the surface pictures have their triangles")
 
     png = os.path.join(out, "report.png")
     if os.path.exists(png):
         os.remove(png)
-    shot = subprocess.run([chromium] + flags + ["--window-size=1200,4600", "--screenshot=" + png, url],
+    # Tall enough for the page down to the resection's pictures, below Tables 1 and 2 in both orders.
+    shot = subprocess.run([chromium] + flags + ["--window-size=1200,5400", "--screenshot=" + png, url],
                           capture_output=True, text=True, timeout=120)
     if not check(shot.returncode == 0 and os.path.exists(png), "chromium --screenshot wrote " + png):
         return report()
     width, height, rows, bpp = decode_png(open(png, "rb").read())
-    check((width, height) == (1200, 4600), "screenshot size %dx%d" % (width, height))
+    check((width, height) == (1200, 5400), "screenshot size %dx%d" % (width, height))
     tissue = cut = plot = 0
     for line in rows:
         for x in range(0, len(line), bpp):

@@ -93,6 +93,20 @@ def beside_paper(ours, paper, decimals=1):
     return pair(ours, paper, decimals)
 
 
+def with_interval(row, key, decimals=1):
+    """Ours, its 95 % interval and, for a rate, its events of trials (`tetcut stats` over its seeded
+    sweeps), then the paper's figure: "92.4 [92.1, 92.6] 40767/44120 / 84.1"."""
+    ours, paper = row.get(key), row["paper"].get(key)
+    ci, count = row.get("ci95", {}).get(key), row.get("count", {}).get(key)
+    text = fmt(ours, decimals)
+    if ci and ci[0] is not None:
+        text += f" [{fmt(ci[0], decimals)}, {fmt(ci[1], decimals)}]"
+    if count and key.endswith("_pct"):
+        text += f" {count[0]}/{count[1]}"
+    outside = ci and ci[0] is not None and paper is not None and not ci[0] <= paper <= ci[1]
+    return text + " / " + beside_paper(0, paper, decimals).split(" / ")[1] + (" *" if outside else "")
+
+
 def table(header, rows, right_from=1):
     """A Markdown table; the columns from `right_from` on are numbers, aligned right."""
     lines = ["| " + " | ".join(header) + " |",
@@ -243,13 +257,14 @@ def paper_table1(inputs):
         return None
     body = [(f"{r['paper_mesh']} {r['mesh']}", fmt(r["tets"], 0), fmt(r["cuts"], 0),
              beside_paper(r["operations"], r["paper"]["operations"], 0),
-             beside_paper(r["removable_pct"], r["paper"]["removable_pct"]),
-             beside_paper(r["vertex_pct"], r["paper"]["vertex_pct"]), beside_paper(r["edge_pct"], r["paper"]["edge_pct"]))
+             with_interval(r, "removable_pct"), with_interval(r, "vertex_pct"), with_interval(r, "edge_pct"))
             for r in rows]
     return ["## The paper's Table 1 beside ours", "",
             "`tetcut stats`: each mesh cut by its cautery scenario (`corpus/scenarios/paper/`) with the combined "
-            "strategy. Removing a tet on the surface: % removable directly, % that would make a vertex singular, "
-            "% an edge. Each cell is ours / the paper's.", ""] + table(
+            "strategy, pooled over its seeded sweeps (`sweeps` in the JSON; docs/paper.md). Removing a tet on the "
+            "surface: % removable directly, % that would make a vertex singular, % an edge. Each cell is ours "
+            "[95 % Wilson interval] events/operations / the paper's, * when the paper's lies outside our interval.",
+            ""] + table(
         ("mesh", "tets", "cuts", "operations", "% removable", "% vertices", "% edges"), body)
 
 
@@ -260,15 +275,16 @@ def paper_table2(inputs):
     keys = ("vertex_unresolved_pct", "vertex_cardinality", "edge_unresolved_pct", "edge_cardinality",
             "global_unresolved_pct", "global_cardinality_per_operation")
     body = [(f"{r['paper_mesh']} {r['mesh']}",) + tuple(
-        beside_paper(r.get(k), r["paper"].get(k), 2 if k == "global_cardinality_per_operation" else 1) for k in keys)
+        with_interval(r, k, 2 if k == "global_cardinality_per_operation" else 1) for k in keys)
         + (fmt(r.get("global_cardinality_per_selected"), 2), fmt(r.get("combined_unresolved_pct")))
         for r in rows]
     return ["## Table 2: the paper's neighbour search", "",
             "The neighbour strategy (paper 3.5): % of singularities it did not resolve and the mean number of tets "
             "it removed when it did. Global: over all operations, direct removals counting 1, tets removed per "
             "operation resolved (the paper's column: its figures reconstruct so); per selected tet (ours only): "
-            "each selected tet a set swallowed counted. Ours / the paper's; the last column is what the combined "
-            "strategy left.", ""] + table(
+            "each selected tet a set swallowed counted. Ours [95 % interval: Wilson for rates, seeded bootstrap over "
+            "the sweeps for mean sizes] (unresolved/singularities) / the paper's, * when the paper's lies outside our "
+            "interval; the last column is what the combined strategy left.", ""] + table(
         ("mesh", "vertex: % unresolved", "vertex: cardinality", "edge: % unresolved", "edge: cardinality",
          "global: % unresolved", "global: cardinality", "per selected", "combined: % unresolved"), body)
 

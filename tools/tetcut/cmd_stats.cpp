@@ -26,16 +26,19 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   std::optional<std::string> corpus, mesh, json, html, pictures;
   std::optional<scenario::CheckMode> check;
   bool no_improve = false;
+  std::uint32_t sweeps = 10;
   CommandParser parser(
       "stats",
-      "tetcut stats [--corpus DIR] [--mesh NAME] [--check every|end] [--no-improve] [--json FILE] [--html FILE] "
-      "[--pictures DIR]",
+      "tetcut stats [--corpus DIR] [--mesh NAME] [--check every|end] [--no-improve] [--sweeps N] [--json FILE] "
+      "[--html FILE] [--pictures DIR]",
       "Redoes the paper's experiment (section 3.6): five meshes of its kinds (cylinder, sheet, coarse\n"
       "liver, finer liver, locally refined liver), each cut by the cautery scenario in\n"
       "CORPUS/scenarios/paper/ with the combined strategy, and prints Tables 1 and 2 with the paper's\n"
       "figures and the difference beside ours, and Table 2 again for our wider search (strategy wide)\n"
       "beside the paper's, and Tables 1 and 2 once more with the paper's removal order (one by one)\n"
-      "in place of ours (directly removable tets first). Then compares the strategies (basic, neighbours, combined, wide; templates\n"
+      "in place of ours (directly removable tets first). Each Table's scenario is run N times (--sweeps),\n"
+      "its tool path shifted by a seeded offset each time (the first as written), and every cell is the\n"
+      "pooled estimate with its 95 % interval and raw counts (docs/paper.md says how). Then compares the strategies (basic, neighbours, combined, wide; templates\n"
       "and bisection) on one of those scenarios, and runs the liver resection\n"
       "(CORPUS/scenarios/liver-resection.scn) for the report's plots and pictures.\n"
       "\n"
@@ -52,6 +55,8 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   opt::check_mode(app, check, "the local checker after every cut (default) or the full one at the end");
   opt::flag(app, "--no-improve", no_improve,
             "the Tables' runs and the strategy comparison without the improvement pass (the paper has none)");
+  opt::count_into(app, "--sweeps", sweeps, 1000,
+                  "runs of each Table's scenario at seeded offsets (default 10; the first is the scenario as written)");
   opt::text(app, "--json", json,
             "everything as JSON: keys table1, table2 (one row per mesh, with paper and diff), table2_wide (our "
             "wider search's rows), strategies (one row per strategy), resection",
@@ -84,6 +89,8 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   if (check == scenario::CheckMode::kNone) return parser.usage_error("--check: must be every or end", err);
   options.check_every_cut = check.value_or(scenario::CheckMode::kEvery) == scenario::CheckMode::kEvery;
   options.improve = !no_improve;
+  if (sweeps < 1) return parser.usage_error("--sweeps: at least 1", err);
+  options.sweeps = static_cast<int>(sweeps);
 
   const stats::StatsResult result = stats::compute_stats(options);
   if (!result.report) {

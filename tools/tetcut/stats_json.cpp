@@ -26,6 +26,10 @@ Json removal_counts(const RemovalReport& r) {
               {"attempts_undone", r.attempts_undone},
               {"fallback_refused", r.fallback_refused},
               {"unresolved", r.unresolved},
+              {"surface_requested", r.surface_requested},
+              {"surface_direct", r.surface_direct},
+              {"surface_vertex_singularities", r.surface_vertex_singularities},
+              {"surface_edge_singularities", r.surface_edge_singularities},
               {"tets_removed", r.tets_removed},
               {"tets_created", r.tets_created}};
 }
@@ -53,6 +57,46 @@ void ours_paper_diff(Json& row, std::span<const Figure> figures) {
   row["diff"] = std::move(diff);
 }
 
+// A cell's 95 % interval and raw counts (issue 32 item 6): "ci95" [lo, hi] in the cell's unit
+// (null bounds when it has nothing to estimate from), "count" [events, trials] for a rate or
+// [tets, sets] for a mean size.
+void intervals(Json& row, std::span<const std::pair<const char*, const stats::CellEstimate*>> cells) {
+  Json ci = Json::object(), count = Json::object();
+  for (const auto& [key, e] : cells) {
+    ci[key] = Json::array({e->ci.lo, e->ci.hi});
+    count[key] = Json::array({e->count, e->of});
+  }
+  row["ci95"] = std::move(ci);
+  row["count"] = std::move(count);
+}
+
+// How the row's sweeps were run: their number and offsets (paper_stats.hpp, sweep_offset).
+void sweeps(Json& row, const stats::MeshStats& m) {
+  row["sweeps"] = m.sweeps.size();
+  Json offsets = Json::array();
+  for (const Vec3& o : m.offsets) offsets.push_back(Json::array({o.x, o.y, o.z}));
+  row["offsets"] = std::move(offsets);
+  Json counts = Json::array();
+  for (const RemovalReport& r : m.sweeps) counts.push_back(removal_counts(r));
+  row["sweep_counts"] = std::move(counts);  // each sweep's, in order; "counts" (Table 2) sums them
+}
+
+// Issue 32 item 7: every configuration of verdicts (left, right, whole) 3.5's edge search met,
+// with its count; only those met.
+Json edge_search(const EdgeSearchTally& tally) {
+  Json out = Json::array();
+  for (int c = 0; c < EdgeSearchTally::kConfigurations; ++c) {
+    const std::uint64_t n = tally.counts[static_cast<std::size_t>(c)];
+    if (n == 0) continue;
+    const auto config = static_cast<std::uint16_t>(c);
+    out.push_back(Json{{"left", to_string(EdgeSearchTally::verdict(config, 0))},
+                       {"right", to_string(EdgeSearchTally::verdict(config, 1))},
+                       {"whole", to_string(EdgeSearchTally::verdict(config, 2))},
+                       {"count", n}});
+  }
+  return out;
+}
+
 Json quality(const invariants::QualityStats& q) {
   return Json{{"tets", q.tets},
               {"min_radius_ratio", q.min_radius_ratio},
@@ -74,6 +118,10 @@ Json table1_row(const stats::MeshStats& m) {
                             {"vertex_pct", m.table1.vertex_pct, p.vertex_pct},
                             {"edge_pct", m.table1.edge_pct, p.edge_pct}};
   ours_paper_diff(row, figures);
+  const std::pair<const char*, const stats::CellEstimate*> cells[] = {
+      {"removable_pct", &m.table1_ci.removable}, {"vertex_pct", &m.table1_ci.vertex}, {"edge_pct", &m.table1_ci.edge}};
+  intervals(row, cells);
+  sweeps(row, m);
   row["all_operations"] = m.table1.all_operations;  // interior tets included
   row["ok"] = m.ok;
   if (!m.ok) row["error"] = m.error;
@@ -92,9 +140,29 @@ std::array<Figure, 6> table2_figures(const stats::MeshStats& m) {
            {"global_cardinality_per_operation", o.global_cardinality, p.global_cardinality}}};
 }
 
+// Table 2's cells with their intervals and counts: the keys of table2 and table2_wide.
+// `unresolved_key` names what the whole strategy left: combined_unresolved_pct, or the wide row's
+// wide_unresolved_pct.
+void table2_intervals(Json& row, const stats::MeshStats& m, const char* unresolved_key = "combined_unresolved_pct") {
+  const stats::Table2Intervals& t = m.table2_ci;
+  const std::pair<const char*, const stats::CellEstimate*> cells[] = {
+      {"vertex_unresolved_pct", &t.vertex_unresolved},
+      {"vertex_cardinality", &t.vertex_cardinality},
+      {"edge_unresolved_pct", &t.edge_unresolved},
+      {"edge_cardinality", &t.edge_cardinality},
+      {"global_unresolved_pct", &t.global_unresolved},
+      {"global_cardinality_per_operation", &t.global_cardinality},
+      {"global_cardinality_per_selected", &t.global_cardinality_per_selected},
+      {unresolved_key, &t.combined_unresolved}};
+  intervals(row, cells);
+  sweeps(row, m);
+}
+
 Json table2_row(const stats::MeshStats& m) {
   Json row = {{"mesh", m.mesh.name}, {"paper_mesh", m.mesh.number}};
   ours_paper_diff(row, table2_figures(m));
+  table2_intervals(row, m);
+  row["edge_search"] = edge_search(m.removal.edge_search);
   // The paper's global cardinality reconstructs as tets removed per resolved operation (mesh 2:
   // 1.623 / 0.929 = 1.75, printed 1.8); per selected tet is ours, beside it.
   row["global_cardinality_per_selected"] = m.table2.global_cardinality_per_selected;
@@ -108,6 +176,7 @@ Json table2_row(const stats::MeshStats& m) {
 Json table2_wide_row(const stats::MeshStats& m) {
   Json row = {{"mesh", m.mesh.name}, {"paper_mesh", m.mesh.number}};
   for (const Figure& f : table2_figures(m)) row[f.key] = f.ours;
+  table2_intervals(row, m, "wide_unresolved_pct");
   row["global_cardinality_per_selected"] = m.table2.global_cardinality_per_selected;
   row["wide_unresolved_pct"] = m.table2.combined_unresolved_pct;
   row["ok"] = m.ok;
@@ -199,6 +268,7 @@ Json stats_json(const stats::StatsReport& report) {
               {"table1_paper_order", std::move(table1_paper_order)},
               {"table2_paper_order", std::move(table2_paper_order)},
               {"improve", report.improve},
+              {"sweeps", report.sweeps},
               {"strategies", std::move(strategies)},
               {"quality", std::move(quality_rows)}};
   if (report.resection) out["resection"] = resection(*report.resection);

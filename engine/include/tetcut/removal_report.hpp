@@ -9,9 +9,54 @@
 // tetrahedron should be removed" (3.6) is the second.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace tetcut {
+
+// Paper 3.5 at an edge singularity (case 3: T's edge e on the surface, T inside the open ring of
+// tets around e): T with the tets on one side of it around e ("left", the first run in the
+// ring's rotation order), with those on the other side ("right"), then, when neither is
+// removable, with all of them ("whole"). What the set test said about each candidate, and where
+// it failed (issue 32 item 7: why 3.5 leaves so many edge singularities to 3.7). "At an end":
+// the offending vertex is an end of e, or the offending edge has one; T's vertices off e are
+// its two ring neighbours.
+enum class EdgeCandidateVerdict : std::uint8_t {
+  kRemovable,        // the set test passed
+  kSkipped,          // not tested: a removable candidate no larger was found first
+  kTooLarge,         // not tested: more tets than RemovalOptions::max_set_size
+  kVertexAtEnd,      // failed: an end of e would be singular
+  kVertexOfT,        // failed: one of T's two vertices off e would be singular
+  kVertexOfSide,     // failed: another vertex of the side's tets would be singular
+  kEdgeAtEnd,        // failed: an edge through an end of e would keep two runs of tets
+  kEdgeElsewhere,    // failed: an edge away from e's ends would keep two runs of tets
+};
+inline constexpr int kEdgeCandidateVerdicts = 8;
+
+const char* to_string(EdgeCandidateVerdict verdict);
+
+// One count per configuration (left, right, whole verdicts) over the distinct edge
+// singularities the paper's search (3.5, in the neighbours and combined strategies) met: a
+// fixed array, so counting costs an increment and the report stays a flat value.
+struct EdgeSearchTally {
+  static constexpr int kConfigurations = kEdgeCandidateVerdicts * kEdgeCandidateVerdicts * kEdgeCandidateVerdicts;
+  std::array<std::uint64_t, kConfigurations> counts{};
+
+  static constexpr std::uint16_t configuration(EdgeCandidateVerdict left, EdgeCandidateVerdict right,
+                                               EdgeCandidateVerdict whole) {
+    return static_cast<std::uint16_t>((static_cast<int>(left) * kEdgeCandidateVerdicts + static_cast<int>(right)) *
+                                          kEdgeCandidateVerdicts +
+                                      static_cast<int>(whole));
+  }
+  // The candidate's verdict in a configuration: 0 left, 1 right, 2 whole.
+  static constexpr EdgeCandidateVerdict verdict(std::uint16_t configuration, int candidate) {
+    int v = configuration;
+    for (int k = candidate; k < 2; ++k) v /= kEdgeCandidateVerdicts;
+    return static_cast<EdgeCandidateVerdict>(v % kEdgeCandidateVerdicts);
+  }
+  [[nodiscard]] std::uint64_t total() const;
+  bool operator==(const EdgeSearchTally&) const = default;
+};
 
 struct RemovalReport {
   std::uint64_t requested = 0;             // distinct tets requested
@@ -44,6 +89,9 @@ struct RemovalReport {
   std::uint64_t surface_direct = 0;
   std::uint64_t surface_vertex_singularities = 0;
   std::uint64_t surface_edge_singularities = 0;
+  // Each distinct edge singularity 3.5 searched (neighbours, combined; not basic or wide), by
+  // what its left, right and whole candidates' set tests said.
+  EdgeSearchTally edge_search;
 
   // Tets removed per request over the requests removed without refinement (1 for a direct
   // removal). 0 when there are none.

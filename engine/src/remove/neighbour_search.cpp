@@ -28,14 +28,28 @@ void NeighbourSearch::reserve() {
   reserve_touched(sizes_, 64);
 }
 
-void NeighbourSearch::consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> base,
-                               std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out,
-                               TestedPrefix tested) {
+EdgeCandidateVerdict NeighbourSearch::consider(const TetMesh& mesh, SetRemovalWorkspace& ws,
+                                               std::span<const TetId> base, std::span<const TetId> extra,
+                                               std::uint32_t max_set_size, std::vector<TetId>& out,
+                                               TestedPrefix tested, Edge edge) {
   const std::size_t size = base.size() + extra.size();
-  if (size > max_set_size || (!out.empty() && size >= out.size())) return;
+  if (size > max_set_size) return EdgeCandidateVerdict::kTooLarge;
+  if (!out.empty() && size >= out.size()) return EdgeCandidateVerdict::kSkipped;
   candidate_.assign(base.begin(), base.end());
   candidate_.insert(candidate_.end(), extra.begin(), extra.end());
-  if (ws.check(mesh, candidate_, tested).removable()) out.swap(candidate_);
+  const Removability check = ws.check(mesh, candidate_, tested);
+  if (check.removable()) {
+    out.swap(candidate_);
+    return EdgeCandidateVerdict::kRemovable;
+  }
+  // Where the set test failed, relative to the singular edge and T (base.front()).
+  auto at_end = [&](VertId v) { return v == edge.a || v == edge.b; };
+  if (check.kind == SingularityKind::kEdge)
+    return at_end(check.edge.a) || at_end(check.edge.b) ? EdgeCandidateVerdict::kEdgeAtEnd
+                                                         : EdgeCandidateVerdict::kEdgeElsewhere;
+  if (at_end(check.vertex)) return EdgeCandidateVerdict::kVertexAtEnd;
+  return mesh.local_index(base.front(), check.vertex) >= 0 ? EdgeCandidateVerdict::kVertexOfT
+                                                          : EdgeCandidateVerdict::kVertexOfSide;
 }
 
 bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first,
@@ -43,15 +57,24 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
   out.clear();
   path_found_ = false;
   shortest_.clear();
+  edge_configuration_ = kNoConfiguration;
   if (first.kind == SingularityKind::kEdge) {
     sides_of_edge(mesh, ws, t, first.edge.a, first.edge.b, parts_, sizes_);
     const TetId one[1] = {t};
+    // Each candidate's verdict, for the report (issue 32 item 7); a third run, which an open
+    // ring split by T cannot have, would be tested and not recorded.
+    EdgeCandidateVerdict verdicts[3] = {EdgeCandidateVerdict::kSkipped, EdgeCandidateVerdict::kSkipped,
+                                        EdgeCandidateVerdict::kSkipped};
     std::size_t offset = 0;
-    for (std::uint32_t n : sizes_) {  // the left set, the right set: the smaller removable one
-      consider(mesh, ws, one, std::span<const TetId>(parts_.data() + offset, n), max_set_size, out);
-      offset += n;
+    for (std::size_t k = 0; k < sizes_.size(); ++k) {  // the left set, the right set: the smaller removable one
+      const EdgeCandidateVerdict v = consider(mesh, ws, one, std::span<const TetId>(parts_.data() + offset, sizes_[k]),
+                                              max_set_size, out, {}, first.edge);
+      if (k < 2) verdicts[k] = v;
+      offset += sizes_[k];
     }
-    if (out.empty() && sizes_.size() >= 2) consider(mesh, ws, one, parts_, max_set_size, out);  // the whole set
+    if (out.empty() && sizes_.size() >= 2)  // the whole set
+      verdicts[2] = consider(mesh, ws, one, parts_, max_set_size, out, {}, first.edge);
+    edge_configuration_ = EdgeSearchTally::configuration(verdicts[0], verdicts[1], verdicts[2]);
     return !out.empty();
   }
   if (first.kind != SingularityKind::kVertex) return false;

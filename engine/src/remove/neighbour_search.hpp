@@ -26,6 +26,7 @@
 #include "remove/removability.hpp"
 #include "remove/set_removal.hpp"
 #include "tetcut/mesh.hpp"
+#include "tetcut/removal_report.hpp"
 
 namespace tetcut::detail {
 
@@ -41,19 +42,25 @@ class NeighbourSearch {
   [[nodiscard]] std::span<const TetId> path() const {
     return path_found_ ? std::span<const TetId>(shortest_) : std::span<const TetId>();
   }
+  // After find() on an edge singularity: what each of its candidates' set tests said (left,
+  // right, whole), as an EdgeSearchTally configuration; kNoConfiguration otherwise.
+  static constexpr std::uint16_t kNoConfiguration = 0xFFFF;
+  [[nodiscard]] std::uint16_t edge_configuration() const { return edge_configuration_; }
   // Working sizes, allocated and touched now (a larger search grows them once).
   void reserve();
 
  private:
   // Tests base + extra; keeps it in `out` when removable and smaller than what `out` holds.
-  // `tested`: what a test of base alone found, if there was one.
-  void consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> base,
+  // `tested`: what a test of base alone found, if there was one. The verdict is an edge
+  // candidate's (kVertexOfSide for any vertex off `edge`, which the vertex case ignores).
+  EdgeCandidateVerdict consider(const TetMesh& mesh, SetRemovalWorkspace& ws, std::span<const TetId> base,
                 std::span<const TetId> extra, std::uint32_t max_set_size, std::vector<TetId>& out,
-                TestedPrefix tested = {});
+                TestedPrefix tested = {}, Edge edge = {});
   std::vector<TetId> base_, candidate_, parts_;
   std::vector<TetId> ends_;      // the border tets the breadth-first search reached
   std::vector<TetId> shortest_;  // T and the first (shortest) path
   bool path_found_ = false;      // shortest_ holds it
+  std::uint16_t edge_configuration_ = kNoConfiguration;
   std::vector<std::uint32_t> sizes_;
 };
 

@@ -51,6 +51,7 @@ void count_request(RemovalReport& report, const RemovalResult& result) {
       if (kind == SingularityKind::kVertex) ++report.surface_vertex_singularities;
       if (kind == SingularityKind::kEdge) ++report.surface_edge_singularities;
     }
+    if (result.edge_search != detail::NeighbourSearch::kNoConfiguration) ++report.edge_search.counts[result.edge_search];
   }
   if (result.outcome != RemovalOutcome::kUnresolved) {
     ++report.removed;
@@ -188,6 +189,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
     } else {
       found = w.neighbours.find(mesh, w.set_test, t, first, options_.max_path_depth, options_.max_set_size, w.set);
       searched_path = w.neighbours.path();
+      result.edge_search = w.neighbours.edge_configuration();
     }
     if (found) {
       result.selected_removed = count_selected(w.set);

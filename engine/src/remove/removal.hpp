@@ -83,6 +83,9 @@ struct RemovalResult {
   bool optimized_refinement = false;  // kRefinement: by 3.7's path/side rather than 3.4's
   bool over_budget = false;           // kUnresolved because a split would exceed the budget
   bool set_test_disagrees = false;    // verify_direct: set_removable() refused what 3.3 accepted
+  // An edge singularity 3.5 searched: its candidates' verdicts as an EdgeSearchTally
+  // configuration (removal_report.hpp); 0xFFFF when 3.5 did not search an edge singularity.
+  std::uint16_t edge_search = 0xFFFF;
 };
 
 // What one request may do beyond the strategy's own bounds.

@@ -2,6 +2,26 @@
 
 namespace tetcut {
 
+const char* to_string(EdgeCandidateVerdict verdict) {
+  switch (verdict) {
+    case EdgeCandidateVerdict::kRemovable: return "removable";
+    case EdgeCandidateVerdict::kSkipped: return "skipped";
+    case EdgeCandidateVerdict::kTooLarge: return "too large";
+    case EdgeCandidateVerdict::kVertexAtEnd: return "vertex at an end of e";
+    case EdgeCandidateVerdict::kVertexOfT: return "vertex of T off e";
+    case EdgeCandidateVerdict::kVertexOfSide: return "vertex of the side";
+    case EdgeCandidateVerdict::kEdgeAtEnd: return "edge through an end of e";
+    case EdgeCandidateVerdict::kEdgeElsewhere: return "edge elsewhere";
+  }
+  return "?";
+}
+
+std::uint64_t EdgeSearchTally::total() const {
+  std::uint64_t n = 0;
+  for (std::uint64_t c : counts) n += c;
+  return n;
+}
+
 double RemovalReport::mean_cardinality() const {
   const std::uint64_t n = direct + resolved_by_neighbours;
   if (n == 0) return 0.0;
@@ -40,6 +60,7 @@ RemovalReport& RemovalReport::operator+=(const RemovalReport& o) {
   surface_direct += o.surface_direct;
   surface_vertex_singularities += o.surface_vertex_singularities;
   surface_edge_singularities += o.surface_edge_singularities;
+  for (std::size_t i = 0; i < edge_search.counts.size(); ++i) edge_search.counts[i] += o.edge_search.counts[i];
   return *this;
 }
 

@@ -33,11 +33,19 @@ std::optional<TetMesh> initial_mesh(const scenario::Scenario& s, std::string& er
 
 CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions& options, const std::string& name) {
   CauteryResult out;
-  const scenario::ParseResult parsed = scenario::parse_file(scenario_path, name);
+  scenario::ParseResult parsed = scenario::parse_file(scenario_path, name);
   if (!parsed.scenario) {
     out.error = parsed.error;
     return out;
   }
+  // No offset leaves the scenario as written, bit for bit (adding 0.0 would turn a -0.0 into 0.0).
+  const bool offset = options.offset.x != 0.0 || options.offset.y != 0.0 || options.offset.z != 0.0;
+  for (scenario::Op& op : parsed.scenario->ops)
+    if (offset &&
+        (op.kind == scenario::OpKind::kCut || op.kind == scenario::OpKind::kSweep || op.kind == scenario::OpKind::kRemove)) {
+      op.a = op.a + options.offset;
+      op.b = op.b + options.offset;
+    }
   std::optional<TetMesh> before = initial_mesh(*parsed.scenario, out.error);
   if (!before) return out;
 

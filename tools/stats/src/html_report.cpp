@@ -1,5 +1,7 @@
 #include "tetcut/stats/html_report.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "tetcut/render/svg_writer.hpp"
@@ -17,6 +19,9 @@ table { border-collapse: collapse; margin: 1em 0; font-size: 0.85em; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.5em; text-align: right; }
 th { background: #f0f0f0; } td:first-child, th:first-child { text-align: left; }
 td.paper { color: #666; } td.diff { color: #666; font-style: italic; }
+td.ci, td.count { color: #444; font-size: 0.9em; white-space: nowrap; }
+td.outside { font-weight: bold; background: #fde; }
+.wide { overflow-x: auto; max-width: 100%; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; }
 .figures figure { margin: 0; } figcaption { font-size: 0.85em; color: #444; max-width: 480px; }
 code { background: #f4f4f4; padding: 0.1em 0.3em; }
@@ -28,69 +33,105 @@ std::string cell(const std::string& text, const char* cls = nullptr) {
              : "<td>" + render::xml_escape(text) + "</td>";
 }
 
-// Ours, the paper's, the difference: three cells.
-std::string triple(double ours, double paper, int decimals) {
-  return cell(fixed(ours, decimals)) + cell(fixed(paper, decimals), "paper") +
-         cell(difference(ours, paper, decimals), "diff");
+// Ours, its 95 % interval and raw counts, the paper's (class "outside" too when it lies outside
+// our interval), the difference: five cells.
+std::string figure_cells(const CellEstimate& ours, double paper, int decimals) {
+  const bool outside = !std::isnan(ours.ci.lo) && (paper < ours.ci.lo || paper > ours.ci.hi);
+  return cell(fixed(ours.value, decimals)) + cell(interval_text(ours, decimals + 1), "ci") + cell(count_text(ours), "count") +
+         cell(fixed(paper, decimals), outside ? "paper outside" : "paper") +
+         cell(difference(ours.value, paper, decimals), "diff");
 }
 
+constexpr const char* kFigureHeads = "<th>ours</th><th>95 %</th><th>count</th><th>paper</th><th>diff</th>";
 
-std::string table1_html(const StatsReport& report) {
-  std::string h = "<table id=\"table1\"><tr><th rowspan=\"2\">mesh</th><th rowspan=\"2\">tets</th>"
-                  "<th rowspan=\"2\">cuts</th><th colspan=\"2\">operations</th><th colspan=\"3\">% removable</th>"
-                  "<th colspan=\"3\">% due to vertices</th><th colspan=\"3\">% due to edges</th></tr><tr>"
-                  "<th>ours</th><th>paper</th>";
-  for (int i = 0; i < 3; ++i) h += "<th>ours</th><th>paper</th><th>diff</th>";
+std::string table1_html(const std::vector<MeshStats>& meshes, const char* id) {
+  std::string h = "<table id=\"" + std::string(id) +
+                  "\"><tr><th rowspan=\"2\">mesh</th><th rowspan=\"2\">tets</th>"
+                  "<th rowspan=\"2\">sweeps</th><th rowspan=\"2\">cuts</th><th colspan=\"2\">operations</th>"
+                  "<th colspan=\"5\">% removable</th><th colspan=\"5\">% due to vertices</th>"
+                  "<th colspan=\"5\">% due to edges</th></tr><tr><th>ours</th><th>paper</th>";
+  for (int i = 0; i < 3; ++i) h += kFigureHeads;
   h += "</tr>\n";
-  for (const MeshStats& m : report.meshes) {
+  for (const MeshStats& m : meshes) {
     const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
-    h += "<tr>" + cell(mesh_label(m.mesh)) + cell(std::to_string(m.tets_before)) + cell(std::to_string(m.cuts)) +
-         cell(std::to_string(m.table1.operations)) + cell(std::to_string(p.operations), "paper") +
-         triple(m.table1.removable_pct, p.removable_pct, 1) + triple(m.table1.vertex_pct, p.vertex_pct, 1) +
-         triple(m.table1.edge_pct, p.edge_pct, 1) + "</tr>\n";
+    const Table1Intervals& c = m.table1_ci;
+    h += "<tr>" + cell(mesh_label(m.mesh)) + cell(std::to_string(m.tets_before)) + cell(std::to_string(m.sweeps.size())) +
+         cell(std::to_string(m.cuts)) + cell(std::to_string(m.table1.operations)) +
+         cell(std::to_string(p.operations), "paper") + figure_cells(c.removable, p.removable_pct, 1) +
+         figure_cells(c.vertex, p.vertex_pct, 1) + figure_cells(c.edge, p.edge_pct, 1) + "</tr>\n";
   }
   return h + "</table>\n";
 }
 
-std::string table2_html(const StatsReport& report) {
-  std::string h = "<table id=\"table2\"><tr><th rowspan=\"2\">mesh</th>"
-                  "<th colspan=\"6\">vertex singularities</th><th colspan=\"6\">edge singularities</th>"
-                  "<th colspan=\"6\">global</th><th rowspan=\"2\">combined:<br>% unresolved</th></tr><tr>";
-  for (int i = 0; i < 3; ++i)
-    h += "<th>% unres.</th><th>paper</th><th>diff</th><th>card.</th><th>paper</th><th>diff</th>";
-  h += "</tr>\n";
-  for (const MeshStats& m : report.meshes) {
+std::string table2_html(const std::vector<MeshStats>& meshes, const char* id) {
+  std::string h = "<table id=\"" + std::string(id) +
+                  "\"><tr><th rowspan=\"2\">mesh</th>"
+                  "<th colspan=\"10\">vertex singularities</th><th colspan=\"10\">edge singularities</th>"
+                  "<th colspan=\"10\">global (card. per operation, the paper's column)</th>"
+                  "<th colspan=\"2\">card. per selected tet</th><th rowspan=\"2\">combined:<br>% unresolved</th></tr><tr>";
+  for (int i = 0; i < 6; ++i) h += kFigureHeads;
+  h += "<th>ours</th><th>95 %</th></tr>\n";
+  for (const MeshStats& m : meshes) {
     const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
-    const Table2Row& o = m.table2;
-    h += "<tr>" + cell(mesh_label(m.mesh)) + triple(o.vertex_unresolved_pct, p.vertex_unresolved_pct, 1) +
-         triple(o.vertex_cardinality, p.vertex_cardinality, 1) + triple(o.edge_unresolved_pct, p.edge_unresolved_pct, 1) +
-         triple(o.edge_cardinality, p.edge_cardinality, 1) + triple(o.global_unresolved_pct, p.global_unresolved_pct, 1) +
-         triple(o.global_cardinality, p.global_cardinality, 2) + cell(fixed(o.combined_unresolved_pct, 1)) + "</tr>\n";
+    const Table2Intervals& c = m.table2_ci;
+    const CellEstimate& sel = c.global_cardinality_per_selected;
+    h += "<tr>" + cell(mesh_label(m.mesh)) + figure_cells(c.vertex_unresolved, p.vertex_unresolved_pct, 1) +
+         figure_cells(c.vertex_cardinality, p.vertex_cardinality, 1) +
+         figure_cells(c.edge_unresolved, p.edge_unresolved_pct, 1) + figure_cells(c.edge_cardinality, p.edge_cardinality, 1) +
+         figure_cells(c.global_unresolved, p.global_unresolved_pct, 1) +
+         figure_cells(c.global_cardinality, p.global_cardinality, 2) + cell(fixed(sel.value, 2)) +
+         cell(interval_text(sel, 2), "ci") +
+         cell(fixed(c.combined_unresolved.value, 1)) + "</tr>\n";
   }
   h += "</table>\n";
-  for (const MeshStats& m : report.meshes)
+  for (const MeshStats& m : meshes)
     if (!m.ok)
       h += "<p class=\"warning\">" + render::xml_escape(mesh_label(m.mesh) + ": the scenario stopped early: " + m.error) + "</p>\n";
   return h;
 }
 
+// Issue 32 item 7: the configurations of the edge singularities 3.5 searched.
+std::string edge_configurations_html(const std::vector<MeshStats>& meshes, const char* id) {
+  std::vector<std::pair<std::uint64_t, int>> rows;
+  for (int c = 0; c < EdgeSearchTally::kConfigurations; ++c) {
+    std::uint64_t total = 0;
+    for (const MeshStats& m : meshes) total += m.removal.edge_search.counts[static_cast<std::size_t>(c)];
+    if (total != 0) rows.emplace_back(total, c);
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string h = "<table id=\"" + std::string(id) + "\"><tr><th>left</th><th>right</th><th>whole</th>";
+  for (const MeshStats& m : meshes) h += "<th>" + render::xml_escape(m.mesh.name) + "</th>";
+  h += "<th>all</th></tr>\n";
+  for (const auto& [total, c] : rows) {
+    const auto config = static_cast<std::uint16_t>(c);
+    h += "<tr>";
+    for (int k = 0; k < 3; ++k) h += cell(to_string(EdgeSearchTally::verdict(config, k)));
+    for (const MeshStats& m : meshes) h += cell(std::to_string(m.removal.edge_search.counts[static_cast<std::size_t>(c)]));
+    h += cell(std::to_string(total)) + "</tr>\n";
+  }
+  return h + "</table>\n";
+}
+
 // Our wide search beside the paper's (3.5), per mesh: its own rows, no paper figures.
 std::string table2_wide_html(const StatsReport& report) {
   std::string h = "<table id=\"table2-wide\"><tr><th rowspan=\"2\">mesh</th>"
-                  "<th colspan=\"4\">vertex singularities</th><th colspan=\"4\">edge singularities</th>"
-                  "<th colspan=\"2\">global card. / operation</th><th rowspan=\"2\">wide:<br>% unresolved</th></tr><tr>";
-  for (int i = 0; i < 2; ++i) h += "<th>% unres.</th><th>3.5</th><th>card.</th><th>3.5</th>";
-  h += "<th>wide</th><th>3.5</th></tr>\n";
+                  "<th colspan=\"6\">vertex singularities</th><th colspan=\"6\">edge singularities</th>"
+                  "<th colspan=\"3\">global card. / operation</th><th rowspan=\"2\">wide:<br>% unresolved</th></tr><tr>";
+  for (int i = 0; i < 2; ++i) h += "<th>% unres.</th><th>95 %</th><th>3.5</th><th>card.</th><th>95 %</th><th>3.5</th>";
+  h += "<th>wide</th><th>95 %</th><th>3.5</th></tr>\n";
   for (std::size_t i = 0; i < report.wide_meshes.size(); ++i) {
     const MeshStats& m = report.wide_meshes[i];
-    const Table2Row& w = m.table2;
+    const Table2Intervals& w = m.table2_ci;
     const Table2Row& o = report.meshes[i].table2;
-    h += "<tr>" + cell(mesh_label(m.mesh)) + cell(fixed(w.vertex_unresolved_pct, 1)) +
-         cell(fixed(o.vertex_unresolved_pct, 1), "paper") + cell(fixed(w.vertex_cardinality, 1)) +
-         cell(fixed(o.vertex_cardinality, 1), "paper") + cell(fixed(w.edge_unresolved_pct, 1)) +
-         cell(fixed(o.edge_unresolved_pct, 1), "paper") + cell(fixed(w.edge_cardinality, 1)) +
-         cell(fixed(o.edge_cardinality, 1), "paper") + cell(fixed(w.global_cardinality, 2)) +
-         cell(fixed(o.global_cardinality, 2), "paper") + cell(fixed(w.combined_unresolved_pct, 1)) + "</tr>\n";
+    auto ours = [](const CellEstimate& e, int decimals) {
+      return cell(fixed(e.value, decimals)) + cell(interval_text(e, decimals + 1), "ci");
+    };
+    h += "<tr>" + cell(mesh_label(m.mesh)) + ours(w.vertex_unresolved, 1) +
+         cell(fixed(o.vertex_unresolved_pct, 1), "paper") + ours(w.vertex_cardinality, 1) +
+         cell(fixed(o.vertex_cardinality, 1), "paper") + ours(w.edge_unresolved, 1) +
+         cell(fixed(o.edge_unresolved_pct, 1), "paper") + ours(w.edge_cardinality, 1) +
+         cell(fixed(o.edge_cardinality, 1), "paper") + ours(w.global_cardinality, 2) +
+         cell(fixed(o.global_cardinality, 2), "paper") + cell(fixed(w.combined_unresolved.value, 1)) + "</tr>\n";
   }
   h += "</table>\n";
   for (const MeshStats& m : report.wide_meshes)
@@ -178,19 +219,32 @@ std::string html_report(const StatsReport& report, const std::string& command) {
        "scenario in <code>corpus/scenarios/paper/</code>, with the paper's beside them (grey) and the "
        "difference (italic). Reproduce with <code>" +
        render::xml_escape(command) + "</code>.</p>\n";
-  h += "<h2>Table 1. Singularities met when removing a surface tet</h2>\n" + table1_html(report);
-  h += "<h2>Table 2. The neighbour strategy</h2>\n"
+  const std::string sweeps = std::to_string(report.sweeps);
+  h += "<p>Every cell pools " + sweeps +
+       " runs of its mesh's scenario, the tool path shifted by a seeded offset each time (the first as "
+       "written), and gives our estimate, its 95 % interval and the raw counts it rests on: the Wilson score "
+       "interval of the pooled events for a rate, the percentile bootstrap of the pooled ratio over the runs "
+       "(2000 resamples, seeded) for a mean set size. A paper figure outside our interval is in bold on pink.</p>\n";
+  h += "<h2>Table 1. Singularities met when removing a surface tet (our order: direct first)</h2>\n<div class=\"wide\">" + table1_html(report.meshes, "table1") + "</div>\n";
+  h += "<h2>Table 2. The neighbour strategy (our order: direct first)</h2>\n"
        "<p>% of singularities the neighbour search (paper 3.5) did not resolve, and the mean number of "
        "tets it removed when it did; global: over all operations, direct removals counting 1, the "
-       "cardinality per selected tet taken (the paper's figure, 3.6) and per request. Our runs use "
-       "the combined strategy (3.7), whose optimized refinement and fallback resolved the rest: its own "
-       "unresolved share is the last column.</p>\n" +
-       table2_html(report);
+       "cardinality per operation resolved (the paper's column: its figures reconstruct so) and per "
+       "selected tet taken (ours). Our runs use the combined strategy (3.7), whose optimized refinement "
+       "and fallback resolved the rest: its own unresolved share is the last column.</p>\n<div class=\"wide\">" + table2_html(report.meshes, "table2") + "</div>\n";
+  if (!report.paper_order_meshes.empty()) {
+    h += "<h2>Table 1 in the paper's order</h2>\n"
+         "<p>The same scenarios with the paper's removal order (3.3: \"removing one-by-one all tetrahedra in "
+         "T_removal\": the first pending selected tet with a face on the surface, removable or not) in place "
+         "of ours (every directly removable tet first).</p>\n<div class=\"wide\">" + table1_html(report.paper_order_meshes, "table1-paper-order") + "</div>\n";
+    h += std::string("<h2>Table 2 in the paper's order</h2>\n<div class=\"wide\">") + table2_html(report.paper_order_meshes, "table2-paper-order") + "</div>\n";
+  }
   h += "<h2>Table 2, our wider search</h2>\n"
        "<p>The same scenarios with the strategy <code>wide</code> (not the paper's: whole vertex shells and "
        "rounds of repairs, smallest set first) in place of the paper's search; the paper's search (3.5, "
-       "from Table 2) in grey beside it. The last column is what the wide strategy left in place.</p>\n" +
-       table2_wide_html(report);
+       "from Table 2) in grey beside it, each of ours with its 95 % interval. The last column is what the "
+       "wide strategy left in place.</p>\n<div class=\"wide\">" +
+       table2_wide_html(report) + "</div>\n";
   h += "<h2>Strategies on the " + render::xml_escape(report.comparison_mesh) + " scenario</h2>\n"
        "<p>basic (3.4), neighbours (3.5), combined (3.7), and our wider search (not the paper's); the "
        "refinement loop (3.2) splitting with the ten templates or by sequential bisection. Quality: radius "
@@ -207,6 +261,14 @@ std::string html_report(const StatsReport& report, const std::string& command) {
          "not meet the floor).</p>\n" +
          quality_html(report);
   if (report.resection) h += resection_html(*report.resection);
+  h += "<h2>Where 3.5 fails at an edge singularity</h2>\n"
+       "<p>Each edge singularity the paper's search met (over every run, our order, then the paper's): T "
+       "with the tets on one side of the singular edge e (left, then right), then with all of them "
+       "(whole), and what each set test said: removable, not tested (skipped: a removable set no larger "
+       "was found first), or the vertex or edge at which the set would be singular.</p>\n" +
+       edge_configurations_html(report.meshes, "edge-search");
+  if (!report.paper_order_meshes.empty())
+    h += edge_configurations_html(report.paper_order_meshes, "edge-search-paper-order");
   h += "</body></html>\n";
   return h;
 }

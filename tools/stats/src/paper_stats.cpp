@@ -1,6 +1,7 @@
 #include "tetcut/stats/paper_stats.hpp"
 
 #include <algorithm>
+#include <random>
 #include <utility>
 
 #include "tetcut/percentile.hpp"
@@ -9,17 +10,35 @@ namespace tetcut::stats {
 
 const std::vector<PaperMesh>& paper_meshes() {
   static const std::vector<PaperMesh> meshes{
-      {1, "cylinder", "a simple cylinder", "scenarios/paper/cylinder.scn"},
-      {2, "sheet", "a thin sheet, two tets thick, cut into (sheet.scn cuts through)", "scenarios/paper/sheet-into.scn"},
-      {3, "liver-coarse", "a rough liver (paper: 3,970 tets)", "scenarios/paper/liver-coarse.scn"},
-      {4, "liver-refined", "a finer liver (paper: 8,454 tets)", "scenarios/paper/liver-refined.scn"},
+      // Jitter: step 0.15 along x, passes 0.25 apart in y, tool 0.4 across the plane z = 2.
+      {1, "cylinder", "a simple cylinder", "scenarios/paper/cylinder.scn", {0.075, 0.125, 0.2}},
+      // Grooves along x and along y (step 0.12, 2 to 4 apart): 0.2 either way in the sheet's
+      // plane; depth 0.05 either way, so a groove is 0.15 to 0.25 deep of the 0.5 sheet.
+      {2, "sheet", "a thin sheet, two tets thick, cut into (sheet.scn cuts through)", "scenarios/paper/sheet-into.scn",
+       {0.2, 0.2, 0.05}},
+      // The livers: tool 8 across the plane x = 95, step 4 along y, passes 5 apart in z.
+      {3, "liver-coarse", "a rough liver (paper: 3,970 tets)", "scenarios/paper/liver-coarse.scn", {4.0, 2.0, 2.5}},
+      {4, "liver-refined", "a finer liver (paper: 8,454 tets)", "scenarios/paper/liver-refined.scn", {4.0, 2.0, 2.5}},
       {5, "liver-local", "a liver locally refined by edge splitting (paper: 9,933 tets)",
-       "scenarios/paper/liver-local.scn"},
+       "scenarios/paper/liver-local.scn", {4.0, 2.0, 2.5}},
   };
   return meshes;
 }
 
 std::string mesh_label(const PaperMesh& mesh) { return std::to_string(mesh.number) + " " + mesh.name; }
+
+Vec3 sweep_offset(const PaperMesh& mesh, int k) {
+  if (k == 0) return {};
+  std::mt19937_64 rng(static_cast<std::uint64_t>(k));
+  auto draw = [&](double half_width) {
+    const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;  // [0, 1), 53 bits
+    return half_width * (2.0 * u - 1.0);
+  };
+  const double x = draw(mesh.jitter.x);  // in this order: arguments' order is unspecified
+  const double y = draw(mesh.jitter.y);
+  const double z = draw(mesh.jitter.z);
+  return {x, y, z};
+}
 
 namespace {
 
@@ -29,19 +48,31 @@ namespace {
 // the cuts then meet the small tets it made and refine them again. Its row says where it stopped.
 constexpr std::uint32_t kComparisonMaxGrowth = 2;
 
-MeshStats mesh_stats(const PaperMesh& mesh, const CauteryRun& run) {
+// One mesh's sweeps (runs[k] at sweep_offset(mesh, k)), pooled.
+MeshStats mesh_stats(const PaperMesh& mesh, const std::vector<CauteryRun>& runs) {
   MeshStats s;
   s.mesh = mesh;
-  s.tets_before = run.tets_before;
-  s.tets_after = run.result.tets;
-  s.cuts = run.result.cuts.size();
-  s.removal = run.result.removal;
+  s.tets_before = runs.front().tets_before;
+  s.tets_after = runs.front().result.tets;
+  std::vector<double> cut_us;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const CauteryRun& run = runs[k];
+    s.cuts += run.result.cuts.size();
+    s.removal += run.result.removal;
+    s.sweeps.push_back(run.result.removal);
+    s.offsets.push_back(sweep_offset(mesh, static_cast<int>(k)));
+    cut_us.insert(cut_us.end(), run.cut_us.begin(), run.cut_us.end());
+    if (s.ok && !run.result.ok) {
+      s.ok = false;
+      s.error = run.result.error + (k == 0 ? "" : " (sweep " + std::to_string(k) + ")");
+    }
+  }
   s.table1 = table1_row(s.removal);
   s.table2 = table2_row(s.removal);
-  s.p50_us = percentile(run.cut_us, 0.5);
-  s.p99_us = percentile(run.cut_us, 0.99);
-  s.ok = run.result.ok;
-  s.error = run.result.error;
+  s.table1_ci = table1_intervals(s.sweeps);
+  s.table2_ci = table2_intervals(s.sweeps);
+  s.p50_us = percentile(cut_us, 0.5);
+  s.p99_us = percentile(cut_us, 0.99);
   return s;
 }
 
@@ -112,6 +143,11 @@ StatsResult compute_stats(const StatsOptions& options) {
   run_options.check_every_cut = options.check_every_cut;
   run_options.improve = options.improve;
   report.improve = options.improve;
+  report.sweeps = options.sweeps;
+  if (options.sweeps < 1) {
+    out.error = "sweeps must be at least 1";
+    return out;
+  }
   CauteryOptions wide_options = run_options;
   wide_options.strategy = RemovalStrategy::kWide;
   CauteryOptions paper_order_options = run_options;
@@ -124,12 +160,18 @@ StatsResult compute_stats(const StatsOptions& options) {
       {&paper_order_options, &report.paper_order_meshes}};
   for (const PaperMesh& m : paper_meshes())
     for (const auto& [o, into] : runs) {
-      CauteryResult r = run_scenario(m.scenario, *o);
-      if (!r.run) {
-        out.error = r.error;
-        return out;
+      std::vector<CauteryRun> sweeps;
+      for (int k = 0; k < options.sweeps; ++k) {
+        CauteryOptions swept = *o;
+        swept.offset = sweep_offset(m, k);
+        CauteryResult r = run_scenario(m.scenario, swept);
+        if (!r.run) {
+          out.error = r.error;
+          return out;
+        }
+        sweeps.push_back(std::move(*r.run));
       }
-      into->push_back(mesh_stats(m, *r.run));
+      into->push_back(mesh_stats(m, sweeps));
     }
 
   // The paper's three strategies, and our templates against sequential bisection.

@@ -1,6 +1,7 @@
 #include "tetcut/stats/text_report.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,28 @@ std::string difference(double ours, double paper, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%+.*f", decimals, ours - paper);
   return buf;
+}
+
+// "[91.6, 93.1]", or "-" when the interval has nothing to estimate from.
+std::string interval_text(const CellEstimate& e, int decimals) {
+  if (std::isnan(e.ci.lo)) return "-";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "[%.*f, %.*f]", decimals, e.ci.lo, decimals, e.ci.hi);
+  return buf;
+}
+// "4127/4466": events of trials, or tets of sets.
+std::string count_text(const CellEstimate& e) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%llu/%llu", static_cast<unsigned long long>(e.count),
+                static_cast<unsigned long long>(e.of));
+  return buf;
+}
+
+std::string paper_beside(const CellEstimate& ours, double paper, int decimals) {
+  const bool outside = !std::isnan(ours.ci.lo) && (paper < ours.ci.lo || paper > ours.ci.hi);
+  std::string s = fixed(paper, decimals);
+  if (outside) s += '*';
+  return s;
 }
 
 std::string created_worst(const invariants::QualityStats& q) {
@@ -77,48 +100,87 @@ std::string tables_1_and_2(const std::vector<MeshStats>& meshes, const std::stri
   std::string out;
   out += "Table 1. Removing a tet on the surface (requested with a face on the surface, as the paper's\n"
          "title says): how often it is removable directly, or would make a vertex or an edge singular\n"
-         "(paper 3.6, combined strategy, " + order + " order). ours / paper / difference; all ops: every\n"
-         "distinct request, interior tets included\n\n";
+         "(paper 3.6, combined strategy, " + order + " order), pooled over the seeded sweeps. ours, its 95 %\n"
+         "interval, events/operations, the paper's (* outside our interval); all ops: every distinct request,\n"
+         "interior tets included\n\n";
   TextTable t1;
-  t1.row({"mesh", "tets", "cuts", "operations", "paper", "all ops", "% removable", "paper", "diff", "% vertex", "paper",
-          "diff", "% edge", "paper", "diff"});
+  t1.row({"mesh", "tets", "sweeps", "cuts", "operations", "paper", "all ops", "% removable", "95 %", "events", "paper",
+          "% vertex", "95 %", "events", "paper", "% edge", "95 %", "events", "paper"});
   for (const MeshStats& m : meshes) {
     const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
-    t1.row({mesh_label(m.mesh), std::to_string(m.tets_before), std::to_string(m.cuts), std::to_string(m.table1.operations),
-            std::to_string(p.operations), std::to_string(m.table1.all_operations), fixed(m.table1.removable_pct, 1),
-            fixed(p.removable_pct, 1), difference(m.table1.removable_pct, p.removable_pct, 1),
-            fixed(m.table1.vertex_pct, 1), fixed(p.vertex_pct, 1), difference(m.table1.vertex_pct, p.vertex_pct, 1),
-            fixed(m.table1.edge_pct, 1), fixed(p.edge_pct, 1), difference(m.table1.edge_pct, p.edge_pct, 1)});
+    const Table1Intervals& c = m.table1_ci;
+    t1.row({mesh_label(m.mesh), std::to_string(m.tets_before), std::to_string(m.sweeps.size()), std::to_string(m.cuts),
+            std::to_string(m.table1.operations), std::to_string(p.operations), std::to_string(m.table1.all_operations),
+            fixed(c.removable.value, 1), interval_text(c.removable, 1), count_text(c.removable),
+            paper_beside(c.removable, p.removable_pct, 1), fixed(c.vertex.value, 1), interval_text(c.vertex, 1),
+            count_text(c.vertex), paper_beside(c.vertex, p.vertex_pct, 1), fixed(c.edge.value, 1),
+            interval_text(c.edge, 1), count_text(c.edge), paper_beside(c.edge, p.edge_pct, 1)});
   }
   out += t1.str();
 
   out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one (" + order + " order): % of\n"
-         "singularities it did not resolve and the mean size of the sets it removed. ours / paper /\n"
-         "difference. The global cardinality is per operation resolved directly or by neighbours\n"
+         "singularities it did not resolve and the mean size of the sets it removed, pooled over the sweeps:\n"
+         "ours, its 95 % interval, the counts (unresolved/singularities, tets/sets), the paper's (* outside\n"
+         "our interval). The global cardinality is per operation resolved directly or by neighbours\n"
          "(card./op., the paper's column: its figures reconstruct so) and, beside it, per selected tet the\n"
          "sets took (card./sel.); the last column is what the combined strategy left in place (must be 0)\n\n";
   TextTable t2;
-  t2.row({"mesh", "vertex % unres.", "paper", "diff", "card.", "paper", "diff", "edge % unres.", "paper", "diff",
-          "card.", "paper", "diff", "global % unres.", "paper", "diff", "card./op.", "paper", "diff", "card./sel.",
-          "combined % unres."});
+  t2.row({"mesh", "vertex % unres.", "95 %", "count", "paper", "card.", "95 %", "count", "paper", "edge % unres.", "95 %",
+          "count", "paper", "card.", "95 %", "count", "paper", "global % unres.", "95 %", "paper", "card./op.", "95 %",
+          "paper", "card./sel.", "95 %", "combined % unres."});
   for (const MeshStats& m : meshes) {
     const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
-    const Table2Row& o = m.table2;
-    t2.row({mesh_label(m.mesh), fixed(o.vertex_unresolved_pct, 1), fixed(p.vertex_unresolved_pct, 1),
-            difference(o.vertex_unresolved_pct, p.vertex_unresolved_pct, 1), fixed(o.vertex_cardinality, 1),
-            fixed(p.vertex_cardinality, 1), difference(o.vertex_cardinality, p.vertex_cardinality, 1),
-            fixed(o.edge_unresolved_pct, 1), fixed(p.edge_unresolved_pct, 1),
-            difference(o.edge_unresolved_pct, p.edge_unresolved_pct, 1), fixed(o.edge_cardinality, 1),
-            fixed(p.edge_cardinality, 1), difference(o.edge_cardinality, p.edge_cardinality, 1),
-            fixed(o.global_unresolved_pct, 1), fixed(p.global_unresolved_pct, 1),
-            difference(o.global_unresolved_pct, p.global_unresolved_pct, 1), fixed(o.global_cardinality, 2),
-            fixed(p.global_cardinality, 1), difference(o.global_cardinality, p.global_cardinality, 2),
-            fixed(o.global_cardinality_per_selected, 2), fixed(o.combined_unresolved_pct, 1)});
+    const Table2Intervals& c = m.table2_ci;
+    t2.row({mesh_label(m.mesh), fixed(c.vertex_unresolved.value, 1), interval_text(c.vertex_unresolved, 1),
+            count_text(c.vertex_unresolved), paper_beside(c.vertex_unresolved, p.vertex_unresolved_pct, 1),
+            fixed(c.vertex_cardinality.value, 1), interval_text(c.vertex_cardinality, 2), count_text(c.vertex_cardinality),
+            paper_beside(c.vertex_cardinality, p.vertex_cardinality, 1), fixed(c.edge_unresolved.value, 1),
+            interval_text(c.edge_unresolved, 1), count_text(c.edge_unresolved),
+            paper_beside(c.edge_unresolved, p.edge_unresolved_pct, 1), fixed(c.edge_cardinality.value, 1),
+            interval_text(c.edge_cardinality, 2), count_text(c.edge_cardinality),
+            paper_beside(c.edge_cardinality, p.edge_cardinality, 1), fixed(c.global_unresolved.value, 1),
+            interval_text(c.global_unresolved, 1), paper_beside(c.global_unresolved, p.global_unresolved_pct, 1),
+            fixed(c.global_cardinality.value, 2), interval_text(c.global_cardinality, 2),
+            paper_beside(c.global_cardinality, p.global_cardinality, 1), fixed(c.global_cardinality_per_selected.value, 2),
+            interval_text(c.global_cardinality_per_selected, 2),
+            fixed(c.combined_unresolved.value, 1) + " (" + std::to_string(c.combined_unresolved.count) + ")"});
   }
   out += t2.str();
+  out += "  95 %: rates, the Wilson score interval of the events pooled over the sweeps; mean sizes, the\n"
+         "  percentile bootstrap of the pooled ratio over the sweeps (2000 resamples, seeded: docs/paper.md)\n";
   for (const MeshStats& m : meshes)
     if (!m.ok) out += "  " + mesh_label(m.mesh) + ": the scenario stopped early: " + m.error + "\n";
   return out;
+}
+
+// Issue 32 item 7: the configurations of the edge singularities 3.5 searched, one row per
+// configuration met, most frequent first, per mesh and in all.
+std::string edge_configurations(const std::vector<MeshStats>& meshes, const std::string& order) {
+  std::vector<std::pair<std::uint64_t, int>> rows;  // (total, configuration)
+  for (int c = 0; c < EdgeSearchTally::kConfigurations; ++c) {
+    std::uint64_t total = 0;
+    for (const MeshStats& m : meshes) total += m.removal.edge_search.counts[static_cast<std::size_t>(c)];
+    if (total != 0) rows.emplace_back(total, c);
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string out = "\nEdge singularities the paper's search (3.5) met, " + order +
+                    " order, over the sweeps: T with the tets on one side of\n"
+                    "the edge e (left, then right), then with all of them (whole), and where each set test failed\n\n";
+  TextTable t;
+  std::vector<std::string> header{"left", "right", "whole"};
+  for (const MeshStats& m : meshes) header.push_back(m.mesh.name);
+  header.push_back("all");
+  t.row(header);
+  for (const auto& [total, c] : rows) {
+    const auto config = static_cast<std::uint16_t>(c);
+    std::vector<std::string> cells{to_string(EdgeSearchTally::verdict(config, 0)),
+                                   to_string(EdgeSearchTally::verdict(config, 1)),
+                                   to_string(EdgeSearchTally::verdict(config, 2))};
+    for (const MeshStats& m : meshes) cells.push_back(std::to_string(m.removal.edge_search.counts[static_cast<std::size_t>(c)]));
+    cells.push_back(std::to_string(total));
+    t.row(cells);
+  }
+  return out + t.str();
 }
 
 }  // namespace
@@ -129,19 +191,22 @@ std::string text_report(const StatsReport& report) {
   out += tables_1_and_2(report.meshes, "direct-first");
   out += "\nTable 2, our wider search (strategy wide, not the paper's: whole vertex shells and rounds of\n"
          "repairs, smallest set first) in place of 3.5 on the same scenarios: each figure of the wide\n"
-         "search, then the paper's search's (3.5) from Table 2; the last column is what the wide strategy\n"
-         "left in place (must be 0)\n\n";
+         "search with its 95 % interval (and counts), then the paper's search's (3.5) from Table 2; the last\n"
+         "column is what the wide strategy left in place (must be 0)\n\n";
   TextTable tw;
-  tw.row({"mesh", "vertex % unres.", "3.5", "card.", "3.5", "edge % unres.", "3.5", "card.", "3.5", "card./op.", "3.5",
-          "wide % unres."});
+  tw.row({"mesh", "vertex % unres.", "95 %", "count", "3.5", "card.", "95 %", "3.5", "edge % unres.", "95 %", "count",
+          "3.5", "card.", "95 %", "3.5", "card./op.", "95 %", "3.5", "wide % unres."});
   for (std::size_t i = 0; i < report.wide_meshes.size(); ++i) {
     const MeshStats& m = report.wide_meshes[i];
-    const Table2Row& w = m.table2;
+    const Table2Intervals& w = m.table2_ci;
     const Table2Row& o = report.meshes[i].table2;
-    tw.row({mesh_label(m.mesh), fixed(w.vertex_unresolved_pct, 1), fixed(o.vertex_unresolved_pct, 1),
-            fixed(w.vertex_cardinality, 1), fixed(o.vertex_cardinality, 1), fixed(w.edge_unresolved_pct, 1),
-            fixed(o.edge_unresolved_pct, 1), fixed(w.edge_cardinality, 1), fixed(o.edge_cardinality, 1),
-            fixed(w.global_cardinality, 2), fixed(o.global_cardinality, 2), fixed(w.combined_unresolved_pct, 1)});
+    tw.row({mesh_label(m.mesh), fixed(w.vertex_unresolved.value, 1), interval_text(w.vertex_unresolved, 1),
+            count_text(w.vertex_unresolved), fixed(o.vertex_unresolved_pct, 1), fixed(w.vertex_cardinality.value, 1),
+            interval_text(w.vertex_cardinality, 2), fixed(o.vertex_cardinality, 1), fixed(w.edge_unresolved.value, 1),
+            interval_text(w.edge_unresolved, 1), count_text(w.edge_unresolved), fixed(o.edge_unresolved_pct, 1),
+            fixed(w.edge_cardinality.value, 1), interval_text(w.edge_cardinality, 2), fixed(o.edge_cardinality, 1),
+            fixed(w.global_cardinality.value, 2), interval_text(w.global_cardinality, 2), fixed(o.global_cardinality, 2),
+            fixed(w.combined_unresolved.value, 1)});
   }
   out += tw.str();
   for (const MeshStats& m : report.wide_meshes)
@@ -153,6 +218,8 @@ std::string text_report(const StatsReport& report) {
            "place of ours (every directly removable tet first):\n\n";
     out += tables_1_and_2(report.paper_order_meshes, "paper");
   }
+  out += edge_configurations(report.meshes, "direct-first");
+  if (!report.paper_order_meshes.empty()) out += edge_configurations(report.paper_order_meshes, "paper");
 
   out += "\nStrategies on the " + report.comparison_mesh +
          " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";

@@ -39,6 +39,9 @@ struct CauteryOptions {
   // The improvement pass that ends each cut (CutParams::improve); a scenario's own `improve`
   // line still wins.
   bool improve = true;
+  // Added to every tool position of the scenario (its cut, sweep and remove lines): one of the
+  // seeded sweeps of `tetcut stats` (paper_stats.hpp, sweep_offset).
+  Vec3 offset{};
 };
 
 struct CauteryResult {

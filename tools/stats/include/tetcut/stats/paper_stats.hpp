@@ -30,21 +30,36 @@ struct PaperMesh {
   const char* name;         // our mesh: "cylinder", "sheet", "liver-coarse", ...
   const char* description;  // the paper's words
   const char* scenario;     // relative to the corpus folder
+  // Half-widths of the box the seeded sweeps' offsets are drawn from (sweep_offset): half the
+  // scenario's step along its passes, half the spacing of its passes, and across the cut plane
+  // half the tool's diameter (the sheet: 0.05, so that its grooves stay cut into it).
+  Vec3 jitter;
 };
 
 // The five, in the paper's order.
 const std::vector<PaperMesh>& paper_meshes();
 
+// The offset of sweep k of a mesh's scenario (issue 32 item 6): sweep 0 is the scenario as
+// written; sweep k >= 1 draws three numbers from std::mt19937_64 seeded with k (the standard
+// fixes its output), each mapped to u in [0, 1) by its top 53 bits, and is jitter * (2u - 1)
+// componentwise. The same k gives the same offset (relative to the jitter) on every mesh.
+Vec3 sweep_offset(const PaperMesh& mesh, int k);
+
 // "3 liver-coarse": the paper's number and our name, as the tables print a row.
 std::string mesh_label(const PaperMesh& mesh);
 
+// A mesh's scenario run once per seeded sweep (StatsOptions::sweeps); the figures pool them.
 struct MeshStats {
   PaperMesh mesh;
-  std::uint32_t tets_before = 0, tets_after = 0;
-  std::uint64_t cuts = 0;
-  RemovalReport removal;
-  Table1Row table1;
+  std::uint32_t tets_before = 0, tets_after = 0;  // after: sweep 0's (the scenario as written)
+  std::uint64_t cuts = 0;                          // over every sweep
+  RemovalReport removal;                           // the sweeps' reports summed
+  std::vector<RemovalReport> sweeps;               // each sweep's
+  std::vector<Vec3> offsets;                       // each sweep's offset
+  Table1Row table1;                                // of `removal`
   Table2Row table2;
+  Table1Intervals table1_ci;                       // the same cells with intervals and counts
+  Table2Intervals table2_ci;
   double p50_us = 0, p99_us = 0;
   bool ok = true;           // the scenario ran to its end, its checks passing
   std::string error;
@@ -108,6 +123,9 @@ struct StatsOptions {
   // The improvement pass in the Tables' runs and the comparison (the paper has none: off measures
   // its algorithm alone). The quality rows run both ways regardless.
   bool improve = true;
+  // Runs of each paper scenario for Tables 1 and 2 (each order, and the wide search), at
+  // sweep_offset(mesh, 0 .. sweeps - 1). The paper's experiment asks for at least 10.
+  int sweeps = 10;
 };
 
 struct StatsReport {
@@ -119,6 +137,7 @@ struct StatsReport {
   // in) in place of direct-first: Tables 1 and 2 again, the ablation of the order.
   std::vector<MeshStats> paper_order_meshes;
   bool improve = true;                  // the runs' improvement pass (StatsOptions::improve)
+  int sweeps = 1;                       // StatsOptions::sweeps
   std::string comparison_mesh;
   std::vector<StrategyRow> strategies;
   std::vector<QualityRow> quality;      // per paper scenario, per strategy

@@ -9,8 +9,10 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "tetcut/removal_report.hpp"
+#include "tetcut/stats/intervals.hpp"
 
 namespace tetcut::stats {
 
@@ -42,6 +44,30 @@ struct Table2Row {
 
 Table1Row table1_row(const RemovalReport& report);
 Table2Row table2_row(const RemovalReport& report);
+
+// One cell of Tables 1 and 2 over a mesh's sweeps (issue 32 item 6): the pooled estimate (the
+// same figure as the row's), its 95 % interval in the same unit, and the raw counts it is made
+// of: events of trials for a rate (Wilson interval, x 100), tets of sets for a mean size
+// (bootstrap over the sweeps). intervals.hpp says why each.
+struct CellEstimate {
+  double value = 0;
+  Interval ci;
+  std::uint64_t count = 0, of = 0;
+};
+
+struct Table1Intervals {
+  CellEstimate removable, vertex, edge;
+};
+
+struct Table2Intervals {
+  CellEstimate vertex_unresolved, vertex_cardinality, edge_unresolved, edge_cardinality, global_unresolved,
+      global_cardinality, global_cardinality_per_selected, combined_unresolved;
+};
+
+// From each sweep's report (one run of the mesh's scenario at one seeded offset); the values
+// are those of table1_row / table2_row on the reports' sum.
+Table1Intervals table1_intervals(std::span<const RemovalReport> sweeps);
+Table2Intervals table2_intervals(std::span<const RemovalReport> sweeps);
 
 // part / whole x 100, NaN when whole is 0.
 double percent(std::uint64_t part, std::uint64_t whole);

@@ -16,6 +16,12 @@ std::string fixed(double value, int decimals);
 std::string significant(double value, int digits);
 // "+1.2" / "-0.4", or "-" when either side is NaN.
 std::string difference(double ours, double paper, int decimals);
+// A cell's 95 % interval, "[91.6, 93.1]" with `decimals` after the point, or "-" when it has
+// nothing to estimate from; its raw counts, "4127/4466".
+std::string interval_text(const CellEstimate& e, int decimals);
+std::string count_text(const CellEstimate& e);
+// The paper's figure, with "*" when it lies outside our 95 % interval.
+std::string paper_beside(const CellEstimate& ours, double paper, int decimals);
 // Of created tets: the worst radius ratio ("0.101") and the smallest dihedral angle in degrees
 // ("7.6"), each "-" when none were created.
 std::string created_worst(const invariants::QualityStats& q);
