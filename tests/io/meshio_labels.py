@@ -10,6 +10,9 @@ that numbered labels itself or took another tag would differ):
   gives them (Gmsh: "gmsh:physical"; medit: "medit:ref"; VTK: "label", and in a second file
   "CellEntityIds") in every labelled format meshio writes; `tetcut convert` turns it into a
   medit file, which Python reads back: the references must be the labels, tet by tet;
+- through cuts: `tetcut cut` and `tetcut remove` on that medit file write .vtu files whose
+  labels meshio reads: every tet the operations left untouched (the same four vertex positions)
+  keeps its label, every label is one of the file's, and the cut changed something;
 - the other way: `tetcut convert` writes each format that carries labels from that medit file,
   meshio reads it, and the cell data ("gmsh:physical", "medit:ref", "label") must be the labels
   (a legacy SCALARS array comes back as #T by 1: compared flattened).
@@ -126,6 +129,39 @@ def main():
         got = back.cell_data.get(name)
         if got is None or len(got) != 1 or not np.array_equal(np.asarray(got[0]).reshape(-1), labels):
             failures.append(f"tetcut -> {out} {' '.join(extra)}: meshio's cell_data[{name!r}] is not the labels")
+
+    # Through a sweep of cuts and a run of removals: the labels come back, untouched tets keep theirs.
+    key = lambda pts, t: tuple(sorted(tuple(float(c) for c in pts[v]) for v in t))
+    original = {key(points, t): int(l) for t, l in zip(tets, labels)}
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    mid = 0.5 * (lo + hi)
+    fr, to = f"{lo[0]:.6f},{mid[1]:.6f},{mid[2]:.6f}", f"{hi[0]:.6f},{mid[1]:.6f},{mid[2]:.6f}"
+    operations = [
+        ("tetcut cut", ["cut", source, "--diameter", "0.5", "--from", fr, "--to", to, "--step", "0.5"], "cut.vtu"),
+        ("tetcut remove", ["remove", source, "--random", "200", "--seed", "3"], "removed.vtu"),
+    ]
+    for what, args, out in operations:
+        path = os.path.join(work, out)
+        checked += 1
+        try:
+            run([exe, *args, "-o" if what == "tetcut remove" else "--out", path])
+        except RuntimeError as e:
+            failures.append(f"{what}: {e}")
+            continue
+        back = quietly(lambda: meshio.read(path))
+        got = back.cell_data.get("label")
+        if got is None:
+            failures.append(f"{what}: no cell data 'label' in its output")
+            continue
+        got = np.asarray(got[0]).reshape(-1)
+        back_tets = back.cells_dict["tetra"]
+        kept = [original.get(key(back.points, t)) for t in back_tets]
+        wrong = sum(1 for k, l in zip(kept, got) if k is not None and k != l)
+        untouched = sum(1 for k in kept if k is not None)
+        changed_nothing = len(back_tets) == len(tets) and untouched == len(back_tets)
+        if wrong or not set(got.tolist()) <= {0, 3, 7, 1000} or changed_nothing or untouched == 0:
+            failures.append(f"{what}: {wrong} untouched tets relabelled, labels {sorted(set(got.tolist()))}, "
+                            f"{untouched} of {len(back_tets)} tets untouched")
 
     for f in failures:
         print("FAIL", f)
