@@ -96,6 +96,12 @@ bool GmshBinaryReader::msh22_elements(std::uint64_t count, std::uint64_t line) {
       const unsigned char* p = bytes_of(data);
       for (std::int64_t e = 0; e < n; ++e, p += record) {
         for (std::size_t k = 0; k < nodes; ++k) ids[k] = int_at(p + 4 * (1 + static_cast<std::size_t>(tags) + k));
+        elements_.label.reset();
+        if (tags > 0) {  // the first tag is the physical group (msh22.cpp)
+          std::uint32_t label = 0;
+          if (!check_label(sink_, line, int_at(p + 4), "physical tag", label)) return false;
+          elements_.label = label;
+        }
         if (!elements_.add_ids(sink_, line, type, ids, nodes)) return false;
       }
     }

@@ -110,6 +110,8 @@ bool GmshElementSink::add(ErrorSink& sink, std::uint64_t line, std::int64_t type
   }
   if (type == kGmshTet10) ++second_order_tets;
   tets->push_back(tet);
+  labels->push_back(label.value_or(0));
+  labelled = labelled || label.has_value();
   return true;
 }
 
@@ -133,6 +135,8 @@ bool GmshElementSink::add_ids(ErrorSink& sink, std::uint64_t line, std::int64_t 
   }
   if (type == kGmshTet10) ++second_order_tets;
   tets->push_back(tet);
+  labels->push_back(label.value_or(0));
+  labelled = labelled || label.has_value();
   return true;
 }
 
@@ -184,6 +188,7 @@ GmshReader::GmshReader(std::string_view text, std::string_view name, std::string
     : lines_(text), sink_(name), nodes_header_(nodes), elements_header_(elements) {
   elements_.nodes = &ids_;
   elements_.tets = &mesh_.tets;
+  elements_.labels = &mesh_.labels;
 }
 
 void GmshReader::on_nodes_header() {
@@ -249,6 +254,7 @@ bool GmshReader::next_entry(std::string_view section, std::string_view noun, std
 ReadResult GmshReader::result() {
   std::vector<std::string> notices;
   elements_.emit_notices(notices);
+  if (!elements_.labelled) mesh_.labels.clear();
   return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
 }
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -32,6 +33,12 @@ bool expect_gmsh_marker(LineReader& lines, ErrorSink& sink, std::string_view mar
 struct GmshElementSink {
   const NodeIdMap* nodes = nullptr;
   std::vector<std::array<std::uint32_t, 4>>* tets = nullptr;
+  // Beside every tet, the physical tag of the element it came from, which the caller sets before
+  // add() (none: label 0, Gmsh's "no physical group"); `labelled` once a tet had one, else
+  // result() drops the labels (the mesh is unlabelled).
+  std::vector<std::uint32_t>* labels = nullptr;
+  std::optional<std::uint32_t> label;
+  bool labelled = false;
   IgnoredTally ignored;
   std::uint64_t second_order_tets = 0;
 

@@ -173,6 +173,16 @@ std::string no_tetrahedra_reason(const ReadResult& result) {
 
 WriteResult write_mesh_as(const std::string& path, const RawMesh& mesh, MeshFormat format, const WriteOptions& options) {
   const bool binary = options.binary || options.compression != Compression::kNone;
+  if (mesh.labelled() && mesh.labels.size() != mesh.tets.size()) {
+    return WriteResult{false, path + ": " + std::to_string(mesh.labels.size()) + " labels for " +
+                                  std::to_string(mesh.tets.size()) + " tets"};
+  }
+  for (std::size_t t = 0; t < mesh.labels.size(); ++t) {
+    if (mesh.labels[t] > kMaxTetLabel) {
+      return WriteResult{false, path + ": tet " + std::to_string(t) + " has label " + std::to_string(mesh.labels[t]) +
+                                    ", above " + std::to_string(kMaxTetLabel)};
+    }
+  }
   if (options.compression != Compression::kNone && format != MeshFormat::kVtu) {
     return WriteResult{false, path + ": only VTU (.vtu) is written compressed"};
   }
@@ -207,6 +217,20 @@ WriteResult write_mesh(const std::string& path, const RawMesh& mesh, const Write
 
 WriteResult write_mesh(const std::string& path, const TetMesh& mesh) {
   return write_mesh(path, mesh.to_raw());
+}
+
+WriteResult write_mesh(const std::string& path, const TetMesh& mesh, std::span<const std::uint32_t> tet_labels) {
+  RawMesh raw = mesh.to_raw();  // live tets in id order
+  raw.labels.reserve(raw.tets.size());
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    if (!mesh.is_live(TetId{t})) continue;
+    if (t >= tet_labels.size()) {
+      return WriteResult{false, path + ": no label for tet " + std::to_string(t) + " (" +
+                                    std::to_string(tet_labels.size()) + " labels)"};
+    }
+    raw.labels.push_back(tet_labels[t]);
+  }
+  return write_mesh(path, raw);
 }
 
 SurfaceReadResult read_surface(const std::string& path) {

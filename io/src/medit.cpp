@@ -1,6 +1,8 @@
 // medit / Mmg .mesh ASCII: keyword sections, 1-based vertex ids, a reference after each entry.
 //   MeshVersionFormatted 2 / Dimension 3 / Vertices n, "x y z ref" / Tetrahedra n,
 //   "a b c d ref" / ... / End
+// A tet's reference is its label (RawMesh::labels; a tet without one: 0, a file where none has
+// one: unlabelled), written back as it was read (1 for every tet of an unlabelled mesh).
 // '#' starts a comment. Every other section (Triangles, Edges, Corners, Normals, ...) is a count
 // followed by one line per entry, and is skipped with a notice.
 #include <string>
@@ -146,6 +148,8 @@ class MeditReader {
     std::uint64_t count = 0;
     if (!section_count(count)) return;
     mesh_.tets.reserve(count);
+    mesh_.labels.reserve(count);
+    bool labelled = false;
     const std::uint64_t nv = mesh_.positions.size();
     for (std::uint64_t i = 0; i < count; ++i) {
       if (!next_entry("Tetrahedra", i, count)) return;
@@ -166,8 +170,15 @@ class MeditReader {
         }
         tet[k] = static_cast<std::uint32_t>(id - 1);
       }
+      std::uint32_t label = 0;
+      if (tokens_.size() == 5) {
+        if (!parse_label(sink_, at, tokens_[4], "tetrahedron reference", label)) return;
+        labelled = true;
+      }
       mesh_.tets.push_back(tet);
+      mesh_.labels.push_back(label);
     }
+    if (!labelled) mesh_.labels.clear();
   }
 
   void skip_section(const std::string& keyword) {
@@ -210,12 +221,13 @@ std::string format_medit(const RawMesh& mesh) {
   out += "\nTetrahedra\n";
   append_uint(out, mesh.tets.size());
   out += '\n';
-  for (const auto& tet : mesh.tets) {
-    for (std::uint32_t v : tet) {
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    for (std::uint32_t v : mesh.tets[t]) {
       append_uint(out, static_cast<std::uint64_t>(v) + 1);
       out += ' ';
     }
-    out += "1\n";
+    append_uint(out, label_or(mesh, t, 1));
+    out += '\n';
   }
   out += "\nEnd\n";
   return out;

@@ -1,5 +1,5 @@
 // Gmsh MSH 1.0 (read only): "$NOD" count, "id x y z" lines, "$ENDNOD"; "$ELM" count,
-// "id type reg-phys reg-elem num-nodes node..." lines, "$ENDELM".
+// "id type reg-phys reg-elem num-nodes node..." lines, "$ENDELM". reg-phys is the tet's label.
 #include <algorithm>
 #include <string>
 
@@ -62,6 +62,9 @@ class Msh10Reader : public GmshReader {
                            std::to_string(tokens_.size() - 5));
         return;
       }
+      std::uint32_t label = 0;  // reg-phys: the physical region, the tet's label (as in 2.2)
+      if (!parse_label(sink_, at, tokens_[2], "physical region", label)) return;
+      elements_.label = label;
       if (!elements_.add(sink_, at, type, tokens_.data() + 5, tokens_.size() - 5)) return;
     }
     expect_gmsh_marker(lines_, sink_, "$ENDELM", "the last element");

@@ -1,7 +1,9 @@
 // Gmsh MSH 2.2, ASCII or binary. Line based: "$Nodes" count, "id x y z" lines, "$EndNodes";
 // "$Elements" count, "id type ntags tag... node..." lines, "$EndElements"; in a binary file the
 // records between count and marker are raw (gmsh_binary.hpp). Node ids are arbitrary (mapped);
-// tags (physical, elementary, partitions) are skipped; unknown sections ($Comments,
+// an element's first tag, its physical group, is its tet's label (RawMesh::labels; the others,
+// elementary entity and partitions, are skipped); a file whose tets have no tags is unlabelled.
+// Written back: physical tag and elementary entity both the label (1 when unlabelled). Unknown sections ($Comments,
 // $PhysicalNames, $NodeData, ...) are skipped to their $End marker.
 #include <string>
 
@@ -92,6 +94,12 @@ class Msh22Reader : public GmshSectionReader {
                            std::to_string(tokens_.size()) + " values");
         return;
       }
+      elements_.label.reset();
+      if (num_tags > 0) {
+        std::uint32_t label = 0;
+        if (!parse_label(sink_, at, tokens_[3], "physical tag", label)) return;
+        elements_.label = label;
+      }
       const std::size_t first_node = 3 + static_cast<std::size_t>(num_tags);
       if (!elements_.add(sink_, at, type, tokens_.data() + first_node, tokens_.size() - first_node)) return;
     }
@@ -115,8 +123,25 @@ std::string format_msh22(const RawMesh& mesh) {
   out += "$EndNodes\n$Elements\n";
   append_uint(out, mesh.tets.size());
   out += '\n';
-  // Every tet in physical group 1 and elementary entity 1, as Gmsh writes a single volume.
-  append_numbered_tets(out, mesh.tets, " 4 2 1 1");
+  if (mesh.labelled()) {
+    // Physical group and elementary entity both the label: one volume per region, as Gmsh
+    // writes a multi-region mesh.
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      append_uint(out, t + 1);
+      out += " 4 2 ";
+      append_uint(out, mesh.labels[t]);
+      out += ' ';
+      append_uint(out, mesh.labels[t]);
+      for (std::uint32_t v : mesh.tets[t]) {
+        out += ' ';
+        append_uint(out, std::uint64_t{v} + 1);
+      }
+      out += '\n';
+    }
+  } else {
+    // Every tet in physical group 1 and elementary entity 1, as Gmsh writes a single volume.
+    append_numbered_tets(out, mesh.tets, " 4 2 1 1");
+  }
   out += "$EndElements\n";
   return out;
 }
@@ -138,12 +163,13 @@ std::string format_msh22_binary(const RawMesh& mesh) {
   append_uint(out, mesh.tets.size());
   out += '\n';
   if (!mesh.tets.empty()) {
-    // One block: type 4, every tet, 2 tags (physical and elementary entity 1, as in ASCII).
+    // One block: type 4, every tet, 2 tags (physical and elementary entity, as in ASCII).
     for (std::uint64_t v : {std::uint64_t{kGmshTet4}, std::uint64_t{mesh.tets.size()}, std::uint64_t{2}}) {
       store_uint(out, v, 4, kOrder);
     }
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-      for (std::uint64_t v : {std::uint64_t{t + 1}, std::uint64_t{1}, std::uint64_t{1}}) store_uint(out, v, 4, kOrder);
+      const std::uint64_t label = label_or(mesh, t, 1);
+      for (std::uint64_t v : {std::uint64_t{t + 1}, label, label}) store_uint(out, v, 4, kOrder);
       for (std::uint32_t v : mesh.tets[t]) store_uint(out, std::uint64_t{v} + 1, 4, kOrder);
     }
   }

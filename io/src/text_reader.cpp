@@ -182,6 +182,25 @@ bool parse_id(ErrorSink& sink, std::uint64_t line, std::string_view token, std::
   return true;
 }
 
+bool check_label(ErrorSink& sink, std::uint64_t line, std::int64_t value, std::string_view what, std::uint32_t& label) {
+  if (value < 0 || value > std::int64_t{kMaxTetLabel}) {
+    return sink.fail(line, std::string(what) + " " + std::to_string(value) + " is not a label (an integer in 0.." +
+                               std::to_string(kMaxTetLabel) + ")");
+  }
+  label = static_cast<std::uint32_t>(value);
+  return true;
+}
+
+bool parse_label(ErrorSink& sink, std::uint64_t line, std::string_view token, std::string_view what,
+                 std::uint32_t& label) {
+  std::int64_t value = 0;
+  if (!parse_i64(token, value)) {
+    return sink.fail(line, std::string(what) + " " + quote(token) + " is not a label (an integer in 0.." +
+                               std::to_string(kMaxTetLabel) + ")");
+  }
+  return check_label(sink, line, value, what, label);
+}
+
 bool NodeIdMap::insert(std::int64_t id, std::uint32_t index) {
   if (contiguous_) {
     if (count_ == 0) {

@@ -133,6 +133,15 @@ bool parse_coordinate(ErrorSink& sink, std::uint64_t line, std::string_view toke
 bool parse_point(ErrorSink& sink, std::uint64_t line, const std::string_view* xyz, Vec3& p);
 // Parses an integer id, any sign allowed by the caller's range check.
 bool parse_id(ErrorSink& sink, std::uint64_t line, std::string_view token, std::int64_t& value);
+// A per-tet label (RawMesh::labels): an integer in [0, kMaxTetLabel]; `what` names it in the
+// error ("physical tag", "reference", "cell data 'label'").
+bool parse_label(ErrorSink& sink, std::uint64_t line, std::string_view token, std::string_view what,
+                 std::uint32_t& label);
+bool check_label(ErrorSink& sink, std::uint64_t line, std::int64_t value, std::string_view what, std::uint32_t& label);
+// Tet t's label for a writer: its own, or `unlabelled` when the mesh has none.
+inline std::uint32_t label_or(const RawMesh& mesh, std::size_t t, std::uint32_t unlabelled) {
+  return mesh.labels.empty() ? unlabelled : mesh.labels[t];
+}
 
 // Maps file node ids (arbitrary, maybe sparse) to 0-based indices. Contiguous ids (the common
 // case) need no table; the first gap switches to a hash map used for lookups only, never

@@ -1,6 +1,10 @@
 // Legacy VTK, DATASET UNSTRUCTURED_GRID, ASCII or BINARY (vtk_legacy.hpp reads the sections):
 // POINTS, CELLS (version < 5: "k id..." records; version 5.x: OFFSETS and CONNECTIVITY arrays),
-// CELL_TYPES. FIELD and METADATA blocks are skipped; POINT_DATA / CELL_DATA end the reading.
+// CELL_TYPES. FIELD and METADATA blocks are skipped. POINT_DATA is skipped; CELL_DATA gives the
+// tets' labels (RawMesh::labels) from the first array named as kLabelArrayNames says
+// (vtk_cells.hpp: "label", "gmsh:physical", "medit:ref", "CellEntityIds"; SCALARS or FIELD), and
+// the reading ends at an attribute kind neither reads. A labelled mesh is written with CELL_DATA
+// and "SCALARS label int" (what meshio reads back as cell_data["label"]).
 // Written as version 3.0, ASCII or BINARY (big-endian, as the format says).
 #include <string>
 
@@ -33,6 +37,7 @@ class VtkReader {
     bool have_cells = false;
     bool have_types = false;
     VtkCells cells;
+    VtkLegacyStream::LabelArray label;
     std::string_view token;
     while (!sink_.failed() && stream_.next_token(token)) {
       if (iequals(token, "POINTS")) {
@@ -54,7 +59,24 @@ class VtkReader {
         stream_.read_cell_types(cells);
         have_types = true;
       } else if (iequals(token, "POINT_DATA") || iequals(token, "CELL_DATA")) {
-        break;  // attributes: not part of the mesh
+        const bool cell_data = iequals(token, "CELL_DATA");
+        // A count only: nothing is allocated for it but a label array's, which is held to the
+        // file's size where it is read (a bare "CELL_DATA 3" at the end of a file is fine).
+        std::uint64_t n = 0;
+        std::string_view count;
+        if (!stream_.next(count, "the number of values")) return;
+        if (!parse_u64(count, n)) {
+          sink_.fail(stream_.line(), "expected the number of values, got " + quote(count));
+          return;
+        }
+        if (cell_data && have_types && n != cells.types.size()) {
+          sink_.fail(stream_.line(), "CELL_DATA declares " + std::to_string(n) + " values for " +
+                                         std::to_string(cells.types.size()) + " cells");
+          return;
+        }
+        if (!stream_.read_attributes(n, cell_data ? &label : nullptr)) return;
+        std::string_view next;
+        if (!stream_.peek_token(next) || !(iequals(next, "POINT_DATA") || iequals(next, "CELL_DATA"))) break;
       } else {
         sink_.fail(stream_.line(), "unexpected keyword " + quote(token));
       }
@@ -64,7 +86,13 @@ class VtkReader {
     if (!have_points) { sink_.fail(end_line, "missing POINTS section"); return; }
     if (!have_cells) { sink_.fail(end_line, "missing CELLS section"); return; }
     if (!have_types) { sink_.fail(end_line, "missing CELL_TYPES section"); return; }
-    vtk_cells_to_tets(sink_, cells, mesh_.positions.size(), end_line, mesh_.tets, ignored_, notices);
+    std::vector<std::uint32_t> tet_cells;
+    if (!vtk_cells_to_tets(sink_, cells, mesh_.positions.size(), end_line, mesh_.tets, ignored_, notices, &tet_cells)) {
+      return;
+    }
+    if (label.rank >= 0) {
+      labels_from_cell_data(sink_, label.line, label.name, label.values, cells.types.size(), tet_cells, mesh_.labels);
+    }
   }
 
   ErrorSink sink_;
@@ -95,6 +123,13 @@ void append_types_line(std::string& out, const RawMesh& mesh) {
   out += '\n';
 }
 
+// The tets' labels as a SCALARS array of cell data ("int": VTK's legacy readers and meshio).
+void append_label_header(std::string& out, const RawMesh& mesh) {
+  out += "CELL_DATA ";
+  append_uint(out, mesh.tets.size());
+  out += "\nSCALARS label int 1\nLOOKUP_TABLE default\n";
+}
+
 }  // namespace
 
 ReadResult read_vtk(std::string_view text, std::string_view name) {
@@ -117,6 +152,13 @@ std::string format_vtk(const RawMesh& mesh) {
   }
   append_types_line(out, mesh);
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) out += "10\n";
+  if (mesh.labelled()) {
+    append_label_header(out, mesh);
+    for (std::uint32_t label : mesh.labels) {
+      append_uint(out, label);
+      out += '\n';
+    }
+  }
   return out;
 }
 
@@ -138,6 +180,11 @@ std::string format_vtk_binary(const RawMesh& mesh) {
   append_types_line(out, mesh);
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) store_uint(out, kVtkTetra, 4, kOrder);
   out += '\n';
+  if (mesh.labelled()) {
+    append_label_header(out, mesh);
+    for (std::uint32_t label : mesh.labels) store_uint(out, label, 4, kOrder);
+    out += '\n';
+  }
   return out;
 }
 

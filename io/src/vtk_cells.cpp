@@ -54,7 +54,8 @@ bool append_cell_ends(ErrorSink& sink, const std::vector<std::int64_t>& ends, st
 
 bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
                        std::uint64_t line, std::vector<std::array<std::uint32_t, 4>>& tets,
-                       IgnoredTally& ignored, std::vector<std::string>& notices) {
+                       IgnoredTally& ignored, std::vector<std::string>& notices,
+                       std::vector<std::uint32_t>* tet_cells) {
   std::uint64_t second_order = 0;
   const std::size_t n = cells.types.size();
   if (cells.offsets.size() != n + 1) {
@@ -92,6 +93,7 @@ bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num
     }
     if (type == kVtkQuadraticTetra) ++second_order;
     tets.push_back(tet);
+    if (tet_cells != nullptr) tet_cells->push_back(static_cast<std::uint32_t>(c));
   }
   if (second_order > 0) {
     notices.push_back("read " + std::to_string(second_order) +
@@ -132,6 +134,32 @@ bool vtk_faces_to_triangles(ErrorSink& sink, const VtkCells& cells, std::uint64_
       else surface.triangles.push_back({corners[k + 1], corners[k], corners[k + 2]});
     }
     ++strips_split;
+  }
+  return true;
+}
+
+int label_array_rank(std::string_view name) {
+  for (std::size_t r = 0; r < std::size(kLabelArrayNames); ++r)
+    if (name == kLabelArrayNames[r]) return static_cast<int>(r);
+  return -1;
+}
+
+bool labels_from_cell_data(ErrorSink& sink, std::uint64_t line, std::string_view array,
+                           const std::vector<std::int64_t>& values, std::uint64_t cells,
+                           const std::vector<std::uint32_t>& tet_cells, std::vector<std::uint32_t>& labels) {
+  if (values.size() != cells) {
+    return sink.fail(line, "cell data " + quote(array) + " has " + std::to_string(values.size()) + " values for " +
+                               std::to_string(cells) + " cells");
+  }
+  labels.clear();
+  labels.reserve(tet_cells.size());
+  for (std::uint32_t c : tet_cells) {
+    std::uint32_t label = 0;
+    if (!check_label(sink, line, values[c], "cell data " + quote(array) + " of cell " + std::to_string(c) + ":",
+                     label)) {
+      return false;
+    }
+    labels.push_back(label);
   }
   return true;
 }

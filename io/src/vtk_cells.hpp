@@ -35,10 +35,23 @@ void ignore_vtk_cell(IgnoredTally& ignored, std::int64_t type);
 bool append_cell_ends(ErrorSink& sink, const std::vector<std::int64_t>& ends, std::uint64_t line, VtkCells& cells);
 
 // Appends the tets of `cells` (point ids checked against num_points); the other cells go to
-// `ignored`, a notice for quadratic tets to `notices`.
+// `ignored`, a notice for quadratic tets to `notices`. `tet_cells`, when given, gets the cell
+// index of every tet appended (to pick its label out of the cell data).
 bool vtk_cells_to_tets(ErrorSink& sink, const VtkCells& cells, std::uint64_t num_points,
                        std::uint64_t line, std::vector<std::array<std::uint32_t, 4>>& tets,
-                       IgnoredTally& ignored, std::vector<std::string>& notices);
+                       IgnoredTally& ignored, std::vector<std::string>& notices,
+                       std::vector<std::uint32_t>* tet_cells = nullptr);
+
+// The cell data arrays a tet's label is read from, most preferred first: ours, then the names
+// meshio gives Gmsh's physical tags and medit's references, then VTK's own (vtkGmshReader and
+// ParaView's). A one-component integer array; a file with none of them is unlabelled.
+inline constexpr std::string_view kLabelArrayNames[] = {"label", "gmsh:physical", "medit:ref", "CellEntityIds"};
+// Its rank in kLabelArrayNames, or -1 when `name` is not a label array.
+int label_array_rank(std::string_view name);
+// labels[i] := values[tet_cells[i]], each checked by check_label (an error naming `array`).
+bool labels_from_cell_data(ErrorSink& sink, std::uint64_t line, std::string_view array,
+                           const std::vector<std::int64_t>& values, std::uint64_t cells,
+                           const std::vector<std::uint32_t>& tet_cells, std::vector<std::uint32_t>& labels);
 
 // Appends the triangles of polygons (`strips` false: each a fan) or of triangle strips (true:
 // each consecutive triple, every other one turned so that all face the same way); point ids are

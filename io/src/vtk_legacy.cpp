@@ -307,4 +307,97 @@ bool VtkLegacyStream::skip_field() {
   return true;
 }
 
+bool VtkLegacyStream::read_or_skip(std::string_view name, std::uint64_t components, std::uint64_t n,
+                                   std::string_view type, std::uint64_t line, LabelArray* label) {
+  const int rank = label_array_rank(name);
+  if (label != nullptr && rank >= 0 && (label->rank < 0 || rank < label->rank)) {
+    if (n > tokens_.remaining_bytes() / 2) {  // an ASCII value takes 2 bytes at least, a binary one more
+      return sink_.fail(line, "cell data " + quote(name) + ": " + std::to_string(n) + " values exceed the file size");
+    }
+    if (components != 1) {
+      return sink_.fail(line, "cell data " + quote(name) + " has " + std::to_string(components) +
+                                  " components, a label has 1");
+    }
+    if (!read_ints(n, type, "cell data " + quote(name), label->values)) return false;
+    label->name = std::string(name);
+    label->rank = rank;
+    label->line = line;
+    return true;
+  }
+  if (n != 0 && components > tokens_.remaining_bytes() / n) {
+    return sink_.fail(tokens_.line_number(), "data array " + quote(name) + " exceeds file size");
+  }
+  const std::uint64_t values = components * n;
+  if (binary_) {
+    std::string_view bytes;
+    return iequals(type, "bit") ? binary_block((values + 7) / 8, "char", "attribute data", bytes)
+                                : binary_block(values, type, "attribute data", bytes);
+  }
+  for (std::uint64_t i = 0; i < values; ++i) {
+    std::string_view value;
+    if (!next(value, "values of " + quote(name))) return false;
+  }
+  return true;
+}
+
+bool VtkLegacyStream::read_attributes(std::uint64_t n, LabelArray* label) {
+  std::string_view keyword;
+  while (tokens_.peek(keyword)) {
+    std::string_view name;
+    std::string_view type;
+    if (iequals(keyword, "SCALARS")) {
+      tokens_.next(keyword);
+      const std::uint64_t header_line = tokens_.line_number();
+      if (!next(name, "the SCALARS name") || !next(type, "the SCALARS data type")) return false;
+      std::uint64_t components = 1;
+      std::string_view peek;
+      std::int64_t k = 0;
+      if (tokens_.peek(peek) && parse_i64(peek, k)) {
+        if (k < 1 || k > 4) return sink_.fail(tokens_.line_number(), "SCALARS components must be 1 to 4, got " + quote(peek));
+        tokens_.next(peek);
+        components = static_cast<std::uint64_t>(k);
+      }
+      if (tokens_.peek(peek) && iequals(peek, "LOOKUP_TABLE")) {
+        tokens_.next(peek);
+        if (!next(peek, "the lookup table name")) return false;
+      }
+      if (!read_or_skip(name, components, n, type, header_line, label)) return false;
+    } else if (iequals(keyword, "VECTORS") || iequals(keyword, "NORMALS") || iequals(keyword, "TENSORS")) {
+      tokens_.next(keyword);
+      if (!next(name, "the array name") || !next(type, "the data type")) return false;
+      if (!read_or_skip(name, iequals(keyword, "TENSORS") ? 9 : 3, n, type, tokens_.line_number(), nullptr)) return false;
+    } else if (iequals(keyword, "FIELD")) {
+      tokens_.next(keyword);
+      std::uint64_t arrays = 0;
+      if (!next(name, "the field name") || !next_count("the number of field arrays", arrays)) return false;
+      for (std::uint64_t a = 0; a < arrays; ++a) {
+        std::uint64_t components = 0;
+        std::uint64_t tuples = 0;
+        if (!next(name, "a field array name") || !next_count("the number of components", components) ||
+            !next_count("the number of tuples", tuples) || !next(type, "the field data type")) {
+          return false;
+        }
+        if (tuples != n && label_array_rank(name) >= 0 && label != nullptr) {
+          return sink_.fail(tokens_.line_number(), "cell data " + quote(name) + " has " + std::to_string(tuples) +
+                                                       " values for " + std::to_string(n) + " cells");
+        }
+        if (!read_or_skip(name, components, tuples, type, tokens_.line_number(), label)) return false;
+        std::string_view peek;
+        if (tokens_.peek(peek) && iequals(peek, "METADATA")) {
+          tokens_.next(peek);
+          tokens_.skip_past_blank_line();
+        }
+      }
+    } else {
+      return true;
+    }
+    std::string_view peek;
+    if (tokens_.peek(peek) && iequals(peek, "METADATA")) {
+      tokens_.next(peek);
+      tokens_.skip_past_blank_line();
+    }
+  }
+  return true;
+}
+
 }  // namespace tetcut::io_detail

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -26,6 +27,7 @@ class VtkLegacyStream {
   [[nodiscard]] std::uint64_t line() const { return tokens_.line_number(); }
   // The next token; false at the end of the file.
   bool next_token(std::string_view& token) { return tokens_.next(token); }
+  bool peek_token(std::string_view& token) { return tokens_.peek(token); }
   bool next(std::string_view& token, std::string_view what);
   bool next_keyword(std::string_view keyword);
   bool next_count(std::string_view what, std::uint64_t& count);
@@ -39,6 +41,17 @@ class VtkLegacyStream {
   bool read_cell_types(VtkCells& cells);
   // FIELD data (after the keyword): skipped.
   bool skip_field();
+  // The attribute arrays after "POINT_DATA n" or "CELL_DATA n" (after the count): SCALARS and
+  // FIELD arrays are read or skipped, VECTORS, NORMALS and TENSORS skipped; reading stops
+  // before any other keyword. The label array (kLabelArrayNames, the best ranked present) goes
+  // to `label_values` with its name and line; `label_values` null: everything is skipped.
+  struct LabelArray {
+    std::string name;
+    int rank = -1;
+    std::uint64_t line = 0;
+    std::vector<std::int64_t> values;
+  };
+  bool read_attributes(std::uint64_t n, LabelArray* label);
   // METADATA (after the keyword): skipped up to its blank line.
   void skip_metadata() { tokens_.skip_past_blank_line(); }
 
@@ -49,6 +62,9 @@ class VtkLegacyStream {
   bool read_ints(std::uint64_t n, std::string_view type, std::string_view what, std::vector<std::int64_t>& out);
   bool read_cells_v4(std::string_view section, VtkCells& cells);
   bool read_cells_v5(VtkCells& cells);
+  // `n` values of `type`: skipped, or read into `label` when it names a better label array.
+  bool read_or_skip(std::string_view name, std::uint64_t components, std::uint64_t n, std::string_view type,
+                    std::uint64_t line, LabelArray* label);
 
   std::string_view text_;
   ErrorSink& sink_;

@@ -2,12 +2,15 @@
 
 #include <string>
 
+#include "vtk_cells.hpp"
+
 namespace tetcut::io_detail {
 
 namespace {
 
 // Sections whose DataArrays make up a mesh or a surface; arrays elsewhere (PointData, CellData,
-// FieldData, faces, ...) are data on the mesh and are not kept.
+// FieldData, faces, ...) are data on the mesh and are not kept, but for the cell data that
+// labels the cells (kLabelArrayNames).
 bool is_geometry_section(std::string_view name) {
   return name == "Points" || name == "Cells" || name == "Polys" || name == "Strips" || name == "Verts" ||
          name == "Lines";
@@ -247,7 +250,8 @@ class VtkXmlScanner {
   }
 
   void store_array(const VtkDataArray& array) {
-    if (file_.pieces.empty() || !is_geometry_section(array.parent)) return;
+    if (file_.pieces.empty()) return;
+    if (!is_geometry_section(array.parent) && !(array.parent == "CellData" && label_array_rank(array.name) >= 0)) return;
     file_.pieces.back().arrays.push_back(array);
   }
 

@@ -1,5 +1,8 @@
 // VTK XML UnstructuredGrid (.vtu): the tets of every Piece (vtk_xml.hpp finds the arrays,
-// vtk_xml_arrays.hpp decodes them, vtk_cells.hpp keeps the tetrahedra), and the two writers:
+// vtk_xml_arrays.hpp decodes them, vtk_cells.hpp keeps the tetrahedra) with their labels from
+// the piece's CellData (the best ranked of kLabelArrayNames, vtk_cells.hpp; a piece without one:
+// label 0, a file without any: unlabelled), and the two writers, which write the labels of a
+// labelled mesh as the CellData array "label" (Int32):
 // ascii, and binary appended raw data (UInt64 headers, little-endian), optionally compressed
 // with zlib or xz in 32 KiB blocks as VTK itself writes them.
 #include <string>
@@ -30,6 +33,7 @@ class VtuReader {
       }
     }
     if (!sink_.failed()) ignored_.emit(notices);
+    if (!labelled_) mesh_.labels.clear();
     return make_result(sink_, std::move(mesh_), std::move(notices), &ignored_);
   }
 
@@ -73,10 +77,39 @@ class VtuReader {
     }
     if (!append_cell_ends(sink_, ends, offsets->line, cells)) return false;
     const std::size_t first_tet = mesh_.tets.size();
-    if (!vtk_cells_to_tets(sink_, cells, points, types->line, mesh_.tets, ignored_, notices)) return false;
+    std::vector<std::uint32_t> tet_cells;
+    if (!vtk_cells_to_tets(sink_, cells, points, types->line, mesh_.tets, ignored_, notices, &tet_cells)) return false;
     for (std::size_t t = first_tet; t < mesh_.tets.size(); ++t) {
       for (std::uint32_t& v : mesh_.tets[t]) v += static_cast<std::uint32_t>(base);
     }
+    return read_labels(piece, num_cells, tet_cells);
+  }
+
+  // The piece's tets' labels after those of the pieces before (0 for an unlabelled piece).
+  bool read_labels(const VtkXmlPiece& piece, std::uint64_t num_cells, const std::vector<std::uint32_t>& tet_cells) {
+    const VtkDataArray* label = nullptr;
+    for (const VtkDataArray& a : piece.arrays) {
+      if (a.parent == "CellData" && (label == nullptr || label_array_rank(a.name) < label_array_rank(label->name))) {
+        label = &a;
+      }
+    }
+    mesh_.labels.resize(mesh_.tets.size() - tet_cells.size(), 0);
+    if (label == nullptr) {
+      mesh_.labels.resize(mesh_.tets.size(), 0);
+      return true;
+    }
+    if (label->components != 1) {
+      return sink_.fail(label->line, "cell data " + quote(label->name) + " has " + std::to_string(label->components) +
+                                         " components, a label has 1");
+    }
+    std::vector<std::int64_t> values;
+    std::vector<std::uint32_t> piece_labels;
+    if (!arrays_.integers(*label, num_cells, "cell data " + quote(label->name), values) ||
+        !labels_from_cell_data(sink_, label->line, label->name, values, num_cells, tet_cells, piece_labels)) {
+      return false;
+    }
+    mesh_.labels.insert(mesh_.labels.end(), piece_labels.begin(), piece_labels.end());
+    labelled_ = true;
     return true;
   }
 
@@ -86,6 +119,7 @@ class VtuReader {
   VtkArrayDecoder arrays_;
   RawMesh mesh_;
   IgnoredTally ignored_;
+  bool labelled_ = false;
 };
 
 // ---- writing ---------------------------------------------------------------------------------
@@ -160,6 +194,15 @@ std::string format_vtu(const RawMesh& mesh) {
   out += "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) out += "          10\n";
   out += "        </DataArray>\n      </Cells>\n";
+  if (mesh.labelled()) {
+    out += "      <CellData Scalars=\"label\">\n        <DataArray type=\"Int32\" Name=\"label\" format=\"ascii\">\n";
+    for (std::uint32_t label : mesh.labels) {
+      out += "          ";
+      append_uint(out, label);
+      out += '\n';
+    }
+    out += "        </DataArray>\n      </CellData>\n";
+  }
   out += kClosePiece;
   out += "</VTKFile>\n";
   return out;
@@ -181,11 +224,14 @@ std::string format_vtu_binary(const RawMesh& mesh, Compression compression) {
     store_uint(offsets, 4 * (t + 1), 8, kOrder);
   }
   const std::string types(mesh.tets.size(), static_cast<char>(kVtkTetra));
+  std::string labels;
+  labels.reserve(mesh.labels.size() * 4);
+  for (std::uint32_t label : mesh.labels) store_uint(labels, label, 4, kOrder);
 
   std::string appended;
-  std::size_t array_offsets[4] = {};
-  const std::string_view arrays[4] = {points, connectivity, offsets, types};
-  for (int i = 0; i < 4; ++i) {
+  std::size_t array_offsets[5] = {};
+  const std::string_view arrays[5] = {points, connectivity, offsets, types, labels};
+  for (int i = 0; i < (mesh.labelled() ? 5 : 4); ++i) {
     array_offsets[i] = appended.size();
     append_block(appended, arrays[i], compression);
   }
@@ -208,6 +254,11 @@ std::string format_vtu_binary(const RawMesh& mesh, Compression compression) {
   array_tag("type=\"Int64\" Name=\"offsets\"", array_offsets[2]);
   array_tag("type=\"UInt8\" Name=\"types\"", array_offsets[3]);
   out += "      </Cells>\n";
+  if (mesh.labelled()) {
+    out += "      <CellData Scalars=\"label\">\n";
+    array_tag("type=\"Int32\" Name=\"label\"", array_offsets[4]);
+    out += "      </CellData>\n";
+  }
   out += kClosePiece;
   out += "  <AppendedData encoding=\"raw\">\n   _";
   out += appended;

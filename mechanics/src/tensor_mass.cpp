@@ -53,6 +53,12 @@ std::optional<std::string> validate(const ModelParams& params) {
   if (params.materials.empty()) return "at least one material is needed";
   for (const Material& m : params.materials)
     if (auto problem = validate(m)) return problem;
+  for (std::size_t i = 0; i < params.label_materials.size(); ++i) {
+    const auto& [label, m] = params.label_materials[i];
+    if (i > 0 && label <= params.label_materials[i - 1].first)
+      return "label materials must be sorted by label, each label once (label " + std::to_string(label) + ")";
+    if (auto problem = validate(m)) return "label " + std::to_string(label) + ": " + *problem;
+  }
   if (!std::isfinite(params.length_unit) || params.length_unit <= 0) return "the length unit must be positive";
   if (!std::isfinite(params.damping) || params.damping < 0) return "damping must be non-negative";
   if (!is_finite(params.gravity)) return "gravity must be finite";
@@ -107,6 +113,12 @@ void TensorMassModel::grow(std::uint32_t tets, std::uint32_t vertices) {
 }
 
 const Material& TensorMassModel::material_of(std::uint32_t label) const {
+  const auto& listed = params_.label_materials;
+  if (!listed.empty()) {  // a few regions: a binary search, no allocation
+    const auto it = std::lower_bound(listed.begin(), listed.end(), label,
+                                     [](const auto& entry, std::uint32_t l) { return entry.first < l; });
+    if (it != listed.end() && it->first == label) return it->second;
+  }
   return params_.materials[std::min<std::size_t>(label, params_.materials.size() - 1)];
 }
 
@@ -247,22 +259,12 @@ std::uint32_t TensorMassModel::inherited_label(const TetMesh& mesh, const Change
   const auto cv = mesh.tet(c.tet);
   const Vec3 centroid = tet_centroid(mesh.position(cv[0]), mesh.position(cv[1]), mesh.position(cv[2]),
                                      mesh.position(cv[3]));
-  const auto contains = [&](TetId p) {
-    if (!has_tet(p)) return false;
-    const auto& pv = tets_[p.value];
-    return tet_contains(rest_[pv[0]], rest_[pv[1]], rest_[pv[2]], rest_[pv[3]], centroid);
-  };
-  // label_rule.hpp's three steps. 1: the parents (sorted by id: the lowest containing one wins).
-  for (TetId p : parents)
-    if (contains(p)) return labels_[p.value];
-  // 2: the child pokes out of its parents (a vertex moved off the surface): every tet the cut
-  // removed, in id order. Rare, so the scan over the log costs nothing in the common case.
-  for (TetId p : log.removed)
-    if (contains(p)) return labels_[p.value];
-  // 3: the centroid left the mesh: the lowest-id parent's.
-  for (TetId p : parents)
-    if (has_tet(p)) return labels_[p.value];
-  return kNoLabel;
+  return mechanics::inherited_label(
+      parents, log.removed, [&](TetId p) { return has_tet(p); }, [&](TetId p) { return labels_[p.value]; },
+      [&](TetId p) {
+        const auto& pv = tets_[p.value];
+        return tet_contains(rest_[pv[0]], rest_[pv[1]], rest_[pv[2]], rest_[pv[3]], centroid);
+      });
 }
 
 ApplyProblems TensorMassModel::apply(const TetMesh& mesh, const ChangeLog& log) {
@@ -386,6 +388,7 @@ TensorMassModel::StableStep TensorMassModel::stable_time_step(const TetMesh& mes
   }
   double c = 0;
   for (const Material& m : params_.materials) c = std::max(c, pressure_wave_speed(m));
+  for (const auto& entry : params_.label_materials) c = std::max(c, pressure_wave_speed(entry.second));
   StableStep s;
   s.min_altitude = h * params_.length_unit;
   s.wave_speed = c;

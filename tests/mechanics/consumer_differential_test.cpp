@@ -10,6 +10,7 @@
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mechanics/differential.hpp"
+#include "tetcut/mechanics/tet_labels.hpp"
 
 namespace tetcut {
 namespace {
@@ -32,6 +33,9 @@ TEST_P(ConsumerSweep, IncrementalConsumersEqualARebuildAfterEveryCut) {
   Cutter cutter(mesh, {.tool_diameter = edge, .strategy = strategy});
   int index = 0;
   DifferentialCheck check(mesh, testing::four_materials(), testing::hashed_labels(mesh));
+  // The labels the command line carries (TetLabels) against the model's, which the check holds
+  // to the rule's recomputation from geometry after every cut.
+  mechanics::TetLabels labels(mesh, testing::hashed_labels(mesh));
   invariants::LocalChecker local(mesh.raw_view());
   std::uint32_t removed = 0, created = 0;
   for (const Vec3& centre : testing::lancet_sweep(box, sweep_cuts())) {
@@ -48,6 +52,11 @@ TEST_P(ConsumerSweep, IncrementalConsumersEqualARebuildAfterEveryCut) {
     const auto problem = check.after(mesh, log);
     ASSERT_FALSE(problem) << *problem << " (cut at " << centre.x << "," << centre.y << "," << centre.z
                           << (r.ok ? "" : ", rolled back") << ")";
+    ASSERT_EQ(labels.apply(mesh, log), 0u);
+    for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+      if (!mesh.is_live(TetId{t})) continue;
+      ASSERT_EQ(labels.label(TetId{t}), check.model().label(TetId{t})) << "tet " << t;
+    }
   }
   EXPECT_GT(removed, 0u);
   EXPECT_GT(created, 0u) << "no cut refined anything: the sweep tests only removal";

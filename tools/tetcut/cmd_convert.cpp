@@ -81,7 +81,9 @@ int cmd_convert(Args args, std::ostream& out, std::ostream& err) {
       return kExitBadInput;
     }
     reoriented = built.reoriented;
-    mesh = built.mesh->to_raw();
+    std::vector<std::uint32_t> labels = std::move(mesh->labels);
+    mesh = built.mesh->to_raw();  // the same tets in the same order: the labels still match
+    mesh->labels = std::move(labels);
   }
   const WriteResult written =
       format ? write_mesh_as(out_path, *mesh, *format, options) : write_mesh(out_path, *mesh, options);

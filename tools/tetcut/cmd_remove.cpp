@@ -32,6 +32,7 @@
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
+#include "tetcut/mechanics/tet_labels.hpp"
 #include "tetcut/mesh_builder.hpp"
 
 namespace tetcut::cli {
@@ -212,10 +213,20 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
   };
 
   Cutter cutter(mesh, params);
+  // The file's labels, carried through every request by its change log, and written back.
+  const bool labelled = raw->labelled();
+  mechanics::TetLabels labels;
+  if (labelled) labels = mechanics::TetLabels(mesh, raw->labels);  // the builder keeps the file's tet order
+  ChangeLog label_log;
   std::uint64_t points_outside = 0, refused = 0;
   std::string first_refusal;
   auto request = [&](std::uint64_t index, TetId t, ChangeLog* log) {
+    if (labelled && log == nullptr) {
+      label_log.clear();
+      log = &label_log;
+    }
     const CutReport r = cutter.remove(t, log);
+    if (r.ok && labelled) labels.apply(mesh, *log);
     if (!r.ok && refused++ == 0) first_refusal = "request " + std::to_string(index) + ": " + r.failure;
     check_request(index, cutter.last_removed(), cutter.last_created());
   };
@@ -264,7 +275,8 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
   if (!valid) out << "violated: " << first_violation << "\n";
 
   const Json report = report_json(s, strategy, mesh.num_tets(), hash, points_outside, valid);
-  if (!save_mesh_and_report(*a.output, mesh, a.report, report, err)) return kExitBadInput;
+  const std::span<const std::uint32_t> by_tet = labelled ? labels.by_tet() : std::span<const std::uint32_t>();
+  if (!save_mesh_and_report(*a.output, mesh, a.report, report, err, by_tet)) return kExitBadInput;
   return valid ? kExitOk : kExitViolated;
 }
 

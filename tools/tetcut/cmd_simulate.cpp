@@ -13,6 +13,7 @@
 // fall (to the integrator's O(dt) ripple, allowed up to 1 % of the energies' size), while an
 // unstable step grows it exponentially. Not the displacement: a piece the resection frees from
 // the fixed vertices falls under gravity (at the terminal speed g / damping), which is physics.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -37,6 +38,7 @@ namespace {
 struct SimulateArgs {
   std::optional<std::string> input, fix, frames, report;
   std::vector<std::string> sweeps;  // FROM TO STEP, three by three
+  std::vector<std::string> materials;  // LABEL:E,NU,RHO
   std::optional<Vec3> gravity;
   std::optional<double> diameter, dt, dt_factor, young, poisson, density, unit, damping;
   std::optional<std::uint64_t> steps, settle, frame_every;
@@ -54,6 +56,11 @@ void add_simulate_options(CLI::App& app, SimulateArgs& a) {
   opt::text(app, "--fix", a.fix, "vertices held in place: AXIS OP VALUE, e.g. \"x<10\" (mesh units)", "RULE");
   opt::point(app, "--gravity", a.gravity, "m/s2 (default 0,0,0)", "X,Y,Z");
   opt::number(app, "--young", a.young, "Young's modulus in Pa (default 3000, liver-like)", "E");
+  app.add_option("--material", a.materials,
+                 "the material of the tets labelled LABEL in the mesh file (Gmsh physical tag, medit reference, VTK "
+                 "cell data \"label\"): Young's modulus in Pa, Poisson ratio, density in kg/m3 (repeatable; other "
+                 "labels take --young, --poisson, --density)")
+      ->type_name("LABEL:E,NU,RHO");
   opt::number(app, "--poisson", a.poisson, "Poisson ratio (default 0.45)", "NU");
   opt::number(app, "--density", a.density, "kg/m3 (default 1000)", "RHO");
   opt::number(app, "--unit", a.unit, "metres per mesh unit (default 0.001: millimetres)", "M");
@@ -86,6 +93,17 @@ std::optional<std::function<bool(const Vec3&)>> parse_fix(std::string text) {
   };
 }
 
+// "3:6000,0.45,1050": a label and its material; nullopt when it does not parse.
+std::optional<std::pair<std::uint32_t, mechanics::Material>> parse_material(const std::string& text) {
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) return std::nullopt;
+  const auto label = scenario::parse_double(text.substr(0, colon));
+  if (!label || *label < 0 || *label > kMaxTetLabel || *label != std::floor(*label)) return std::nullopt;
+  const auto values = scenario::parse_vec3(text.substr(colon + 1));  // three comma-separated numbers
+  if (!values) return std::nullopt;
+  return std::pair{static_cast<std::uint32_t>(*label), mechanics::Material{values->x, values->y, values->z}};
+}
+
 // The cut centres of a sweep, as the scenario runner places them: every STEP from `a`, and `b`.
 void add_sweep(const Vec3& a, const Vec3& b, double step, std::vector<Vec3>& out) {
   const double length = norm(b - a);
@@ -105,7 +123,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   CommandParser parser(
       "simulate",
       "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--diameter D] [--strategy S] [--fix RULE] "
-      "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--unit M] [--damping G] [--dt S] "
+      "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--material LABEL:E,NU,RHO]... [--unit M] [--damping G] [--dt S] "
       "[--steps N] [--settle N] [--frames DIR] [--frame-every N] [--report R.json]",
       "Linear-elastic tissue (tensor-mass, Cotin, Delingette and Ayache 2000) stepped at a fixed\n"
       "time step (semi-implicit Euler) while the cautery cuts it: per frame one cut, the model and\n"
@@ -168,6 +186,13 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   if (a.young) material.young = *a.young;
   if (a.poisson) material.poisson = *a.poisson;
   if (a.density) material.density = *a.density;
+  for (const std::string& text : a.materials) {
+    const auto entry = parse_material(text);
+    if (!entry) return parser.usage_error("--material: expects LABEL:E,NU,RHO (LABEL an integer >= 0), not '" + text + "'", err);
+    model_params.label_materials.push_back(*entry);
+  }
+  std::sort(model_params.label_materials.begin(), model_params.label_materials.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
   if (a.unit) model_params.length_unit = *a.unit;
   model_params.damping = a.damping.value_or(20.0);
   model_params.gravity = a.gravity.value_or(Vec3{});
@@ -194,7 +219,8 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
 
   // ---- the simulation --------------------------------------------------------------------------
   Cutter cutter(mesh, params);
-  mechanics::TensorMassModel model(mesh, model_params);
+  // The file's labels choose the materials (TetId = the file's tet index: the builder keeps the order).
+  mechanics::TensorMassModel model(mesh, model_params, raw->labels);
   mechanics::RenderedSurface surface(mesh);
   invariants::LocalChecker local(mesh.raw_view());
   const std::uint32_t fixed_count = fixed ? model.fix_where(mesh, fixed) : 0;

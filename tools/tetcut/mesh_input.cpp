@@ -76,8 +76,8 @@ std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err, boo
 }
 
 bool save_mesh_and_report(const std::string& mesh_path, const TetMesh& mesh, const std::optional<std::string>& report_path,
-                          const Json& report, std::ostream& err) {
-  const WriteResult written = write_mesh(mesh_path, mesh);
+                          const Json& report, std::ostream& err, std::span<const std::uint32_t> tet_labels) {
+  const WriteResult written = tet_labels.empty() ? write_mesh(mesh_path, mesh) : write_mesh(mesh_path, mesh, tet_labels);
   if (!written.ok) {
     err << "tetcut: " << written.error << "\n";
     return false;

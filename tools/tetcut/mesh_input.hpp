@@ -3,6 +3,7 @@
 
 #include <iosfwd>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "json_output.hpp"
@@ -21,7 +22,8 @@ std::optional<RawMesh> load_mesh(const std::string& path, std::ostream& err, boo
 
 // Writes `mesh` to `mesh_path` and, when `report_path` is set, `report`, each through a temporary
 // file and a rename. On failure prints one line "tetcut: ..." to `err` and returns false.
+// `tet_labels` by TetId, when the mesh has labels (empty: none).
 bool save_mesh_and_report(const std::string& mesh_path, const TetMesh& mesh, const std::optional<std::string>& report_path,
-                          const Json& report, std::ostream& err);
+                          const Json& report, std::ostream& err, std::span<const std::uint32_t> tet_labels = {});
 
 }  // namespace tetcut::cli

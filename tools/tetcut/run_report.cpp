@@ -111,7 +111,9 @@ int report_run(const scenario::RunResult& r, const TetMesh& mesh, const RunOutpu
   const std::string hash = r.hash.empty() ? hash_to_hex(canonical_hash(mesh)) : r.hash;
   out << "hash " << hash << "\n";
   if (outputs.mesh_path) {
-    const WriteResult w = write_mesh(*outputs.mesh_path, mesh);
+    // With the file's labels carried through the run (RunResult::labels), when it had any.
+    const WriteResult w = r.labels.empty() ? write_mesh(*outputs.mesh_path, mesh)
+                                           : write_mesh(*outputs.mesh_path, mesh, r.labels);
     if (!w.ok) {
       err << "tetcut: " << w.error << "\n";
       return 2;

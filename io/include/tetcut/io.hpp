@@ -25,11 +25,20 @@
 // 10-node .ele) are read as their 4 corner vertices, with a notice. A cell declared as a
 // tetrahedron with another number of vertices is an error. Readers check the format only: a tet
 // that repeats a vertex is returned as is, for the checker to name (I1).
+//
+// Per-tet labels (RawMesh::labels: regions, materials) are read from Gmsh's physical tag (1.0,
+// 2.2 ASCII and binary), medit's tetrahedron reference and VTK cell data (legacy and XML: the
+// first array named "label", "gmsh:physical", "medit:ref" or "CellEntityIds", in this order of
+// preference, one integer component), and written back by the 2.2, medit, .vtk and .vtu writers
+// (VTK: as cell data "label", Int32). Gmsh 4.1 (whose physical tags live in $Entities) and TetGen
+// are read unlabelled and written without labels. A label that is not an integer in
+// [0, kMaxTetLabel], or a label array of the wrong length, is an error naming file and line.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -93,6 +102,8 @@ struct WriteOptions {
 // By extension; .msh is written as 2.2 (the most widely read): call write_mesh_as for 4.1.
 WriteResult write_mesh(const std::string& path, const RawMesh& mesh, const WriteOptions& options = {});
 WriteResult write_mesh(const std::string& path, const TetMesh& mesh);
+// With `tet_labels` by TetId (one for every live tet's id): each live tet's label is written.
+WriteResult write_mesh(const std::string& path, const TetMesh& mesh, std::span<const std::uint32_t> tet_labels);
 WriteResult write_mesh_as(const std::string& path, const RawMesh& mesh, MeshFormat format,
                           const WriteOptions& options = {});
 

@@ -14,13 +14,38 @@
 // removed tet), which is what lets a differential test recompute them without the log.
 #pragma once
 
+#include <cstdint>
+#include <span>
+
+#include "tetcut/ids.hpp"
 #include "tetcut/vec3.hpp"
 
 namespace tetcut::mechanics {
+
+inline constexpr std::uint32_t kNoLabel = 0xFFFFFFFFu;
 
 // ((a + b) + (c + d)) / 4, in this order, so that every caller gets the same bits.
 [[nodiscard]] Vec3 tet_centroid(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 // p in the closed tet (a, b, c, d), positively oriented: exact (orientation(), predicates.hpp).
 [[nodiscard]] bool tet_contains(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& p);
+
+// The rule itself, for every consumer that keeps labels (the elastic model, TetLabels): the label
+// of the created tet whose `parents` (sorted by id) a ChangeLog lists; `removed` is the log's
+// removed tets (sorted), for step 2. `known(p)`: the consumer has tet p; `label_of(p)`: its
+// label; `contains(p)`: p's closed rest shape contains the child's centroid. A tet the consumer
+// does not know is passed over; no known parent: kNoLabel.
+template <class Known, class LabelOf, class Contains>
+[[nodiscard]] std::uint32_t inherited_label(std::span<const TetId> parents, std::span<const TetId> removed,
+                                            Known known, LabelOf label_of, Contains contains) {
+  for (TetId p : parents)  // 1: sorted by id, the lowest containing parent wins
+    if (known(p) && contains(p)) return label_of(p);
+  // 2: the child pokes out of its parents. Rare, so this scan of the log costs nothing in the
+  // common case.
+  for (TetId p : removed)
+    if (known(p) && contains(p)) return label_of(p);
+  for (TetId p : parents)  // 3: the centroid left the mesh
+    if (known(p)) return label_of(p);
+  return kNoLabel;
+}
 
 }  // namespace tetcut::mechanics

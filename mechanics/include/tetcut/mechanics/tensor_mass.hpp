@@ -24,7 +24,7 @@
 // Units: the mesh is in `length_unit` metres (bundled meshes: mm, 1e-3); material, gravity,
 // masses, forces, energies and time are SI; displacements are returned in metres.
 //
-// Per-tet labels choose the material (ModelParams::materials[label]); a tet a cut creates
+// Per-tet labels choose the material (ModelParams::label_materials, else materials[label]); a tet a cut creates
 // takes its parent's label (the parent containing its centroid when it has several: a flip's
 // child; label_rule.hpp).
 //
@@ -41,10 +41,12 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tetcut/change_log.hpp"
 #include "tetcut/ids.hpp"
+#include "tetcut/mechanics/label_rule.hpp"
 #include "tetcut/mechanics/material.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/vec3.hpp"
@@ -55,6 +57,10 @@ using Tensor3 = std::array<double, 9>;  // 3x3, row-major
 
 struct ModelParams {
   std::vector<Material> materials = std::vector<Material>(1);  // by label (default: one, liver-like); a label past the end takes the last
+  // A material for each of these labels (a file's region ids: Gmsh physical tags, medit
+  // references; RawMesh::labels), sorted by label, each label once; a label not listed takes
+  // `materials`' rule above. `tetcut simulate --material LABEL:E,NU,RHO`.
+  std::vector<std::pair<std::uint32_t, Material>> label_materials;
   double length_unit = 1e-3;                    // metres per mesh unit
   double damping = 0.0;                         // gamma, 1/s (mass-proportional)
   Vec3 gravity{};                               // m / s2
@@ -78,7 +84,7 @@ struct Energy {
 
 class TensorMassModel {
  public:
-  static constexpr std::uint32_t kNoLabel = 0xFFFFFFFFu;
+  static constexpr std::uint32_t kNoLabel = mechanics::kNoLabel;
 
   // From scratch: every live tet of the mesh, in id order (O(#T)). `tet_labels`, indexed by
   // TetId, at least tet_capacity() long, or empty (every tet label 0). Displacements and

@@ -96,6 +96,9 @@ struct RunResult {
   std::string hash;        // of the final mesh
   std::uint32_t tets = 0;
   RemovalReport removal;   // the paper's statistics over every removal request of the run
+  // The labels of the final mesh's tets by TetId when the mesh file had labels (RawMesh::labels),
+  // carried through every cut, removal and compaction by mechanics::TetLabels; else empty.
+  std::vector<std::uint32_t> labels;
 };
 
 struct RunOptions {

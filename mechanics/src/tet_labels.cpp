@@ -1,0 +1,77 @@
+#include "tetcut/mechanics/tet_labels.hpp"
+
+#include <algorithm>
+
+namespace tetcut::mechanics {
+
+TetLabels::TetLabels(const TetMesh& mesh, std::span<const std::uint32_t> labels) {
+  reserve(mesh.tet_capacity() + mesh.tet_capacity() / 2);
+  tets_.resize(mesh.tet_capacity(), {kDead, kDead, kDead, kDead});
+  labels_.resize(mesh.tet_capacity(), kNoLabel);
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    if (!mesh.is_live(TetId{t})) continue;
+    const auto v = mesh.tet(TetId{t});
+    tets_[t] = {v[0].value, v[1].value, v[2].value, v[3].value};
+    labels_[t] = labels[t];
+  }
+}
+
+void TetLabels::reserve(std::uint32_t tets) {
+  tets_.reserve(tets);
+  labels_.reserve(tets);
+  created_labels_.reserve(std::max<std::size_t>(created_labels_.capacity(), 4096));
+}
+
+std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
+  if (mesh.tet_capacity() > tets_.size()) {
+    tets_.resize(mesh.tet_capacity(), {kDead, kDead, kDead, kDead});
+    labels_.resize(mesh.tet_capacity(), kNoLabel);
+  }
+  // The created tets' labels first, while their parents are still here.
+  std::uint32_t orphans = 0;
+  created_labels_.clear();
+  for (const CreatedTet& c : log.created) {
+    const auto cv = mesh.tet(c.tet);
+    const auto parents = log.parents_of(c);
+    const Vec3 centroid = tet_centroid(mesh.position(cv[0]), mesh.position(cv[1]), mesh.position(cv[2]),
+                                       mesh.position(cv[3]));
+    const std::uint32_t label = inherited_label(
+        parents, log.removed, [&](TetId p) { return has(p); }, [&](TetId p) { return labels_[p.value]; },
+        [&](TetId p) {
+          const auto& pv = tets_[p.value];
+          return tet_contains(mesh.position(VertId{pv[0]}), mesh.position(VertId{pv[1]}),
+                              mesh.position(VertId{pv[2]}), mesh.position(VertId{pv[3]}), centroid);
+        });
+    if (label == kNoLabel) ++orphans;
+    created_labels_.push_back(label);
+  }
+  for (TetId t : log.removed) {
+    if (!has(t)) continue;
+    tets_[t.value] = {kDead, kDead, kDead, kDead};
+    labels_[t.value] = kNoLabel;
+  }
+  for (std::size_t k = 0; k < log.created.size(); ++k) {
+    const TetId t = log.created[k].tet;
+    const auto v = mesh.tet(t);
+    tets_[t.value] = {v[0].value, v[1].value, v[2].value, v[3].value};
+    labels_[t.value] = created_labels_[k];
+  }
+  return orphans;
+}
+
+void TetLabels::renumber(const Renumbering& renumbering) {
+  std::vector<std::array<std::uint32_t, 4>> tets(tets_.size(), {kDead, kDead, kDead, kDead});
+  std::vector<std::uint32_t> labels(labels_.size(), kNoLabel);
+  for (std::size_t old = 0; old < renumbering.tet_old_to_new.size() && old < tets_.size(); ++old) {
+    const TetId now = renumbering.tet_old_to_new[old];
+    if (!now.valid() || tets_[old][0] == kDead) continue;
+    auto v = tets_[old];
+    for (std::uint32_t& x : v) x = renumbering.vert_old_to_new[x].value;
+    tets[now.value] = v;
+    labels[now.value] = labels_[old];
+  }
+  tets_ = std::move(tets);
+  labels_ = std::move(labels);
+}
+
+}  // namespace tetcut::mechanics

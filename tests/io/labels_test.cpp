@@ -1,0 +1,143 @@
+// Per-tet labels (RawMesh::labels): every writer that carries them writes what every reader reads
+// back, tet by tet; a file without labels reads unlabelled; bad label data is refused with the
+// file, the line and the reason.
+#include <string>
+#include <vector>
+
+#include "io_test_support.hpp"
+
+namespace tetcut {
+namespace {
+
+RawMesh labelled_two_tets() {
+  RawMesh m = test::two_tets();
+  m.labels = {7, 1000};
+  return m;
+}
+
+struct Writer {
+  const char* what;
+  std::string (*format)(const RawMesh&);
+  ReadResult (*read)(std::string_view, std::string_view);
+};
+
+std::string vtu_zlib(const RawMesh& m) { return format_vtu_binary(m, Compression::kZlib); }
+std::string vtu_raw(const RawMesh& m) { return format_vtu_binary(m, Compression::kNone); }
+
+const Writer kWriters[] = {
+    {"msh 2.2 ascii", format_msh22, read_msh},   {"msh 2.2 binary", format_msh22_binary, read_msh},
+    {"medit", format_medit, read_medit},         {"vtk ascii", format_vtk, read_vtk},
+    {"vtk binary", format_vtk_binary, read_vtk}, {"vtu ascii", format_vtu, read_vtu},
+    {"vtu appended", vtu_raw, read_vtu},         {"vtu zlib", vtu_zlib, read_vtu},
+};
+
+TEST(Labels, EveryLabelledFormatRoundTripsTheLabelsTetByTet) {
+  const RawMesh m = labelled_two_tets();
+  for (const Writer& w : kWriters) {
+    SCOPED_TRACE(w.what);
+    const ReadResult r = w.read(w.format(m), "m");
+    ASSERT_TRUE(r.mesh.has_value()) << r.error->message();
+    EXPECT_EQ(r.mesh->tets, m.tets);
+    EXPECT_EQ(r.mesh->labels, m.labels);
+  }
+}
+
+TEST(Labels, UnlabelledMeshesWriteWhatTheyWroteBefore) {
+  // Gmsh and medit always carried a region (1); VTK files gain no cell data.
+  const RawMesh m = test::two_tets();
+  EXPECT_NE(format_msh22(m).find("1 4 2 1 1 1 2 3 4\n"), std::string::npos);
+  EXPECT_EQ(format_vtk(m).find("CELL_DATA"), std::string::npos);
+  EXPECT_EQ(format_vtu(m).find("CellData"), std::string::npos);
+  EXPECT_EQ(read_vtk(format_vtk(m), "m").mesh->labels.size(), 0u);
+  EXPECT_EQ(read_vtu(format_vtu(m), "m").mesh->labels.size(), 0u);
+  // Gmsh's single volume reads back as region 1.
+  EXPECT_EQ(read_msh(format_msh22(m), "m").mesh->labels, (std::vector<std::uint32_t>{1, 1}));
+}
+
+TEST(Labels, FilesWithoutTagsReadUnlabelled) {
+  const std::string msh =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n"
+      "$Elements\n1\n1 4 0 1 2 3 4\n$EndElements\n";
+  const ReadResult r = read_msh(msh, "m.msh");
+  ASSERT_TRUE(r.mesh.has_value());
+  EXPECT_FALSE(r.mesh->labelled());
+  const std::string medit =
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+      "Tetrahedra\n1\n1 2 3 4\nEnd\n";
+  const ReadResult m = read_medit(medit, "m.mesh");
+  ASSERT_TRUE(m.mesh.has_value());
+  EXPECT_FALSE(m.mesh->labelled());
+}
+
+TEST(Labels, CellDataOfOtherCellsIsSkippedAndTheBestNamedArrayWins) {
+  // A triangle before the tet: its cell data value must not become the tet's label; "label"
+  // wins over "gmsh:physical" whatever the order.
+  const std::string vtk =
+      "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+      "CELLS 2 9\n3 0 1 2\n4 0 1 2 3\nCELL_TYPES 2\n5\n10\nPOINT_DATA 4\nSCALARS p float 1\nLOOKUP_TABLE default\n"
+      "0.5 1.5 2.5 3.5\nCELL_DATA 2\nFIELD f 2\ngmsh:physical 1 2 int\n4 5\nlabel 1 2 int\n8 9\n";
+  const ReadResult r = read_vtk(vtk, "m.vtk");
+  ASSERT_TRUE(r.mesh.has_value()) << r.error->message();
+  EXPECT_EQ(r.mesh->labels, (std::vector<std::uint32_t>{9}));
+}
+
+void expect_refused(const ReadResult& r, const char* name, std::uint64_t line, const std::string& reason) {
+  ASSERT_TRUE(r.error.has_value()) << "accepted";
+  EXPECT_FALSE(r.mesh.has_value());
+  EXPECT_EQ(r.error->file, name);
+  EXPECT_EQ(r.error->line, line) << r.error->message();
+  EXPECT_NE(r.error->reason.find(reason), std::string::npos) << r.error->message();
+}
+
+TEST(Labels, BadLabelDataIsRefusedWithFileLineAndReason) {
+  const std::string msh_head =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n";
+  expect_refused(read_msh(msh_head + "1 4 2 -3 1 1 2 3 4\n$EndElements\n", "m.msh"), "m.msh", 13,
+                 "physical tag -3 is not a label");
+  expect_refused(read_msh(msh_head + "1 4 2 3000000000 1 1 2 3 4\n$EndElements\n", "m.msh"), "m.msh", 13,
+                 "physical tag 3000000000 is not a label");
+  const std::string medit_head =
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n";
+  expect_refused(read_medit(medit_head + "1 2 3 4 x\nEnd\n", "m.mesh"), "m.mesh", 11,
+                 "tetrahedron reference 'x' is not a label");
+  const std::string vtk_head =
+      "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n"
+      "0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+  expect_refused(read_vtk(vtk_head + "CELL_DATA 1\nSCALARS label int 1\nLOOKUP_TABLE default\n2.5\n", "m.vtk"),
+                 "m.vtk", 17, "expected cell data 'label' values");
+  expect_refused(read_vtk(vtk_head + "CELL_DATA 1\nSCALARS label int 1\nLOOKUP_TABLE default\n-1\n", "m.vtk"),
+                 "m.vtk", 15, "cell data 'label' of cell 0: -1 is not a label");
+  expect_refused(read_vtk(vtk_head + "CELL_DATA 2\nSCALARS label int 1\n", "m.vtk"), "m.vtk", 14,
+                 "CELL_DATA declares 2 values for 1 cells");
+  expect_refused(read_vtk(vtk_head + "CELL_DATA 1\nSCALARS label int 2\nLOOKUP_TABLE default\n1 2\n", "m.vtk"),
+                 "m.vtk", 15, "has 2 components, a label has 1");
+  // .vtu: a label array of the wrong length, and one of reals.
+  std::string vtu = format_vtu(labelled_two_tets());
+  const std::size_t at = vtu.find("          1000\n");
+  ASSERT_NE(at, std::string::npos);
+  std::string short_array = vtu;
+  short_array.erase(at, std::string("          1000\n").size());
+  const ReadResult r = read_vtu(short_array, "m.vtu");
+  ASSERT_TRUE(r.error.has_value());
+  EXPECT_NE(r.error->reason.find("cell data 'label'"), std::string::npos) << r.error->message();
+  EXPECT_GT(r.error->line, 0u);
+  std::string reals = vtu;
+  reals.replace(reals.find("type=\"Int32\" Name=\"label\""), 26, "type=\"Float64\" Name=\"label\"");
+  const ReadResult f = read_vtu(reals, "m.vtu");
+  ASSERT_TRUE(f.error.has_value());
+  EXPECT_NE(f.error->reason.find("label"), std::string::npos) << f.error->message();
+}
+
+TEST(Labels, WritersRefuseLabelsThatDoNotFitTheFormats) {
+  test::ScratchDir dir;
+  RawMesh m = labelled_two_tets();
+  m.labels.pop_back();
+  EXPECT_FALSE(write_mesh((dir.path() / "a.vtu").string(), m).ok);
+  m.labels = {1, kMaxTetLabel + 1};
+  const WriteResult w = write_mesh((dir.path() / "a.msh").string(), m);
+  EXPECT_FALSE(w.ok);
+  EXPECT_NE(w.error.find("label"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tetcut
