@@ -157,4 +157,5 @@ def main():
     return 0 if not other_way_failures and not any(row_failures.values()) else 1
 
 
-sys.exit(main())
+if __name__ == "__main__":
+    sys.exit(main())

@@ -30,6 +30,8 @@ except ImportError as e:  # ctest: SKIP_RETURN_CODE 77
     print(f"skipped: {e} (ci/deps installs python3-meshio; run with /usr/bin/python3)")
     sys.exit(77)
 
+from meshio_differential import quietly  # noqa: E402  (after the skip above)
+
 # (row, extension, meshio.write keywords, the cell_data name meshio uses for the label)
 ONE_WAY = [
     ("Gmsh 2.2 ASCII", "msh", {"file_format": "gmsh22", "binary": False}, "gmsh:physical"),
@@ -65,25 +67,6 @@ def medit_refs(path):
     at = next(i for i, t in enumerate(tokens) if t.lower() == "tetrahedra")
     n = int(tokens[at + 1])
     return [int(tokens[at + 2 + 5 * k + 4]) for k in range(n)]
-
-
-def quietly(fn):
-    """meshio prints warnings (missing gmsh tags, ASCII is for debugging) on both streams."""
-    sys.stdout.flush()
-    sys.stderr.flush()
-    saved = [os.dup(1), os.dup(2)]
-    with open(os.devnull, "w") as null:
-        os.dup2(null.fileno(), 1)
-        os.dup2(null.fileno(), 2)
-        try:
-            return fn()
-        finally:
-            sys.stdout.flush()
-            sys.stderr.flush()
-            os.dup2(saved[0], 1)
-            os.dup2(saved[1], 2)
-            os.close(saved[0])
-            os.close(saved[1])
 
 
 def main():
