@@ -466,9 +466,7 @@ std::string format_msh41_binary(const RawMesh& mesh) {
     // No points, curves or surfaces; a volume per label (its box, one physical tag, no bounding
     // surfaces).
     const LabelledVolumes& volumes = *labelled;
-    for (std::uint64_t n : {std::uint64_t{0}, std::uint64_t{0}, std::uint64_t{0}, std::uint64_t{volumes.labels.size()}}) {
-      put_size(out, n);
-    }
+    for (std::uint64_t n : {std::size_t{0}, std::size_t{0}, std::size_t{0}, volumes.labels.size()}) put_size(out, n);
     for (std::size_t v = 0; v < volumes.labels.size(); ++v) {
       put_int(out, v + 1);
       for (double c : volumes.boxes[v]) store_f64(out, c, kBinaryOrder);
