@@ -80,8 +80,8 @@ void check_round_trip(std::string_view writer, const RawMesh& mesh, TetFormatter
   for (std::size_t t = 0; t < mesh.tets.size(); ++t)
     if (back.tets[t] != mesh.tets[t]) fail("round-trip", 1, operation, where("vertices changed in tet", t));
   // Labels, where the writer carries them (every formatter a target round-trips through but
-  // Gmsh 4.1's and TetGen's, which write none); an unlabelled mesh may come back with the
-  // writer's one region (Gmsh, medit: 1).
+  // TetGen's, which writes none); an unlabelled mesh may come back with the writer's one region
+  // (Gmsh 1.0 and 2.2, medit: 1).
   if (mesh.labelled() && back.labelled() && back.labels != mesh.labels)
     fail("round-trip", 1, operation, "labels changed");
 }

@@ -156,7 +156,55 @@ bool GmshBinaryReader::msh41_nodes(std::uint64_t line) {
   return check_blocks_add_up(sink_, line, "node", mesh_.positions.size(), total);
 }
 
-bool GmshBinaryReader::msh41_elements(std::uint64_t line) {
+bool GmshBinaryReader::msh41_entities(std::uint64_t line, GmshVolumeLabels& volumes) {
+  // Per entity: tag (int), a point (3 doubles) or a box (6), numPhysicalTags (size_t) and the
+  // tags (ints), then for curves, surfaces, volumes numBounding (size_t) and their tags (ints).
+  const std::uint64_t s = size_bytes_;
+  std::string_view header;
+  if (!take(4 * s, "$Entities header", line, header)) return false;
+  static constexpr std::string_view kKinds[] = {"points", "curves", "surfaces", "volumes"};
+  std::uint64_t counts[4];
+  for (int d = 0; d < 4; ++d) {
+    counts[d] = size_at(bytes_of(header) + d * s);
+    if (!check_count(counts[d], 4 + 24 + s, "$Entities " + std::string(kKinds[d]), line)) return false;
+  }
+  for (std::uint64_t d = 0; d < 4; ++d) {
+    const std::uint64_t fixed = 4 + (d == 0 ? 24 : 48) + s;
+    for (std::uint64_t e = 0; e < counts[d]; ++e) {
+      std::string_view entity;
+      std::string_view physical;
+      if (!take(fixed, "$Entities entity", line, entity)) return false;
+      const std::int64_t tag = int_at(bytes_of(entity));
+      const std::uint64_t num_physical = size_at(bytes_of(entity) + fixed - s);
+      if (!check_count(num_physical, 4, "physical tags", line) ||
+          !take(num_physical * 4, "$Entities physical tags", line, physical)) {
+        return false;
+      }
+      if (d > 0) {
+        std::string_view count;
+        std::string_view bounding;
+        if (!take(s, "$Entities bounding count", line, count)) return false;
+        const std::uint64_t num_bounding = size_at(bytes_of(count));
+        if (!check_count(num_bounding, 4, "bounding entities", line) ||
+            !take(num_bounding * 4, "$Entities bounding entities", line, bounding)) {
+          return false;
+        }
+      }
+      if (d == 3) {
+        std::optional<std::uint32_t> label;
+        if (num_physical > 0) {
+          std::uint32_t first = 0;
+          if (!check_label(sink_, line, int_at(bytes_of(physical)), "physical tag", first)) return false;
+          label = first;
+        }
+        if (!volumes.add(sink_, line, tag, label)) return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool GmshBinaryReader::msh41_elements(std::uint64_t line, const GmshVolumeLabels& volumes) {
   const std::uint64_t s = size_bytes_;
   std::uint64_t blocks = 0;
   std::uint64_t total = 0;
@@ -166,6 +214,8 @@ bool GmshBinaryReader::msh41_elements(std::uint64_t line) {
   for (std::uint64_t b = 0; b < blocks; ++b) {
     std::string_view block;
     if (!take(12 + s, "$Elements block header", line, block)) return false;
+    const std::int64_t dim = int_at(bytes_of(block));
+    const std::int64_t entity = int_at(bytes_of(block) + 4);
     const std::int64_t type = int_at(bytes_of(block) + 8);
     const std::uint64_t n = size_at(bytes_of(block) + 12);
     const std::size_t nodes = gmsh_type_nodes(type);
@@ -177,6 +227,7 @@ bool GmshBinaryReader::msh41_elements(std::uint64_t line) {
     if (type != kGmshTet4 && type != kGmshTet10) {
       elements_.ignore(type, n);
     } else {
+      if (!volumes.label_block(sink_, line, dim, entity, elements_)) return false;
       for (std::uint64_t e = 0; e < n; ++e) {
         const unsigned char* p = bytes_of(data) + e * record;
         for (std::size_t k = 0; k < nodes; ++k) {

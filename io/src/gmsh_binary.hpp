@@ -28,8 +28,11 @@ class GmshBinaryReader {
   bool msh22_elements(std::uint64_t count, std::uint64_t line);
   // MSH 4.1: everything after the $Nodes line, up to $EndNodes.
   bool msh41_nodes(std::uint64_t line);
-  // MSH 4.1: everything after the $Elements line, up to $EndElements.
-  bool msh41_elements(std::uint64_t line);
+  // MSH 4.1: everything after the $Entities line, up to $EndEntities: the volumes' labels
+  // (points, curves and surfaces skipped field by field).
+  bool msh41_entities(std::uint64_t line, GmshVolumeLabels& volumes);
+  // MSH 4.1: everything after the $Elements line, up to $EndElements; tets labelled by `volumes`.
+  bool msh41_elements(std::uint64_t line, const GmshVolumeLabels& volumes);
 
  private:
   // The next `n` bytes (n counted in 64 bits: a product of file values), or an error naming

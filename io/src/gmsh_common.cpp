@@ -258,4 +258,30 @@ ReadResult GmshReader::result() {
   return make_result(sink_, std::move(mesh_), std::move(notices), &elements_.ignored);
 }
 
+bool GmshVolumeLabels::add(ErrorSink& sink, std::uint64_t line, std::int64_t tag,
+                           std::optional<std::uint32_t> label) {
+  if (!by_tag.emplace(tag, label).second) {
+    return sink.fail(line, "volume entity " + std::to_string(tag) + " listed twice in $Entities");
+  }
+  labelled = labelled || label.has_value();
+  return true;
+}
+
+bool GmshVolumeLabels::label_block(ErrorSink& sink, std::uint64_t line, std::int64_t dim, std::int64_t tag,
+                                   GmshElementSink& elements) const {
+  elements.label.reset();
+  if (!labelled) return true;
+  if (dim != 3) {
+    return sink.fail(line, "tetrahedra in an element block of entity dimension " + std::to_string(dim) +
+                               " (a volume's block has dimension 3; its physical tag is the label)");
+  }
+  const auto it = by_tag.find(tag);
+  if (it == by_tag.end()) {
+    return sink.fail(line, "element block names volume entity " + std::to_string(tag) +
+                               ", which $Entities does not list (its physical tag is the label)");
+  }
+  elements.label = it->second;
+  return true;
+}
+
 }  // namespace tetcut::io_detail

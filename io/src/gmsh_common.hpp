@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "text_reader.hpp"
@@ -68,6 +69,21 @@ bool check_block_fits(ErrorSink& sink, std::uint64_t line, std::string_view noun
                       std::uint64_t n, std::uint64_t total);
 bool check_blocks_add_up(ErrorSink& sink, std::uint64_t line, std::string_view noun, std::uint64_t seen,
                          std::uint64_t total);
+
+// MSH 4.1's volume entities as $Entities lists them: each volume's first physical tag, the label
+// of the tets of every element block naming it (none: the volume has no physical group). When no
+// volume has a physical tag the mesh reads unlabelled, as a 2.2 file whose tets have no tags;
+// when one has, every tet block must name a volume listed here.
+struct GmshVolumeLabels {
+  std::unordered_map<std::int64_t, std::optional<std::uint32_t>> by_tag;
+  bool labelled = false;
+
+  // Volume `tag` with `label`; a tag listed twice is an error.
+  bool add(ErrorSink& sink, std::uint64_t line, std::int64_t tag, std::optional<std::uint32_t> label);
+  // Before the tets of a block of entity (`dim`, `tag`): sets `elements.label` to that volume's.
+  bool label_block(ErrorSink& sink, std::uint64_t line, std::int64_t dim, std::int64_t tag,
+                   GmshElementSink& elements) const;
+};
 
 // What every Gmsh reader holds while it reads one file (the lines, the first error, the mesh, its
 // node-id map and the element sink wired to both, the current line's tokens) and the steps its

@@ -24,6 +24,8 @@ ReadResult GmshSectionReader::read() {
       on_nodes_header();
     } else if (section == "Elements") {
       on_elements_header();
+    } else if (section == "Entities") {
+      read_entities();
     } else if (section.substr(0, 3) == "End") {
       sink_.fail(lines_.line_number(), "unexpected " + quote(header) + " outside its section");
     } else {

@@ -26,6 +26,7 @@ std::string vtu_raw(const RawMesh& m) { return format_vtu_binary(m, Compression:
 
 const Writer kWriters[] = {
     {"msh 2.2 ascii", format_msh22, read_msh},   {"msh 2.2 binary", format_msh22_binary, read_msh},
+    {"msh 4.1 ascii", format_msh41, read_msh},   {"msh 4.1 binary", format_msh41_binary, read_msh},
     {"medit", format_medit, read_medit},         {"vtk ascii", format_vtk, read_vtk},
     {"vtk binary", format_vtk_binary, read_vtk}, {"vtu ascii", format_vtu, read_vtu},
     {"vtu appended", vtu_raw, read_vtu},         {"vtu zlib", vtu_zlib, read_vtu},
@@ -40,6 +41,47 @@ TEST(Labels, EveryLabelledFormatRoundTripsTheLabelsTetByTet) {
     EXPECT_EQ(r.mesh->tets, m.tets);
     EXPECT_EQ(r.mesh->labels, m.labels);
   }
+}
+
+TEST(Labels, Msh41KeepsTheTetOrderWhenLabelsInterleave) {
+  // Labels 5, 2, 5, 0 in that order: two volumes for three distinct labels' worth of runs; the
+  // tets come back in their order with their labels, and one volume per label is written.
+  RawMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {2, 0, 0}, {0, 2, 0}};
+  m.tets = {{0, 1, 2, 3}, {1, 2, 3, 4}, {1, 5, 2, 3}, {2, 6, 1, 3}};
+  m.labels = {5, 2, 5, 0};
+  for (auto format : {format_msh41, format_msh41_binary}) {
+    const std::string text = format(m);
+    const ReadResult r = read_msh(text, "m.msh");
+    ASSERT_TRUE(r.mesh.has_value()) << r.error->message();
+    EXPECT_EQ(r.mesh->tets, m.tets);
+    EXPECT_EQ(r.mesh->labels, m.labels);
+  }
+  const std::string ascii = format_msh41(m);
+  // Volumes 1, 2, 3 carry labels 0, 2, 5; the four tets make four element blocks.
+  EXPECT_NE(ascii.find("$Entities\n0 0 0 3\n1 0 0 0 1 2 1 1 0 0\n2 "), std::string::npos) << ascii;
+  EXPECT_NE(ascii.find(" 1 5 0\n$EndEntities"), std::string::npos) << ascii;
+  EXPECT_NE(ascii.find("$Elements\n4 4 1 4\n3 3 4 1\n1 1 2 3 4\n3 2 4 1\n"), std::string::npos) << ascii;
+}
+
+TEST(Labels, Msh41VolumesWithoutPhysicalTagsReadAsLabelZeroOrUnlabelled) {
+  const std::string head =
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n1 0 0 2\n7 0 0 0 1 9\n"
+      "1 0 0 0 1 1 1 0 0\n2 0 0 0 1 1 1 ";
+  const std::string tail =
+      " 0\n$EndEntities\n$Nodes\n1 5 1 5\n3 1 0 5\n1\n2\n3\n4\n5\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n"
+      "$EndNodes\n$Elements\n3 3 1 3\n0 7 15 1\n3 1\n3 1 4 1\n1 1 2 3 4\n3 2 4 1\n2 2 3 4 5\n$EndElements\n";
+  // Volume 2 in physical group 8 (and 9, not the first), volume 1 in none: labels 0 and 8; the
+  // point's physical tag 9 is no tet's.
+  const ReadResult r = read_msh(head + "2 8 9" + tail, "m.msh");
+  ASSERT_TRUE(r.mesh.has_value()) << r.error->message();
+  EXPECT_EQ(r.mesh->labels, (std::vector<std::uint32_t>{0, 8}));
+  const ReadResult u = read_msh(head + "0" + tail, "m.msh");
+  ASSERT_TRUE(u.mesh.has_value()) << u.error->message();
+  EXPECT_FALSE(u.mesh->labelled());
+  // The unlabelled writer's single volume has no physical tag: it reads back unlabelled.
+  EXPECT_FALSE(read_msh(format_msh41(test::two_tets()), "m").mesh->labelled());
+  EXPECT_FALSE(read_msh(format_msh41_binary(test::two_tets()), "m").mesh->labelled());
 }
 
 TEST(Labels, UnlabelledMeshesWriteWhatTheyWroteBefore) {
@@ -126,6 +168,56 @@ TEST(Labels, BadLabelDataIsRefusedWithFileLineAndReason) {
   const ReadResult f = read_vtu(reals, "m.vtu");
   ASSERT_TRUE(f.error.has_value());
   EXPECT_NE(f.error->reason.find("label"), std::string::npos) << f.error->message();
+}
+
+TEST(Labels, BadMsh41EntitiesAreRefusedWithFileLineAndReason) {
+  const std::string format = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  const std::string nodes =
+      "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n";
+  const auto with = [&](const std::string& entities, const std::string& block) {
+    return format + "$Entities\n" + entities + "$EndEntities\n" + nodes + "$Elements\n1 1 1 1\n" + block +
+           "\n1 1 2 3 4\n$EndElements\n";
+  };
+  expect_refused(read_msh(with("0 0 0 1\n1 0 0 0 1 1 1 1 3000000000 0\n", "3 1 4 1"), "m.msh"), "m.msh", 6,
+                 "physical tag 3000000000 is not a label");
+  expect_refused(read_msh(with("0 0 0 1\n1 0 0 0 1 1 1 1 -2 0\n", "3 1 4 1"), "m.msh"), "m.msh", 6,
+                 "physical tag -2 is not a label");
+  expect_refused(read_msh(with("0 0 0 1\n1 0 0 0 1 1 1 1 4 0\n", "3 2 4 1"), "m.msh"), "m.msh", 22,
+                 "names volume entity 2, which $Entities does not list");
+  expect_refused(read_msh(with("0 0 0 1\n1 0 0 0 1 1 1 1 4 0\n", "2 1 4 1"), "m.msh"), "m.msh", 22,
+                 "entity dimension 2");
+  // A volume whose bounding-surface count runs past its line, a field missing, a section cut short.
+  expect_refused(read_msh(with("0 0 0 1\n1 0 0 0 1 1 1 1 4 3 1\n", "3 1 4 1"), "m.msh"), "m.msh", 6,
+                 "expected a volume entity");
+  expect_refused(read_msh(with("0 1 0 0\n1 0 0 0 1 1 1 0\n", "3 1 4 1"), "m.msh"), "m.msh", 6,
+                 "expected a curve entity");
+  expect_refused(read_msh(with("0 0 0 2\n1 0 0 0 1 1 1 1 4 0\n", "3 1 4 1"), "m.msh"), "m.msh", 7,
+                 "section ended early");
+  expect_refused(read_msh(with("0 0 0 2\n1 0 0 0 1 1 1 1 4 0\n1 0 0 0 1 1 1 0 0\n", "3 1 4 1"), "m.msh"), "m.msh",
+                 7, "volume entity 1 listed twice");
+  expect_refused(read_msh(format + "$Entities\n0 0 0 1\n1 0 0 0 1 1 1 1 4 0\n", "m.msh"), "m.msh", 6,
+                 "missing $EndEntities");
+
+  // Binary: the writer's own file, its $Entities cut short or its physical tag out of range.
+  RawMesh m = labelled_two_tets();
+  const std::string binary = format_msh41_binary(m);
+  const std::size_t entities = binary.find("$Entities\n") + 10;
+  const std::size_t end = binary.find("\n$EndEntities");
+  expect_refused(read_msh(binary.substr(0, end - 3), "b.msh"), "b.msh", 5, "truncated file?");
+  expect_refused(read_msh(binary.substr(0, entities + 40), "b.msh"), "b.msh", 5,
+                 "count 2 of $Entities volumes exceeds file size");
+  std::string out_of_range = binary;
+  // Volume 2's physical tag (label 1000) is the int before its 8-byte bounding count.
+  const std::size_t tag_at = end - 8 - 4;
+  ASSERT_EQ(static_cast<unsigned char>(out_of_range[tag_at]), 1000 & 0xFF);
+  out_of_range[tag_at + 3] = static_cast<char>(0x80);
+  expect_refused(read_msh(out_of_range, "b.msh"), "b.msh", 5, "is not a label");
+  std::string unknown = binary;
+  // The first element block names volume 1 (label 7); make it volume 9.
+  const std::size_t block = binary.find("$Elements\n") + 10 + 32;
+  ASSERT_EQ(unknown[block + 4], 1);
+  unknown[block + 4] = 9;
+  expect_refused(read_msh(unknown, "b.msh"), "b.msh", 11, "names volume entity 9");
 }
 
 TEST(Labels, WritersRefuseLabelsThatDoNotFitTheFormats) {

@@ -8,14 +8,18 @@ that numbered labels itself or took another tag would differ):
 
 - one way: meshio writes the mesh with its labels under the name each format's convention
   gives them (Gmsh: "gmsh:physical"; medit: "medit:ref"; VTK: "label", and in a second file
-  "CellEntityIds") in every labelled format meshio writes; `tetcut convert` turns it into a
+  "CellEntityIds") in every labelled format meshio writes (Gmsh 4.1: a cell block and a volume
+  entity per label, the physical tag in $Entities, each node on a volume of one of its tets:
+  meshio writes an entity only for the nodes' "gmsh:dim_tags"; the tets then come grouped by
+  label); `tetcut convert` turns it into a
   medit file, which Python reads back: the references must be the labels, tet by tet;
 - through cuts: `tetcut cut` and `tetcut remove` on that medit file write .vtu files whose
   labels meshio reads: every tet the operations left untouched (the same four vertex positions)
   keeps its label, every label is one of the file's, and the cut changed something;
 - the other way: `tetcut convert` writes each format that carries labels from that medit file,
   meshio reads it, and the cell data ("gmsh:physical", "medit:ref", "label") must be the labels
-  (a legacy SCALARS array comes back as #T by 1: compared flattened).
+  (a legacy SCALARS array comes back as #T by 1, Gmsh 4.1 as a block per run of one label:
+  compared flattened and concatenated).
 
 Exit 0 when every row agrees, 1 otherwise, 77 (skipped) when meshio is not installed.
 """
@@ -36,6 +40,8 @@ from meshio_differential import quietly  # noqa: E402  (after the skip above)
 ONE_WAY = [
     ("Gmsh 2.2 ASCII", "msh", {"file_format": "gmsh22", "binary": False}, "gmsh:physical"),
     ("Gmsh 2.2 binary", "msh", {"file_format": "gmsh22", "binary": True}, "gmsh:physical"),
+    ("Gmsh 4.1 ASCII", "msh", {"file_format": "gmsh", "binary": False}, "gmsh:physical"),
+    ("Gmsh 4.1 binary", "msh", {"file_format": "gmsh", "binary": True}, "gmsh:physical"),
     ("medit", "mesh", {}, "medit:ref"),
     ("ASCII .vtk", "vtk", {"binary": False}, "label"),
     ("binary .vtk", "vtk", {"binary": True}, "label"),
@@ -47,6 +53,7 @@ ONE_WAY = [
 # (file tetcut writes, extra `tetcut convert` arguments, the cell_data name meshio reads it as)
 OTHER_WAY = [
     ("o22.msh", [], "gmsh:physical"), ("o22b.msh", ["--binary"], "gmsh:physical"),
+    ("o41.msh", ["--format", "msh41"], "gmsh:physical"), ("o41b.msh", ["--format", "msh41", "--binary"], "gmsh:physical"),
     ("o.mesh", [], "medit:ref"),
     ("o.vtk", [], "label"), ("ob.vtk", ["--binary"], "label"),
     ("o.vtu", [], "label"), ("ob.vtu", ["--binary"], "label"), ("oz.vtu", ["--compress", "zlib"], "label"),
@@ -82,10 +89,24 @@ def main():
 
     for row, ext, kwargs, name in ONE_WAY:
         data = {name: [labels]}
+        cells, point_data, expected = [("tetra", tets)], {}, labels
         if name == "gmsh:physical":
             data["gmsh:geometrical"] = [labels]
+        if kwargs.get("file_format") == "gmsh":
+            regions = sorted(set(labels.tolist()))
+            cells = [("tetra", tets[labels == l]) for l in regions]
+            data = {name: [np.full(len(c), l, np.int32) for (_, c), l in zip(cells, regions)],
+                    "gmsh:geometrical": [np.full(len(c), v + 1, np.int32) for v, (_, c) in enumerate(cells)]}
+            dim_tags = np.zeros((len(points), 2), dtype=np.int32)
+            dim_tags[:, 0] = 3
+            for v, (_, c) in enumerate(cells):
+                dim_tags[c.reshape(-1), 1] = v + 1
+            assert len(set(dim_tags[:, 1].tolist())) == len(regions), "a region owns no node"
+            point_data = {"gmsh:dim_tags": dim_tags}
+            expected = np.concatenate(data[name])
         path = os.path.join(work, "meshio." + ext)
-        quietly(lambda: meshio.write(path, meshio.Mesh(points, [("tetra", tets)], cell_data=data), **kwargs))
+        mesh = meshio.Mesh(points, cells, cell_data=data, point_data=point_data)
+        quietly(lambda: meshio.write(path, mesh, **kwargs))
         out = os.path.join(work, "tetcut.mesh")
         checked += 1
         try:
@@ -94,8 +115,8 @@ def main():
         except (RuntimeError, ValueError, StopIteration) as e:
             failures.append(f"{row}: {e}")
             continue
-        if got != labels.tolist():
-            failures.append(f"{row}: tetcut read {sum(a != b for a, b in zip(got, labels))} labels wrong")
+        if got != expected.tolist():
+            failures.append(f"{row}: tetcut read {sum(a != b for a, b in zip(got, expected))} labels wrong")
 
     source = os.path.join(work, "labelled.mesh")
     quietly(lambda: meshio.write(source, meshio.Mesh(points, [("tetra", tets)], cell_data={"medit:ref": [labels]})))
@@ -110,7 +131,8 @@ def main():
         kwargs = {"file_format": "gmsh"} if out.endswith(".msh") else {}
         back = quietly(lambda: meshio.read(path, **kwargs))
         got = back.cell_data.get(name)
-        if got is None or len(got) != 1 or not np.array_equal(np.asarray(got[0]).reshape(-1), labels):
+        flat = None if got is None else np.concatenate([np.asarray(g).reshape(-1) for g in got])
+        if flat is None or not np.array_equal(flat, labels) or not np.array_equal(back.cells_dict["tetra"], tets):
             failures.append(f"tetcut -> {out} {' '.join(extra)}: meshio's cell_data[{name!r}] is not the labels")
 
     # Through a sweep of cuts and a run of removals: the labels come back, untouched tets keep theirs.
