@@ -385,6 +385,16 @@ void store_tet(std::string& out, const RawMesh& mesh, std::size_t t) {
   for (std::uint32_t v : mesh.tets[t]) put_size(out, std::uint64_t{v} + 1);
 }
 
+// The ASCII $Nodes body: one block on entity 0, every node numbered 1.. in order.
+void append_nodes_section(std::string& out, const std::vector<Vec3>& positions) {
+  append_single_block_headers(out, positions.size(), 0);
+  for (std::uint64_t i = 0; i < positions.size(); ++i) {
+    append_uint(out, i + 1);
+    out += '\n';
+  }
+  append_point_lines(out, positions);
+}
+
 }  // namespace
 
 ReadResult read_msh41(std::string_view text, std::string_view name) {
@@ -412,12 +422,7 @@ std::string format_msh41(const RawMesh& mesh) {
       out += " 0\n";
     }
     out += "$EndEntities\n$Nodes\n";
-    append_single_block_headers(out, mesh.positions.size(), 0);
-    for (std::uint64_t i = 0; i < mesh.positions.size(); ++i) {
-      append_uint(out, i + 1);
-      out += '\n';
-    }
-    append_point_lines(out, mesh.positions);
+    append_nodes_section(out, mesh.positions);
     out += "$EndNodes\n$Elements\n";
     append_section_header(out, volumes.runs.size(), mesh.tets.size());
     for (const LabelledVolumes::Run& run : volumes.runs) {
@@ -441,12 +446,7 @@ std::string format_msh41(const RawMesh& mesh) {
     out += ' ';
   }
   out += "0 0\n$EndEntities\n$Nodes\n";
-  append_single_block_headers(out, mesh.positions.size(), 0);
-  for (std::uint64_t i = 0; i < mesh.positions.size(); ++i) {
-    append_uint(out, i + 1);
-    out += '\n';
-  }
-  append_point_lines(out, mesh.positions);
+  append_nodes_section(out, mesh.positions);
   out += "$EndNodes\n$Elements\n";
   append_single_block_headers(out, mesh.tets.size(), kGmshTet4);
   append_numbered_tets(out, mesh.tets);
