@@ -31,6 +31,7 @@ struct CutArgs {
   std::optional<RemovalOrder> order;
   std::optional<SplitMethod> split;
   std::optional<scenario::CheckMode> check;
+  std::vector<std::uint32_t> uncuttable_labels;
   RunOutputs outputs;
 };
 
@@ -47,6 +48,9 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::number(app, "--p", a.p, "shell edge ratio of the refinement loop (paper 3.2; default 1.5)", "P");
   opt::count(app, "--depth", a.depth, "neighbour search depth (paper 3.5; default 10, at most 64)");
   opt::improvement(app, a.improvement, "cut");
+  opt::labels(app, "--keep-label", a.uncuttable_labels,
+              "tets with this label (the mesh file's) are tissue no cut takes, as the paper's Fig. 7 keeps the "
+              "portal vein (repeatable)");
   opt::check_mode(app, a.check, "the local check after every cut (default), the full one at the end, or none");
   opt::text(app, "--out", a.outputs.mesh_path, "the final mesh", "M");
   opt::text(app, "--report", a.outputs.report_path,
@@ -81,7 +85,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CommandParser parser(
       "cut",
       "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--order O] [--split M] "
-      "[--no-improve] [--quality-floor F] "
+      "[--no-improve] [--quality-floor F] [--keep-label L ...] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
       "each cut refined then removed without breaking the manifold (paper 3.1-3.7). The sweep is\n"
@@ -93,6 +97,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   options.initial_params.emplace();
   if (const auto bad = cut_params(a, *options.initial_params)) return parser.usage_error(*bad, err);
   options.check = a.check.value_or(scenario::CheckMode::kEvery);
+  options.uncuttable_labels = a.uncuttable_labels;
   if (a.frames) {
     options.after_cut = [dir = *a.frames](const TetMesh& mesh, std::size_t k) -> std::optional<std::string> {
       char name[32];

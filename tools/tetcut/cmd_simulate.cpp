@@ -39,6 +39,7 @@ struct SimulateArgs {
   std::optional<std::string> input, fix, frames, report;
   std::vector<std::string> sweeps;  // FROM TO STEP, three by three
   std::vector<std::string> materials;  // LABEL:E,NU,RHO
+  std::vector<std::uint32_t> uncuttable_labels;
   std::optional<Vec3> gravity;
   std::optional<double> diameter, dt, dt_factor, young, poisson, density, unit, damping;
   std::optional<std::uint64_t> steps, settle, frame_every;
@@ -61,6 +62,9 @@ void add_simulate_options(CLI::App& app, SimulateArgs& a) {
                  "cell data \"label\"): Young's modulus in Pa, Poisson ratio, density in kg/m3 (repeatable; other "
                  "labels take --young, --poisson, --density)")
       ->type_name("LABEL:E,NU,RHO");
+  opt::labels(app, "--keep-label", a.uncuttable_labels,
+              "tets with this label (the mesh file's) are tissue no cut takes, as the paper's Fig. 7 keeps the "
+              "portal vein (repeatable)");
   opt::number(app, "--poisson", a.poisson, "Poisson ratio (default 0.45)", "NU");
   opt::number(app, "--density", a.density, "kg/m3 (default 1000)", "RHO");
   opt::number(app, "--unit", a.unit, "metres per mesh unit (default 0.001: millimetres)", "M");
@@ -123,7 +127,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   CommandParser parser(
       "simulate",
       "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--diameter D] [--strategy S] [--fix RULE] "
-      "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--material LABEL:E,NU,RHO]... [--unit M] [--damping G] [--dt S] "
+      "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--material LABEL:E,NU,RHO]... [--keep-label L]... [--unit M] [--damping G] [--dt S] "
       "[--steps N] [--settle N] [--frames DIR] [--frame-every N] [--report R.json]",
       "Linear-elastic tissue (tensor-mass, Cotin, Delingette and Ayache 2000) stepped at a fixed\n"
       "time step (semi-implicit Euler) while the cautery cuts it: per frame one cut, the model and\n"
@@ -161,6 +165,9 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
           break;
         case scenario::OpKind::kSweep: add_sweep(op.a, op.b, op.step, centres); break;
         case scenario::OpKind::kCut: centres.push_back(op.a); break;
+        case scenario::OpKind::kUncuttable:
+          a.uncuttable_labels.insert(a.uncuttable_labels.end(), op.labels.begin(), op.labels.end());
+          break;
         default: break;  // checks and expectations are `tetcut run`'s
       }
     }
@@ -219,6 +226,14 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
 
   // ---- the simulation --------------------------------------------------------------------------
   Cutter cutter(mesh, params);
+  if (!a.uncuttable_labels.empty()) {
+    if (!raw->labelled()) return parser.usage_error("--keep-label: " + mesh_path + " has no labels", err);
+    std::vector<TetId> uncuttable;
+    for (std::uint32_t t = 0; t < raw->labels.size(); ++t)
+      if (std::find(a.uncuttable_labels.begin(), a.uncuttable_labels.end(), raw->labels[t]) != a.uncuttable_labels.end())
+        uncuttable.push_back(TetId{t});  // the builder keeps the file's tet order
+    if (const auto bad = cutter.set_uncuttable(uncuttable)) return parser.usage_error(*bad, err);
+  }
   // The file's labels choose the materials (TetId = the file's tet index: the builder keeps the order).
   mechanics::TensorMassModel model(mesh, model_params, raw->labels);
   mechanics::RenderedSurface surface(mesh);

@@ -79,6 +79,30 @@ CLI::Option* count(CLI::App& app, const std::string& name, std::optional<std::ui
                 "expects a non-negative integer");
 }
 
+CLI::Option* labels(CLI::App& app, const std::string& name, std::vector<std::uint32_t>& target, const std::string& help) {
+  return app
+      .add_option_function<std::vector<std::string>>(
+          name,
+          [name, &target](const std::vector<std::string>& texts) {
+            for (const std::string& text : texts) {
+              std::size_t begin = 0;
+              for (;;) {
+                const std::size_t comma = text.find(',', begin);
+                const std::string one = text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
+                const auto label = scenario::parse_uint(one);
+                if (!label || *label > 0xFFFFFFFFull)
+                  throw CLI::ValidationError(name, one_line("expects labels (integers from 0 to 4294967295), not '" + text + "'"));
+                target.push_back(static_cast<std::uint32_t>(*label));
+                if (comma == std::string::npos) break;
+                begin = comma + 1;
+              }
+            }
+          },
+          help)
+      ->type_name("LABEL")
+      ->allow_extra_args(false);
+}
+
 CLI::Option* point(CLI::App& app, const std::string& name, std::optional<Vec3>& target, const std::string& help,
                    const std::string& type) {
   return parsed(app, name, target, help, type, [](const std::string& s) { return scenario::parse_vec3(s); },

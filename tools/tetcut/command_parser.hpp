@@ -68,6 +68,9 @@ CLI::Option* number_into(CLI::App& app, const std::string& name, double& target,
                          const std::string& type = "X");
 CLI::Option* count_into(CLI::App& app, const std::string& name, std::uint32_t& target, std::uint32_t max,
                         const std::string& help, const std::string& type = "N");
+// Labels (RawMesh::labels, as the mesh file gives them): "--keep-label 2 --keep-label 5" or
+// "--keep-label 2,5", appended to `target`.
+CLI::Option* labels(CLI::App& app, const std::string& name, std::vector<std::uint32_t>& target, const std::string& help);
 // Present or not; "--flag=value" and a second "--flag" are refused.
 CLI::Option* flag(CLI::App& app, const std::string& name, bool& target, const std::string& help);
 // The shared vocabulary of values.hpp, each read by its one parser.

@@ -45,6 +45,7 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"resolved_by_refinement", r.resolved_by_refinement},
               {"resolved_by_fallback", r.resolved_by_fallback},
               {"unresolved", r.unresolved},
+              {"uncuttable_in_tool", r.uncuttable_in_tool},
               {"min_radius_ratio", r.min_radius_ratio},
               {"min_radius_ratio_before_improvement", r.min_radius_ratio_before_improvement},
               {"quality_floor", r.quality_floor},

@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,9 @@ struct CutReport {
   // besides the unresolved requests. 0 and 0 unresolved: the tool is empty.
   std::uint32_t left_in_tool = 0;
   std::uint32_t kept_pieces_requested = 0;  // such pieces requested (each once), in `requests` too
+  // Tets the tool selects (3.3) that are uncuttable (Cutter::set_uncuttable()): left in place,
+  // neither requested nor counted as unresolved or left in the tool.
+  std::uint32_t uncuttable_in_tool = 0;
   double min_radius_ratio = 1.0;     // worst tet created (1 when none), after the improvement pass
   double min_radius_ratio_before_improvement = 1.0;
   double quality_floor = 1.0;        // min(F, worst tet replaced): what every created tet must reach
@@ -150,7 +154,20 @@ class Cutter {
 
   // One removal request outside the cut pipeline (tetcut remove, scenarios): tet t with the
   // strategy, atomically, the index kept up to date. Reported like a cut with one request.
+  // Refused (ok false, the mesh untouched) when t is uncuttable.
   CutReport remove(TetId t, ChangeLog* log = nullptr);
+
+  // Tissue every cut and removal request must leave (the paper's Fig. 7 frees the portal vein
+  // from the resected liver): these live tets, and every tet later split from them, are never
+  // removed. Replaces the set; empty: none (the default, and an unprotected cut is the same cut
+  // bit for bit). The removal stages refuse any set holding one (a singularity only such a
+  // removal resolves stays unresolved), and the improvement pass flips only among tets of one
+  // kind and never moves or collapses a vertex of an uncuttable tet, so the uncuttable region is
+  // the same point set after every cut. Returns why, the set unchanged, when a tet is not live
+  // or the mesh was compacted or replaced behind the Cutter's back. O(#T).
+  // reset() clears the set (the ids it named are gone); compact() keeps it under the new ids.
+  std::optional<std::string> set_uncuttable(std::span<const TetId> tets);
+  [[nodiscard]] bool uncuttable(TetId t) const;
 
   // The live tet containing p (lowest id when several share it), or kNoTet: for scenarios that
   // address tets geometrically.

@@ -67,6 +67,7 @@ void Cutter::Pipeline::prepare() {
   refiner_.reserve(tets);
   remover_.reserve(tets, vertices);
   improver_.reserve(tets);
+  uncuttable_.reserve(tets);
   for (auto* marks : {&selected_, &tissue_, &tried_, &queued_}) marks->reserve(tets);
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
   // gated by ci/bench).
@@ -84,6 +85,7 @@ void Cutter::Pipeline::reset() {
   scale_ = measure_scale(mesh_);
   judge_scale();
   remover_.reset();
+  uncuttable_.clear();  // the ids it named are another mesh's
   clear_marks();
   prepare();
 }
@@ -231,6 +233,10 @@ CutReport Cutter::Pipeline::attempt(const Ball& tool, double d_ref, ChangeLog* l
     // region_ is live and distinct, the refinement's children included (Refiner::refine): each
     // is tested once. Nothing is tissue before this, so there is nothing to follow() yet.
     if (!selectable(t)) continue;
+    if (uncuttable_.contains(mesh_, t)) {
+      ++report.uncuttable_in_tool;
+      continue;
+    }
     selected_.insert(t);
     tissue_.insert(t);
     removal_.push_back(t);
@@ -264,6 +270,11 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
   if (!mesh_.is_live(t)) {
     report.ok = false;
     report.failure = "tet " + std::to_string(t.value) + " is not live";
+    return report;
+  }
+  if (uncuttable_.contains(mesh_, t)) {
+    report.ok = false;
+    report.failure = "tet " + std::to_string(t.value) + " is uncuttable";
     return report;
   }
   const Clock::time_point t0 = Clock::now();
@@ -333,6 +344,7 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
     RequestLimits limits;
     limits.max_tets_created = params_.max_tets_created > net_made() ? params_.max_tets_created - net_made() : 0;
     limits.selection = &selected_;
+    limits.uncuttable = &uncuttable_;
     const std::size_t selected_before = removal_.size();
     const TetMesh::Savepoint before_request = mesh_.savepoint();
     const RemovalResult r = remover_.remove(mesh_, t, first, limits);
@@ -401,7 +413,8 @@ void Cutter::Pipeline::remove_selected(CutReport& report) {
 }
 
 bool Cutter::Pipeline::piece_in_tool(TetId t) const {
-  return mesh_.is_live(t) && !tissue_.contains(t) && selectable(t);
+  // A piece of an uncuttable tet is not tissue to take, however it lies.
+  return mesh_.is_live(t) && !tissue_.contains(t) && selectable(t) && !uncuttable_.contains(mesh_, t);
 }
 
 void Cutter::Pipeline::count_left_in_tool(CutReport& report) {
@@ -426,7 +439,7 @@ void Cutter::Pipeline::improve(CutReport& report) {
   const std::optional<Ball> reach =
       tool_ ? std::optional<Ball>(Ball{tool_->centre, tool_->radius + d_ref_}) : std::nullopt;
   const detail::ImproveOutcome outcome =
-      improver_.run(mesh_, cut_start_, params_.quality_floor, params_.improve, reach ? &*reach : nullptr);
+      improver_.run(mesh_, cut_start_, params_.quality_floor, params_.improve, reach ? &*reach : nullptr, &uncuttable_);
   report.tets_removed += outcome.removed;
   report.min_radius_ratio_before_improvement = outcome.worst_before;
   report.min_radius_ratio = outcome.worst_after;  // the worst net new tet: the made tets still live
@@ -440,6 +453,7 @@ void Cutter::Pipeline::improve(CutReport& report) {
 // Commits the transaction, brings the index up to date with the net changes, hands the caller
 // the net change (the journal derives it), and reports the worst new tet.
 void Cutter::Pipeline::finish(CutReport& report, ChangeLog* log) {
+  uncuttable_.before_commit(mesh_, cut_start_);
   if (log) {
     changes_.clear();
     mesh_.commit(&changes_);
@@ -452,6 +466,7 @@ void Cutter::Pipeline::finish(CutReport& report, ChangeLog* log) {
     mesh_.transaction_changes(net_removed_, net_created_);
     mesh_.commit();
   }
+  uncuttable_.after_commit(mesh_);
   for (TetId t : net_removed_) index_.erase(t);
   for (TetId t : net_created_) index_.insert(mesh_, t);
   report.tets_created = static_cast<std::uint32_t>(net_created_.size());

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/tool_ball.hpp"
+#include "core/uncuttable_tets.hpp"
 #include "cut/spatial_index.hpp"
 #include "improve/improver.hpp"
 #include "refine/refine.hpp"
@@ -38,6 +39,7 @@ class Cutter::Pipeline {
   Remover remover_;
   std::vector<TetId> net_removed_, net_created_;
   RemovalReport removal_at_start_;  // remover_.report() when the transaction began
+  detail::UncuttableTets uncuttable_;  // Cutter::set_uncuttable()
 
  private:
   // Removes the selected tets (removal_, growing), directly removable ones first, and fills the

@@ -31,8 +31,24 @@ void Cutter::reset() { pipeline_->reset(); }
 
 Renumbering Cutter::compact() {
   Renumbering map = pipeline_->mesh_.compact();
+  detail::UncuttableTets uncuttable = std::move(pipeline_->uncuttable_);
   pipeline_->reset();
+  uncuttable.renumber(map);
+  pipeline_->uncuttable_ = std::move(uncuttable);
   return map;
+}
+
+std::optional<std::string> Cutter::set_uncuttable(std::span<const TetId> tets) {
+  if (!indexes_current_mesh()) return "the mesh was compacted or replaced since this Cutter indexed it";
+  TetMesh& mesh = pipeline_->mesh_;
+  for (TetId t : tets)
+    if (t.value >= mesh.tet_capacity() || !mesh.is_live(t)) return "tet " + std::to_string(t.value) + " is not live";
+  pipeline_->uncuttable_.assign(mesh, tets);
+  return std::nullopt;
+}
+
+bool Cutter::uncuttable(TetId t) const {
+  return pipeline_->mesh_.is_live(t) && pipeline_->uncuttable_.contains(pipeline_->mesh_, t);
 }
 
 bool Cutter::indexes_current_mesh() const { return pipeline_->indexes_current_mesh(); }

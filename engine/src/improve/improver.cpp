@@ -101,19 +101,32 @@ double Improver::floor_of(TetMesh& mesh, double floor_f) {
   return floor;
 }
 
+bool Improver::may_reshape_star(TetMesh& mesh, VertId v) {
+  if (!uncuttable_ || uncuttable_->empty()) return true;
+  mesh.vertex_shell(v, star_);
+  return !uncuttable_->any_of(mesh, star_);
+}
+
+bool Improver::may_flip(TetMesh& mesh, const FlipPlan& plan) const {
+  if (!uncuttable_ || uncuttable_->empty()) return true;
+  return !uncuttable_->any_of(mesh, plan.removed_tets()) || uncuttable_->all_of(mesh, plan.removed_tets());
+}
+
 bool Improver::improve_tet(TetMesh& mesh, TetId t) {
   // Every operation that would lift the tet, planned; the one whose worst touched tet ends best
   // is applied (ties: a flip, then a collapse, then a move, in the order they are tried).
   enum class Best : std::uint8_t { kNone, kFlip, kCollapse, kMove } best = Best::kNone;
   double best_after = 0.0;
   for (int e = 0; e < 6; ++e)
-    if (flipper_.plan_edge_removal(mesh, t, e, kMargin, candidate_) && candidate_.worst_after > best_after) {
+    if (flipper_.plan_edge_removal(mesh, t, e, kMargin, candidate_) && candidate_.worst_after > best_after &&
+        may_flip(mesh, candidate_)) {
       plan_ = candidate_;
       best_after = candidate_.worst_after;
       best = Best::kFlip;
     }
   for (int f = 0; f < 4; ++f)
-    if (flipper_.plan_face_flip(mesh, t, f, kMargin, candidate_) && candidate_.worst_after > best_after) {
+    if (flipper_.plan_face_flip(mesh, t, f, kMargin, candidate_) && candidate_.worst_after > best_after &&
+        may_flip(mesh, candidate_)) {
       plan_ = candidate_;
       best_after = candidate_.worst_after;
       best = Best::kFlip;
@@ -128,7 +141,7 @@ bool Improver::improve_tet(TetMesh& mesh, TetId t) {
   }
   const TetMesh::TetVerts corners = mesh.tet(t);
   for (VertId v : corners) {
-    if (!mesh.made_in_transaction(v)) continue;
+    if (!mesh.made_in_transaction(v) || !may_reshape_star(mesh, v)) continue;
     // Into any neighbour: v's going removes the tet whichever way it goes.
     mesh.vertex_neighbours(v, neighbours_, star_);
     for (VertId w : neighbours_)
@@ -174,7 +187,8 @@ bool Improver::insert_on_longest_edge(TetMesh& mesh, TetId t) {
   const std::size_t before = created_.size();
   if (!splitter_.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates, &created_).ok()) return false;
   const VertId midpoint = mesh.vertices_made_since(point).front().vertex;
-  if (smoother_.plan(mesh, midpoint, 0.0, tool_, smooth_candidate_)) Smoother::apply(mesh, smooth_candidate_, created_);
+  if (may_reshape_star(mesh, midpoint) && smoother_.plan(mesh, midpoint, 0.0, tool_, smooth_candidate_))
+    Smoother::apply(mesh, smooth_candidate_, created_);
   // The worst of the midpoint's star now (the split's children, moved).
   mesh.vertex_shell(midpoint, star_);
   double worst_after = 1.0;
@@ -217,16 +231,18 @@ void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operation
       if (!intersects(*tool_, mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3]))) continue;
     }
     if (!removability(mesh, t).removable()) continue;
+    if (uncuttable_ && uncuttable_->contains(mesh, t)) continue;
     mesh.remove_tets(std::span<const TetId>(&t, 1));
     ++out.removed;
   }
 }
 
 ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, double floor_f, bool improve,
-                             const Ball* reach) {
+                             const Ball* reach, const UncuttableTets* uncuttable) {
   ImproveOutcome out;
   host_quality_.clear();
   tool_ = reach;
+  uncuttable_ = uncuttable;
   out.worst_before = out.worst_after = collect_made(mesh, start);
   if (made_.empty()) return out;
   // Every made tet at or above F is above min(F, any host): met, without locating the hosts.

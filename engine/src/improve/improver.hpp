@@ -32,6 +32,7 @@
 
 #include "improve/collapse.hpp"
 #include "core/tool_ball.hpp"
+#include "core/uncuttable_tets.hpp"
 #include "improve/flips.hpp"
 #include "improve/smoothing.hpp"
 #include "refine/edge_split.hpp"
@@ -58,8 +59,11 @@ class Improver {
   // improved when `improve`, only measured otherwise.
   // `reach`: the cut's ball grown by D_ref (none for a removal request), where a sliver may go
   // with the tissue and the cut's surface may move within its tolerance.
+  // `uncuttable`: tets the pass must leave as a region (uncuttable_tets.hpp): it flips only among
+  // tets all or none of which are uncuttable, moves and collapses no vertex of one, and removes
+  // none.
   ImproveOutcome run(TetMesh& mesh, const TetMesh::Savepoint& start, double floor_f, bool improve,
-                     const Ball* reach = nullptr);
+                     const Ball* reach = nullptr, const UncuttableTets* uncuttable = nullptr);
 
  private:
   // The made tets still live into made_; their worst radius ratio.
@@ -73,6 +77,10 @@ class Improver {
   bool improve_tet(TetMesh& mesh, TetId t);
   // Insertion at the midpoint of t's longest edge, kept when it lifts the worst tet around it.
   bool insert_on_longest_edge(TetMesh& mesh, TetId t);
+  // Whether the operations may reshape v's star (move v, collapse v): none of its tets is
+  // uncuttable. A flip keeps the polytope it replaces, so it only needs tets of one kind.
+  bool may_reshape_star(TetMesh& mesh, VertId v);
+  bool may_flip(TetMesh& mesh, const FlipPlan& plan) const;
 
   Flipper flipper_;
   Collapser collapser_;
@@ -86,6 +94,7 @@ class Improver {
   Operation last_ = Operation::kFlip;  // what improve_tet() applied
   double goal_ = 0.0;                  // the run's floor, a rounding above
   const Ball* tool_ = nullptr;         // the run's reach, if a cut
+  const UncuttableTets* uncuttable_ = nullptr;  // the run's, if any
   FlipPlan plan_, candidate_;
   std::vector<TetId> made_, ancestors_, created_;
   std::vector<std::pair<double, TetId>> bad_;  // (radius ratio, tet), worst first

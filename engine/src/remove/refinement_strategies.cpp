@@ -221,10 +221,11 @@ std::uint32_t RefinementStrategies::remove_or_repair(RemovalContext& ctx, const 
                                                      const WideSearchLimits* repair) {
   const Removability check = ctx.ws.check(ctx.mesh, set);
   if (check.removable()) {
+    if (!ctx.may_remove(set)) return 0;
     ctx.remove_set(set);
     return static_cast<std::uint32_t>(set.size());
   }
-  if (repair && search_.find(ctx.mesh, ctx.ws, set, check, *repair, repaired_)) {
+  if (repair && search_.find(ctx.mesh, ctx.ws, set, check, *repair, repaired_) && ctx.may_remove(repaired_)) {
     ctx.remove_set(repaired_);
     return static_cast<std::uint32_t>(repaired_.size());
   }

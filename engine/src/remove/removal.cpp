@@ -157,6 +157,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
   const TetMesh::Savepoint start = mesh.savepoint();
   w.exposed.clear();
   detail::RemovalContext ctx{mesh, w.set_test, w.splitter, w.exposed, start, limits.max_tets_created, limits.selection};
+  ctx.uncuttable = limits.uncuttable;
 
   RemovalResult result;
   result.first = first;
@@ -170,7 +171,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
     return n;
   };
 
-  if (first.removable()) {
+  const TetId requested[1] = {t};
+  if (first.removable() && ctx.may_remove(requested)) {
     const TetId one[1] = {t};
     if (options_.verify_direct) result.set_test_disagrees = !w.set_test.check(mesh, one).removable();
     result.selected_removed = count_selected(one);
@@ -191,7 +193,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
       searched_path = w.neighbours.path();
       result.edge_search = w.neighbours.edge_configuration();
     }
-    if (found) {
+    if (found && ctx.may_remove(w.set)) {
       result.selected_removed = count_selected(w.set);
       ctx.remove_set(w.set);
       result.outcome = RemovalOutcome::kNeighbours;

@@ -38,6 +38,7 @@
 #include <memory>
 #include <span>
 
+#include "core/uncuttable_tets.hpp"
 #include "remove/removability.hpp"
 #include "remove/selection.hpp"
 #include "tetcut/cut_strategies.hpp"  // RemovalStrategy
@@ -92,6 +93,9 @@ struct RemovalResult {
 struct RequestLimits {
   std::uint32_t max_tets_created = 0xFFFFFFFFu;  // by any split of the request (the cut's budget left)
   const Selection* selection = nullptr;
+  // Tets no set may take (Cutter::set_uncuttable()): a set holding one is refused like a set
+  // that fails the test, and the request goes on to the next stage.
+  const detail::UncuttableTets* uncuttable = nullptr;
 };
 
 // Removes requested tets with one strategy and keeps the statistics. Holds all scratch memory:

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "core/uncuttable_tets.hpp"
 #include "refine/edge_split.hpp"
 #include "remove/selection.hpp"
 #include "remove/set_removal.hpp"
@@ -25,13 +26,20 @@ struct RemovalContext {
   std::uint32_t budget;             // tets the request may create
   const Selection* selection = nullptr;  // the caller's selected tets, if any
   bool over_budget = false;         // a split was refused for the budget
+  const UncuttableTets* uncuttable = nullptr;  // tets no set may take, if any
+
+  // Whether `set` may go: it holds no uncuttable tet. Asked with the removability test, before
+  // every removal (plan, then apply).
+  [[nodiscard]] bool may_remove(std::span<const TetId> set) const {
+    return !uncuttable || !uncuttable->any_of(mesh, set);
+  }
 
   // Splits `edges` (templates). False, the mesh untouched, if the splitter refuses (degenerate
   // child, over budget). Its children and midpoints are what the mesh made since a savepoint
   // taken before the call (TetMesh::tets_made_since). `point`: where the new vertices go (the
   // fallback, whose proof holds for any point inside each edge, lets the splitter move them).
   bool split(std::span<const Edge> edges, SplitPoint point = SplitPoint::kMidpoint);
-  // Removes a set that set_removable() accepted, recording the tets it exposes.
+  // Removes a set that set_removable() and may_remove() accepted, recording the tets it exposes.
   void remove_set(std::span<const TetId> set);
 
   // After a split made `children`: `set` plus every child of a selected parent not in it yet,

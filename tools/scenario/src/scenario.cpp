@@ -110,6 +110,15 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
       op.a = *a;
       op.b = *b;
       op.step = *step;
+    } else if (w == "uncuttable") {
+      if (t.size() < 2) return fail("expected: uncuttable LABEL... (or: uncuttable none)");
+      op.kind = OpKind::kUncuttable;
+      if (!(t.size() == 2 && t[1] == "none"))
+        for (std::size_t i = 1; i < t.size(); ++i) {
+          const auto label = parse_uint(t[i]);
+          if (!label || *label > 0xFFFFFFFFull) return fail("a label is an integer between 0 and 4294967295, not '" + t[i] + "'");
+          op.labels.push_back(static_cast<std::uint32_t>(*label));
+        }
     } else if (w == "compact") {
       if (t.size() != 1) return fail("expected: compact");
       op.kind = OpKind::kCompact;
@@ -198,6 +207,22 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     if (uniform_label) result.labels.assign(mesh.tet_capacity(), *uniform_label);
   };
   CutParams params = options.initial_params.value_or(CutParams{});
+  // The labels whose tets the cutter must leave, and the tets that have one now (by the labels
+  // the change logs carry): set on the cutter whenever it is made anew or the labels change.
+  std::vector<std::uint32_t> uncuttable_labels = options.uncuttable_labels;
+  std::vector<TetId> uncuttable_tets;
+  auto protect = [&]() -> std::optional<std::string> {
+    uncuttable_tets.clear();
+    auto kept = [&](std::uint32_t label) {
+      return std::find(uncuttable_labels.begin(), uncuttable_labels.end(), label) != uncuttable_labels.end();
+    };
+    if (!uncuttable_labels.empty()) {
+      if (!labelled && !uniform_label) return std::string("uncuttable labels need a mesh whose tets carry labels");
+      for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
+        if (mesh.is_live(TetId{t}) && kept(labelled ? labels.label(TetId{t}) : *uniform_label)) uncuttable_tets.push_back(TetId{t});
+    }
+    return cutter->set_uncuttable(uncuttable_tets);
+  };
   auto stop = [&](const Op& op, int code, const std::string& why) {
     result.ok = false;
     result.exit_code = code;
@@ -271,6 +296,18 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
           labels = mechanics::TetLabels(mesh, read.mesh->labels);  // the builder keeps the file's tet order: TetId = index
           log.reserve(4096);
         }
+        if (auto bad = protect()) {
+          stop(op, 2, path + ": " + *bad);
+          return result;
+        }
+        break;
+      }
+      case OpKind::kUncuttable: {
+        uncuttable_labels = op.labels;
+        if (auto bad = protect()) {
+          stop(op, 2, *bad);
+          return result;
+        }
         break;
       }
       case OpKind::kParam:
@@ -326,6 +363,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         if (const Renumbering renumbering = mesh.compact(); labelled) labels.renumber(renumbering);
         cutter.emplace(mesh, params);
         local.emplace(mesh.raw_view());
+        (void)protect();  // the same labelled tets as before: it cannot refuse now
         break;
       case OpKind::kCheck: {
         invariants::CheckOptions o;

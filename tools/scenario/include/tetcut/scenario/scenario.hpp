@@ -11,6 +11,9 @@
 //                                 (CutParams::order, cut_strategies.hpp)
 //   improve on|off                the improvement pass that ends each cut (CutParams::improve)
 //   quality_floor F               the radius ratio it lifts created tets to (CutParams, I7's F)
+//   uncuttable LABEL...           tets with these labels (the mesh file's) are tissue no cut or
+//                                 removal takes (Cutter::set_uncuttable(): the paper's Fig. 7);
+//                                 `uncuttable none` lifts it. Needs a labelled mesh.
 //   cut X,Y,Z                     one cut with the tool centred there
 //   sweep X,Y,Z X,Y,Z STEP        one cut every STEP along the segment (both ends included)
 //   remove X,Y,Z                  remove the tet containing the point with the strategy
@@ -41,7 +44,7 @@ namespace tetcut::scenario {
 
 enum class OpKind : std::uint8_t {
   kMesh, kParam, kCut, kSweep, kRemove, kCompact, kCheck, kExpectHash, kExpectTets, kExpectUnresolved,
-  kExpectComponents, kExpectMinQuality
+  kExpectComponents, kExpectMinQuality, kUncuttable
 };
 
 struct Op {
@@ -53,6 +56,7 @@ struct Op {
   double step = 0.0;
   std::uint64_t count = 0;
   double bound = 0.0;      // expect min_quality
+  std::vector<std::uint32_t> labels;  // uncuttable
 };
 
 struct Scenario {
@@ -104,6 +108,9 @@ struct RunResult {
 struct RunOptions {
   CheckMode check = CheckMode::kEvery;
   std::optional<CutParams> initial_params;  // before the scenario's own settings
+  // Labels whose tets no cut or removal takes, before the scenario's own `uncuttable` lines
+  // (`--keep-label`): the mesh must carry labels.
+  std::vector<std::uint32_t> uncuttable_labels;
   // When non-zero, the run stops (exit 1) after a cut or removal that leaves more live tets:
   // a guard for comparisons that run a strategy known to refine without bound.
   std::uint64_t max_tets = 0;
