@@ -24,8 +24,7 @@ void UncuttableTets::clear() {
   active_ = false;
 }
 
-bool UncuttableTets::contains(TetMesh& mesh, TetId t) const {
-  if (!active_) return false;
+bool UncuttableTets::marked(TetMesh& mesh, TetId t) const {
   if (!mesh.in_transaction() || !mesh.made_in_transaction(t)) return t.value < marked_.size() && marked_[t.value] != 0;
   // Made in the transaction: from its ancestors at the start (one, for a split's child).
   ancestors_.clear();
@@ -33,8 +32,8 @@ bool UncuttableTets::contains(TetMesh& mesh, TetId t) const {
   return std::any_of(ancestors_.begin(), ancestors_.end(), [&](TetId a) { return marked_[a.value] != 0; });
 }
 
-bool UncuttableTets::any_of(TetMesh& mesh, std::span<const TetId> tets) const {
-  return active_ && std::any_of(tets.begin(), tets.end(), [&](TetId t) { return contains(mesh, t); });
+bool UncuttableTets::any_marked(TetMesh& mesh, std::span<const TetId> tets) const {
+  return std::any_of(tets.begin(), tets.end(), [&](TetId t) { return marked(mesh, t); });
 }
 
 bool UncuttableTets::all_of(TetMesh& mesh, std::span<const TetId> tets) const {

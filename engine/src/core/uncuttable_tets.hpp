@@ -31,10 +31,11 @@ class UncuttableTets {
   void clear();
   [[nodiscard]] bool empty() const { return !active_; }
 
-  // Whether t is uncuttable; t live, or made in the open transaction.
-  [[nodiscard]] bool contains(TetMesh& mesh, TetId t) const;
+  // Whether t is uncuttable; t live, or made in the open transaction. Inline up to the empty
+  // set's answer: a cut asks it of every tet it selects and every piece it makes.
+  [[nodiscard]] bool contains(TetMesh& mesh, TetId t) const { return active_ && marked(mesh, t); }
   // Whether any of `tets` is; whether all of them are.
-  [[nodiscard]] bool any_of(TetMesh& mesh, std::span<const TetId> tets) const;
+  [[nodiscard]] bool any_of(TetMesh& mesh, std::span<const TetId> tets) const { return active_ && any_marked(mesh, tets); }
   [[nodiscard]] bool all_of(TetMesh& mesh, std::span<const TetId> tets) const;
 
   // Around a commit: before it, what each tet the transaction made since `start` and still has
@@ -46,6 +47,9 @@ class UncuttableTets {
   void renumber(const Renumbering& map);
 
  private:
+  [[nodiscard]] bool marked(TetMesh& mesh, TetId t) const;
+  [[nodiscard]] bool any_marked(TetMesh& mesh, std::span<const TetId> tets) const;
+
   bool active_ = false;
   std::vector<std::uint8_t> marked_;  // by tet id, for tets live outside a transaction
   std::vector<std::pair<TetId, bool>> made_;  // before_commit(): each made tet, uncuttable or not
