@@ -14,11 +14,16 @@ std::array<std::uint32_t, 3> sorted_key(std::uint32_t a, std::uint32_t b, std::u
   std::sort(k.begin(), k.end());
   return k;
 }
-std::size_t key_hash(const std::array<std::uint32_t, 3>& k) {
-  std::uint64_t h = (std::uint64_t{k[0]} * 0x9E3779B97F4A7C15ULL) ^ (std::uint64_t{k[1]} * 0xC2B2AE3D27D4EB4FULL) ^
-                    (std::uint64_t{k[2]} * 0x165667B19E3779F9ULL);
-  h ^= h >> 29;
-  return static_cast<std::size_t>(h);
+// The index slot a triangle's probe starts at: a window of 2^kWindowShift slots per vertex id,
+// the triangle's smallest vertex's (the other two pick the slot in it), so the triangles around
+// the vertices a cut touches share cache lines and pages however large the mesh around them, as
+// tensor_mass.cpp homes its edges (why: there). 16 slots per vertex: with 8, the lookups of the
+// interior faces a cut removes (most of them, and they end only at an empty slot) ran long
+// around the low ids Gmsh gives boundary vertices. reserve() sizes the index to every window.
+constexpr unsigned kWindowShift = 4;
+std::size_t triangle_home(const std::array<std::uint32_t, 3>& k) {
+  const std::uint64_t x = (std::uint64_t{k[1]} * 0x9E3779B97F4A7C15ULL) ^ (std::uint64_t{k[2]} * 0xC2B2AE3D27D4EB4FULL);
+  return (std::size_t{k[0]} << kWindowShift) + static_cast<std::size_t>(x >> (64 - kWindowShift));
 }
 
 }  // namespace
@@ -47,7 +52,8 @@ void RenderedSurface::reserve(std::uint32_t tets, std::uint32_t vertices) {
   candidates_.reserve(4096);
   created_faces_.reserve(4096);
   shell_.reserve(256);
-  if (index_.size() < 2 * triangles) grow_index(std::bit_ceil(2 * triangles));
+  const std::size_t slots = std::bit_ceil(std::max(2 * triangles, std::size_t{vertices} << kWindowShift));
+  if (index_.size() < slots) grow_index(slots);
 }
 
 void RenderedSurface::grow(std::uint32_t tets, std::uint32_t vertices) {
@@ -65,7 +71,7 @@ void RenderedSurface::grow_index(std::size_t capacity) {
   for (std::uint32_t s = 0; s < triangles_.size(); ++s) {
     const Triangle& t = triangles_[s];
     if (!t.v[0].valid()) continue;
-    std::size_t h = key_hash(sorted_key(t.v[0].value, t.v[1].value, t.v[2].value)) & mask;
+    std::size_t h = triangle_home(sorted_key(t.v[0].value, t.v[1].value, t.v[2].value)) & mask;
     while (index_[h] != kEmpty) h = (h + 1) & mask;
     index_[h] = s;
   }
@@ -73,7 +79,7 @@ void RenderedSurface::grow_index(std::size_t capacity) {
 
 std::uint32_t RenderedSurface::find(const Key& key) const {
   const std::size_t mask = index_.size() - 1;
-  for (std::size_t h = key_hash(key) & mask; index_[h] != kEmpty; h = (h + 1) & mask) {
+  for (std::size_t h = triangle_home(key) & mask; index_[h] != kEmpty; h = (h + 1) & mask) {
     const Triangle& t = triangles_[index_[h]];
     if (sorted_key(t.v[0].value, t.v[1].value, t.v[2].value) == key) return index_[h];
   }
@@ -111,7 +117,7 @@ void RenderedSurface::insert(const TetMesh& mesh, TetId tet, int face) {
   }
   triangles_[slot] = t;
   const std::size_t mask = index_.size() - 1;
-  std::size_t h = key_hash(sorted_key(t.v[0].value, t.v[1].value, t.v[2].value)) & mask;
+  std::size_t h = triangle_home(sorted_key(t.v[0].value, t.v[1].value, t.v[2].value)) & mask;
   while (index_[h] != kEmpty) h = (h + 1) & mask;
   index_[h] = slot;
   ++live_triangles_;
@@ -124,7 +130,7 @@ void RenderedSurface::erase(std::uint32_t slot) {
   const std::size_t mask = index_.size() - 1;
   auto home_of = [&](std::uint32_t s) {
     const Triangle& x = triangles_[s];
-    return key_hash(sorted_key(x.v[0].value, x.v[1].value, x.v[2].value)) & mask;
+    return triangle_home(sorted_key(x.v[0].value, x.v[1].value, x.v[2].value)) & mask;
   };
   std::size_t hole = home_of(slot);
   while (index_[hole] != slot) hole = (hole + 1) & mask;

@@ -70,7 +70,7 @@ class RenderedSurface {
   std::vector<std::uint32_t> vertex_triangles_;
   std::vector<Triangle> triangles_;
   std::vector<std::uint32_t> free_triangles_;
-  std::vector<std::uint32_t> index_;  // open addressing by sorted key -> slot
+  std::vector<std::uint32_t> index_;  // open addressing by sorted key -> slot, homed by its smallest vertex
   std::uint32_t live_triangles_ = 0;
   std::vector<Key> candidates_, created_faces_;
   std::vector<TetId> shell_;

@@ -183,7 +183,8 @@ class TensorMassModel {
   std::vector<std::uint8_t> fixed_;
   std::vector<Vec3> u_, v_;
   mutable std::vector<Vec3> force_;
-  // edges: slots with a free list, and an open-addressing index (linear probing) by vertex pair
+  // edges: slots with a free list, and an open-addressing index (linear probing) by vertex pair,
+  // homed by the lower vertex (tensor_mass.cpp edge_home) so that a cut reads few cache lines
   std::vector<Edge> edges_;
   std::vector<std::uint32_t> free_edges_;
   std::vector<std::uint32_t> edge_index_;
