@@ -139,8 +139,9 @@ TEST_P(Uncuttable, EveryCutLeavesTheVesselWholeAndTakesTheTissueAroundIt) {
     ASSERT_NEAR(uncuttable_volume(cutter), box.vessel_volume, 1e-12 * box.vessel_volume) << "cut at " << centre.x << "," << centre.z;
     // Point location is the dear check (about 10 s of the ASan run when done after every cut):
     // after every third cut and the last.
-    if (i % 3 == 2 || i + 1 == centres.size())
+    if (i % 3 == 2 || i + 1 == centres.size()) {
       ASSERT_EQ(samples_lost(cutter, box.samples), 0u) << "cut at " << centre.x << "," << centre.z;
+    }
     // And they are the tets the change logs' labels call vessel.
     for (std::uint32_t t = 0; t < box.mesh.tet_capacity(); ++t) {
       if (!box.mesh.is_live(TetId{t})) continue;

@@ -74,7 +74,9 @@ const char* to_string(SplitRefusal refusal) {
 
 void EdgeSplitter::reserve(std::uint32_t tets) {
   using detail::reserve_touched;
-  reserve_touched(affected_slot_, tets);
+  // Sized, not just reserved: a split reads it by tet id, and growing it there from empty would
+  // zero all of it (O(#T), 4 MB at a million tets) inside the first cut.
+  if (affected_slot_.size() < tets) affected_slot_.resize(tets, 0);
   reserve_touched(edges_, kPlannedChildren / 4);
   reserve_touched(affected_, kPlannedChildren / 2);
   reserve_touched(shell_, 256);
