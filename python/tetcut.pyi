@@ -18,13 +18,14 @@ class _SlotViewLock:
 class Mesh:
     """A manifold tetrahedral mesh, validated when made.
 
-    Mesh(points, tets): points #V by 3 (any real array-like), tets #T by 4 (integer vertex
-    indices, 0-based, positively oriented), both copied. ValueError with the message `tetcut`
-    prints for what it refuses (NaN, dangling or repeated indices, inverted tets, non-manifold
-    input); ValueError / TypeError for a wrong shape or dtype.
+    Mesh(points, tets, labels=None): points #V by 3 (any real array-like), tets #T by 4 (integer
+    vertex indices, 0-based, positively oriented), labels #T integers in 0..2^31-1 or None, all
+    copied. ValueError with the message `tetcut` prints for what it refuses (NaN, dangling or
+    repeated indices, inverted tets, non-manifold input); ValueError / TypeError for a wrong
+    shape or dtype.
     """
 
-    def __init__(self, points: npt.ArrayLike, tets: npt.ArrayLike) -> None: ...
+    def __init__(self, points: npt.ArrayLike, tets: npt.ArrayLike, labels: npt.ArrayLike | None = None) -> None: ...
     @property
     def num_tets(self) -> int: ...
     @property
@@ -41,6 +42,9 @@ class Mesh:
     @property
     def tet_ids(self) -> npt.NDArray[np.int64]:
         """#T: the engine id of each row of `tets`."""
+    @property
+    def labels(self) -> npt.NDArray[np.int64] | None:
+        """#T: each tet's label, rows as `tets` (a copy), carried through cuts; None if unlabelled."""
     @property
     def slot_tets(self) -> npt.NDArray[np.uint32]:
         """Slots by 4, read-only, no copy; locks the mesh against change while alive."""
