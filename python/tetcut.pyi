@@ -67,13 +67,13 @@ class Mesh:
     def write(self, path: str, *, binary: bool = False, compression: str = "none") -> None: ...
     def compact(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
     def to_meshio(self) -> Any:
-        """A meshio.Mesh: points, one 'tetra' block, attributes as point_data."""
+        """A meshio.Mesh: points, one 'tetra' block, attributes as point_data, labels as cell_data 'label'."""
 
 def read(path: str) -> Mesh:
     """Reads and builds a mesh file; ValueError with the line `tetcut` prints."""
 
 def from_meshio(mesh: Any) -> Mesh:
-    """A Mesh from a meshio.Mesh's points, 'tetra' cells and real point_data."""
+    """A Mesh from a meshio.Mesh's points, 'tetra' cells, real point_data and integer cell_data labels."""
 
 class Changes:
     """A cut's net change as numpy arrays of engine ids."""

@@ -505,7 +505,8 @@ a view never dangles. Delete it before cutting again.)doc");
       "Cutters on the mesh re-index before their next cut.");
 
   mesh.def("to_meshio", &to_meshio,
-           "A meshio.Mesh: points, one 'tetra' cell block, each attribute channel as point_data.");
+           "A meshio.Mesh: points, one 'tetra' cell block, each attribute channel as point_data, the labels (if "
+           "any) as cell_data 'label'.");
   mesh.def("__repr__", [](const MeshPtr& held) {
         MeshHandle& h = *held;
     return "<tetcut.Mesh " + std::to_string(h.mesh.num_vertices()) + " vertices, " + std::to_string(h.mesh.num_tets()) +
@@ -521,12 +522,34 @@ reason"); the reader's notes come as UserWarning.)doc");
       "from_meshio",
       [](py::handle meshio_mesh) {
         py::list blocks;
+        std::vector<std::size_t> tetra_blocks;
+        std::size_t index = 0;
         for (py::handle block : meshio_mesh.attr("cells")) {
-          if (block.attr("type").cast<std::string>() == "tetra") blocks.append(block.attr("data"));
+          if (block.attr("type").cast<std::string>() == "tetra") {
+            blocks.append(block.attr("data"));
+            tetra_blocks.push_back(index);
+          }
+          ++index;
         }
         if (blocks.empty()) throw py::value_error("tetcut: the meshio mesh has no 'tetra' cells");
-        py::object tets = py::module_::import("numpy").attr("concatenate")(blocks);
-        MeshPtr h = from_arrays(meshio_mesh.attr("points"), tets, py::none());
+        py::module_ numpy = py::module_::import("numpy");
+        py::object tets = numpy.attr("concatenate")(blocks);
+        // The labels: the first integer cell_data under a name the file readers take (io.hpp),
+        // meshio's for each format, its tetra blocks' values concatenated as the tets are.
+        py::object labels = py::none();
+        const py::dict cell_data = meshio_mesh.attr("cell_data");
+        for (const char* name : {"label", "gmsh:physical", "medit:ref", "CellEntityIds", "tetgen:ref"}) {
+          if (!cell_data.contains(name)) continue;
+          const py::list per_block = py::list(cell_data[name]);
+          py::list parts;
+          for (std::size_t b : tetra_blocks) parts.append(as_array(per_block[b]).attr("reshape")(-1));
+          py::array values = as_array(numpy.attr("concatenate")(parts));
+          const char kind = values.dtype().kind();
+          if (kind != 'i' && kind != 'u') continue;
+          labels = values;
+          break;
+        }
+        MeshPtr h = from_arrays(meshio_mesh.attr("points"), tets, labels);
         // Point data on the points the mesh kept (a point no tet uses is dropped, as in `points`).
         const py::ssize_t n = py::len(meshio_mesh.attr("points"));
         py::object mesh = py::cast(h);
@@ -543,8 +566,9 @@ reason"); the reader's notes come as UserWarning.)doc");
         return h;
       },
       py::arg("mesh"),
-      "A Mesh from a meshio.Mesh: its points, its 'tetra' cells, its real point_data as attributes. Validated as "
-      "Mesh(points, tets) is.");
+      "A Mesh from a meshio.Mesh: its points, its 'tetra' cells, its real point_data as attributes, its labels "
+      "from the first integer cell_data named label, gmsh:physical, medit:ref, CellEntityIds or tetgen:ref. "
+      "Validated as Mesh(points, tets, labels) is.");
 }
 
 namespace {
@@ -560,7 +584,14 @@ py::object to_meshio(const MeshPtr& h) {
   }
   py::list cells;
   cells.append(py::make_tuple("tetra", mesh.attr("tets")));
-  return meshio.attr("Mesh")(mesh.attr("points"), cells, py::arg("point_data") = point_data);
+  py::dict cell_data;
+  if (h->labels.labelled()) {
+    py::list per_block;
+    per_block.append(mesh.attr("labels"));
+    cell_data["label"] = per_block;
+  }
+  return meshio.attr("Mesh")(mesh.attr("points"), cells, py::arg("point_data") = point_data,
+                             py::arg("cell_data") = cell_data);
 }
 
 }  // namespace

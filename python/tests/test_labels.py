@@ -1,6 +1,7 @@
-"""Per-tet labels from Python: Mesh(..., labels=) and tetcut.read of a labelled file give
-mesh.labels, carried through cuts, sweeps and compaction as `tetcut cut` carries them and
-written back by mesh.write; None for an unlabelled mesh; bad labels raise."""
+"""Per-tet labels from Python: Mesh(..., labels=), tetcut.read of a labelled file and
+from_meshio's cell_data give mesh.labels, carried through cuts, sweeps and compaction as
+`tetcut cut` carries them and written back by mesh.write and to_meshio; None for an unlabelled
+mesh; bad labels raise."""
 import re
 import subprocess
 
@@ -86,6 +87,27 @@ def test_a_file_with_one_label_keeps_it_everywhere():
     assert mesh.labels is not None and set(mesh.labels.tolist()) == {1}
     assert tetcut.Cutter(mesh, tool_diameter=0.1).cut((0.0, 0.0, 4.0)).tets_created > 0
     np.testing.assert_array_equal(mesh.labels, np.ones(mesh.num_tets, dtype=np.int64))
+
+
+def test_meshio_carries_the_labels_both_ways(regions):
+    meshio = pytest.importorskip("meshio")
+    tetcut.Cutter(regions, tool_diameter=0.4).cut((2.0, 2.0, 4.0))
+    m = regions.to_meshio()
+    np.testing.assert_array_equal(m.cell_data["label"][0], regions.labels)
+    np.testing.assert_array_equal(tetcut.from_meshio(m).labels, regions.labels)
+    # Under each format's name, over several tetra blocks (a triangle block between them), as
+    # meshio reads a Gmsh file: the labels in the order of the tets.
+    tets, labels = regions.tets, regions.labels
+    half = len(tets) // 2
+    triangle = np.array([[0, 1, 2]])
+    for name in ["gmsh:physical", "medit:ref", "CellEntityIds", "tetgen:ref"]:
+        split = meshio.Mesh(regions.points, [("tetra", tets[:half]), ("triangle", triangle), ("tetra", tets[half:])],
+                            cell_data={name: [labels[:half], np.array([99]), labels[half:]]})
+        np.testing.assert_array_equal(tetcut.from_meshio(split).labels, labels)
+    # Real-valued cell data is something else: no labels.
+    assert tetcut.from_meshio(meshio.Mesh(regions.points, [("tetra", tets)],
+                                          cell_data={"label": [labels + 0.5]})).labels is None
+    assert tetcut.from_meshio(meshio.Mesh(regions.points, [("tetra", tets)])).labels is None
 
 
 @pytest.mark.parametrize("labels, error, words", [
