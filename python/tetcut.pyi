@@ -18,13 +18,14 @@ class _SlotViewLock:
 class Mesh:
     """A manifold tetrahedral mesh, validated when made.
 
-    Mesh(points, tets): points #V by 3 (any real array-like), tets #T by 4 (integer vertex
-    indices, 0-based, positively oriented), both copied. ValueError with the message `tetcut`
-    prints for what it refuses (NaN, dangling or repeated indices, inverted tets, non-manifold
-    input); ValueError / TypeError for a wrong shape or dtype.
+    Mesh(points, tets, labels=None): points #V by 3 (any real array-like), tets #T by 4 (integer
+    vertex indices, 0-based, positively oriented), labels #T integers in 0..2^31-1 or None, all
+    copied. ValueError with the message `tetcut` prints for what it refuses (NaN, dangling or
+    repeated indices, inverted tets, non-manifold input); ValueError / TypeError for a wrong
+    shape or dtype.
     """
 
-    def __init__(self, points: npt.ArrayLike, tets: npt.ArrayLike) -> None: ...
+    def __init__(self, points: npt.ArrayLike, tets: npt.ArrayLike, labels: npt.ArrayLike | None = None) -> None: ...
     @property
     def num_tets(self) -> int: ...
     @property
@@ -41,6 +42,9 @@ class Mesh:
     @property
     def tet_ids(self) -> npt.NDArray[np.int64]:
         """#T: the engine id of each row of `tets`."""
+    @property
+    def labels(self) -> npt.NDArray[np.int64] | None:
+        """#T: each tet's label, rows as `tets` (a copy), carried through cuts; None if unlabelled."""
     @property
     def slot_tets(self) -> npt.NDArray[np.uint32]:
         """Slots by 4, read-only, no copy; locks the mesh against change while alive."""
@@ -63,13 +67,13 @@ class Mesh:
     def write(self, path: str, *, binary: bool = False, compression: str = "none") -> None: ...
     def compact(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
     def to_meshio(self) -> Any:
-        """A meshio.Mesh: points, one 'tetra' block, attributes as point_data."""
+        """A meshio.Mesh: points, one 'tetra' block, attributes as point_data, labels as cell_data 'label'."""
 
 def read(path: str) -> Mesh:
     """Reads and builds a mesh file; ValueError with the line `tetcut` prints."""
 
 def from_meshio(mesh: Any) -> Mesh:
-    """A Mesh from a meshio.Mesh's points, 'tetra' cells and real point_data."""
+    """A Mesh from a meshio.Mesh's points, 'tetra' cells, real point_data and integer cell_data labels."""
 
 class Changes:
     """A cut's net change as numpy arrays of engine ids."""

@@ -36,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!again.mesh)
     tetcut::fuzz::fail("round-trip", 1, "read_tetgen round trip",
                        "rereading our own output failed: " + (again.error ? again.error->message() : std::string()));
-  if (again.mesh->positions != mesh->positions || again.mesh->tets != mesh->tets)
+  if (again.mesh->positions != mesh->positions || again.mesh->tets != mesh->tets || again.mesh->labels != mesh->labels)
     tetcut::fuzz::fail("round-trip", 1, "read_tetgen round trip", "the mesh read back differs");
   return 0;
 }

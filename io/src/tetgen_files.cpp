@@ -3,7 +3,14 @@
 //          "id x y z [attributes...] [marker]" (ids start at 0 or 1, as the file chooses)
 //   .ele:  "numTets nodesPerTet(4|10) numAttributes", then "id n1 .. nk [attributes...]"
 // The .ele refers to the ids of the .node file, mapped like Gmsh ids.
+// Labels (RawMesh::labels): TetGen's -A switch gives each tet a region attribute, "an integer in
+// the last column" of the .ele (TetGen's .ele format page, wias-berlin.de/software/tetgen). So the
+// last attribute column is the label and any others are skipped with a notice. tetgenio keeps
+// attributes as REALs (tetgen.h), so "3.0" reads as 3, while 2.5 or -1 is refused. An .ele
+// without attributes reads unlabelled. A labelled mesh is written with one attribute, its label;
+// an unlabelled one as before, with none.
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <string_view>
 
@@ -85,6 +92,22 @@ bool read_node_file(std::string_view text, ErrorSink& sink, NodeIdMap& ids, RawM
   return expect_no_more_records(lines, sink, tokens, count, "points");
 }
 
+// A region attribute as a label: an integer, or a real with an integer value (TetGen's
+// attributes are REALs), in [0, kMaxTetLabel].
+bool parse_region_attribute(ErrorSink& sink, std::uint64_t line, std::string_view token, std::uint32_t& label) {
+  constexpr std::string_view kWhat = "region attribute";
+  std::int64_t integer = 0;
+  if (parse_i64(token, integer)) return check_label(sink, line, integer, kWhat, label);
+  double real = 0;
+  if (!parse_double(token, real) || !std::isfinite(real) || real != std::trunc(real) || real < 0 ||
+      real > double{kMaxTetLabel}) {
+    return sink.fail(line, std::string(kWhat) + " " + quote(token) + " is not a label (an integer in 0.." +
+                               std::to_string(kMaxTetLabel) + ")");
+  }
+  label = static_cast<std::uint32_t>(real);
+  return true;
+}
+
 bool read_ele_file(std::string_view text, ErrorSink& sink, const NodeIdMap& ids, RawMesh& mesh,
                    std::vector<std::string>& notices) {
   LineReader lines(text);
@@ -102,6 +125,7 @@ bool read_ele_file(std::string_view text, ErrorSink& sink, const NodeIdMap& ids,
   if (tokens.size() > 2 && !small_count(sink, at, tokens[2], 1000, "number of attributes", attributes)) return false;
   const std::size_t expected = 1 + per_tet + attributes;
   mesh.tets.reserve(count);
+  if (attributes > 0) mesh.labels.reserve(count);
   for (std::uint64_t i = 0; i < count; ++i) {
     if (!next_record(lines, sink, tokens, i, count, "tetrahedra")) return false;
     const std::uint64_t line = lines.line_number();
@@ -121,11 +145,20 @@ bool read_ele_file(std::string_view text, ErrorSink& sink, const NodeIdMap& ids,
       if (index == NodeIdMap::kNone) return sink.fail(line, "node id " + std::to_string(node) + " not defined");
       if (k < 4) tet[k] = index;
     }
+    if (attributes > 0) {
+      std::uint32_t label = 0;
+      if (!parse_region_attribute(sink, line, tokens[expected - 1], label)) return false;
+      mesh.labels.push_back(label);
+    }
     mesh.tets.push_back(tet);
   }
   if (!expect_no_more_records(lines, sink, tokens, count, "tetrahedra")) return false;
   if (per_tet == 10 && count > 0) {
     notices.push_back("read " + std::to_string(count) + " 10-node tetrahedra as their 4 corner nodes");
+  }
+  if (attributes > 1 && count > 0) {
+    notices.push_back("read the last of the " + std::to_string(attributes) +
+                      " attributes of each tetrahedron as its label (TetGen's region attribute); ignored the others");
   }
   return true;
 }
@@ -168,8 +201,9 @@ std::string format_tetgen_node(const RawMesh& mesh) {
 }
 
 std::string format_tetgen_ele(const RawMesh& mesh) {
-  return format_tetgen_file(mesh.tets, " 4 0\n", 48,
-                            [](std::string& out, const auto& rows) { append_numbered_tets(out, rows); });
+  // A labelled mesh gets one attribute, the region: what TetGen -A writes and -rA reads back.
+  return format_tetgen_file(mesh.tets, mesh.labelled() ? " 4 1\n" : " 4 0\n", 56,
+                            [&mesh](std::string& out, const auto& rows) { append_numbered_tets(out, rows, {}, mesh.labels); });
 }
 
 }  // namespace tetcut

@@ -352,13 +352,17 @@ void append_numbered_points(std::string& out, const std::vector<Vec3>& positions
 }
 
 void append_numbered_tets(std::string& out, const std::vector<std::array<std::uint32_t, 4>>& tets,
-                          std::string_view fields) {
+                          std::string_view fields, std::span<const std::uint32_t> last_column) {
   for (std::size_t t = 0; t < tets.size(); ++t) {
     append_uint(out, t + 1);
     out += fields;
     for (std::uint32_t v : tets[t]) {
       out += ' ';
       append_uint(out, std::uint64_t{v} + 1);
+    }
+    if (!last_column.empty()) {
+      out += ' ';
+      append_uint(out, last_column[t]);
     }
     out += '\n';
   }

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "tetcut/vec3.hpp"
@@ -207,8 +208,9 @@ void append_point_lines(std::string& out, const std::vector<Vec3>& positions, st
 // One "n x y z" line a position, numbered from 1 (Gmsh 2.2 $Nodes, TetGen .node).
 void append_numbered_points(std::string& out, const std::vector<Vec3>& positions);
 // One "n<fields> a b c d" line a tet, numbered from 1, with 1-based vertex ids (Gmsh elements,
-// TetGen .ele); `fields`: what the format puts between number and ids (Gmsh 2.2: type, tags).
+// TetGen .ele); `fields`: what the format puts between number and ids (Gmsh 2.2: type, tags);
+// `last_column`, unless empty, one value a tet after its ids (TetGen's region attribute).
 void append_numbered_tets(std::string& out, const std::vector<std::array<std::uint32_t, 4>>& tets,
-                          std::string_view fields = {});
+                          std::string_view fields = {}, std::span<const std::uint32_t> last_column = {});
 
 }  // namespace tetcut::io_detail

@@ -138,6 +138,7 @@ class PyCutter {
       const auto start = std::chrono::steady_clock::now();
       r.report = cutter_->cut(centre, &r.log);
       r.wall_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+      if (r.report.ok) handle_->labels.apply(handle_->mesh, r.log);
     }
     if (r.report.ok) seen_version_ = ++handle_->version;
     return r;
@@ -162,6 +163,7 @@ class PyCutter {
         const auto start = std::chrono::steady_clock::now();
         r.report = cutter_->cut(r.centre, &r.log);
         r.wall_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+        if (r.report.ok) handle_->labels.apply(handle_->mesh, r.log);
         if (!r.report.ok) {
           reports.resize(k + 1);
           break;

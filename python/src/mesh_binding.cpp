@@ -16,6 +16,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -29,6 +30,7 @@
 #include "tetcut/detail/local_tables.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
+#include "tetcut/raw_mesh.hpp"
 
 namespace py = pybind11;
 
@@ -136,11 +138,49 @@ MeshPtr build(const RawMesh& raw, const std::string& where) {
   return handle;
 }
 
-MeshPtr from_arrays(py::handle points, py::handle tets) {
+// `labels`: None, or #T integers in [0, kMaxTetLabel] (RawMesh::labels), one per row of tets.
+std::vector<std::uint32_t> labels_from(py::handle obj, std::size_t tets) {
+  if (obj.is_none()) return {};
+  const py::array a = as_array(obj);
+  const char kind = a.dtype().kind();
+  if (kind != 'i' && kind != 'u') {
+    throw py::type_error("tetcut: labels: expected integers, got dtype " + py::str(a.dtype()).cast<std::string>());
+  }
+  if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != tets) {
+    throw py::value_error("tetcut: labels: expected an array of shape (" + std::to_string(tets) + ",), one per tet, got shape " +
+                          shape_text(a));
+  }
+  const auto d = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+  std::vector<std::uint32_t> out(tets);
+  for (std::size_t t = 0; t < tets; ++t) {
+    const std::int64_t l = d.data()[t];
+    if (l < 0 || l > std::int64_t{kMaxTetLabel}) {
+      throw py::value_error("tetcut: labels: " + std::to_string(l) + " in row " + std::to_string(t) +
+                            " is not a label (an integer in 0.." + std::to_string(kMaxTetLabel) + ")");
+    }
+    out[t] = static_cast<std::uint32_t>(l);
+  }
+  return out;
+}
+
+MeshPtr from_arrays(py::handle points, py::handle tets, py::handle labels) {
   RawMesh raw;
   raw.positions = points_from(points);
   raw.tets = tets_from(tets);
-  return build(raw, "");
+  raw.labels = labels_from(labels, raw.tets.size());
+  MeshPtr h = build(raw, "");
+  h->labels.set(h->mesh, raw.labels);  // the builder keeps the tet order: TetId = row
+  return h;
+}
+
+// The live tets' labels in id order (rows of `tets`, of to_raw()).
+std::vector<std::uint32_t> live_labels(const MeshHandle& h) {
+  std::vector<std::uint32_t> out;
+  out.reserve(h.mesh.num_tets());
+  const auto tets = h.mesh.raw_tets();
+  for (std::uint32_t t = 0; t < tets.size(); ++t)
+    if (tets[t][0] != kDeadTetMarker) out.push_back(h.labels.label(TetId{t}));
+  return out;
 }
 
 // The CLI's reader, its notes turned into Python warnings and its failure into ValueError.
@@ -157,7 +197,9 @@ MeshPtr read(const std::string& path) {
     }
   }
   if (!raw) throw py::value_error(failure.empty() ? "tetcut: " + path + ": unreadable mesh" : failure);
-  return build(*raw, path + ": ");
+  MeshPtr h = build(*raw, path + ": ");
+  h->labels.set(h->mesh, raw->labels);  // the builder keeps the file's tet order
+  return h;
 }
 
 py::array_t<std::int64_t> ids_array(const std::vector<std::int64_t>& ids) {
@@ -197,12 +239,13 @@ void bind_mesh(py::module_& m) {
   py::class_<MeshHandle, MeshPtr> mesh(m, "Mesh", R"doc(
 A manifold tetrahedral mesh (the engine's TetMesh), validated when made.
 
-Mesh(points, tets): points #V by 3 (any real array-like), tets #T by 4 (integer vertex indices,
-0-based, positively oriented). Both are copied. Raises ValueError with the message `tetcut`
+Mesh(points, tets, labels=None): points #V by 3 (any real array-like), tets #T by 4 (integer
+vertex indices, 0-based, positively oriented), labels #T integers in 0..2^31-1 (a region, a
+material per tet) or None. All are copied. Raises ValueError with the message `tetcut`
 prints for what it refuses (NaN, dangling or repeated indices, inverted tets, a non-manifold
 input), ValueError / TypeError for a wrong shape or dtype.
 )doc");
-  mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"));
+  mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"), py::arg("labels") = py::none());
 
   mesh.def_property_readonly("num_tets", [](const MeshPtr& held) {
         MeshHandle& h = *held; return h.mesh.num_tets(); },
@@ -271,6 +314,21 @@ input), ValueError / TypeError for a wrong shape or dtype.
         return ids_array(ids);
       },
       "#T int64: the engine id of each row of `tets`.");
+
+  mesh.def_property_readonly(
+      "labels",
+      [](const MeshPtr& held) -> py::object {
+        MeshHandle& h = *held;
+        MeshUse use(h);
+        if (!h.labels.labelled()) return py::none();
+        const std::vector<std::uint32_t> labels = live_labels(h);
+        py::array_t<std::int64_t> a(static_cast<py::ssize_t>(labels.size()));
+        std::copy(labels.begin(), labels.end(), a.mutable_data());
+        return py::object(std::move(a));
+      },
+      "#T int64, rows as `tets` (a copy): each tet's label (region, material) as the file or Mesh() gave "
+      "them, carried through every cut (a tet a cut makes takes its parent's) and compaction; None when "
+      "the mesh has none.");
 
   mesh.def_property_readonly(
       "slot_tets",
@@ -413,7 +471,8 @@ a view never dangles. Delete it before cutting again.)doc");
         if (compression == "zlib") options.compression = Compression::kZlib;
         else if (compression == "lzma") options.compression = Compression::kLzma;
         else if (compression != "none") throw py::value_error("tetcut: compression: none, zlib or lzma");
-        const RawMesh raw = h.mesh.to_raw();
+        RawMesh raw = h.mesh.to_raw();
+        if (h.labels.labelled()) raw.labels = live_labels(h);
         WriteResult written;
         {
           py::gil_scoped_release release;
@@ -423,7 +482,8 @@ a view never dangles. Delete it before cutting again.)doc");
       },
       py::arg("path"), py::kw_only(), py::arg("binary") = false, py::arg("compression") = "none",
       "Writes the live mesh (rows as `points` and `tets`), format by extension (.msh 2.2, .vtu, .vtk, "
-      ".mesh, .node/.ele), through a temporary file and a rename. Attributes are not written.");
+      ".mesh, .node/.ele), through a temporary file and a rename, with the labels when it has them. "
+      "Attributes are not written.");
 
   mesh.def(
       "compact",
@@ -432,6 +492,7 @@ a view never dangles. Delete it before cutting again.)doc");
         MeshUse use(h);
         require_no_slot_views(h);
         const Renumbering r = h.mesh.compact();
+        h.labels.renumber(r);
         ++h.version;
         std::vector<std::int64_t> tets(r.tet_old_to_new.size()), verts(r.vert_old_to_new.size());
         for (std::size_t i = 0; i < tets.size(); ++i)
@@ -444,7 +505,8 @@ a view never dangles. Delete it before cutting again.)doc");
       "Cutters on the mesh re-index before their next cut.");
 
   mesh.def("to_meshio", &to_meshio,
-           "A meshio.Mesh: points, one 'tetra' cell block, each attribute channel as point_data.");
+           "A meshio.Mesh: points, one 'tetra' cell block, each attribute channel as point_data, the labels (if "
+           "any) as cell_data 'label'.");
   mesh.def("__repr__", [](const MeshPtr& held) {
         MeshHandle& h = *held;
     return "<tetcut.Mesh " + std::to_string(h.mesh.num_vertices()) + " vertices, " + std::to_string(h.mesh.num_tets()) +
@@ -460,12 +522,34 @@ reason"); the reader's notes come as UserWarning.)doc");
       "from_meshio",
       [](py::handle meshio_mesh) {
         py::list blocks;
+        std::vector<std::size_t> tetra_blocks;
+        std::size_t index = 0;
         for (py::handle block : meshio_mesh.attr("cells")) {
-          if (block.attr("type").cast<std::string>() == "tetra") blocks.append(block.attr("data"));
+          if (block.attr("type").cast<std::string>() == "tetra") {
+            blocks.append(block.attr("data"));
+            tetra_blocks.push_back(index);
+          }
+          ++index;
         }
         if (blocks.empty()) throw py::value_error("tetcut: the meshio mesh has no 'tetra' cells");
-        py::object tets = py::module_::import("numpy").attr("concatenate")(blocks);
-        MeshPtr h = from_arrays(meshio_mesh.attr("points"), tets);
+        py::module_ numpy = py::module_::import("numpy");
+        py::object tets = numpy.attr("concatenate")(blocks);
+        // The labels: the first integer cell_data under a name the file readers take (io.hpp),
+        // meshio's for each format, its tetra blocks' values concatenated as the tets are.
+        py::object labels = py::none();
+        const py::dict cell_data = meshio_mesh.attr("cell_data");
+        for (const char* name : {"label", "gmsh:physical", "medit:ref", "CellEntityIds", "tetgen:ref"}) {
+          if (!cell_data.contains(name)) continue;
+          const py::list per_block = py::list(cell_data[name]);
+          py::list parts;
+          for (std::size_t b : tetra_blocks) parts.append(as_array(per_block[b]).attr("reshape")(-1));
+          py::array values = as_array(numpy.attr("concatenate")(parts));
+          const char kind = values.dtype().kind();
+          if (kind != 'i' && kind != 'u') continue;
+          labels = values;
+          break;
+        }
+        MeshPtr h = from_arrays(meshio_mesh.attr("points"), tets, labels);
         // Point data on the points the mesh kept (a point no tet uses is dropped, as in `points`).
         const py::ssize_t n = py::len(meshio_mesh.attr("points"));
         py::object mesh = py::cast(h);
@@ -482,8 +566,9 @@ reason"); the reader's notes come as UserWarning.)doc");
         return h;
       },
       py::arg("mesh"),
-      "A Mesh from a meshio.Mesh: its points, its 'tetra' cells, its real point_data as attributes. Validated as "
-      "Mesh(points, tets) is.");
+      "A Mesh from a meshio.Mesh: its points, its 'tetra' cells, its real point_data as attributes, its labels "
+      "from the first integer cell_data named label, gmsh:physical, medit:ref, CellEntityIds or tetgen:ref. "
+      "Validated as Mesh(points, tets, labels) is.");
 }
 
 namespace {
@@ -499,7 +584,14 @@ py::object to_meshio(const MeshPtr& h) {
   }
   py::list cells;
   cells.append(py::make_tuple("tetra", mesh.attr("tets")));
-  return meshio.attr("Mesh")(mesh.attr("points"), cells, py::arg("point_data") = point_data);
+  py::dict cell_data;
+  if (h->labels.labelled()) {
+    py::list per_block;
+    per_block.append(mesh.attr("labels"));
+    cell_data["label"] = per_block;
+  }
+  return meshio.attr("Mesh")(mesh.attr("points"), cells, py::arg("point_data") = point_data,
+                             py::arg("cell_data") = cell_data);
 }
 
 }  // namespace

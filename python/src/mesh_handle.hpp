@@ -8,7 +8,9 @@
 //     indexed or cut it, and re-indexes (Cutter::reset) when another one has cut since;
 //   - slot views (mesh.slot_tets, mesh.slot_points) point into the engine's own arrays, which a
 //     cut may grow (reallocate) or rewrite: while one is alive the mesh refuses to change, so a
-//     view can never dangle.
+//     view can never dangle;
+//   - per-tet labels (mesh.labels), when the mesh came with them, follow every cut's ChangeLog
+//     and every compaction, as `tetcut cut` carries them (MeshLabels below).
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -16,13 +18,53 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <span>
 
+#include "tetcut/change_log.hpp"
+#include "tetcut/mechanics/tet_labels.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::python {
 
+// A mesh's labels (RawMesh::labels, by TetId): none, one for every tet (a Gmsh file's single
+// volume, as every bundled mesh: each tet a cut makes has it too, so cuts pay nothing, as in the
+// scenario runner), or several, tracked by mechanics::TetLabels through each cut's ChangeLog.
+class MeshLabels {
+ public:
+  // `labels` by TetId of `mesh` (the builder keeps a file's tet order); empty: unlabelled.
+  void set(const TetMesh& mesh, std::span<const std::uint32_t> labels) {
+    one_.reset();
+    tracked_ = false;
+    if (labels.empty()) return;
+    bool one = true;
+    for (std::uint32_t l : labels) one = one && l == labels[0];
+    if (one) {
+      one_ = labels[0];
+      return;
+    }
+    tracker_ = mechanics::TetLabels(mesh, labels);
+    tracked_ = true;
+  }
+  [[nodiscard]] bool labelled() const { return tracked_ || one_.has_value(); }
+  // After a cut that succeeded, with its log.
+  void apply(const TetMesh& mesh, const ChangeLog& log) {
+    if (tracked_) tracker_.apply(mesh, log);
+  }
+  void renumber(const Renumbering& renumbering) {
+    if (tracked_) tracker_.renumber(renumbering);
+  }
+  [[nodiscard]] std::uint32_t label(TetId t) const { return one_ ? *one_ : tracker_.label(t); }
+
+ private:
+  std::optional<std::uint32_t> one_;
+  bool tracked_ = false;
+  mechanics::TetLabels tracker_;
+};
+
 struct MeshHandle {
   TetMesh mesh;
+  MeshLabels labels;
   std::atomic<bool> in_use{false};
   std::uint64_t version = 0;  // mutations so far (cuts, compactions)
   std::uint32_t slot_views = 0;  // alive slot views; changed with the GIL held

@@ -246,5 +246,92 @@ TEST_F(Cli, RunNamesTheLineOfAFailedExpectation) {
   EXPECT_NE(p.err.find("b.scn:2:"), std::string::npos) << p.err;
 }
 
+// ---- labels through cut --frames and refine ------------------------------------------------
+
+// A 4x4x4 unit box labelled 3 left of x = 0.5 and 7 right of it: no cube straddles the plane and
+// a child lies inside its parent, so every tet a cut or a refinement leaves must carry the label
+// of the side its centroid is on.
+std::uint32_t side_label(const RawMesh& m, std::size_t t) {
+  double x = 0;
+  for (std::uint32_t v : m.tets[t]) x += m.positions[v].x;
+  return x / 4 < 0.5 ? 3 : 7;
+}
+
+RawMesh two_region_box() {
+  RawMesh m = make_box_mesh(4, 4, 4);
+  for (std::size_t t = 0; t < m.tets.size(); ++t) m.labels.push_back(side_label(m, t));
+  return m;
+}
+
+::testing::AssertionResult labels_follow_the_sides(const std::string& file) {
+  const ReadResult r = read_mesh(file);
+  if (!r.mesh) return ::testing::AssertionFailure() << file << ": " << r.error->message();
+  const RawMesh& m = *r.mesh;
+  if (m.labels.size() != m.tets.size())
+    return ::testing::AssertionFailure() << file << ": " << m.labels.size() << " labels for " << m.tets.size() << " tets";
+  std::size_t wrong = 0, left = 0;
+  for (std::size_t t = 0; t < m.tets.size(); ++t) {
+    wrong += m.labels[t] != side_label(m, t);
+    left += m.labels[t] == 3;
+  }
+  if (wrong != 0) return ::testing::AssertionFailure() << file << ": " << wrong << " tets with the other side's label";
+  if (left == 0 || left == m.tets.size()) return ::testing::AssertionFailure() << file << ": one side only";
+  return ::testing::AssertionSuccess();
+}
+
+TEST_F(Cli, CutFramesCarryTheLabelsAfterEveryCut) {
+  ASSERT_TRUE(write_mesh(path("box.mesh"), two_region_box()).ok);
+  fs::create_directories(path("frames"));
+  // Five cuts across the plane x = 0.5: children on both sides.
+  const ProcessResult r = tetcut({"cut", path("box.mesh"), "--diameter", "0.3", "--from", "0.1,0.5,0.5", "--to",
+                                  "0.9,0.5,0.5", "--step", "0.2", "--frames", path("frames"), "--out", path("out.vtu")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (int k = 0; k < 5; ++k) {
+    const std::string frame = path("frames/frame_0000" + std::to_string(k) + ".vtu");
+    EXPECT_TRUE(labels_follow_the_sides(frame));
+  }
+  EXPECT_FALSE(fs::exists(path("frames/frame_00005.vtu")));
+  // The last frame is the final mesh, labels included.
+  const ReadResult last = read_mesh(path("frames/frame_00004.vtu"));
+  const ReadResult out = read_mesh(path("out.vtu"));
+  ASSERT_TRUE(last.mesh && out.mesh);
+  EXPECT_EQ(last.mesh->tets, out.mesh->tets);
+  EXPECT_EQ(last.mesh->labels, out.mesh->labels);
+  EXPECT_LT(out.mesh->tets.size(), two_region_box().tets.size());
+
+  // An unlabelled mesh's frames have no labels.
+  ASSERT_TRUE(write_mesh(path("plain.vtu"), make_box_mesh(4, 4, 4)).ok);
+  const ProcessResult p = tetcut({"cut", path("plain.vtu"), "--diameter", "0.3", "--from", "0.5,0.5,0.5", "--to",
+                                  "0.5,0.5,0.5", "--step", "1", "--frames", path("frames")});
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  const ReadResult plain = read_mesh(path("frames/frame_00000.vtu"));
+  ASSERT_TRUE(plain.mesh.has_value());
+  EXPECT_FALSE(plain.mesh->labelled());
+}
+
+TEST_F(Cli, RefineCarriesTheLabelsAndRefinesTheSameMesh) {
+  ASSERT_TRUE(write_mesh(path("box.mesh"), two_region_box()).ok);
+  ASSERT_TRUE(write_mesh(path("plain.vtu"), make_box_mesh(4, 4, 4)).ok);
+  const std::vector<std::vector<std::string>> modes = {
+      {"--uniform"}, {"--random-edges", "40", "--seed", "5"}, {"--ball", "0.5,0.5,0.5,0.1", "--dref", "0.2"}};
+  for (const std::vector<std::string>& mode : modes) {
+    SCOPED_TRACE(mode.front());
+    std::vector<std::string> labelled = {"refine", path("box.mesh"), "-o", path("fine.vtu")};
+    std::vector<std::string> plain = {"refine", path("plain.vtu"), "-o", path("plain_fine.vtu")};
+    labelled.insert(labelled.end(), mode.begin(), mode.end());
+    plain.insert(plain.end(), mode.begin(), mode.end());
+    const ProcessResult r = tetcut(labelled);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(labels_follow_the_sides(path("fine.vtu")));
+    // Tracking the labels (a transaction) refines the same mesh as without them.
+    const ProcessResult p = tetcut(plain);
+    ASSERT_EQ(p.exit_code, 0) << p.err;
+    const std::size_t at = r.out.find("hash ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    EXPECT_EQ(r.out.substr(at), p.out.substr(p.out.find("hash "))) << r.out << p.out;
+    EXPECT_GT(read_mesh(path("fine.vtu")).mesh->tets.size(), two_region_box().tets.size());
+  }
+}
+
 }  // namespace
 }  // namespace tetcut::test

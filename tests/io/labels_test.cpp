@@ -1,6 +1,7 @@
 // Per-tet labels (RawMesh::labels): every writer that carries them writes what every reader reads
 // back, tet by tet; a file without labels reads unlabelled; bad label data is refused with the
 // file, the line and the reason.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -218,6 +219,77 @@ TEST(Labels, BadMsh41EntitiesAreRefusedWithFileLineAndReason) {
   ASSERT_EQ(unknown[block + 4], 1);
   unknown[block + 4] = 9;
   expect_refused(read_msh(unknown, "b.msh"), "b.msh", 11, "names volume entity 9");
+}
+
+// TetGen: the .ele's attribute column (-A's region attribute, "an integer in the last column").
+TEST(Labels, TetgenRegionAttributeRoundTripsTheLabelsTetByTet) {
+  const RawMesh m = labelled_two_tets();
+  const std::string ele = format_tetgen_ele(m);
+  EXPECT_EQ(ele, "2 4 1\n1 1 2 3 4 7\n2 2 3 4 5 1000\n# written by tetcut\n");
+  const ReadResult r = read_tetgen(format_tetgen_node(m), "m.node", ele, "m.ele");
+  ASSERT_TRUE(r.mesh.has_value()) << r.error->message();
+  EXPECT_EQ(r.mesh->tets, m.tets);
+  EXPECT_EQ(r.mesh->labels, m.labels);
+  EXPECT_TRUE(r.notices.empty());
+  // And as files: write_mesh writes the pair, read_mesh reads it by either name.
+  test::ScratchDir dir;
+  ASSERT_TRUE(write_mesh((dir.path() / "a.ele").string(), m).ok);
+  const ReadResult f = read_mesh((dir.path() / "a.node").string());
+  ASSERT_TRUE(f.mesh.has_value()) << f.error->message();
+  EXPECT_EQ(f.mesh->labels, m.labels);
+}
+
+TEST(Labels, TetgenUnlabelledFilesReadAndWriteWithoutAttributes) {
+  const RawMesh m = test::two_tets();
+  EXPECT_EQ(format_tetgen_ele(m), "2 4 0\n1 1 2 3 4\n2 2 3 4 5\n# written by tetcut\n");
+  const ReadResult r = read_tetgen(format_tetgen_node(m), "m.node", format_tetgen_ele(m), "m.ele");
+  ASSERT_TRUE(r.mesh.has_value()) << r.error->message();
+  EXPECT_FALSE(r.mesh->labelled());
+  // The header's attribute count may be left out, as TetGen's own reader allows.
+  const ReadResult short_header = read_tetgen(format_tetgen_node(m), "m.node", "2 4\n1 1 2 3 4\n2 2 3 4 5\n", "m.ele");
+  ASSERT_TRUE(short_header.mesh.has_value()) << short_header.error->message();
+  EXPECT_FALSE(short_header.mesh->labelled());
+}
+
+TEST(Labels, TetgenFilesAsTetgenWritesThemGiveTheirRegionAttributes) {
+  // The layout of TetGen's .ele example (0-based here, comments, aligned columns), with -A's
+  // region attribute last; attributes are REALs in tetgenio, so "-2e1" or "3.0" may be written.
+  const std::string node = "# a .node file\n5  3  0  0\n   0  0 0 0\n   1  1 0 0\n   2  0 1 0\n   3  0 0 1\n   4  1 1 1\n";
+  const std::string ele =
+      "# tetrahedra, nodes per tet, region attribute\n"
+      "  2  4  1\n"
+      "    0       0     1     2     3    11\n"
+      "    1       1     2     3     4    3.0  # a comment after a record\n";
+  const ReadResult r = read_tetgen(node, "p.node", ele, "p.ele");
+  ASSERT_TRUE(r.mesh.has_value()) << r.error->message();
+  EXPECT_EQ(r.mesh->labels, (std::vector<std::uint32_t>{11, 3}));
+  // Several attributes (user attributes carried by -r, then -A's): the last is the label, with a
+  // notice; 10-node tets keep their corners and their attribute.
+  const std::string ele10 =
+      "2 10 2\n0 0 1 2 3 0 0 0 0 0 0 0.25 20\n1 1 2 3 4 1 1 1 1 1 1 -2e1 5e0\n";
+  const ReadResult q = read_tetgen(node, "p.node", ele10, "p.ele");
+  ASSERT_TRUE(q.mesh.has_value()) << q.error->message();
+  EXPECT_EQ(q.mesh->labels, (std::vector<std::uint32_t>{20, 5}));
+  EXPECT_EQ(q.mesh->tets, (std::vector<std::array<std::uint32_t, 4>>{{0, 1, 2, 3}, {1, 2, 3, 4}}));
+  ASSERT_EQ(q.notices.size(), 2u);
+  EXPECT_NE(q.notices[1].find("the last of the 2 attributes"), std::string::npos) << q.notices[1];
+}
+
+TEST(Labels, TetgenBadRegionAttributesAreRefusedWithFileLineAndReason) {
+  const std::string node = format_tetgen_node(test::two_tets());
+  const auto ele = [](const std::string& second) { return "2 4 1\n1 1 2 3 4 1\n2 2 3 4 5 " + second + "\n"; };
+  expect_refused(read_tetgen(node, "m.node", ele("2.5"), "m.ele"), "m.ele", 3, "region attribute '2.5' is not a label");
+  expect_refused(read_tetgen(node, "m.node", ele("-1"), "m.ele"), "m.ele", 3, "region attribute -1 is not a label");
+  expect_refused(read_tetgen(node, "m.node", ele("-1.0"), "m.ele"), "m.ele", 3, "region attribute '-1.0' is not a label");
+  expect_refused(read_tetgen(node, "m.node", ele("3000000000"), "m.ele"), "m.ele", 3,
+                 "region attribute 3000000000 is not a label");
+  expect_refused(read_tetgen(node, "m.node", ele("3e9"), "m.ele"), "m.ele", 3, "region attribute '3e9' is not a label");
+  expect_refused(read_tetgen(node, "m.node", ele("nan"), "m.ele"), "m.ele", 3, "region attribute 'nan' is not a label");
+  expect_refused(read_tetgen(node, "m.node", ele("inf"), "m.ele"), "m.ele", 3, "region attribute 'inf' is not a label");
+  expect_refused(read_tetgen(node, "m.node", ele("x"), "m.ele"), "m.ele", 3, "region attribute 'x' is not a label");
+  // A record without its attribute is one value short.
+  expect_refused(read_tetgen(node, "m.node", "2 4 1\n1 1 2 3 4 1\n2 2 3 4 5\n", "m.ele"), "m.ele", 3,
+                 "with 1 attributes");
 }
 
 TEST(Labels, WritersRefuseLabelsThatDoNotFitTheFormats) {

@@ -8,7 +8,8 @@ that numbered labels itself or took another tag would differ):
 
 - one way: meshio writes the mesh with its labels under the name each format's convention
   gives them (Gmsh: "gmsh:physical"; medit: "medit:ref"; VTK: "label", and in a second file
-  "CellEntityIds") in every labelled format meshio writes (Gmsh 4.1: a cell block and a volume
+  "CellEntityIds"; TetGen: "tetgen:ref", the .ele's one attribute column) in every labelled
+  format meshio writes (Gmsh 4.1: a cell block and a volume
   entity per label, the physical tag in $Entities, each node on a volume of one of its tets:
   meshio writes an entity only for the nodes' "gmsh:dim_tags"; the tets then come grouped by
   label); `tetcut convert` turns it into a
@@ -17,7 +18,8 @@ that numbered labels itself or took another tag would differ):
   labels meshio reads: every tet the operations left untouched (the same four vertex positions)
   keeps its label, every label is one of the file's, and the cut changed something;
 - the other way: `tetcut convert` writes each format that carries labels from that medit file,
-  meshio reads it, and the cell data ("gmsh:physical", "medit:ref", "label") must be the labels
+  meshio reads it, and the cell data ("gmsh:physical", "medit:ref", "label", "tetgen:ref") must be
+  the labels
   (a legacy SCALARS array comes back as #T by 1, Gmsh 4.1 as a block per run of one label:
   compared flattened and concatenated).
 
@@ -49,6 +51,7 @@ ONE_WAY = [
     ("ASCII .vtu", "vtu", {"binary": False}, "label"),
     ("binary .vtu, zlib", "vtu", {}, "label"),
     ("binary .vtu, CellEntityIds", "vtu", {}, "CellEntityIds"),
+    ("TetGen .node/.ele", "ele", {}, "tetgen:ref"),
 ]
 # (file tetcut writes, extra `tetcut convert` arguments, the cell_data name meshio reads it as)
 OTHER_WAY = [
@@ -57,6 +60,7 @@ OTHER_WAY = [
     ("o.mesh", [], "medit:ref"),
     ("o.vtk", [], "label"), ("ob.vtk", ["--binary"], "label"),
     ("o.vtu", [], "label"), ("ob.vtu", ["--binary"], "label"), ("oz.vtu", ["--compress", "zlib"], "label"),
+    ("o.ele", [], "tetgen:ref"),
 ]
 
 

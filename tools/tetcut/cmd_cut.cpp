@@ -7,6 +7,7 @@
 // mesh, hash and report.
 #include <cstdio>
 #include <ostream>
+#include <span>
 
 #include "command.hpp"
 #include "command_parser.hpp"
@@ -99,10 +100,12 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   options.check = a.check.value_or(scenario::CheckMode::kEvery);
   options.uncuttable_labels = a.uncuttable_labels;
   if (a.frames) {
-    options.after_cut = [dir = *a.frames](const TetMesh& mesh, std::size_t k) -> std::optional<std::string> {
+    options.after_cut = [dir = *a.frames](const TetMesh& mesh, std::size_t k,
+                                          std::span<const std::uint32_t> labels) -> std::optional<std::string> {
       char name[32];
       std::snprintf(name, sizeof name, "/frame_%05zu.vtu", k);
-      const WriteResult w = write_mesh(dir + name, mesh);
+      // With the file's labels as they are after this cut, as the final mesh gets them.
+      const WriteResult w = labels.empty() ? write_mesh(dir + name, mesh) : write_mesh(dir + name, mesh, labels);
       return w.ok ? std::nullopt : std::optional<std::string>(w.error);
     };
   }

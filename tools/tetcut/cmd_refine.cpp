@@ -1,8 +1,17 @@
 // `tetcut refine MESH (--uniform | --random-edges N --seed S | --ball X,Y,Z,R [--dref D] [--p P])
 //  [--strategy templates|bisection] -o OUT [--report R.json]`: local refinement (paper 3.2) as a
 // person runs it, with the full check of the result.
+//
+// A labelled mesh (RawMesh::labels) keeps its labels: the refinement runs inside one mesh
+// transaction, whose commit derives the ChangeLog (mesh.hpp: the one record of what changed),
+// and mechanics::TetLabels gives each child its parent's label from it, as after a cut. A mesh
+// with one label everywhere (a Gmsh file's single volume, as every bundled mesh) or none is
+// refined outside a transaction, as before: a transaction reuses no freed tet id, so a tracked
+// mesh's tets come out numbered otherwise, the same mesh all the same (canonical hash).
+#include <algorithm>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,9 +24,11 @@
 #include "mesh_input.hpp"
 #include "refine/refine.hpp"
 #include "tetcut/canonical_hash.hpp"
+#include "tetcut/change_log.hpp"
 #include "tetcut/detail/local_tables.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/io.hpp"
+#include "tetcut/mechanics/tet_labels.hpp"
 #include "tetcut/mesh_builder.hpp"
 
 namespace tetcut::cli {
@@ -111,6 +122,16 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
   const double volume = mesh.total_volume();
   const std::uint32_t tets_before = mesh.num_tets();
 
+  const std::vector<std::uint32_t>& file_labels = raw->labels;
+  const bool one_label = raw->labelled() && std::all_of(file_labels.begin(), file_labels.end(),
+                                                        [&](std::uint32_t l) { return l == file_labels[0]; });
+  const bool tracked = raw->labelled() && !one_label;
+  mechanics::TetLabels labels;
+  if (tracked) {
+    labels = mechanics::TetLabels(mesh, file_labels);  // the builder keeps the file's tet order
+    mesh.begin_transaction();
+  }
+
   RefineReport report;
   if (ball) {
     RefineParams params;
@@ -143,6 +164,11 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
     err << "tetcut refine: split refused: " << to_string(report.refusal) << "; nothing written\n";
     return 1;
   }
+  if (tracked) {
+    ChangeLog log;
+    mesh.commit(&log);
+    labels.apply(mesh, log);
+  }
 
   invariants::CheckOptions check;
   check.expected_volume = volume;
@@ -164,7 +190,10 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
                         {"converged", report.converged},
                         {"valid", verdict.ok()},
                         {"hash", hash}};
-  const bool saved = save_mesh_and_report(*a.output, mesh, a.report, Json{{"summary", summary}}, err);
+  std::vector<std::uint32_t> spelt_out;
+  if (one_label) spelt_out.assign(mesh.tet_capacity(), file_labels[0]);
+  const std::span<const std::uint32_t> by_tet = tracked ? labels.by_tet() : std::span<const std::uint32_t>(spelt_out);
+  const bool saved = save_mesh_and_report(*a.output, mesh, a.report, Json{{"summary", summary}}, err, by_tet);
   if (!saved) return 2;
   return verdict.ok() ? 0 : 1;
 }

@@ -28,11 +28,13 @@
 //
 // Per-tet labels (RawMesh::labels: regions, materials) are read from Gmsh's physical tag (1.0,
 // 2.2: each element's; 4.1: the first of its volume entity's, in $Entities; ASCII and binary),
-// medit's tetrahedron reference and VTK cell data (legacy and XML: the first array named "label",
+// medit's tetrahedron reference, VTK cell data (legacy and XML: the first array named "label",
 // "gmsh:physical", "medit:ref" or "CellEntityIds", in this order of preference, one integer
-// component), and written back by the 2.2, 4.1, medit, .vtk and .vtu writers (VTK: as cell data
-// "label", Int32). TetGen files are read unlabelled and written without labels. A label that is not an integer in
-// [0, kMaxTetLabel], or a label array of the wrong length, is an error naming file and line.
+// component) and TetGen's region attribute (-A: the .ele's last attribute column, an integer or
+// an integer-valued real), and written back by the 2.2, 4.1, medit, .vtk, .vtu and TetGen writers
+// (VTK: as cell data "label", Int32; TetGen: as the .ele's one attribute, none when unlabelled).
+// A label that is not an integer in [0, kMaxTetLabel], or a label array of the wrong length, is
+// an error naming file and line.
 #pragma once
 
 #include <array>

@@ -202,9 +202,18 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     log.clear();
     return &log;
   };
+  // The labels by TetId now (empty: unlabelled). A single label is spelt out only when asked for
+  // (a result, a frame), which is O(tets) as writing the mesh is.
+  std::vector<std::uint32_t> spelt_out;
+  auto current_labels = [&]() -> std::span<const std::uint32_t> {
+    if (labelled) return labels.by_tet();
+    if (!uniform_label) return {};
+    spelt_out.assign(mesh.tet_capacity(), *uniform_label);
+    return spelt_out;
+  };
   auto keep_labels = [&]() {
-    if (labelled) result.labels.assign(labels.by_tet().begin(), labels.by_tet().end());
-    if (uniform_label) result.labels.assign(mesh.tet_capacity(), *uniform_label);
+    const std::span<const std::uint32_t> now = current_labels();
+    result.labels.assign(now.begin(), now.end());
   };
   CutParams params = options.initial_params.value_or(CutParams{});
   // The labels whose tets the cutter must leave, and the tets that have one now (by the labels
@@ -335,7 +344,7 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
           }
           if (!after(op)) return result;
           if (options.after_cut) {
-            if (auto bad = options.after_cut(mesh, result.cuts.size() - 1)) {
+            if (auto bad = options.after_cut(mesh, result.cuts.size() - 1, current_labels())) {
               stop(op, 2, *bad);
               return result;
             }

@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -115,8 +116,11 @@ struct RunOptions {
   // a guard for comparisons that run a strategy known to refine without bound.
   std::uint64_t max_tets = 0;
   // Called after every cut that succeeded and passed its check, with the cut's index in the run
-  // (`tetcut cut --frames` writes a snapshot). A message stops the run with exit 2.
-  std::function<std::optional<std::string>(const TetMesh&, std::size_t cut_index)> after_cut;
+  // and the tets' labels by TetId as RunResult::labels would hold them then (empty: the mesh file
+  // had none), so that `tetcut cut --frames` writes a snapshot with its labels. A message stops
+  // the run with exit 2.
+  std::function<std::optional<std::string>(const TetMesh&, std::size_t cut_index, std::span<const std::uint32_t> labels)>
+      after_cut;
 };
 
 // What the local checker holds one Cutter transaction made with `params` to: I7's no-degradation
