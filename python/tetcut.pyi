@@ -141,6 +141,8 @@ class CutReport:
     @property
     def unresolved(self) -> int: ...
     @property
+    def uncuttable_in_tool(self) -> int: ...
+    @property
     def min_radius_ratio(self) -> float: ...
     @property
     def min_radius_ratio_before_improvement(self) -> float: ...
@@ -184,6 +186,7 @@ class Cutter:
         improve: bool = True,
         quality_floor: float = 0.1,
         coarser_retries: int = 2,
+        keep_labels: Sequence[int] = (),
     ) -> None: ...
     def cut(self, centre: _Point) -> CutReport:
         """One atomic cut (ok False: refused, the mesh untouched). Releases the GIL."""

@@ -121,10 +121,14 @@ Vec3 point_from(py::handle obj, const char* name) {
 
 class PyCutter {
  public:
-  PyCutter(MeshPtr handle, const CutParams& params) : handle_(std::move(handle)) {
+  PyCutter(MeshPtr handle, const CutParams& params, std::vector<std::uint32_t> keep_labels)
+      : handle_(std::move(handle)), keep_labels_(std::move(keep_labels)) {
     if (const auto bad = validate(params)) throw py::value_error("tetcut: " + *bad);
+    if (!keep_labels_.empty() && !handle_->labels.labelled())
+      throw py::value_error("tetcut: keep_labels: the mesh has no labels");
     MeshUse use(*handle_);
     cutter_.emplace(handle_->mesh, params);
+    protect();
     seen_version_ = handle_->version;
   }
 
@@ -189,11 +193,26 @@ class PyCutter {
     if (seen_version_ != handle_->version || !cutter_->indexes_current_mesh()) {
       py::gil_scoped_release release;
       cutter_->reset();
+      protect();  // a reset forgets the ids; the labels still name the tets
     }
     seen_version_ = handle_->version;
   }
 
+  // The tets whose label is one of keep_labels_, as the labels stand now: uncuttable
+  // (Cutter::set_uncuttable(), the paper's Fig. 7).
+  void protect() {
+    if (keep_labels_.empty()) return;
+    std::vector<TetId> tets;
+    const TetMesh& mesh = handle_->mesh;
+    for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
+      if (mesh.is_live(TetId{t}) &&
+          std::find(keep_labels_.begin(), keep_labels_.end(), handle_->labels.label(TetId{t})) != keep_labels_.end())
+        tets.push_back(TetId{t});
+    (void)cutter_->set_uncuttable(tets);  // live tets of the mesh it indexes: never refused
+  }
+
   MeshPtr handle_;
+  std::vector<std::uint32_t> keep_labels_;
   std::optional<Cutter> cutter_;
   std::uint64_t seen_version_ = 0;
 };
@@ -340,6 +359,7 @@ mesh.vertex_ids name them): apply removals first, then creations.)doc");
       .def_property_readonly("resolved_by_refinement", [](const Report& r) { return r.report.resolved_by_refinement; })
       .def_property_readonly("resolved_by_fallback", [](const Report& r) { return r.report.resolved_by_fallback; })
       .def_property_readonly("unresolved", [](const Report& r) { return r.report.unresolved; })
+      .def_property_readonly("uncuttable_in_tool", [](const Report& r) { return r.report.uncuttable_in_tool; })
       .def_property_readonly("min_radius_ratio", [](const Report& r) { return r.report.min_radius_ratio; })
       .def_property_readonly("min_radius_ratio_before_improvement",
                              [](const Report& r) { return r.report.min_radius_ratio_before_improvement; })
@@ -377,21 +397,25 @@ mesh.vertex_ids name them): apply removals first, then creations.)doc");
 The cautery tool on a mesh (the engine's Cutter): indexes the mesh once, then cuts in O(tool).
 
 Cutter(mesh, tool_diameter=1.0, strategy="combined", ...): the parameters of CutParams
-(engine/include/tetcut/cut.hpp); ValueError for one out of range. Keeps the mesh alive.)doc");
+(engine/include/tetcut/cut.hpp); ValueError for one out of range. Keeps the mesh alive.
+keep_labels: labels (mesh.labels) whose tets no cut takes, as the paper's Fig. 7 keeps the portal
+vein (Cutter::set_uncuttable); ValueError on a mesh without labels.)doc");
   cutter.def(py::init([](MeshPtr mesh, double tool_diameter, const std::string& strategy, const std::string& split,
                        double d_ref_factor, double p, std::uint32_t search_depth, std::uint32_t max_refine_iterations,
-                       std::uint32_t max_tets_created, bool improve, double quality_floor, std::uint32_t coarser_retries) {
+                       std::uint32_t max_tets_created, bool improve, double quality_floor, std::uint32_t coarser_retries,
+                       std::vector<std::uint32_t> keep_labels) {
              CutParams params{.tool_diameter = tool_diameter, .d_ref_factor = d_ref_factor, .p = p,
                               .search_depth = search_depth, .max_refine_iterations = max_refine_iterations,
                               .max_tets_created = max_tets_created, .strategy = strategy_from(strategy),
                               .split_method = split_from(split), .improve = improve, .quality_floor = quality_floor,
                               .coarser_retries = coarser_retries};
-             return std::make_shared<PyCutter>(std::move(mesh), params);
+             return std::make_shared<PyCutter>(std::move(mesh), params, std::move(keep_labels));
            }),
            py::arg("mesh").none(false), py::kw_only(), py::arg("tool_diameter") = 1.0, py::arg("strategy") = "combined",
            py::arg("split") = "templates", py::arg("d_ref_factor") = 1.5, py::arg("p") = 1.5,
            py::arg("search_depth") = 10, py::arg("max_refine_iterations") = 8, py::arg("max_tets_created") = 20000,
-           py::arg("improve") = true, py::arg("quality_floor") = 0.1, py::arg("coarser_retries") = 2)
+           py::arg("improve") = true, py::arg("quality_floor") = 0.1, py::arg("coarser_retries") = 2,
+           py::arg("keep_labels") = std::vector<std::uint32_t>{})
       .def("sweep",
            [](const CutterPtr& c, py::handle start, py::handle end, double step) {
              return c->sweep(point_from(start, "start"), point_from(end, "end"), step);
