@@ -278,18 +278,25 @@ TEST(Labels, TetgenFilesAsTetgenWritesThemGiveTheirRegionAttributes) {
 TEST(Labels, TetgenBadRegionAttributesAreRefusedWithFileLineAndReason) {
   const std::string node = format_tetgen_node(test::two_tets());
   const auto ele = [](const std::string& second) { return "2 4 1\n1 1 2 3 4 1\n2 2 3 4 5 " + second + "\n"; };
-  expect_refused(read_tetgen(node, "m.node", ele("2.5"), "m.ele"), "m.ele", 3, "region attribute '2.5' is not a label");
-  expect_refused(read_tetgen(node, "m.node", ele("-1"), "m.ele"), "m.ele", 3, "region attribute -1 is not a label");
-  expect_refused(read_tetgen(node, "m.node", ele("-1.0"), "m.ele"), "m.ele", 3, "region attribute '-1.0' is not a label");
-  expect_refused(read_tetgen(node, "m.node", ele("3000000000"), "m.ele"), "m.ele", 3,
-                 "region attribute 3000000000 is not a label");
-  expect_refused(read_tetgen(node, "m.node", ele("3e9"), "m.ele"), "m.ele", 3, "region attribute '3e9' is not a label");
-  expect_refused(read_tetgen(node, "m.node", ele("nan"), "m.ele"), "m.ele", 3, "region attribute 'nan' is not a label");
-  expect_refused(read_tetgen(node, "m.node", ele("inf"), "m.ele"), "m.ele", 3, "region attribute 'inf' is not a label");
-  expect_refused(read_tetgen(node, "m.node", ele("x"), "m.ele"), "m.ele", 3, "region attribute 'x' is not a label");
-  // A record without its attribute is one value short.
-  expect_refused(read_tetgen(node, "m.node", "2 4 1\n1 1 2 3 4 1\n2 2 3 4 5\n", "m.ele"), "m.ele", 3,
-                 "with 1 attributes");
+  const std::pair<std::string, std::string> cases[] = {
+      {ele("2.5"), "region attribute '2.5' is not a label"},
+      {ele("-1"), "region attribute -1 is not a label"},
+      {ele("-1.0"), "region attribute '-1.0' is not a label"},
+      {ele("3000000000"), "region attribute 3000000000 is not a label"},
+      {ele("3e9"), "region attribute '3e9' is not a label"},
+      {ele("nan"), "region attribute 'nan' is not a label"},
+      {ele("inf"), "region attribute 'inf' is not a label"},
+      {ele("x"), "region attribute 'x' is not a label"},
+      // A record without its attribute is one value short.
+      {"2 4 1\n1 1 2 3 4 1\n2 2 3 4 5\n", "with 1 attributes"},
+  };
+  for (const auto& [text, reason] : cases) {
+    SCOPED_TRACE(text);
+    const ReadResult r = read_tetgen(node, "m.node", text, "m.ele");
+    ASSERT_TRUE(r.error.has_value()) << "accepted";
+    EXPECT_FALSE(r.mesh.has_value());
+    expect_refused(r, "m.ele", 3, reason);
+  }
 }
 
 TEST(Labels, WritersRefuseLabelsThatDoNotFitTheFormats) {
