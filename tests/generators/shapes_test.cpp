@@ -114,6 +114,31 @@ TEST(Box, IsValidDeterministicAndFillsItsBox) {
   EXPECT_NEAR(total_volume(*a.mesh), 1.0, 1e-9);
 }
 
+TEST(Sphere, IsAClosedIcosphereOnTheSphereFilledDeterministically) {
+  SphereOptions o;
+  o.radius = 2.0;
+  o.subdivisions = 2;
+  const TriSurface surface = sphere_surface(o);
+  EXPECT_EQ(surface.triangles.size(), 20u * 16u);
+  EXPECT_EQ(surface.positions.size(), 162u);  // Euler: V = F / 2 + 2
+  EXPECT_EQ(closed_surface_problem(surface), std::nullopt);
+  for (const Vec3& p : surface.positions) EXPECT_NEAR(norm(p), 2.0, 1e-12);
+  const GenResult a = generate_sphere(o);
+  const GenResult b = generate_sphere(o);
+  ASSERT_TRUE(a.ok() && b.ok()) << a.error;
+  expect_valid_exact(*a.mesh);
+  EXPECT_EQ(canonical_hash(*a.mesh), canonical_hash(*b.mesh));
+  // Between the inscribed polyhedron's volume and the ball's: the surface's triangles are its
+  // boundary, each with its normal outwards (a positive volume).
+  double inscribed = 0.0;
+  for (const auto& t : surface.triangles)
+    inscribed += dot(surface.positions[t[0]], cross(surface.positions[t[1]], surface.positions[t[2]])) / 6.0;
+  EXPECT_NEAR(total_volume(*a.mesh), inscribed, 1e-9 * inscribed);
+  EXPECT_GT(inscribed, 0.95 * 4.0 / 3.0 * std::numbers::pi * 8.0);
+  EXPECT_FALSE(generate_sphere({.radius = -1.0}).ok());
+  EXPECT_FALSE(generate_sphere({.subdivisions = 8}).ok());
+}
+
 TriSurface tetrahedron_surface() {
   TriSurface s;
   s.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};

@@ -1,5 +1,5 @@
 // `tetcut gen KIND [OPTIONS] -o OUT` (design: the command line; issue 3: generators). KIND is
-// cylinder, sheet, box (TetGen on surfaces we build), surface FILE (TetGen on a closed .off, .stl,
+// cylinder, sheet, box, sphere (TetGen on surfaces we build), surface FILE (TetGen on a closed .off, .stl,
 // .obj or VTK POLYDATA .vtk/.vtp surface) or liver (CGAL Mesh_3 on Debian's segmented liver image, then repair). The mesh
 // is validated with the mesh builder before it is written, and its canonical hash printed.
 #include <algorithm>
@@ -53,13 +53,14 @@ int cmd_gen(Args args, std::ostream& out, std::ostream& err) {
   CylinderOptions cylinder;
   SheetOptions sheet;
   BoxOptions box;
+  SphereOptions sphere;
   std::optional<Vec3> box_size;
   SurfaceOptions surface;
   LiverOptions liver;
   std::optional<double> liver_size;
   std::optional<std::uint64_t> liver_tets;
   CommandParser parser("gen", "tetcut gen KIND [OPTIONS] -o OUT",
-                       "Generates a mesh: cylinder, sheet, box (TetGen), surface FILE (any closed .off/.stl/.obj\n"
+                       "Generates a mesh: cylinder, sheet, box, sphere (TetGen), surface FILE (any closed .off/.stl/.obj\n"
                        "surface, or a VTK POLYDATA surface .vtk/.vtp, through TetGen), liver (CGAL Mesh_3).\n"
                        "Prints the canonical hash.\n",
                        "exit: 0, 2 bad parameters or unwritable output");
@@ -84,6 +85,11 @@ int cmd_gen(Args args, std::ostream& out, std::ostream& err) {
   opt::number_into(*b, "--spacing", box.spacing, "boundary edge length; the tet size follows it", "S");
   tetgen_options(*b, box.max_volume, box.radius_edge_ratio, box.min_dihedral_deg);
 
+  CLI::App* sp = kind(app, "sphere", "sphere [--radius R] [--subdivisions N] -o OUT", "an icosphere (TetGen)");
+  opt::number_into(*sp, "--radius", sphere.radius, "radius", "R");
+  opt::count_into(*sp, "--subdivisions", sphere.subdivisions, 7, "of the icosahedron: 20 x 4^N surface triangles");
+  tetgen_options(*sp, sphere.max_volume, sphere.radius_edge_ratio, sphere.min_dihedral_deg);
+
   CLI::App* sf = kind(app, "surface", "surface FILE [--preserve-boundary] -o OUT", "a closed surface file, meshed by TetGen");
   opt::text(*sf, "FILE", surface_path, "a closed .off, .stl, .obj, or VTK POLYDATA .vtk/.vtp surface", "")->required();
   tetgen_options(*sf, surface.tetgen.max_volume, surface.tetgen.radius_edge_ratio, surface.tetgen.min_dihedral_deg);
@@ -107,6 +113,8 @@ int cmd_gen(Args args, std::ostream& out, std::ostream& err) {
   } else if (b->parsed()) {
     if (box_size) box.size = *box_size;
     result = generate_box(box);
+  } else if (sp->parsed()) {
+    result = generate_sphere(sphere);
   } else if (sf->parsed()) {
     const SurfaceReadResult read = read_surface(*surface_path);
     for (const auto& note : read.notices) err << "tetcut: " << *surface_path << ": note: " << note << '\n';

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <utility>
 #include <vector>
@@ -179,6 +180,63 @@ GenResult generate_box(const BoxOptions& o) {
   t.max_volume =
       o.max_volume > 0.0 ? o.max_volume : kVolumeInRegularTets * regular_tet_volume(o.spacing);
   return tetrahedralize_surface(box_surface(o), t);
+}
+
+TriSurface sphere_surface(const SphereOptions& o) {
+  TriSurface s;
+  // The icosahedron: the cyclic permutations of (0, +-1, +-phi).
+  const double phi = std::numbers::phi;
+  for (const double a : {-1.0, 1.0})
+    for (const double b : {-phi, phi}) {
+      s.positions.push_back({0.0, a, b});
+      s.positions.push_back({a, b, 0.0});
+      s.positions.push_back({b, 0.0, a});
+    }
+  // Its 20 faces: the triples of vertices at the shortest distance (2) from one another.
+  const std::size_t n = s.positions.size();
+  auto adjacent = [&](std::size_t i, std::size_t j) { return std::abs(norm(s.positions[i] - s.positions[j]) - 2.0) < 1e-9; };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      for (std::size_t k = j + 1; k < n; ++k)
+        if (adjacent(i, j) && adjacent(j, k) && adjacent(i, k)) {
+          const Vec3 centre = (1.0 / 3.0) * (s.positions[i] + s.positions[j] + s.positions[k]);
+          add_oriented(s, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(k), centre);
+        }
+  for (Vec3& p : s.positions) p = (o.radius / norm(p)) * p;
+  for (std::uint32_t level = 0; level < o.subdivisions; ++level) {
+    // One midpoint per edge, found again from either side by the pair (lower, higher).
+    std::map<std::uint64_t, std::uint32_t> midpoints;
+    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+      const auto [it, inserted] = midpoints.try_emplace(key, static_cast<std::uint32_t>(s.positions.size()));
+      if (inserted) {
+        const Vec3 m = 0.5 * (s.positions[a] + s.positions[b]);
+        s.positions.push_back((o.radius / norm(m)) * m);
+      }
+      return it->second;
+    };
+    std::vector<Tri> finer;
+    for (const Tri& t : s.triangles) {
+      const std::uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      finer.insert(finer.end(), {Tri{t[0], ab, ca}, Tri{ab, t[1], bc}, Tri{ca, bc, t[2]}, Tri{ab, bc, ca}});
+    }
+    s.triangles = std::move(finer);
+  }
+  return s;
+}
+
+GenResult generate_sphere(const SphereOptions& o) {
+  if (!(o.radius > 0.0) || !std::isfinite(o.radius)) return GenResult::failure("sphere: the radius must be positive");
+  if (o.subdivisions > 7) return GenResult::failure("sphere: at most 7 subdivisions (327,680 triangles)");
+  const TriSurface surface = sphere_surface(o);
+  double edges = 0.0;
+  for (const Tri& t : surface.triangles) edges += norm(surface.positions[t[1]] - surface.positions[t[0]]);
+  const double spacing = edges / static_cast<double>(surface.triangles.size());
+  TetgenOptions t;
+  t.radius_edge_ratio = o.radius_edge_ratio;
+  t.min_dihedral_deg = o.min_dihedral_deg;
+  t.max_volume = o.max_volume > 0.0 ? o.max_volume : kVolumeInRegularTets * regular_tet_volume(spacing);
+  return tetrahedralize_surface(surface, t);
 }
 
 GenResult generate_from_surface(const TriSurface& surface, const SurfaceOptions& options) {

@@ -53,6 +53,22 @@ struct BoxOptions {
 TriSurface box_surface(const BoxOptions& options);
 GenResult generate_box(const BoxOptions& options);
 
+struct SphereOptions {
+  double radius = 1.0;
+  // Subdivisions of the icosahedron: the surface has 20 * 4^n near-equilateral triangles whose
+  // edges are about 1.1 radius / 2^n long (n = 3: 1,280 triangles).
+  std::uint32_t subdivisions = 3;
+  double max_volume = 0.0;  // 0: three regular tets of the surface's mean edge
+  double radius_edge_ratio = 1.4;
+  double min_dihedral_deg = 12.0;
+};
+
+// An icosphere centred on the origin: each subdivision splits every triangle into four at its
+// edges' midpoints, pushed out onto the sphere. A curved organ-like boundary of even density that
+// no mesher of ours wrote the surface of (the fine-tool sweeps cut it, bench/quality_sweeps.cpp).
+TriSurface sphere_surface(const SphereOptions& options);
+GenResult generate_sphere(const SphereOptions& options);
+
 // Any closed surface (a file the user brings).
 struct SurfaceOptions {
   TetgenOptions tetgen;
