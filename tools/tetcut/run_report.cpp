@@ -46,6 +46,8 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"resolved_by_fallback", r.resolved_by_fallback},
               {"unresolved", r.unresolved},
               {"uncuttable_in_tool", r.uncuttable_in_tool},
+              {"left_in_tool", r.left_in_tool},
+              {"kept_pieces_requested", r.kept_pieces_requested},
               {"min_radius_ratio", r.min_radius_ratio},
               {"min_radius_ratio_before_improvement", r.min_radius_ratio_before_improvement},
               {"quality_floor", r.quality_floor},
