@@ -23,6 +23,7 @@ const char* id_string(Invariant id) {
     case Invariant::kI7Quality: return "I7";
     case Invariant::kI8Bookkeeping: return "I8";
     case Invariant::kI9Volume: return "I9";
+    case Invariant::kI10Tissue: return "I10";
   }
   return "I?";
 }
@@ -38,6 +39,7 @@ const char* description(Invariant id) {
     case Invariant::kI7Quality: return "quality";
     case Invariant::kI8Bookkeeping: return "bookkeeping";
     case Invariant::kI9Volume: return "volume";
+    case Invariant::kI10Tissue: return "tissue";
   }
   return "unknown";
 }

@@ -14,6 +14,7 @@
 #include "report_builder.hpp"
 #include "tet_checks.hpp"
 #include "tetcut/invariants/check.hpp"
+#include "tissue_rule.hpp"
 #include "vertex_link.hpp"
 
 namespace tetcut::invariants {
@@ -34,6 +35,9 @@ struct LocalChecker::Scratch {
   detail::VertexLinkChecker link;
   detail::NoDegradationCheck no_degradation;
   std::vector<std::uint32_t> touched;
+  detail::TetGrid grid;                      // I10: which tets may meet a tool
+  std::vector<std::uint32_t> near_tool;
+  std::vector<RawTet> removed_uncuttable;    // the operation's, as they were
 };
 
 LocalChecker::~LocalChecker() = default;
@@ -66,6 +70,19 @@ void LocalChecker::reset(const RawMeshView& mesh) {
   }
   for (const auto& list : vertex_to_tets_)
     if (!list.empty()) ++live_vertices_;
+  scratch_->grid = detail::TetGrid{};
+  uncuttable_.clear();
+  any_uncuttable_ = false;
+}
+
+void LocalChecker::set_uncuttable(RawIds tets) {
+  uncuttable_.assign(known_tets_.size(), 0);
+  any_uncuttable_ = false;
+  for (std::uint32_t t : tets) {
+    if (t >= known_tets_.size() || known_tets_[t][0] == kDeadTetMarker) continue;  // a bad id names nothing
+    uncuttable_[t] = 1;
+    any_uncuttable_ = true;
+  }
 }
 
 CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds removed, RawIds created,
@@ -83,6 +100,7 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
     known_rounding_.resize(raw.size(), 0.0);
     excluded_.resize(raw.size(), 0);
   }
+  if (any_uncuttable_ && uncuttable_.size() < raw.size()) uncuttable_.resize(raw.size(), 0);
   if (vertex_to_tets_.size() < positions.size()) {
     vertex_to_tets_.resize(positions.size());
     touched_stamp_.resize(positions.size(), 0);
@@ -113,6 +131,11 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
   const bool judge_quality = options.quality_rule == QualityRule::kNoDegradation;
   detail::VolumeSum removed_volume;
   double removed_abs = 0.0;
+  detail::TetGrid& grid = scratch_->grid;
+  std::vector<RawTet>& removed_uncuttable = scratch_->removed_uncuttable;
+  removed_uncuttable.clear();
+  detail::VolumeSum uncuttable_volume;  // made minus replaced, of uncuttable tets
+  double uncuttable_abs = 0.0;
   double rounding = 0.0;  // what rounding alone can put into the volume change
   for (std::uint32_t t : removed) {
     if (t >= known_tets_.size() || known_tets_[t][0] == kDeadTetMarker) {
@@ -129,7 +152,14 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
                  " and is " + detail::num(now);
         });
       if (judge_quality) no_degradation.add_removed(t, known_tets_[t]);
+      if (any_uncuttable_ && uncuttable_[t]) {
+        removed_uncuttable.push_back(known_tets_[t]);
+        uncuttable_volume.add(-known_volume_[t]);
+        uncuttable_abs += std::abs(known_volume_[t]);
+      }
     }
+    if (any_uncuttable_) uncuttable_[t] = 0;
+    if (grid.built()) grid.erase(t);
     for (std::uint32_t v : known_tets_[t]) {
       if (v >= vertex_to_tets_.size()) continue;
       auto& list = vertex_to_tets_[v];
@@ -174,6 +204,17 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
     if (judge_quality) no_degradation.add_created(t, q, ratio);
     known_volume_[t] = detail::tet_volume(q, positions);
     known_rounding_[t] = detail::tet_volume_rounding_bound(q, positions);
+    if (grid.built()) grid.insert(t, q, positions);
+    if (!removed_uncuttable.empty()) {
+      const Vec3 centroid = 0.25 * (positions[q[0]] + positions[q[1]] + positions[q[2]] + positions[q[3]]);
+      for (const RawTet& u : removed_uncuttable)
+        if (detail::tet_contains(centroid, positions[u[0]], positions[u[1]], positions[u[2]], positions[u[3]])) {
+          uncuttable_[t] = 1;
+          uncuttable_volume.add(known_volume_[t]);
+          uncuttable_abs += std::abs(known_volume_[t]);
+          break;
+        }
+    }
     created_volume.add(known_volume_[t]);
     created_abs += std::abs(known_volume_[t]);
     rounding += known_rounding_[t];
@@ -224,6 +265,21 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
   }
 
   if (judge_quality) no_degradation.finish(positions, options.quality_floor, report);
+
+  // I10: uncuttable tissue neither went nor grew.
+  if (!removed_uncuttable.empty() &&
+      std::abs(uncuttable_volume.value()) > options.volume_rel_tolerance * uncuttable_abs + rounding) {
+    report.add(Invariant::kI10Tissue, {}, {}, [&] {
+      return "the uncuttable tets the operation made have a volume " + detail::num(uncuttable_volume.value()) +
+             " different from the uncuttable tets it replaced: uncuttable tissue went or grew";
+    });
+  }
+  // I10: the tool's tissue.
+  if (options.tool) {
+    if (!grid.built()) grid.build(known_tets_, positions);
+    grid.candidates(options.tool->centre, options.tool->radius, scratch_->near_tool);
+    detail::check_tissue_rule(*options.tool, scratch_->near_tool, known_tets_, positions, uncuttable_, report);
+  }
 
   geometry.finish(out);
   out.volume = change;

@@ -1,4 +1,4 @@
-// The independent invariant checker (design: invariants I1-I9).
+// The independent invariant checker (design: invariants I1-I10).
 //
 // It recomputes everything it verifies from the raw tet array with its own tables, its own
 // quality measures and its own link analysis; it never trusts the engine's adjacency or
@@ -44,8 +44,9 @@ enum class Invariant : std::uint8_t {
   kI7Quality,         // no operation makes tets worse than it found (and an optional absolute floor)
   kI8Bookkeeping,     // counts, vertex->tet references, boundary flags, attribute sizes
   kI9Volume,          // volume as expected after an operation (relative tolerance)
+  kI10Tissue,         // after a cut: the tool's tissue taken, its neighbourhood refined, uncuttable kept
 };
-inline constexpr int kInvariantCount = 9;
+inline constexpr int kInvariantCount = 10;
 
 // "I5" etc.
 const char* id_string(Invariant id);
@@ -90,6 +91,19 @@ enum class QualityRule : std::uint8_t {
   kReportOnly,
 };
 
+// I10's tool (the local level only: a cut is an operation): the cut's ball, the length its
+// neighbourhood was refined to, and the tets the cut reports it left in the tool
+// (Cutter::last_left_in_tool()). After the operation no live cuttable tet meets the open ball
+// with an edge longer than d_ref, and none with its centroid in the closed ball and its edges
+// within d_ref remains unless `left` lists it; each listed tet is such a tet. Cuttable: not
+// named by LocalChecker::set_uncuttable(), nor made from such a tet.
+struct ToolRule {
+  Vec3 centre;
+  double radius = 0.0;
+  double d_ref = 0.0;
+  RawIds left;
+};
+
 struct CheckOptions {
   CheckLevel level = CheckLevel::kFull;
   // I7, absolute: a checked tet (full, exact: every live tet; local: the created ones) whose
@@ -104,6 +118,8 @@ struct CheckOptions {
   double quality_floor = 0.1;
   // I9: when set, the total volume must equal this to a relative tolerance.
   std::optional<double> expected_volume;
+  // I10, the local level: when set, the operation was a cut with this tool.
+  std::optional<ToolRule> tool;
   double volume_rel_tolerance = 1e-9;
   // Names the operation in the report ("remove tet 12", "cut 3"), for people triaging.
   std::string operation;
@@ -151,7 +167,10 @@ CheckReport check_mesh(const RawMeshView& mesh, const CheckOptions& options = {}
 // so it never consults the engine's adjacency. After an operation it checks, for every vertex of
 // a removed or created tet, I1-I3, I5, I6 and I8 on that vertex's shell and on the edges and
 // faces through it (I2: the engine's neighbours across those faces), I1, I4 and I7 on the
-// created tets, the engine's counts (I8), and I9 when an expected volume change is given.
+// created tets, the engine's counts (I8), I9 when an expected volume change is given, and I10
+// when the options name the cut's tool: over the tets its own grid of bounding boxes finds near
+// the tool (built on the first such check, O(#T) once, then kept up to date per operation), and,
+// when uncuttable tets were named, that the operation kept their volume.
 // It assumes the mesh was valid before the operation: it reports what the operation broke.
 // compact() renumbers everything: build a new LocalChecker after it.
 class LocalChecker {
@@ -174,6 +193,12 @@ class LocalChecker {
                               const CheckOptions& options = {},
                               std::optional<double> expected_volume_change = std::nullopt);
 
+  // The tets no cut may take (what the Cutter was told: Cutter::set_uncuttable()), live in the
+  // mesh as the checker last saw it. From then on, a tet an operation makes is uncuttable when
+  // its centroid lies in an uncuttable tet the operation replaced: the checker's own record,
+  // which I10 judges by. Replaces the set; empty: none. reset() clears it.
+  void set_uncuttable(RawIds tets);
+
  private:
   struct Scratch;  // per-operation scratch (vertex link workspace), reused: no steady allocation
 
@@ -186,6 +211,8 @@ class LocalChecker {
   std::uint32_t stamp_ = 0;
   std::uint64_t live_tets_ = 0;
   std::uint64_t live_vertices_ = 0;
+  std::vector<std::uint8_t> uncuttable_;                       // per tet: the checker's own record
+  bool any_uncuttable_ = false;
   std::unique_ptr<Scratch> scratch_;
 };
 
