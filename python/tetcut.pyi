@@ -159,8 +159,6 @@ class CutReport:
     @property
     def d_ref(self) -> float: ...
     @property
-    def coarser_retries(self) -> int: ...
-    @property
     def wall_us(self) -> float:
         """Wall time of the engine's cut alone, timed around the C++ call."""
     @property
@@ -185,7 +183,6 @@ class Cutter:
         max_tets_created: int = 20000,
         improve: bool = True,
         quality_floor: float = 0.1,
-        coarser_retries: int = 2,
         keep_labels: Sequence[int] = (),
     ) -> None: ...
     def cut(self, centre: _Point) -> CutReport:

@@ -369,7 +369,6 @@ mesh.vertex_ids name them): apply removals first, then creations.)doc");
       .def_property_readonly("improvement_collapses", [](const Report& r) { return r.report.improvement_collapses; })
       .def_property_readonly("improvement_moves", [](const Report& r) { return r.report.improvement_moves; })
       .def_property_readonly("d_ref", [](const Report& r) { return r.report.d_ref; })
-      .def_property_readonly("coarser_retries", [](const Report& r) { return r.report.coarser_retries; })
       .def_readonly("wall_us", &Report::wall_us,
                     "Wall time of the engine's cut alone (microseconds), timed around the C++ call by the binding: "
                     "what a C++ caller would measure; a Python caller's own timing minus this is the binding's cost.")
@@ -402,19 +401,18 @@ keep_labels: labels (mesh.labels) whose tets no cut takes, as the paper's Fig. 7
 vein (Cutter::set_uncuttable); ValueError on a mesh without labels.)doc");
   cutter.def(py::init([](MeshPtr mesh, double tool_diameter, const std::string& strategy, const std::string& split,
                        double d_ref_factor, double p, std::uint32_t search_depth, std::uint32_t max_refine_iterations,
-                       std::uint32_t max_tets_created, bool improve, double quality_floor, std::uint32_t coarser_retries,
+                       std::uint32_t max_tets_created, bool improve, double quality_floor,
                        std::vector<std::uint32_t> keep_labels) {
              CutParams params{.tool_diameter = tool_diameter, .d_ref_factor = d_ref_factor, .p = p,
                               .search_depth = search_depth, .max_refine_iterations = max_refine_iterations,
                               .max_tets_created = max_tets_created, .strategy = strategy_from(strategy),
-                              .split_method = split_from(split), .improve = improve, .quality_floor = quality_floor,
-                              .coarser_retries = coarser_retries};
+                              .split_method = split_from(split), .improve = improve, .quality_floor = quality_floor};
              return std::make_shared<PyCutter>(std::move(mesh), params, std::move(keep_labels));
            }),
            py::arg("mesh").none(false), py::kw_only(), py::arg("tool_diameter") = 1.0, py::arg("strategy") = "combined",
            py::arg("split") = "templates", py::arg("d_ref_factor") = 1.5, py::arg("p") = 1.5,
            py::arg("search_depth") = 10, py::arg("max_refine_iterations") = 8, py::arg("max_tets_created") = 20000,
-           py::arg("improve") = true, py::arg("quality_floor") = 0.1, py::arg("coarser_retries") = 2,
+           py::arg("improve") = true, py::arg("quality_floor") = 0.1,
            py::arg("keep_labels") = std::vector<std::uint32_t>{})
       .def("sweep",
            [](const CutterPtr& c, py::handle start, py::handle end, double step) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mesh.hpp"
 
@@ -22,6 +23,15 @@ inline ::testing::AssertionResult mesh_is_valid(const TetMesh& mesh,
   for (const invariants::Violation& v : report.violations)
     failure << invariants::id_string(v.id) << " (" << invariants::description(v.id) << "): " << v.detail << "; ";
   return failure;
+}
+
+// What the local checker holds the cut `cutter` just made at `centre` to: the default rules and
+// I10 with the cut's tool, D_ref and the tets it reports left (a view: use it before the next cut).
+inline invariants::CheckOptions cut_check(const Cutter& cutter, const Vec3& centre) {
+  invariants::CheckOptions options;
+  options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
+                                      .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
+  return options;
 }
 
 }  // namespace tetcut::testing

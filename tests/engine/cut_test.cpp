@@ -86,7 +86,8 @@ TEST_P(CorpusSweep, EveryCutKeepsTheMeshValidAndRemovesEverythingRequested) {
     testing::expect_log_describes(before, mesh, log);
     EXPECT_EQ(r.unresolved, 0u) << "combined must resolve every singularity";
     removed += r.tets_removed;
-    const invariants::CheckReport l = local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created());
+    const invariants::CheckReport l =
+        local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), testing::cut_check(cutter, centre));
     ASSERT_TRUE(l.ok()) << invariants::id_string(l.violations.front().id) << ": " << l.violations.front().detail;
     ASSERT_TRUE(testing::mesh_is_valid(mesh)) << "after the cut at " << centre.x << "," << centre.y << "," << centre.z;
   }

@@ -187,7 +187,7 @@ TEST(Improve, ACutThePassCannotLiftIsRefusedAndLeavesTheMeshAndTheStatisticsAsTh
   // min(1, the worst tet replaced) for every child, so the cut is refused, bit for bit.
   TetMesh mesh = corpus_mesh("liver.msh");
   const TetMesh before = mesh;
-  Cutter cutter(mesh, {.tool_diameter = 8.0, .quality_floor = 1.0, .coarser_retries = 0});
+  Cutter cutter(mesh, {.tool_diameter = 8.0, .quality_floor = 1.0});
   CutReport report;
   for (double y = 40; y <= 180 && report.ok; y += 4) {
     const TetMesh snapshot = mesh;
@@ -195,6 +195,7 @@ TEST(Improve, ACutThePassCannotLiftIsRefusedAndLeavesTheMeshAndTheStatisticsAsTh
     report = cutter.cut({95, y, 100});
     if (!report.ok) {
       EXPECT_NE(report.failure.find("quality floor"), std::string::npos) << report.failure;
+      EXPECT_EQ(report.refusal, CutRefusal::kQualityFloor);
       EXPECT_GT(report.requests, 0u) << "the refused cut made removal requests before the pass";
       EXPECT_EQ(cutter.removal_report(), statistics) << "a refused cut counts none of its requests";
       EXPECT_EQ(mesh.raw_tets().size(), snapshot.raw_tets().size());
@@ -209,40 +210,13 @@ TEST(Improve, ACutThePassCannotLiftIsRefusedAndLeavesTheMeshAndTheStatisticsAsTh
   for (double y = 40; y <= 180; y += 4) EXPECT_TRUE(off.cut({95, y, 100}).ok);
 }
 
-TEST(Improve, ACutThatMissesTheFloorIsTriedAgainAtTwiceTheRefinementLength) {
-  // The same unreachable floor with the retries on: a cut the pass cannot lift is rolled back and
-  // made again with D_ref doubled, and at the coarser resolution it creates fewer tets, until it
-  // creates none it cannot lift.
-  TetMesh mesh = corpus_mesh("liver.msh");
-  const CutParams params{.tool_diameter = 8.0, .quality_floor = 1.0};
-  Cutter cutter(mesh, params);
-  const double d_ref = params.d_ref_factor * params.tool_diameter;
-  std::uint32_t retried = 0;
-  for (double y = 40; y <= 180; y += 4) {
-    const CutReport r = cutter.cut({95, y, 100});
-    if (r.tets_hit == 0) continue;
-    EXPECT_EQ(r.d_ref, d_ref * static_cast<double>(1u << r.coarser_retries));
-    EXPECT_LE(r.coarser_retries, params.coarser_retries);
-    if (!r.ok) {
-      EXPECT_EQ(r.coarser_retries, params.coarser_retries) << "refused only after the last retry";
-      continue;
-    }
-    EXPECT_TRUE(r.quality_met);
-    retried += r.coarser_retries > 0;
-  }
-  EXPECT_GT(retried, 0u) << "some cut of the sweep met the floor only at a coarser D_ref";
-}
-
-TEST(Improve, AnInvalidFloorOrRetryCountIsRefusedWithAMessage) {
+TEST(Improve, AnInvalidFloorIsRefusedWithAMessage) {
   for (const double floor : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
     const auto message = validate(CutParams{.quality_floor = floor});
     ASSERT_TRUE(message.has_value());
     EXPECT_NE(message->find("quality floor"), std::string::npos);
   }
-  const auto retries = validate(CutParams{.coarser_retries = 9});
-  ASSERT_TRUE(retries.has_value());
-  EXPECT_NE(retries->find("coarser retries"), std::string::npos);
-  EXPECT_FALSE(validate(CutParams{.coarser_retries = 0}).has_value());
+  EXPECT_FALSE(validate(CutParams{.quality_floor = 0.0}).has_value());
 }
 
 }  // namespace

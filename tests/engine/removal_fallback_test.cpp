@@ -26,7 +26,12 @@ struct Request {
   EdgeSplitter splitter;
   ChangeLog log;
   std::vector<TetId> exposed;
-  detail::RemovalContext context(TetMesh& mesh) { return {mesh, ws, splitter, exposed, mesh.savepoint(), 0xFFFFFFFFu}; }
+  detail::TissueRemoval tissue;
+  detail::RemovalContext context(TetMesh& mesh) {
+    detail::RemovalContext c{mesh, ws, splitter, exposed, mesh.savepoint(), 0xFFFFFFFFu};
+    c.tissue = &tissue;
+    return c;
+  }
 };
 
 // The vertices of the stars of t's corners: what the construction may touch.

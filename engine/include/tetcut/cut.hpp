@@ -9,19 +9,27 @@
 //            tool's size to within one small tet.
 //   remove   every directly removable selected tet first (3.3), again until none is left; then
 //            the strategy (cut_strategies.hpp) on one stuck tet, on the surface first (outside in),
-//            and again (CutParams::order: or the paper's one by one). When a strategy refines a selected tet, its pieces that pass the same
-//            test join T_removal; pieces of a kept tet stay kept (selection is decided once,
-//            on the refined region). Every selected tet is removed or counted unresolved.
+//            and again (CutParams::order: or the paper's one by one). When a strategy refines a
+//            selected tet, its pieces that pass the same test join T_removal; pieces of a kept tet
+//            stay kept (selection is decided once, on the refined region). Every selected tet is
+//            removed or counted unresolved.
 //   improve  flips, collapses, smoothing of the cut's own vertices (improve/improver.hpp) until
 //            every tet the cut made reaches min(quality_floor, the worst tet it replaced): the
 //            floor the invariant checker holds every cut to (I7). A sliver at the cut's surface
 //            that nothing lifts goes with the tissue.
+//   audit    the tissue rule (the checker's I10): no cuttable tet that meets the tool keeps an
+//            edge longer than D_ref, and the tets the selection would take that are still there
+//            are counted and listed (last_left_in_tool()): unresolved requests, pieces of kept
+//            tets no request removed. With the volume of tissue left in the tool and removed
+//            beyond it (estimates: core/tool_ball.hpp, volume_in_ball).
+//   commit   the transaction, the spatial index, the change log.
 //
-// Atomic: the whole cut runs in a mesh transaction; if it cannot complete (a split refused
-// for degeneracy, the per-cut tet budget exceeded, a created tet the improvement pass cannot lift
-// to the quality floor, and still so with D_ref doubled CutParams::coarser_retries times) it is
-// rolled back, the mesh is bit-identical to before, and the report says why. A tet left unresolved by the `neighbours` strategy is
-// not a failure: the mesh is valid, the report counts it.
+// Atomic: the whole cut runs in a mesh transaction; if it cannot complete (a split refused for
+// degeneracy, the per-cut tet budget exceeded, a created tet the improvement pass cannot lift to
+// the quality floor, a tet meeting the tool with an edge longer than D_ref) it is rolled back, the
+// mesh is bit-identical to before, and the report says why (CutReport::refusal, failure). A tet
+// left unresolved by the `neighbours` strategy is not a failure: the mesh is valid, the report
+// counts it.
 //
 // The budget counts net tets created: tets the cut made that are still there at its end (an
 // attempt a strategy undid, or children a later step removed, do not count).
@@ -62,42 +70,71 @@ struct CutParams {
   // alone, as its tables measure it.
   bool improve = true;
   double quality_floor = 0.1;  // F, a radius ratio in [0, 1]
-  // A cut whose created tets the pass cannot lift to the floor is tried again with D_ref doubled,
-  // up to this many times (0 to 8), before it is refused. A tool much finer than the mesh (a tenth
-  // of its edges) refines the tets it meets down to its own size, and now and then into slivers
-  // the pass cannot lift (5-13 % of such cuts on TetGen and CGAL meshes, bench/quality_sweeps.cpp);
-  // at twice the D_ref the same cut makes a quarter of the tets, well shaped: it removes the
-  // tissue at a coarser resolution instead of not at all. CutReport::d_ref says what it ran with.
-  std::uint32_t coarser_retries = 2;
+
+  // D_ref, the one length the refinement, the selection and the tissue rule are judged at.
+  [[nodiscard]] double d_ref() const { return d_ref_factor * tool_diameter; }
 };
 
 // A message naming the parameter when one is non-finite, non-positive or out of range.
 std::optional<std::string> validate(const CutParams& params);
 
+// Each stage's wall time, and the whole call's (total_us, from the call to its return: a refused
+// cut's rollback included).
 struct CutTimings {
-  double locate_us = 0, refine_us = 0, select_us = 0, remove_us = 0, improve_us = 0, total_us = 0;
+  double locate_us = 0, refine_us = 0, select_us = 0, remove_us = 0, improve_us = 0;
+  double finish_us = 0;  // the tissue audit, the commit, the index and the change log
+  double total_us = 0;
 };
 
-struct CutReport {
+// Why a cut or a removal request was refused (CutReport::ok false), the mesh untouched.
+enum class CutRefusal : std::uint8_t {
+  kNone,
+  kStaleIndex,       // the mesh was compacted or replaced behind the Cutter's back
+  kParameters,       // validate() or the mesh's scale refuses the parameters (check_scale)
+  kRequest,          // remove(): the tet is not live, or uncuttable
+  kDegenerateSplit,  // a split the exact predicate refuses (a child would be flat or inverted)
+  kTetBudget,        // the cut would make more than max_tets_created tets
+  kQualityFloor,     // a created tet the improvement pass cannot lift to the floor (I7)
+  kTissueRule,       // a cuttable tet meeting the tool would keep an edge longer than D_ref (I10)
+};
+inline constexpr int kCutRefusals = 8;
+const char* to_string(CutRefusal refusal);
+
+// A cut's account. The removal requests' counts (RequestCounts, removal_report.hpp: requests,
+// tets_removed, direct, the singularities and how they were resolved, unresolved) are its base.
+struct CutReport : RequestCounts {
   bool ok = true;
-  std::string failure;               // why the cut was rolled back (when !ok)
+  CutRefusal refusal = CutRefusal::kNone;
+  std::string failure;               // why the cut was rolled back (when !ok), for people
+  // A refused cut's counts say what it did before it was refused; none of it is in the mesh or
+  // in removal_report().
   std::uint32_t tets_hit = 0;        // live tets meeting the ball before refinement
   std::uint32_t refine_iterations = 0;
   std::uint32_t edges_split = 0;     // by the refinement loop
   std::uint32_t tets_refined = 0;    // parents replaced by the refinement loop
   std::uint32_t requested = 0;       // |T_removal|, children of selected tets that joined it included
-  std::uint32_t requests = 0;        // removal requests made (a tet a set swallowed is not requested)
-  std::uint32_t tets_removed = 0;    // all tets removed, neighbour sets included
   std::uint32_t tets_created = 0;    // net: by refinement and by removal, still there at the end
-  std::uint32_t direct = 0, vertex_singularities = 0, edge_singularities = 0;
-  // unresolved: requests of this cut left in place (a tet left twice counts twice; the
-  // removal_report() counts distinct tets, as the paper's tables do).
-  std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_fallback = 0, unresolved = 0;
   // Pieces of unselected tets that a removal-time split (3.4, 3.7, the fallback) left inside the
-  // tool and that their one request (no cascade) did not remove either: tissue left in the tool
-  // besides the unresolved requests. 0 and 0 unresolved: the tool is empty.
+  // tool, each requested once (no cascade), in `requests` too.
+  std::uint32_t kept_pieces_requested = 0;
+  // The tissue rule (I10), after the cut: live cuttable tets whose centroid is in the tool and
+  // whose edges are within D_ref, i.e. tissue the paper's selection takes, still there: the tets
+  // of unresolved requests and pieces of kept tets their request did not remove. Listed by
+  // Cutter::last_left_in_tool(). 0: the cut took all the tissue its rule takes.
   std::uint32_t left_in_tool = 0;
-  std::uint32_t kept_pieces_requested = 0;  // such pieces requested (each once), in `requests` too
+  // The volume of cuttable tissue still inside the tool's ball: of every live cuttable tet that
+  // meets it, the part inside (volume_in_ball: exact for tets wholly in or out, else the midpoint
+  // rule on 8 equal children). The paper's selection (centroid in the ball, edges within D_ref)
+  // leaves the parts of grazing tets by design: this says how much.
+  double volume_left_in_tool = 0.0;
+  // What the cut removed as tissue (the removal requests and the improvement pass's slivers):
+  // its volume, and of it the tets whose centroid is outside the tool, the volume outside the
+  // tool (estimated as above) and the tets reaching beyond the cut's reach (the tool's ball grown
+  // by D_ref).
+  double volume_removed = 0.0;
+  std::uint32_t tets_removed_beyond_tool = 0;
+  double volume_removed_beyond_tool = 0.0;
+  std::uint32_t tets_removed_beyond_reach = 0;
   // Tets the tool selects (3.3) that are uncuttable (Cutter::set_uncuttable()): left in place,
   // neither requested nor counted as unresolved or left in the tool.
   std::uint32_t uncuttable_in_tool = 0;
@@ -106,10 +143,13 @@ struct CutReport {
   double quality_floor = 1.0;        // min(F, worst tet replaced): what every created tet must reach
                                      // (F when every created tet is above it)
   bool quality_met = true;           // every created tet reaches it
-  std::uint32_t improvement_flips = 0, improvement_collapses = 0, improvement_moves = 0;
-  double d_ref = 0;                  // the D_ref the cut ran with: d_ref_factor x diameter, doubled per retry
-  std::uint32_t coarser_retries = 0; // attempts rolled back before it (CutParams::coarser_retries)
-  CutTimings time;                   // of the attempt that ended it; total_us: every attempt
+  // The improvement pass's operations: flips, collapses, vertex moves (smoothing), insertions
+  // (an edge split at its midpoint, kept), and the slivers it let go with the tissue (in
+  // tets_removed_by_improvement, apart from the requests' tets_removed).
+  std::uint32_t improvement_flips = 0, improvement_collapses = 0, improvement_moves = 0, improvement_insertions = 0;
+  std::uint32_t tets_removed_by_improvement = 0;
+  double d_ref = 0;                  // the D_ref the cut was judged at: CutParams::d_ref()
+  CutTimings time;
 };
 
 class Cutter {
@@ -179,6 +219,9 @@ class Cutter {
   // The removals and creations of the last cut, net (what LocalChecker wants).
   [[nodiscard]] const std::vector<TetId>& last_removed() const;
   [[nodiscard]] const std::vector<TetId>& last_created() const;
+  // The tets the last cut left in its tool (CutReport::left_in_tool), sorted by id: what the
+  // checker's I10 accepts as reported.
+  [[nodiscard]] std::span<const TetId> last_left_in_tool() const;
 
  private:
   // The index, the refiner, the Remover, the marks and the scratch lists (engine/src/cut/

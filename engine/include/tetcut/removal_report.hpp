@@ -58,6 +58,22 @@ struct EdgeSearchTally {
   bool operator==(const EdgeSearchTally&) const = default;
 };
 
+// What a transaction's removal requests did, request by request: a tet requested again after an
+// earlier request left it counts again (RemovalReport counts distinct tets, as the paper's tables
+// do). The Remover adds each request here and to its RemovalReport in one tally; a CutReport is
+// one of these.
+struct RequestCounts {
+  std::uint32_t requests = 0;        // removal requests made (a tet a set swallowed is not requested)
+  std::uint32_t tets_removed = 0;    // tets the requests removed, neighbour sets and refined pieces included
+  // How the requested tets stood when first requested (a repeated request is not counted again):
+  // removable on their own, or a vertex or an edge singularity.
+  std::uint32_t direct = 0, vertex_singularities = 0, edge_singularities = 0;
+  // How each request that was not direct ended; unresolved: left in place, a tet left twice
+  // counting twice.
+  std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_fallback = 0, unresolved = 0;
+  bool operator==(const RequestCounts&) const = default;
+};
+
 struct RemovalReport {
   std::uint64_t requested = 0;             // distinct tets requested
   std::uint64_t repeated_requests = 0;     // requests for a tet already left unresolved

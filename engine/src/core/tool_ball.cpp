@@ -94,6 +94,41 @@ bool intersects(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, c
   return false;
 }
 
+namespace {
+
+double share_in_ball(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, bool meeting) {
+  // Corners relative to the centre: a point is in the ball when its square norm is within r^2.
+  const Vec3 q[4] = {a - ball.centre, b - ball.centre, c - ball.centre, d - ball.centre};
+  const double r2 = ball.radius * ball.radius;
+  auto inside = [&](const Vec3& p) { return dot(p, p) <= r2; };
+  if (inside(q[0]) && inside(q[1]) && inside(q[2]) && inside(q[3])) return 1.0;
+  if (!meeting && !intersects(ball, a, b, c, d)) return 0.0;
+  // The children's centroids, with S the sum of the corners: a corner child's is S/8 + v_i/2
+  // (5/8 at its corner, 1/8 at the others); the octahedron's four about the 02-13 diagonal are
+  // S/4 +- (v1 - v3)/8 and S/4 +- (v2 - v0)/8 (3/8 at one of the other four edges' vertices, 1/8
+  // at the one opposite, 1/4 at the rest).
+  const Vec3 sum = q[0] + q[1] + q[2] + q[3];
+  const Vec3 eighth = 0.125 * sum, quarter = 0.25 * sum;
+  const Vec3 d13 = 0.125 * (q[1] - q[3]), d20 = 0.125 * (q[2] - q[0]);
+  int in = 0;
+  for (const Vec3& v : q) in += inside(eighth + 0.5 * v) ? 1 : 0;
+  in += inside(quarter + d13) ? 1 : 0;
+  in += inside(quarter - d13) ? 1 : 0;
+  in += inside(quarter + d20) ? 1 : 0;
+  in += inside(quarter - d20) ? 1 : 0;
+  return in / 8.0;
+}
+
+}  // namespace
+
+double share_in_ball(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return share_in_ball(ball, a, b, c, d, false);
+}
+
+double share_in_ball_meeting(const Ball& ball, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return share_in_ball(ball, a, b, c, d, true);
+}
+
 bool tet_meets_ball(const TetMesh& mesh, TetId t, const Ball& ball) {
   const auto v = mesh.tet(t);
   return intersects(ball, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));

@@ -1,7 +1,8 @@
-// What a Cutter holds (cut.hpp): the spatial index, the refiner, the Remover, the per-tet marks
-// and the scratch lists of one cut. Behind a pointer so that the installed cut.hpp names none of
-// these internal types; allocated once, by the Cutter's constructor, so that a cut still
-// allocates nothing (bench/cut_bench counts it).
+// What a Cutter holds (cut.hpp) and the walk of one cut through its stages: locate (the spatial
+// index), refine (refine/refine.hpp), select (tissue_selection.hpp), remove (removal_loop.hpp),
+// improve (improve/improver.hpp), audit (tissue_audit.hpp), commit (cut_transaction.hpp). Behind
+// a pointer so that the installed cut.hpp names none of these internal types; allocated once, by
+// the Cutter's constructor, so that a cut still allocates nothing (bench/cut_bench counts it).
 #pragma once
 
 #include <cstdint>
@@ -11,10 +12,15 @@
 
 #include "core/tool_ball.hpp"
 #include "core/uncuttable_tets.hpp"
+#include "cut/cut_transaction.hpp"
+#include "cut/removal_loop.hpp"
 #include "cut/spatial_index.hpp"
+#include "cut/tissue_audit.hpp"
+#include "cut/tissue_selection.hpp"
 #include "improve/improver.hpp"
 #include "refine/refine.hpp"
 #include "remove/removal.hpp"
+#include "remove/tissue_removal.hpp"
 #include "tetcut/cut.hpp"
 
 namespace tetcut {
@@ -25,55 +31,48 @@ class Cutter::Pipeline {
 
   void prepare();
   void reset();
+  Renumbering compact();
   std::optional<std::string> set_params(const CutParams& params);
-  // One cut: attempts at D_ref, then at twice it, ... (CutParams::coarser_retries) while the
-  // improvement pass cannot meet the floor.
+  std::optional<std::string> set_uncuttable(std::span<const TetId> tets);
   CutReport cut(const Vec3& centre, ChangeLog* log);
   CutReport remove(TetId t, ChangeLog* log);
   TetId tet_containing(const Vec3& p);
   // The mesh's ids are the ones the index was built on (TetMesh::id_epoch() unchanged since).
   [[nodiscard]] bool indexes_current_mesh() const { return epoch_ == mesh_.id_epoch(); }
+  [[nodiscard]] bool uncuttable(TetId t) const;
 
-  TetMesh& mesh_;
-  CutParams params_;
-  Remover remover_;
-  std::vector<TetId> net_removed_, net_created_;
-  RemovalReport removal_at_start_;  // remover_.report() when the transaction began
-  detail::UncuttableTets uncuttable_;  // Cutter::set_uncuttable()
+  [[nodiscard]] TetMesh& mesh() const { return mesh_; }
+  [[nodiscard]] const CutParams& params() const { return params_; }
+  [[nodiscard]] const RemovalReport& removal_report() const { return remover_.report(); }
+  [[nodiscard]] const std::vector<TetId>& last_removed() const { return transaction_.net_removed(); }
+  [[nodiscard]] const std::vector<TetId>& last_created() const { return transaction_.net_created(); }
+  [[nodiscard]] std::span<const TetId> last_left_in_tool() const { return audit_.left(); }
 
  private:
-  // Removes the selected tets (removal_, growing), directly removable ones first, and fills the
-  // counts.
-  void remove_selected(CutReport& report);
-  // CutReport::left_in_tool: the live tets the cut made, inside the tool, not selected tissue.
-  void count_left_in_tool(CutReport& report);
-  // One attempt at the cut with this D_ref: a transaction, committed or rolled back.
-  CutReport attempt(const Ball& tool, double d_ref, ChangeLog* log);
-  // Follows what a step made since `point` (the journal's record): which of the new tets are
-  // pieces of selected tissue inside the tool, and so selected in turn.
-  void follow(const TetMesh::Savepoint& point);
-  [[nodiscard]] bool selectable(TetId t) const;
-  // A tet the cut made, still there, not selected, and selectable: tissue left in the tool.
-  [[nodiscard]] bool piece_in_tool(TetId t) const;
-  [[nodiscard]] bool pending(TetId t) const;
-  void clear_marks();  // a new cut: fresh marks
-  // Opens the transaction a cut or a removal request is (savepoint, fresh marks, the removal
-  // statistics as they stand), and closes one that failed: the mesh rolled back and the
-  // statistics as they were, so that a refused cut counts none of its requests.
-  void begin();
-  void roll_back();
-  // Tets the cut made that are still live: what its budget counts.
-  [[nodiscard]] std::uint32_t net_made() const { return mesh_.net_tets_made_since(cut_start_); }
-  // The improvement pass (improve/improver.hpp) over what the transaction made, into the report.
-  void improve(CutReport& report);
-  // Why a cut whose made tets the pass could not lift to the floor is refused.
-  static std::string floor_failure(const CutReport& report);
-  void finish(CutReport& report, ChangeLog* log);
+  // The stages of one cut, in order; each fills its part of the report. A stage that returns
+  // false has refused the cut (refuse()): the caller rolls the transaction back.
+  void locate(const Ball& tool);
+  bool refine(const Ball& tool, CutReport& report);
+  void select(CutReport& report);
+  bool remove_selected(CutReport& report);
+  bool improve(CutReport& report);
+  bool audit(CutReport& report);
+  void commit(CutReport& report, ChangeLog* log);
+
+  // Opens the transaction a cut or a removal request is, with the tool (none for a request).
+  void begin(const Ball* tool);
+  // A refusal, into the report: false, for the stage to return.
+  static bool refuse(CutReport& report, CutRefusal refusal, std::string why);
+  // Rolls the open transaction back after a refusal: the mesh and the removal statistics as
+  // before the cut; the report keeps what the stages measured before the refusal.
+  void roll_back(CutReport& report);
   // Why the index cannot serve the mesh (compacted or replaced since it was built), if so.
   [[nodiscard]] std::optional<std::string> stale() const;
   // refusal_ from invalid_ and check_scale(): after the parameters or the mesh's scale change.
   void judge_scale();
 
+  TetMesh& mesh_;
+  CutParams params_;
   std::uint64_t epoch_ = 0;  // mesh_.id_epoch() when the index was built
   MeshScale scale_;          // what the refinement can serve (check_scale), measured once
   // Why every cut would be refused, decided when the parameters or the scale change, not per
@@ -81,16 +80,17 @@ class Cutter::Pipeline {
   std::optional<std::string> invalid_, refusal_;
   SpatialIndex index_;
   Refiner refiner_;
+  Remover remover_;
   detail::Improver improver_;
-  ChangeLog changes_;                // the last cut's net change, derived by the journal at commit
-  TetMesh::Savepoint cut_start_;
-  std::vector<TetId> hit_, region_, removal_;
-  // In the current cut: selected; selected tissue (a selected tet or a piece of one, inside the
-  // tool or not); already requested (and left unresolved); waiting in work_.
-  StampedSet<TetId> selected_, tissue_, tried_, queued_;
-  std::vector<TetId> work_;          // selected tets to test for a direct removal
-  std::optional<Ball> tool_;         // the cut's ball (none for remove())
-  double d_ref_ = 0.0;
+  detail::UncuttableTets uncuttable_;  // Cutter::set_uncuttable()
+  detail::CutTransaction transaction_;
+  detail::TissueSelection selection_;
+  detail::TissueRemoval tissue_;
+  detail::RemovalLoop removal_loop_;
+  detail::TissueAudit audit_;
+  std::vector<TetId> hit_, region_;  // T_hit, and the refined region
+  // Where the removal stage began and ended in the journal: what it made, for the audit.
+  TetMesh::Savepoint removal_start_, removal_end_;
 };
 
 }  // namespace tetcut

@@ -232,17 +232,22 @@ void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operation
     }
     if (!removability(mesh, t).removable()) continue;
     if (uncuttable_ && uncuttable_->contains(mesh, t)) continue;
-    mesh.remove_tets(std::span<const TetId>(&t, 1));
+    tissue_->remove(mesh, std::span<const TetId>(&t, 1));
     ++out.removed;
   }
 }
 
 ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, double floor_f, bool improve,
-                             const Ball* reach, const UncuttableTets* uncuttable) {
+                             const Ball* reach, const UncuttableTets* uncuttable, TissueRemoval* tissue) {
   ImproveOutcome out;
   host_quality_.clear();
   tool_ = reach;
   uncuttable_ = uncuttable;
+  tissue_ = tissue;
+  if (!tissue_) {
+    own_tissue_.begin(nullptr, 0.0);
+    tissue_ = &own_tissue_;
+  }
   out.worst_before = out.worst_after = collect_made(mesh, start);
   if (made_.empty()) return out;
   // Every made tet at or above F is above min(F, any host): met, without locating the hosts.

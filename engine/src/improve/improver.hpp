@@ -36,6 +36,7 @@
 #include "improve/flips.hpp"
 #include "improve/smoothing.hpp"
 #include "refine/edge_split.hpp"
+#include "remove/tissue_removal.hpp"
 #include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/mesh.hpp"
 
@@ -62,8 +63,11 @@ class Improver {
   // `uncuttable`: tets the pass must leave as a region (uncuttable_tets.hpp): it flips only among
   // tets all or none of which are uncuttable, moves and collapses no vertex of one, and removes
   // none.
+  // `tissue`: the transaction's removal path, through which the slivers go (none: removed
+  // through one of the Improver's own, untallied).
   ImproveOutcome run(TetMesh& mesh, const TetMesh::Savepoint& start, double floor_f, bool improve,
-                     const Ball* reach = nullptr, const UncuttableTets* uncuttable = nullptr);
+                     const Ball* reach = nullptr, const UncuttableTets* uncuttable = nullptr,
+                     TissueRemoval* tissue = nullptr);
 
  private:
   // The made tets still live into made_; their worst radius ratio.
@@ -95,6 +99,8 @@ class Improver {
   double goal_ = 0.0;                  // the run's floor, a rounding above
   const Ball* tool_ = nullptr;         // the run's reach, if a cut
   const UncuttableTets* uncuttable_ = nullptr;  // the run's, if any
+  TissueRemoval* tissue_ = nullptr;             // the run's removal path
+  TissueRemoval own_tissue_;
   FlipPlan plan_, candidate_;
   std::vector<TetId> made_, ancestors_, created_;
   std::vector<std::pair<double, TetId>> bad_;  // (radius ratio, tet), worst first

@@ -28,6 +28,7 @@ struct Remover::Workspace {
   std::vector<TetId> set;
   std::vector<TetId> net_removed, net_created, exposed;
   StampedSet<TetId> met_unresolved;  // already counted as unresolved (cleared by reset() only)
+  detail::TissueRemoval tissue;      // the removal path of a request made without a caller's
   // The wide search's bounds (as the strategy wide and as 3.4/3.7's repair), from the options
   // when they are set.
   detail::WideSearchLimits limits;
@@ -35,8 +36,27 @@ struct Remover::Workspace {
 
 namespace {
 
-// One request in the Remover's statistics, per distinct tet (removal_report.hpp).
-void count_request(RemovalReport& report, const RemovalResult& result) {
+// One request in the caller's request-by-request counts, when it keeps them.
+void count_request(RequestCounts& counts, const RemovalResult& result) {
+  ++counts.requests;
+  if (!result.repeat) {
+    counts.vertex_singularities += result.first.kind == SingularityKind::kVertex ? 1 : 0;
+    counts.edge_singularities += result.first.kind == SingularityKind::kEdge ? 1 : 0;
+  }
+  if (result.outcome != RemovalOutcome::kUnresolved) counts.tets_removed += result.tets_removed;
+  switch (result.outcome) {
+    case RemovalOutcome::kDirect: counts.direct += result.repeat ? 0 : 1; break;
+    case RemovalOutcome::kNeighbours: ++counts.resolved_by_neighbours; break;
+    case RemovalOutcome::kRefinement: ++counts.resolved_by_refinement; break;
+    case RemovalOutcome::kFallback: ++counts.resolved_by_fallback; break;
+    case RemovalOutcome::kUnresolved: ++counts.unresolved; break;
+  }
+}
+
+// One request in the Remover's statistics, per distinct tet (removal_report.hpp), and in the
+// caller's counts: the one tally of a request.
+void count_request(RemovalReport& report, RequestCounts* counts, const RemovalResult& result) {
+  if (counts) count_request(*counts, result);
   const SingularityKind kind = result.first.kind;
   const bool repeat = result.repeat;
   if (repeat) {
@@ -158,6 +178,11 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
   w.exposed.clear();
   detail::RemovalContext ctx{mesh, w.set_test, w.splitter, w.exposed, start, limits.max_tets_created, limits.selection};
   ctx.uncuttable = limits.uncuttable;
+  ctx.tissue = limits.tissue;
+  if (!ctx.tissue) {
+    w.tissue.begin(nullptr, 0.0);
+    ctx.tissue = &w.tissue;
+  }
 
   RemovalResult result;
   result.first = first;
@@ -234,7 +259,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
     if (mesh.boundary_face_count(c) > 0) w.exposed.push_back(c);
   if (own_transaction) mesh.commit();
 
-  count_request(report_, result);
+  count_request(report_, limits.counts, result);
   if (result.outcome == RemovalOutcome::kUnresolved) {
     w.met_unresolved.insert(t);
   } else {

@@ -41,6 +41,7 @@
 #include "core/uncuttable_tets.hpp"
 #include "remove/removability.hpp"
 #include "remove/selection.hpp"
+#include "remove/tissue_removal.hpp"
 #include "tetcut/cut_strategies.hpp"  // RemovalStrategy
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
@@ -89,13 +90,17 @@ struct RemovalResult {
   std::uint16_t edge_search = 0xFFFF;
 };
 
-// What one request may do beyond the strategy's own bounds.
+// What one request may do beyond the strategy's own bounds, and where it reports.
 struct RequestLimits {
   std::uint32_t max_tets_created = 0xFFFFFFFFu;  // by any split of the request (the cut's budget left)
   const Selection* selection = nullptr;
   // Tets no set may take (Cutter::set_uncuttable()): a set holding one is refused like a set
   // that fails the test, and the request goes on to the next stage.
   const detail::UncuttableTets* uncuttable = nullptr;
+  // The transaction's removal path, which tallies what goes (none: the Remover's own, begun anew
+  // for each request); and its request-by-request counts, if the caller keeps them (a cut does).
+  detail::TissueRemoval* tissue = nullptr;
+  RequestCounts* counts = nullptr;
 };
 
 // Removes requested tets with one strategy and keeps the statistics. Holds all scratch memory:

@@ -19,7 +19,7 @@ void RemovalContext::remove_set(std::span<const TetId> set) {
       const FaceRef n = mesh.neighbour(u, f);
       if (n.valid() && !ws.marked(n.tet)) exposed.push_back(n.tet);
     }
-  mesh.remove_tets(set);
+  tissue->remove(mesh, set);
 }
 
 bool RemovalContext::with_selected_children(std::span<const TetId> set, std::span<const TetMesh::TetBirth> children,

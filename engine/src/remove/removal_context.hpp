@@ -13,6 +13,7 @@
 #include "refine/edge_split.hpp"
 #include "remove/selection.hpp"
 #include "remove/set_removal.hpp"
+#include "remove/tissue_removal.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::detail {
@@ -27,6 +28,7 @@ struct RemovalContext {
   const Selection* selection = nullptr;  // the caller's selected tets, if any
   bool over_budget = false;         // a split was refused for the budget
   const UncuttableTets* uncuttable = nullptr;  // tets no set may take, if any
+  TissueRemoval* tissue = nullptr;             // the one removal path (tissue_removal.hpp)
 
   // Whether `set` may go: it holds no uncuttable tet. Asked with the removability test, before
   // every removal (plan, then apply).
@@ -39,7 +41,8 @@ struct RemovalContext {
   // taken before the call (TetMesh::tets_made_since). `point`: where the new vertices go (the
   // fallback, whose proof holds for any point inside each edge, lets the splitter move them).
   bool split(std::span<const Edge> edges, SplitPoint point = SplitPoint::kMidpoint);
-  // Removes a set that set_removable() and may_remove() accepted, recording the tets it exposes.
+  // Removes a set that set_removable() and may_remove() accepted, through the one removal path,
+  // recording the tets it exposes.
   void remove_set(std::span<const TetId> set);
 
   // After a split made `children`: `set` plus every child of a selected parent not in it yet,

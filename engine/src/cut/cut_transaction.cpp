@@ -1,0 +1,49 @@
+#include "cut/cut_transaction.hpp"
+
+#include "tetcut/detail/reserve_touched.hpp"
+
+namespace tetcut::detail {
+
+void CutTransaction::reserve() {
+  // The working size of a cut's change; a larger cut grows them once (allocations per cut are
+  // gated by ci/bench).
+  constexpr std::size_t kCutScratch = 16384;
+  for (auto* list : {&net_removed_, &net_created_, &changes_.removed, &changes_.parents}) reserve_touched(*list, kCutScratch);
+  reserve_touched(changes_.created, kCutScratch);
+  reserve_touched(changes_.vertices, kCutScratch);
+  reserve_touched(changes_.removed_vertices, kCutScratch);
+}
+
+void CutTransaction::begin(TetMesh& mesh, const Remover& remover) {
+  mesh.begin_transaction();
+  start_ = mesh.savepoint();
+  removal_at_start_ = remover.report();
+}
+
+void CutTransaction::roll_back(TetMesh& mesh, Remover& remover) {
+  mesh.rollback();
+  remover.restore_report(removal_at_start_);
+  forget();
+}
+
+std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log) {
+  uncuttable.before_commit(mesh, start_);
+  if (log) {
+    changes_.clear();
+    mesh.commit(&changes_);
+    net_removed_.assign(changes_.removed.begin(), changes_.removed.end());
+    net_created_.clear();
+    for (const CreatedTet& c : changes_.created) net_created_.push_back(c.tet);
+    append(*log, changes_);
+  } else {
+    // Nobody reads the parents and origins: the ids alone, for the index.
+    mesh.transaction_changes(net_removed_, net_created_);
+    mesh.commit();
+  }
+  uncuttable.after_commit(mesh);
+  for (TetId t : net_removed_) index.erase(t);
+  for (TetId t : net_created_) index.insert(mesh, t);
+  return static_cast<std::uint32_t>(net_created_.size());
+}
+
+}  // namespace tetcut::detail

@@ -1,0 +1,47 @@
+// The transaction a cut or a removal request is: opened before its first change, then either
+// rolled back (the mesh bit for bit as before, the removal statistics as they were, so that a
+// refused cut counts none of its requests) or committed (the uncuttable set brought up to date,
+// the spatial index told what went and what came, the net change handed to the caller as the
+// mesh's journal derives it: change_log.hpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/uncuttable_tets.hpp"
+#include "cut/spatial_index.hpp"
+#include "remove/removal.hpp"
+#include "tetcut/change_log.hpp"
+#include "tetcut/mesh.hpp"
+#include "tetcut/removal_report.hpp"
+
+namespace tetcut::detail {
+
+class CutTransaction {
+ public:
+  void reserve();
+
+  void begin(TetMesh& mesh, const Remover& remover);
+  void roll_back(TetMesh& mesh, Remover& remover);
+  // Commits; appends the net change to `log` when given. Returns the net tets created.
+  std::uint32_t commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log);
+  // A new call: no net change yet (a refused or empty cut reports none).
+  void forget() {
+    net_removed_.clear();
+    net_created_.clear();
+  }
+
+  [[nodiscard]] const TetMesh::Savepoint& start() const { return start_; }
+  // The last committed transaction's net change: the ids live before and gone after, the ids
+  // live after and not before.
+  [[nodiscard]] const std::vector<TetId>& net_removed() const { return net_removed_; }
+  [[nodiscard]] const std::vector<TetId>& net_created() const { return net_created_; }
+
+ private:
+  TetMesh::Savepoint start_;
+  RemovalReport removal_at_start_;  // the Remover's statistics when the transaction began
+  ChangeLog changes_;               // the net change, derived by the journal at commit
+  std::vector<TetId> net_removed_, net_created_;
+};
+
+}  // namespace tetcut::detail

@@ -1,0 +1,96 @@
+#include "cut/removal_loop.hpp"
+
+#include "tetcut/detail/reserve_touched.hpp"
+
+namespace tetcut::detail {
+
+void RemovalLoop::reserve(std::uint32_t tets) {
+  tried_.reserve(tets);
+  queued_.reserve(tets);
+  reserve_touched(work_, 16384);
+}
+
+bool RemovalLoop::pending(const Context& ctx, TetId t) const {
+  return ctx.mesh.is_live(t) && ctx.selection.selected().contains(t) && !tried_.contains(t);
+}
+
+void RemovalLoop::enqueue(const Context& ctx, TetId t) {
+  if (!pending(ctx, t) || !queued_.insert(t)) return;
+  work_.push_back(t);
+}
+
+TetId RemovalLoop::next_pending(const Context& ctx) const {
+  for (TetId t : ctx.selection.removal())
+    if (pending(ctx, t) && ctx.mesh.boundary_face_count(t) > 0) return t;
+  for (TetId t : ctx.selection.removal())
+    if (pending(ctx, t)) return t;
+  return kNoTet;
+}
+
+bool RemovalLoop::request(const Context& ctx, TetId t, const Removability& first, bool pieces, CutReport& report) {
+  tried_.insert(t);
+  const std::uint32_t made = ctx.mesh.net_tets_made_since(ctx.start);
+  RequestLimits limits;
+  limits.max_tets_created = ctx.params.max_tets_created > made ? ctx.params.max_tets_created - made : 0;
+  limits.selection = &ctx.selection.selected();
+  limits.uncuttable = &ctx.uncuttable;
+  limits.tissue = &ctx.tissue;
+  limits.counts = &report;
+  const std::size_t selected_before = ctx.selection.removal().size();
+  const TetMesh::Savepoint before_request = ctx.mesh.savepoint();
+  const RemovalResult r = ctx.remover.remove(ctx.mesh, t, first, limits);
+  if (pieces) {
+    ctx.selection.follow(ctx.mesh, before_request);
+    for (std::size_t i = selected_before; i < ctx.selection.removal().size(); ++i) enqueue(ctx, ctx.selection.removal()[i]);
+    for (TetId e : ctx.remover.last_exposed()) enqueue(ctx, e);
+  }
+  return !r.over_budget && ctx.mesh.net_tets_made_since(ctx.start) <= ctx.params.max_tets_created;
+}
+
+bool RemovalLoop::run(const Context& ctx, CutReport& report) {
+  tried_.clear();
+  queued_.clear();
+  const std::vector<TetId>& removal = ctx.selection.removal();
+  if (ctx.selection.tool() && removal.size() == ctx.mesh.num_tets()) {
+    // The tool holds every tet (each selected one is live and counted once): removing the whole
+    // mesh leaves nothing that could pinch, so it goes at once, in O(#T), instead of tet by tet.
+    ctx.tissue.remove(ctx.mesh, removal);
+    report.requested = report.tets_removed = static_cast<std::uint32_t>(removal.size());
+    return true;
+  }
+  work_.clear();
+  std::size_t head = 0;
+  for (TetId t : removal) enqueue(ctx, t);
+  if (ctx.params.order == RemovalOrder::kPaper) {
+    for (TetId t = next_pending(ctx); t.valid(); t = next_pending(ctx))
+      if (!request(ctx, t, removability(ctx.mesh, t), true, report)) return false;
+    work_.clear();
+  }
+  for (;;) {
+    while (head < work_.size()) {
+      const TetId t = work_[head++];
+      queued_.erase(t);
+      if (!pending(ctx, t)) continue;
+      const Removability first = removability(ctx.mesh, t);
+      if (!first.removable()) continue;
+      if (!request(ctx, t, first, true, report)) return false;
+    }
+    const TetId stuck = next_pending(ctx);
+    if (!stuck.valid()) break;
+    if (!request(ctx, stuck, removability(ctx.mesh, stuck), true, report)) return false;
+  }
+  report.requested = static_cast<std::uint32_t>(removal.size());
+  if (!ctx.selection.tool()) return true;
+
+  work_.clear();
+  for (const TetMesh::TetBirth& birth : ctx.mesh.tets_made_since(ctx.start))
+    if (ctx.selection.piece_in_tool(ctx.mesh, birth.tet, ctx.uncuttable)) work_.push_back(birth.tet);
+  for (TetId t : work_) {
+    if (!ctx.mesh.is_live(t) || tried_.contains(t)) continue;
+    ++report.kept_pieces_requested;
+    if (!request(ctx, t, removability(ctx.mesh, t), false, report)) return false;
+  }
+  return true;
+}
+
+}  // namespace tetcut::detail

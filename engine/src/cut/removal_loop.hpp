@@ -1,0 +1,71 @@
+// The removal stage of a cut or a removal request (paper 3.3 to 3.7): every selected tet is
+// removed or counted unresolved.
+//
+// Directly removable selected tets first, until none is left (paper 3.3: a strategy's larger set
+// then meets fewer singularities); then one stuck tet, outside in (on the surface first: the
+// paper's statistics are about "removing a tetrahedron on the mesh surface", 3.3, else any, for a
+// tool inside the mesh), handed to the strategy (remove/removal.hpp), and again. Or, with
+// RemovalOrder::kPaper, the first pending tet on the surface (else the first pending), requested
+// as it comes, one by one.
+//
+// Removal only turns faces, edges and vertices into boundary ones, so a tet that is not
+// removable becomes removable only when it gains a boundary face, i.e. when a face neighbour goes
+// and exposes it: one pass over a worklist of what each request exposes or selects, instead of
+// passes over T_removal.
+//
+// Then the pieces of kept tets inside the tool: a removal-time split (3.4, 3.7, the fallback)
+// cuts unselected neighbours too, and a piece whose centroid falls in the ball is tissue in the
+// tool that the selection does not follow (tissue_selection.hpp). Each is requested once, and
+// what its own request makes is not followed (no cascade); what stays is counted by the audit.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/uncuttable_tets.hpp"
+#include "cut/tissue_selection.hpp"
+#include "remove/removal.hpp"
+#include "remove/tissue_removal.hpp"
+#include "tetcut/cut.hpp"
+#include "tetcut/detail/stamped_property.hpp"
+#include "tetcut/mesh.hpp"
+
+namespace tetcut::detail {
+
+class RemovalLoop {
+ public:
+  void reserve(std::uint32_t tets);
+
+  // Everything one transaction's removal stage reads and writes.
+  struct Context {
+    TetMesh& mesh;
+    TissueSelection& selection;
+    Remover& remover;
+    TissueRemoval& tissue;
+    const UncuttableTets& uncuttable;
+    const CutParams& params;
+    TetMesh::Savepoint start;  // the transaction's: its tet budget counts what was made since
+  };
+  // Removes T_removal (selection.removal(), growing), filling the request counts, `requested`
+  // and `kept_pieces_requested` of `report`. False when a request would pass the per-cut tet
+  // budget: the caller rolls the transaction back, and `report` then counts none of the requests.
+  bool run(const Context& ctx, CutReport& report);
+  // Whether the last run() requested t.
+  [[nodiscard]] bool requested(TetId t) const { return tried_.contains(t); }
+
+ private:
+  // One request for t (`first`: removability(mesh, t), just computed). `pieces`: follow what it
+  // made (the selection's loop); off for the kept pieces.
+  bool request(const Context& ctx, TetId t, const Removability& first, bool pieces, CutReport& report);
+  void enqueue(const Context& ctx, TetId t);
+  // Selected, live and not requested yet.
+  [[nodiscard]] bool pending(const Context& ctx, TetId t) const;
+  // The paper's order: the first pending tet on the surface, else the first pending.
+  [[nodiscard]] TetId next_pending(const Context& ctx) const;
+
+  // Already requested (and left unresolved); waiting in work_.
+  StampedSet<TetId> tried_, queued_;
+  std::vector<TetId> work_;
+};
+
+}  // namespace tetcut::detail

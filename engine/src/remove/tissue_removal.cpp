@@ -1,0 +1,43 @@
+#include "remove/tissue_removal.hpp"
+
+#include <cmath>
+
+namespace tetcut::detail {
+
+void TissueRemoval::begin(const Ball* tool, double reach_radius) {
+  removed_ = {};
+  has_tool_ = tool != nullptr;
+  if (has_tool_) {
+    tool_ = *tool;
+    reach_ = Ball{tool->centre, reach_radius};
+  }
+}
+
+void TissueRemoval::remove(TetMesh& mesh, std::span<const TetId> set) {
+  for (TetId t : set) {
+    const TetMesh::TetVerts v = mesh.tet(t);
+    const Vec3 a = mesh.position(v[0]), b = mesh.position(v[1]), c = mesh.position(v[2]), d = mesh.position(v[3]);
+    const double volume = std::abs(dot(b - a, cross(c - a, d - a))) / 6.0;
+    ++removed_.tets;
+    removed_.volume += volume;
+    if (!has_tool_) {
+      ++removed_.tets_beyond_tool;
+      removed_.volume_beyond_tool += volume;
+      continue;
+    }
+    const Vec3 centroid = 0.25 * (a + b + c + d);
+    const bool beyond = norm(centroid - tool_.centre) > tool_.radius;
+    removed_.tets_beyond_tool += beyond ? 1 : 0;
+    // A tet whose centroid is in the ball meets it: the estimate need not test that again.
+    const double share = beyond ? share_in_ball(tool_, a, b, c, d) : share_in_ball_meeting(tool_, a, b, c, d);
+    removed_.volume_beyond_tool += volume * (1.0 - share);
+    for (const Vec3* p : {&a, &b, &c, &d})
+      if (norm(*p - reach_.centre) > reach_.radius) {
+        ++removed_.tets_beyond_reach;
+        break;
+      }
+  }
+  mesh.remove_tets(set);
+}
+
+}  // namespace tetcut::detail
