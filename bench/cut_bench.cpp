@@ -59,6 +59,11 @@ struct SweepResult {
   std::vector<double> samples_us;  // every cut, the first included
   std::vector<double> first_us;    // the first cut of each sweep
   std::uint64_t removed = 0, created = 0, unresolved = 0, allocations = 0, counted_cuts = 0;
+  // The tissue rule's figures: refused cuts, tets left in the tool, tets removed beyond the cut's
+  // reach, and per cut that met tissue the volume left in the tool and removed beyond it, as a
+  // share of the tool's ball.
+  std::uint64_t refused = 0, left_in_tool = 0, beyond_reach = 0;
+  std::vector<double> left_share, beyond_share;
 };
 
 // Writes and reads back 64 MiB, more than any cache of the CI machine holds, so that nothing of
@@ -99,6 +104,15 @@ void run_sweep(int level, SweepResult& out) {
     out.removed += r.tets_removed;
     out.created += r.tets_created;
     out.unresolved += r.unresolved;
+    out.refused += r.ok ? 0 : 1;
+    out.left_in_tool += r.left_in_tool;
+    out.beyond_reach += r.tets_removed_beyond_reach;
+    if (r.ok && r.tets_hit > 0) {
+      const double radius = cutter.params().tool_diameter / 2;
+      const double ball = 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius;
+      out.left_share.push_back(r.volume_left_in_tool / ball);
+      out.beyond_share.push_back(r.volume_removed_beyond_tool / ball);
+    }
   }
 }
 
@@ -123,6 +137,13 @@ void BM_CutSweep(benchmark::State& state) {
   state.counters["tets_removed_per_cut"] = static_cast<double>(sweep.removed) / cuts;
   state.counters["tets_created_per_cut"] = static_cast<double>(sweep.created) / cuts;
   state.counters["unresolved"] = static_cast<double>(sweep.unresolved);
+  state.counters["refused"] = static_cast<double>(sweep.refused);
+  state.counters["left_in_tool"] = static_cast<double>(sweep.left_in_tool);
+  state.counters["tets_removed_beyond_reach"] = static_cast<double>(sweep.beyond_reach);
+  state.counters["volume_left_share_p50"] = percentile(sweep.left_share, 0.5);
+  state.counters["volume_left_share_p99"] = percentile(sweep.left_share, 0.99);
+  state.counters["volume_removed_beyond_share_p50"] = percentile(sweep.beyond_share, 0.5);
+  state.counters["volume_removed_beyond_share_p99"] = percentile(sweep.beyond_share, 0.99);
   // Over the whole sweep, not averaged away: the goal is none at all once the Cutter is prepared.
   state.counters["allocations"] = static_cast<double>(sweep.allocations);
   state.counters["allocations_per_cut"] =

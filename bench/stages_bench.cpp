@@ -162,8 +162,11 @@ void BM_LocalCheck(benchmark::State& state) {
     state.PauseTiming();
     y = y + 4.0 > b.hi.y - 20 ? b.lo.y + 20 : y + 4.0;
     cutter.cut({95, y, 100});
+    tetcut::invariants::CheckOptions options;  // with the tissue rule (I10) at the cut's tool
+    options.tool = tetcut::invariants::ToolRule{.centre = {95, y, 100}, .radius = 4.0, .d_ref = cutter.params().d_ref(),
+                                                .left = cutter.last_left_in_tool()};
     state.ResumeTiming();
-    failures += !local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created()).ok();
+    failures += !local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options).ok();
   }
   state.counters["violations"] = static_cast<double>(failures);
 }

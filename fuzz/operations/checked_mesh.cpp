@@ -42,9 +42,10 @@ void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change,
 }
 
 void CheckedMesh::end(std::span<const TetId> removed, std::span<const TetId> created,
-                      std::optional<double> volume_change, inv::QualityRule rule) {
+                      std::optional<double> volume_change, inv::QualityRule rule, const inv::ToolRule* tool) {
   if (volume_change) expected_volume_ += *volume_change;
   inv::CheckOptions options;
+  if (tool) options.tool = *tool;
   options.level = inv::CheckLevel::kLocal;
   options.quality_rule = rule;
   options.operation = name_;

@@ -1,5 +1,5 @@
 // A mesh under fuzzing: every operation is bracketed by begin()/end(), and end() runs the local
-// checker over what the operation touched (invariants I1-I6, I8, I9), aborting with the
+// checker over what the operation touched (invariants I1-I9, and I10 after a cut), aborting with the
 // invariant's id and the operation's index on the first violation (fuzz_failure.hpp). The full
 // check runs on request (every few operations: it is O(#T)).
 //
@@ -48,8 +48,10 @@ class CheckedMesh {
   // a refinement loop) only reports quality (invariants/check.hpp, QualityRule).
   void end(const ChangeLog& log, std::optional<double> volume_change,
            invariants::QualityRule rule = invariants::QualityRule::kNoDegradation);
+  // `tool`: the operation was a cut with this tool, held to the tissue rule (I10).
   void end(std::span<const TetId> removed, std::span<const TetId> created, std::optional<double> volume_change,
-           invariants::QualityRule rule = invariants::QualityRule::kNoDegradation);
+           invariants::QualityRule rule = invariants::QualityRule::kNoDegradation,
+           const invariants::ToolRule* tool = nullptr);
   // Ends an operation that renumbered everything (compact()): the local checker starts over and
   // the full check runs.
   void end_renumbered();

@@ -97,10 +97,10 @@ OperationOutcome SequenceSession::cut_at(const Vec3& c, const std::string& name,
   begin(name, line);
   if (checked_.tracing()) checked_.describe("centre " + format_point(c));
   before_ = mesh();
-  return after(cutter_.cut(c));
+  return after(cutter_.cut(c), &c);
 }
 
-OperationOutcome SequenceSession::after(const CutReport& report) {
+OperationOutcome SequenceSession::after(const CutReport& report, const Vec3* cut_centre) {
   const std::size_t index = checked_.operation_index();
   if (!report.ok) {
     // Atomic: the mesh must be bit-identical to before, so its canonical hash is too.
@@ -121,7 +121,12 @@ OperationOutcome SequenceSession::after(const CutReport& report) {
     volume_[t.value] = mesh().volume(t);
     change += volume_[t.value];
   }
-  checked_.end(cutter_.last_removed(), cutter_.last_created(), change);
+  std::optional<invariants::ToolRule> tool;
+  if (cut_centre)
+    tool = invariants::ToolRule{.centre = *cut_centre, .radius = cutter_.params().tool_diameter / 2,
+                                .d_ref = cutter_.params().d_ref(), .left = cutter_.last_left_in_tool()};
+  checked_.end(cutter_.last_removed(), cutter_.last_created(), change, invariants::QualityRule::kNoDegradation,
+               tool ? &*tool : nullptr);
   if (!cutter_.last_removed().empty() || !cutter_.last_created().empty()) changed_since_full_check_ = true;
   const std::uint64_t before = unresolved_;
   unresolved_ += report.unresolved;

@@ -82,7 +82,8 @@ class SequenceSession {
   explicit SequenceSession(const BundledMesh& bundled);
   void restart(const BundledMesh& bundled, ScenarioRecorder& recorder);
   void begin(const std::string& name, std::uint32_t line);
-  OperationOutcome after(const CutReport& report);
+  // The checks after a cut (with its centre: the tissue rule) or a removal request.
+  OperationOutcome after(const CutReport& report, const Vec3* cut_centre = nullptr);
   void grow_volumes();
 
   ScenarioRecorder* recorder_ = nullptr;

@@ -117,6 +117,7 @@ TEST_P(Uncuttable, EveryCutLeavesTheVesselWholeAndTakesTheTissueAroundIt) {
   Cutter cutter(box.mesh, {.tool_diameter = 0.3, .strategy = GetParam()});
   ASSERT_FALSE(cutter.set_uncuttable(box.vessel));
   invariants::LocalChecker checker(box.mesh.raw_view());
+  checker.set_uncuttable(box.vessel);  // the checker's own record of the vessel, which I10 holds
   invariants::CheckOptions options;
   options.quality_rule = invariants::QualityRule::kNoDegradation;
   options.quality_floor = cutter.params().quality_floor;
@@ -132,6 +133,8 @@ TEST_P(Uncuttable, EveryCutLeavesTheVesselWholeAndTakesTheTissueAroundIt) {
     }
     EXPECT_EQ(labels.apply(box.mesh, log), 0u);
     met_the_vessel += r.uncuttable_in_tool > 0 ? 1 : 0;
+    options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
+                                        .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
     const invariants::CheckReport check =
         checker.after_operation(box.mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options);
     ASSERT_TRUE(check.ok()) << invariants::id_string(check.violations.front().id) << ": " << check.violations.front().detail;
@@ -192,6 +195,7 @@ TEST_P(Uncuttable, ScatteredUncuttableTetsOnTheBundledMeshesSurviveEveryCut) {
     Cutter cutter(mesh, {.tool_diameter = 0.8 * mesh.mean_edge_length(), .strategy = GetParam()});
     ASSERT_FALSE(cutter.set_uncuttable(kept));
     invariants::LocalChecker checker(mesh.raw_view());
+    checker.set_uncuttable(kept);
     invariants::CheckOptions options;
     options.quality_rule = invariants::QualityRule::kNoDegradation;
     options.quality_floor = cutter.params().quality_floor;
@@ -214,6 +218,8 @@ TEST_P(Uncuttable, ScatteredUncuttableTetsOnTheBundledMeshesSurviveEveryCut) {
       EXPECT_EQ(labels.apply(mesh, log), 0u);
       met += r.uncuttable_in_tool;
       removed += r.tets_removed;
+      options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
+                                          .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
       const invariants::CheckReport check =
           checker.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options);
       ASSERT_TRUE(check.ok()) << invariants::id_string(check.violations.front().id) << ": " << check.violations.front().detail;

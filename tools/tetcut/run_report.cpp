@@ -1,11 +1,13 @@
 #include "run_report.hpp"
 
 #include <algorithm>
+#include <array>
 #include <ostream>
 
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/percentile.hpp"
+#include "tetcut/scenario/cut_totals.hpp"
 
 namespace tetcut::cli {
 
@@ -21,7 +23,7 @@ std::vector<double> cut_times_us(const std::vector<scenario::CutRecord>& cuts) {
 
 Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
   const CutReport& r = c.report;
-  return Json{{"index", index},
+  Json record{{"index", index},
               {"line", c.line},
               {"centre", {c.centre.x, c.centre.y, c.centre.z}},
               {"ok", r.ok},
@@ -31,9 +33,11 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"select_us", r.time.select_us},
               {"remove_us", r.time.remove_us},
               {"improve_us", r.time.improve_us},
+              {"finish_us", r.time.finish_us},
               {"tets_hit", r.tets_hit},
               {"refine_iterations", r.refine_iterations},
               {"edges_split", r.edges_split},
+              {"tets_refined", r.tets_refined},
               {"requested", r.requested},
               {"requests", r.requests},
               {"tets_removed", r.tets_removed},
@@ -46,32 +50,31 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"resolved_by_fallback", r.resolved_by_fallback},
               {"unresolved", r.unresolved},
               {"uncuttable_in_tool", r.uncuttable_in_tool},
-              {"left_in_tool", r.left_in_tool},
               {"kept_pieces_requested", r.kept_pieces_requested},
+              {"left_in_tool", r.left_in_tool},
+              {"volume_left_in_tool", r.volume_left_in_tool},
+              {"volume_removed", r.volume_removed},
+              {"tets_removed_beyond_tool", r.tets_removed_beyond_tool},
+              {"volume_removed_beyond_tool", r.volume_removed_beyond_tool},
+              {"tets_removed_beyond_reach", r.tets_removed_beyond_reach},
               {"min_radius_ratio", r.min_radius_ratio},
               {"min_radius_ratio_before_improvement", r.min_radius_ratio_before_improvement},
               {"quality_floor", r.quality_floor},
               {"improvement_flips", r.improvement_flips},
               {"improvement_collapses", r.improvement_collapses},
               {"improvement_moves", r.improvement_moves},
-              {"d_ref", r.d_ref},
-              {"coarser_retries", r.coarser_retries}};
+              {"improvement_insertions", r.improvement_insertions},
+              {"tets_removed_by_improvement", r.tets_removed_by_improvement},
+              {"d_ref", r.d_ref}};
+  if (!r.ok) {
+    record["refusal"] = to_string(r.refusal);
+    record["failure"] = r.failure;
+  }
+  return record;
 }
 
-struct Totals {
-  std::uint64_t removed = 0, created = 0, unresolved = 0;
-  double worst = 1.0;
-};
-
-Totals totals(const std::vector<scenario::CutRecord>& cuts) {
-  Totals t;
-  for (const auto& c : cuts) {
-    t.removed += c.report.tets_removed;
-    t.created += c.report.tets_created;
-    t.unresolved += c.report.unresolved;
-    t.worst = std::min(t.worst, c.report.min_radius_ratio);
-  }
-  return t;
+Json spread(const std::vector<double>& values) {
+  return Json{{"p50", percentile(values, 0.5)}, {"p99", percentile(values, 0.99)}, {"max", percentile(values, 1.0)}};
 }
 
 }  // namespace
@@ -79,10 +82,13 @@ Totals totals(const std::vector<scenario::CutRecord>& cuts) {
 Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::string& hash, bool valid) {
   Json records = Json::array();
   for (std::size_t i = 0; i < cuts.size(); ++i) records.push_back(cut_record_json(i, cuts[i]));
-  const Totals t = totals(cuts);
+  const scenario::CutTotals t = scenario::cut_totals(cuts);
   const std::vector<double> times = cut_times_us(cuts);
   // The first cut on its own (what a simulator feels when the tool first touches the tissue);
   // the percentiles are over every cut, the first included.
+  Json refusals = Json::object();
+  for (int k = 1; k < kCutRefusals; ++k)
+    if (t.refusals[k]) refusals[to_string(static_cast<CutRefusal>(k))] = t.refusals[k];
   Json summary = {{"cuts", cuts.size()},
                   {"first_us", cuts.empty() ? 0.0 : cuts.front().report.time.total_us},
                   {"p50_us", percentile(times, 0.50)},
@@ -92,7 +98,20 @@ Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::st
                   {"tets_removed", t.removed},
                   {"tets_created", t.created},
                   {"unresolved", t.unresolved},
-                  {"min_radius_ratio", t.worst},
+                  {"refused", t.refused},
+                  {"refusals", std::move(refusals)},
+                  {"left_in_tool", t.left_in_tool},
+                  {"cuts_leaving_tissue", t.cuts_leaving_tissue},
+                  {"volume_left_in_tool", spread(t.volume_left)},
+                  {"volume_removed", t.volume_removed},
+                  {"tets_removed_beyond_tool", t.removed_beyond_tool},
+                  {"volume_removed_beyond_tool", t.volume_removed_beyond_tool},
+                  {"volume_removed_beyond_tool_per_cut", spread(t.volume_beyond)},
+                  {"tets_removed_beyond_reach", t.removed_beyond_reach},
+                  {"tets_removed_by_improvement", t.removed_by_improvement},
+                  {"improvement", {{"flips", t.flips}, {"collapses", t.collapses}, {"moves", t.moves},
+                                   {"insertions", t.insertions}}},
+                  {"min_radius_ratio", t.worst_created},
                   {"valid", valid},
                   {"hash", hash}};
   return Json{{"cuts", std::move(records)}, {"summary", std::move(summary)}};
@@ -100,9 +119,21 @@ Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::st
 
 int report_run(const scenario::RunResult& r, const TetMesh& mesh, const RunOutputs& outputs, std::ostream& out,
                std::ostream& err) {
-  const Totals t = totals(r.cuts);
+  const scenario::CutTotals t = scenario::cut_totals(r.cuts);
   out << r.cuts.size() << " cuts: " << r.removals << " tets removed, " << t.created << " created, " << r.unresolved
       << " unresolved, " << mesh.num_tets() << " tets left\n";
+  if (!r.cuts.empty()) {
+    out << "tissue: " << t.left_in_tool << " tets left in the tool by " << t.cuts_leaving_tissue
+        << " cuts; volume left in the tool per cut p50 " << percentile(t.volume_left, 0.5) << ", p99 "
+        << percentile(t.volume_left, 0.99) << "; removed " << t.volume_removed << ", of which " << t.volume_removed_beyond_tool
+        << " beyond the tool (per cut p99 " << percentile(t.volume_beyond, 0.99) << "), " << t.removed_beyond_reach
+        << " tets beyond its reach\n";
+    out << "improvement: " << t.flips << " flips, " << t.collapses << " collapses, " << t.moves << " moves, " << t.insertions
+        << " insertions, " << t.removed_by_improvement << " slivers removed; " << t.refused << " cuts refused";
+    for (int k = 1; k < kCutRefusals; ++k)
+      if (t.refusals[k]) out << " (" << t.refusals[k] << " " << to_string(static_cast<CutRefusal>(k)) << ")";
+    out << "\n";
+  }
   if (!r.cuts.empty()) {
     const std::vector<double> times = cut_times_us(r.cuts);
     out << "per cut (all cuts): p50 " << percentile(times, 0.5) << " us, p90 " << percentile(times, 0.9) << " us, p99 "

@@ -1,8 +1,13 @@
 // What `tetcut run` and `tetcut cut` (a scenario of one sweep) say about a scenario run: the
 // summary lines on stdout, the final mesh (--out) and the JSON report (--report): a `cuts` array
-// (one record per cut, its time in microseconds and its counts) and a `summary` with cuts,
-// first_us, p50_us, p90_us, p99_us, max_us, tets_removed, tets_created, unresolved,
-// min_radius_ratio, valid and hash.
+// (one record per cut: its time in microseconds per stage and its counts, every CutReport field,
+// and for a refused cut its refusal and failure) and a `summary` with cuts, first_us, p50_us,
+// p90_us, p99_us, max_us, tets_removed, tets_created, unresolved, refused and refusals (by
+// reason), left_in_tool and cuts_leaving_tissue, volume_left_in_tool (p50, p99, max per cut),
+// volume_removed, tets_removed_beyond_tool, volume_removed_beyond_tool (and its p50, p99, max
+// per cut), tets_removed_beyond_reach, tets_removed_by_improvement, improvement (flips,
+// collapses, moves, insertions), min_radius_ratio, valid and hash. docs/usage.md says what each
+// means.
 #pragma once
 
 #include <iosfwd>

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <vector>
 
+#include "tetcut/percentile.hpp"
 #include "tetcut/render/svg_writer.hpp"
+#include "tetcut/scenario/cut_totals.hpp"
 #include "tetcut/stats/report_pictures.hpp"
 #include "tetcut/stats/text_report.hpp"
 
@@ -192,6 +194,28 @@ std::string quality_html(const StatsReport& report) {
   return h;
 }
 
+// What the resection's cuts did beyond their counts: the tissue rule's figures and the
+// improvement pass's operations (scenario::cut_totals, as `tetcut run` prints them).
+std::string cut_account_html(const std::vector<scenario::CutRecord>& cuts) {
+  const scenario::CutTotals t = scenario::cut_totals(cuts);
+  auto row = [](const std::string& what, const std::string& value) {
+    return "<tr><td>" + render::xml_escape(what) + "</td><td>" + render::xml_escape(value) + "</td></tr>\n";
+  };
+  std::string refusals = std::to_string(t.refused);
+  for (int k = 1; k < kCutRefusals; ++k)
+    if (t.refusals[k]) refusals += " (" + std::to_string(t.refusals[k]) + " " + to_string(static_cast<CutRefusal>(k)) + ")";
+  return "<table>\n<tr><th>what the cuts did</th><th></th></tr>\n" + row("cuts refused", refusals) +
+         row("tets left in the tool", std::to_string(t.left_in_tool) + " by " + std::to_string(t.cuts_leaving_tissue) + " cuts") +
+         row("volume left in the tool per cut (p50, p99)",
+             significant(percentile(t.volume_left, 0.5), 3) + ", " + significant(percentile(t.volume_left, 0.99), 3)) +
+         row("volume removed; beyond the tool", significant(t.volume_removed, 4) + "; " + significant(t.volume_removed_beyond_tool, 4)) +
+         row("tets removed beyond the cut's reach", std::to_string(t.removed_beyond_reach)) +
+         row("improvement: flips, collapses, moves, insertions, slivers removed",
+             std::to_string(t.flips) + ", " + std::to_string(t.collapses) + ", " + std::to_string(t.moves) + ", " +
+                 std::to_string(t.insertions) + ", " + std::to_string(t.removed_by_improvement)) +
+         "</table>\n";
+}
+
 std::string resection_html(const ResectionStats& resection) {
   const CauteryRun& run = resection.run;
   std::string h = "<h2>The liver resection</h2>\n<p>" +
@@ -200,7 +224,7 @@ std::string resection_html(const ResectionStats& resection) {
                               " after; " + std::to_string(run.result.removal.requested) +
                               " removal operations, " + std::to_string(run.result.removal.unresolved) +
                               " unresolved.") +
-                  "</p>\n<div class=\"figures\">\n";
+                  "</p>\n" + cut_account_html(run.result.cuts) + "<div class=\"figures\">\n";
   for (const Picture& p : resection_pictures(resection))
     h += "<figure>" + p.svg + "<figcaption>" + render::xml_escape(p.caption) + "</figcaption></figure>\n";
   return h + "</div>\n";

@@ -23,10 +23,12 @@
 //   expect tets N                 live tets
 //   expect unresolved N           tets left unresolved so far
 //   expect components N           face-connected pieces of the mesh (a resection separates one)
-//   expect min_quality X          every tet the cuts so far created has radius ratio >= X
+//   expect min_quality X          every tet the cuts so far created has radius ratio >= X, as the
+//                                 checker measures the tets each cut left created
 //
 // Running one: every operation is followed by the local check (or the full check, or none, as
-// asked); the first failed check or expectation stops the run and names its line.
+// asked), a cut's with the tissue rule (I10) at its tool; the first failed check or expectation
+// stops the run and names its line.
 #pragma once
 
 #include <cstdint>
@@ -128,6 +130,11 @@ struct RunOptions {
 // pass off the engine promises no floor (the paper's algorithm alone), so I7 reports quality and
 // judges none.
 invariants::CheckOptions transaction_check_options(const CutParams& params);
+
+// What the local checker holds a cut to: transaction_check_options() and I10, the tissue rule,
+// with the cut's tool (centred at `centre`, the params' diameter and D_ref) and the tets the cut
+// reports it left there (Cutter::last_left_in_tool(), which the options view: keep it alive).
+invariants::CheckOptions cut_check_options(const CutParams& params, const Vec3& centre, std::span<const TetId> left);
 
 // Runs the scenario; the final mesh is left in `mesh_out` when given (when the run stops early,
 // the mesh as it was then: after a refused cut, as before that cut).

@@ -101,9 +101,10 @@ struct QualityRow {
   invariants::QualityStats created, created_without_improvement;
   bool ok = true, ok_without_improvement = true;  // ran to the end (a cut refused stops a run)
   std::string error, error_without_improvement;
-  // Met: nothing the run with the pass created is below the goal. A run that stopped early (the
-  // growth guard, or a cut refused because the pass could not meet the floor) is marked apart.
-  [[nodiscard]] bool goal_met() const { return created.tets == 0 || created.min_radius_ratio >= goal; }
+  // Met: the run with the pass ran to its end (no cut refused, the growth guard not tripped) and
+  // nothing it created is below the goal. A stopped run cannot meet it: what it would have
+  // created after it stopped is not measured.
+  [[nodiscard]] bool goal_met() const { return ok && (created.tets == 0 || created.min_radius_ratio >= goal); }
 };
 
 struct ResectionStats {
