@@ -115,6 +115,9 @@ class TensorMassModel {
   void step(double dt);
   // The elastic force -K u at every vertex (into `out`, #vertex capacity): the step's product.
   void elastic_forces(std::vector<Vec3>& out) const;
+  // K x for any x by vertex id (#vertex capacity; N/m times x's unit): the same product, for
+  // the stable-step estimate (stable_step.hpp), which iterates on vectors other than u.
+  void stiffness_product(std::span<const Vec3> x, std::vector<Vec3>& out) const;
   // CFL estimate of the largest stable step: smallest altitude of a live tet (metres) over the
   // fastest pressure wave speed among the materials in use. O(#T).
   struct StableStep {
@@ -162,6 +165,8 @@ class TensorMassModel {
   static constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
 
   void grow(std::uint32_t tets, std::uint32_t vertices);
+  template <int kSign>
+  void product(std::span<const Vec3> x, std::vector<Vec3>& out) const;
   // Adds (sign +1) or subtracts (-1) tet t's contribution, from the model's own copy of its
   // vertices and rest positions.
   void accumulate(TetId t, double sign);
