@@ -540,7 +540,7 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
   made_by_the_module_only(report);
   report.def_property_readonly("centre", [](const Report& r) { return std::array<double, 3>{r.centre.x, r.centre.y, r.centre.z}; },
                                "[x, y, z]: where the tool was centred (mesh units).");
-  // One line per CutReport field (engine/include/tetcut/cut.hpp), its doc the header's comment;
+  // One line per CutReport field (engine/include/tetcut/cut.hpp), documented as the header is;
   // python/tests/test_docs.py fails on a field of the header that is not here.
   report_field(report, "ok", &CutReport::ok, "False: refused and rolled back, the mesh as before (failure says why).");
   report_field(report, "failure", &CutReport::failure, "Why the cut was refused ('' when ok).");
