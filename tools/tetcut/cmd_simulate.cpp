@@ -10,11 +10,12 @@
 // few power iterations on M^-1 K, between 2/3 of the critical step 2 / omega_max and the step
 // itself). The report gives per frame the cut time, the update time, the step time, the
 // stable-step estimate after the cut (the slivers a cut leaves can lower it below the step) and
-// the energy, so that a blow-up is visible; one stops the run with exit 1. A blow-up is the total energy
-// (kinetic + elastic + gravity's potential) growing over a frame's steps: damped, it can only
-// fall (to the integrator's O(dt) ripple, allowed up to 1 % of the energies' size), while an
-// unstable step grows it exponentially. Not the displacement: a piece the resection frees from
-// the fixed vertices falls under gravity (at the terminal speed g / damping), which is physics.
+// the energy, so that a blow-up is visible; one stops the run with exit 1. A blow-up is the
+// total energy (kinetic + elastic + gravity's potential) growing over a frame's steps: damped,
+// it can only fall (to the integrator's O(dt) ripple, allowed up to 1 % of the energies' size),
+// while an unstable step grows it exponentially. Not the displacement: a piece the resection
+// frees from the fixed vertices falls under gravity (at the terminal speed g / damping), which
+// is physics.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
