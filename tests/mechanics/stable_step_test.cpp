@@ -44,9 +44,9 @@ struct Sweep {
 };
 
 // Estimates before, then after every cut of the sweeps (checked against the reference after
-// each cut when `every_cut`, else after the last), then afresh.
+// every `check_every`-th cut when it is not 0, and after the last), then afresh.
 void run(const std::string& name, TetMesh mesh, const std::function<bool(const Vec3&)>& fixed, double diameter,
-         const std::vector<Sweep>& sweeps, double step, bool every_cut) {
+         const std::vector<Sweep>& sweeps, double step, std::uint32_t check_every) {
   TensorMassModel model(mesh, ModelParams{});
   ASSERT_GT(model.fix_where(mesh, fixed), 0u);
   StableStepEstimator estimator;
@@ -64,7 +64,7 @@ void run(const std::string& name, TetMesh mesh, const std::function<bool(const V
       model.apply(mesh, log);
       kept = estimator.update(model);
       ++cuts;
-      if (every_cut) {
+      if (check_every != 0 && cuts % check_every == 0) {
         const double critical = 2 / std::sqrt(lambda_max(model));
         EXPECT_LE(kept.dt, critical) << name << ", cut " << cuts;
         EXPECT_GE(kept.dt, critical / 1.5) << name << ", cut " << cuts;
@@ -82,15 +82,16 @@ void run(const std::string& name, TetMesh mesh, const std::function<bool(const V
 TEST(StableStep, TheEstimateIsWithinTwoThirdsOfTheCriticalStepOnTheLiverBeforeAndAfterASweep) {
   // The README's sweep, the tissue held at x > 150 mm as in docs/mechanics.md's example.
   run("liver", testing::load_bundled("liver.msh"), [](const Vec3& p) { return p.x > 150; }, 8.0,
-      {{{95, 40, 100}, {95, 180, 100}}}, 4.0, false);
+      {{{95, 40, 100}, {95, 180, 100}}}, 4.0, 0);
 }
 
-TEST(StableStep, TheEstimateIsWithinTwoThirdsOfTheCriticalStepOnABeamAfterEveryCut) {
-  // 100 x 20 x 20 mm, 1,920 tets, clamped at x = 0; two passes across it.
+TEST(StableStep, TheEstimateIsWithinTwoThirdsOfTheCriticalStepOnABeamAlongASweep) {
+  // 100 x 20 x 20 mm, 1,920 tets, clamped at x = 0; two passes across it, the estimate checked
+  // after every third of its 46 cuts (each check a Lanczos run: under ASan, every cut took 5 s).
   BuildResult built = build_mesh(make_box_mesh(20, 4, 4, {0, 0, 0}, {100, 20, 20}));
   ASSERT_TRUE(built.ok());
   run("beam", std::move(*built.mesh), [](const Vec3& p) { return p.x < 1e-9; }, 4.0,
-      {{{50, -1, 20}, {50, 21, 20}}, {{30, -1, 10}, {30, 21, 10}}}, 1.0, true);
+      {{{50, -1, 20}, {50, 21, 20}}, {{30, -1, 10}, {30, 21, 10}}}, 1.0, 3);
 }
 
 TEST(StableStep, TheReferenceIsTheCriticalStepOfTheIntegrator) {
