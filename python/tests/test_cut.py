@@ -82,7 +82,7 @@ def test_bad_parameters_raise_naming_the_keyword(box):
                           ({"d_ref_factor": 0}, "d_ref_factor=0: D_ref factor"), ({"p": 1.0}, "p=1.0: p must"),
                           ({"search_depth": 65}, "search_depth=65: search depth must be between 1 and 64"),
                           ({"search_depth": -1}, "search_depth=-1: expected a non-negative integer"),
-                          ({"coarser_retries": 2**40}, "coarser_retries=1099511627776")]:
+                          ({"max_tets_created": 2**40}, "max_tets_created=1099511627776")]:
         with pytest.raises(ValueError) as e:
             tetcut.Cutter(box, **{"tool_diameter": 1.0, **kwargs})
         assert words in str(e.value)

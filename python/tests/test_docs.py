@@ -95,19 +95,36 @@ def test_every_class_has_a_repr_that_says_what_it_holds():
         assert repr(obj).startswith(start), repr(obj)
 
 
-def cut_report_fields():
-    """The data members of `struct CutReport` in cut.hpp, by name."""
-    header = (SOURCE / "engine" / "include" / "tetcut" / "cut.hpp").read_text()
-    body = re.search(r"^struct CutReport \{\n(.*?)^\};", header, re.M | re.S).group(1)
-    body = re.sub(r"//[^\n]*", "", body)
-    fields = []
+def struct_fields(name, headers):
+    """The data members of `struct name` (and of the structs it derives from) in `headers`, by
+    name: member functions, nested types and static members left out."""
+    for header in headers:
+        text = re.sub(r"//[^\n]*", "", header.read_text())
+        found = re.search(r"^struct " + name + r"\b\s*(?::\s*([\w:, ]+?))?\s*\{(.*?)^\};", text, re.M | re.S)
+        if found:
+            break
+    else:
+        raise AssertionError(f"struct {name} is in none of {len(headers)} headers")
+    bases, body = found.group(1), found.group(2)
+    fields = [f for base in (bases or "").split(",") if base.strip()
+              for f in struct_fields(base.replace("public", "").strip().split("::")[-1], headers)]
+    while re.search(r"\{[^{}]*\}", body):  # brace initialisers and function bodies: gone
+        body = re.sub(r"\{[^{}]*\}", ";", body)
     for statement in body.split(";"):
-        statement = " ".join(statement.split())
-        if not statement:
+        statement = " ".join(statement.replace("[[nodiscard]]", "").split())
+        if not statement or re.match(r"^(static|using|enum|friend|struct|class|template)\b", statement):
             continue
-        declarators = re.match(r"^[\w:<>]+ (.*)$", statement).group(1)  # after the type
-        fields += [re.match(r"(\w+)", d.strip()).group(1) for d in declarators.split(",")]
+        declared = re.match(r"^[\w:<>, ]+?\s+(\w+\s*(?:=[^,]*)?(?:,\s*\w+\s*(?:=[^,]*)?)*)$", statement)
+        if not declared or "operator" in statement or "(" in statement.split(" = ")[0]:  # a member function
+            continue
+        fields += [re.match(r"\s*(\w+)", d).group(1) for d in declared.group(1).split(",")]
     return fields
+
+
+def cut_report_fields():
+    """The data members of the engine's CutReport (engine/include/tetcut/cut.hpp), its bases' too."""
+    headers = sorted((SOURCE / "engine" / "include" / "tetcut").glob("*.hpp"))
+    return struct_fields("CutReport", [SOURCE / "engine" / "include" / "tetcut" / "cut.hpp"] + headers)
 
 
 def test_the_report_has_every_field_of_the_engines_cut_report_documented():
