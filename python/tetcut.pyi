@@ -18,14 +18,18 @@ class _SlotViewLock:
 class Mesh:
     """A manifold tetrahedral mesh, validated when made.
 
-    Mesh(points, tets, labels=None): points #V by 3 (any real array-like), tets #T by 4 (integer
-    vertex indices, 0-based, positively oriented), labels #T integers in 0..2^31-1 or None, all
-    copied. ValueError with the message `tetcut` prints for what it refuses (NaN, dangling or
-    repeated indices, inverted tets, non-manifold input); ValueError / TypeError for a wrong
-    shape or dtype.
+    Mesh(points, tets, labels=None, *, drop_unused_points=False): points #V by 3 (any real
+    array-like), tets #T by 4 (integer vertex indices, 0-based, positively oriented), labels #T
+    integers in 0..2^31-1 or None, all copied. Points no tet uses are refused (ValueError naming
+    them) unless dropped. ValueError with the message `tetcut` prints for what it refuses (NaN,
+    dangling or repeated indices, inverted tets, non-manifold input); ValueError / TypeError for a
+    wrong shape or dtype. Index arrays are int64 but for the slot views (uint32). Copyable and
+    picklable (a pickled mesh comes back with dense ids).
     """
 
-    def __init__(self, points: npt.ArrayLike, tets: npt.ArrayLike, labels: npt.ArrayLike | None = None) -> None: ...
+    def __init__(
+        self, points: npt.ArrayLike, tets: npt.ArrayLike, labels: npt.ArrayLike | None = None, *, drop_unused_points: bool = False
+    ) -> None: ...
     @property
     def num_tets(self) -> int: ...
     @property
@@ -47,7 +51,7 @@ class Mesh:
         """#T: each tet's label, rows as `tets` (a copy), carried through cuts; None if unlabelled."""
     @property
     def slot_tets(self) -> npt.NDArray[np.uint32]:
-        """Slots by 4, read-only, no copy; locks the mesh against change while alive."""
+        """Slots by 4 uint32 (0xFFFFFFFF in column 0: a removed tet), read-only, no copy; locks the mesh while alive."""
     @property
     def slot_points(self) -> npt.NDArray[np.float64]:
         """Vertex slots by 3, read-only, no copy; locks the mesh like slot_tets."""
@@ -62,17 +66,25 @@ class Mesh:
     def volume(self) -> float: ...
     def hash(self) -> str:
         """The canonical hash `tetcut` prints (16 hex digits)."""
-    def vertex_attribute(self, name: str) -> npt.NDArray[np.float64]: ...
+    def vertex_attribute(self, name: str) -> npt.NDArray[np.float64]:
+        """#V (a channel set from #V values) or #V by width, rows as `points` (a copy)."""
     def set_vertex_attribute(self, name: str, values: npt.ArrayLike) -> None: ...
     def write(self, path: str, *, binary: bool = False, compression: str = "none") -> None: ...
-    def compact(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
+    def compact(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]:
+        """(tet_old_to_new, vertex_old_to_new), -1 for a removed id."""
     def to_meshio(self) -> Any:
         """A meshio.Mesh: points, one 'tetra' block, attributes as point_data, labels as cell_data 'label'."""
+    def copy(self) -> Mesh:
+        """An independent copy: same ids, points, tets, labels and attributes."""
+    def __copy__(self) -> Mesh: ...
+    def __deepcopy__(self, memo: Any) -> Mesh: ...
+    def __getstate__(self) -> tuple[Any, ...]: ...
+    def __setstate__(self, state: tuple[Any, ...]) -> None: ...
 
 def read(path: str) -> Mesh:
     """Reads and builds a mesh file; ValueError with the line `tetcut` prints."""
 
-def from_meshio(mesh: Any) -> Mesh:
+def from_meshio(mesh: Any, *, drop_unused_points: bool = False) -> Mesh:
     """A Mesh from a meshio.Mesh's points, 'tetra' cells, real point_data and integer cell_data labels."""
 
 class Changes:
@@ -111,6 +123,8 @@ class CutReport:
     @property
     def failure(self) -> str: ...
     @property
+    def refusal(self) -> str: ...
+    @property
     def tets_hit(self) -> int: ...
     @property
     def refine_iterations(self) -> int: ...
@@ -141,6 +155,20 @@ class CutReport:
     @property
     def unresolved(self) -> int: ...
     @property
+    def kept_pieces_requested(self) -> int: ...
+    @property
+    def left_in_tool(self) -> int: ...
+    @property
+    def volume_left_in_tool(self) -> float: ...
+    @property
+    def volume_removed(self) -> float: ...
+    @property
+    def tets_removed_beyond_tool(self) -> int: ...
+    @property
+    def volume_removed_beyond_tool(self) -> float: ...
+    @property
+    def tets_removed_beyond_reach(self) -> int: ...
+    @property
     def uncuttable_in_tool(self) -> int: ...
     @property
     def min_radius_ratio(self) -> float: ...
@@ -156,6 +184,10 @@ class CutReport:
     def improvement_collapses(self) -> int: ...
     @property
     def improvement_moves(self) -> int: ...
+    @property
+    def improvement_insertions(self) -> int: ...
+    @property
+    def tets_removed_by_improvement(self) -> int: ...
     @property
     def d_ref(self) -> float: ...
     @property
@@ -173,9 +205,10 @@ class Cutter:
         self,
         mesh: Mesh,
         *,
-        tool_diameter: float = 1.0,
+        tool_diameter: float,
         strategy: str = "combined",
         split: str = "templates",
+        order: str = "direct-first",
         d_ref_factor: float = 1.5,
         p: float = 1.5,
         search_depth: int = 10,
@@ -188,7 +221,7 @@ class Cutter:
     def cut(self, centre: _Point) -> CutReport:
         """One atomic cut (ok False: refused, the mesh untouched). Releases the GIL."""
     def sweep(self, start: _Point, end: _Point, step: float) -> list[CutReport]:
-        """One cut every `step` from start to end, as `tetcut cut --from --to --step`."""
+        """One cut every `step` from start to end (end included within a billionth of a step), as `tetcut cut`."""
     @property
     def tool_diameter(self) -> float: ...
     @tool_diameter.setter

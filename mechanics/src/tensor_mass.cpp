@@ -347,14 +347,22 @@ std::uint32_t TensorMassModel::fix_where(const TetMesh& mesh, const std::functio
   return n;
 }
 
-void TensorMassModel::elastic_forces(std::vector<Vec3>& out) const {
+// out = sign K x, one pass over the vertices and one over the edges.
+template <int kSign>
+void TensorMassModel::product(std::span<const Vec3> x, std::vector<Vec3>& out) const {
   out.resize(vertex_capacity());
-  for (std::uint32_t i = 0; i < vertex_capacity(); ++i) out[i] = -1.0 * mul(vertex_k_[i], u_[i]);
+  for (std::uint32_t i = 0; i < vertex_capacity(); ++i) out[i] = double{kSign} * mul(vertex_k_[i], x[i]);
   for (const Edge& e : edges_) {
     if (e.tets == 0) continue;
-    out[e.a.value] = out[e.a.value] - mul(e.k, u_[e.b.value]);
-    out[e.b.value] = out[e.b.value] - mul_transposed(e.k, u_[e.a.value]);
+    out[e.a.value] = out[e.a.value] + double{kSign} * mul(e.k, x[e.b.value]);
+    out[e.b.value] = out[e.b.value] + double{kSign} * mul_transposed(e.k, x[e.a.value]);
   }
+}
+
+void TensorMassModel::elastic_forces(std::vector<Vec3>& out) const { product<-1>(u_, out); }
+
+void TensorMassModel::stiffness_product(std::span<const Vec3> x, std::vector<Vec3>& out) const {
+  product<1>(x, out);
 }
 
 void TensorMassModel::step(double dt) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mesh_handle.hpp"
+#include "signature_doc.hpp"
 #include "tetcut/invariants/check.hpp"
 
 namespace py = pybind11;
@@ -61,7 +62,7 @@ std::vector<PyViolation> check(const MeshPtr& held, const std::string& level, do
 }  // namespace
 
 void bind_check(py::module_& m) {
-  py::class_<PyViolation> violation(m, "Violation", "One violated invariant, as the checker reports it.");
+  py::class_<PyViolation> violation(m, "Violation", "One violated invariant, as tetcut.check() reports it; repr: \"I7 quality: detail\".");
   made_by_the_module_only(violation);
   violation.def_readonly("id", &PyViolation::id, "\"I1\" .. \"I9\" (docs/design.md, invariants).")
       .def_readonly("name", &PyViolation::name, "What it means: \"manifold vertex shells\".")
@@ -74,12 +75,12 @@ void bind_check(py::module_& m) {
       .def("__repr__", [](const PyViolation& v) { return v.id + " " + v.name + ": " + v.detail; });
 
   m.def("check", &check, py::arg("mesh").none(false), py::kw_only(), py::arg("level") = "full", py::arg("radius_ratio_floor") = 0.0,
-        R"doc(
-Runs the independent invariant checker and returns the violations (an empty list: valid).
+        signature_doc("check", "mesh, *, level='full', radius_ratio_floor=0.0", R"doc(Runs the independent invariant checker and returns the violations (an empty list: valid).
 
 level: "full" (I1-I9, O(#T)), "exact" (full plus the boundary's self-intersection, CGAL) or
 "local", which on a whole mesh, with no operation to look around, is the full check (as in the
-C++ API). radius_ratio_floor: an absolute I7 floor (0: off). Releases the GIL.)doc");
+C++ API). radius_ratio_floor: an absolute I7 floor (0: off). An empty mesh (a cut removed every
+tet) is valid. Releases the GIL.)doc").c_str());
 }
 
 }  // namespace tetcut::python

@@ -8,16 +8,23 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
+#include <limits>
+#include <type_traits>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "mesh_handle.hpp"
+#include "signature_doc.hpp"
 #include "tetcut/cut.hpp"
+#include "tetcut/scenario/sweep.hpp"
 #include "tetcut/stats/removal_tables.hpp"
 
 namespace py = pybind11;
@@ -47,6 +54,12 @@ py::array_t<std::int64_t> id_array(const std::vector<Id>& ids) {
   std::int64_t* out = a.mutable_data();
   for (const Id& id : ids) *out++ = id.valid() ? static_cast<std::int64_t>(id.value) : -1;
   return a;
+}
+
+// Cached in the report and handed out as they are: read-only, so that a user writing into one
+// (an in-place sort, a fill) cannot change what report.changes gives the next reader.
+void make_read_only(py::array& a) {
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
 }
 
 Changes changes_of(const ChangeLog& log) {
@@ -85,6 +98,10 @@ Changes changes_of(const ChangeLog& log) {
       weights(i, k) = k < v.count ? v.weight[k] : 0.0;
     }
   }
+  for (py::array* a : std::initializer_list<py::array*>{&c.removed, &c.created, &c.parent, &c.parents, &c.parents_offsets,
+                       &c.new_vertices, &c.new_vertex_edges, &c.new_vertex_from, &c.removed_vertices,
+                                                       &c.new_vertex_t, &c.new_vertex_weights})
+    make_read_only(*a);
   return c;
 }
 
@@ -124,9 +141,8 @@ class PyCutter {
   PyCutter(MeshPtr handle, const CutParams& params, std::vector<std::uint32_t> keep_labels)
       : handle_(std::move(handle)), keep_labels_(std::move(keep_labels)) {
     if (const auto bad = validate(params)) throw py::value_error("tetcut: " + *bad);
-    if (!keep_labels_.empty() && !handle_->labels.labelled())
-      throw py::value_error("tetcut: keep_labels: the mesh has no labels");
     MeshUse use(*handle_);
+    require_known_labels();
     cutter_.emplace(handle_->mesh, params);
     protect();
     seen_version_ = handle_->version;
@@ -148,22 +164,23 @@ class PyCutter {
     return r;
   }
 
-  // The scenario runner's sweep (tools/scenario/src/scenario.cpp), centre for centre, so that the
-  // mesh and its hash are those of `tetcut cut --from START --to END --step STEP`. Stops after the
-  // first cut refused, as `tetcut cut` does (that cut's report is the last).
+  // The sweep's centres as `tetcut cut --from START --to END --step STEP`, a scenario's sweep and
+  // `tetcut simulate --sweep` place them (scenario::sweep_centres, the end included within a
+  // billionth of a step), so that the mesh and its hash are the command's. Stops after the first
+  // cut refused, as `tetcut cut` does (that cut's report is the last).
   std::vector<Report> sweep(const Vec3& a, const Vec3& b, double step) {
     if (!(step > 0) || !std::isfinite(step)) throw py::value_error("tetcut: step: must be positive");
-    const double length = norm(b - a);
-    if (length / step > 100000) throw py::value_error("tetcut: more than 100000 cuts: increase step");
+    if (norm(b - a) / step > scenario::kMaxSweepCuts)
+      throw py::value_error("tetcut: step: more than 100000 cuts: increase step");
     MeshUse use(*handle_);
     prepare_to_mutate();
-    const auto steps = static_cast<std::uint64_t>(std::floor(length / step));
-    std::vector<Report> reports(steps + 1);
+    const std::vector<Vec3> centres = scenario::sweep_centres(a, b, step);
+    std::vector<Report> reports(centres.size());
     {
       py::gil_scoped_release release;
-      for (std::uint64_t k = 0; k <= steps; ++k) {
+      for (std::size_t k = 0; k < centres.size(); ++k) {
         Report& r = reports[k];
-        r.centre = steps == 0 ? a : a + (static_cast<double>(k) * step / length) * (b - a);
+        r.centre = centres[k];
         const auto start = std::chrono::steady_clock::now();
         r.report = cutter_->cut(r.centre, &r.log);
         r.wall_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
@@ -198,6 +215,24 @@ class PyCutter {
     seen_version_ = handle_->version;
   }
 
+  // keep_labels: each label must be some tet's, so that a typo is not a protection that protects
+  // nothing.
+  void require_known_labels() const {
+    if (keep_labels_.empty()) return;
+    if (!handle_->labels.labelled()) throw py::value_error("tetcut.Cutter: keep_labels: the mesh has no labels (mesh.labels is None)");
+    std::set<std::uint32_t> present;
+    const TetMesh& mesh = handle_->mesh;
+    for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
+      if (mesh.is_live(TetId{t})) present.insert(handle_->labels.label(TetId{t}));
+    for (std::uint32_t l : keep_labels_) {
+      if (present.count(l)) continue;
+      std::string labels;
+      for (std::uint32_t p : present) labels += (labels.empty() ? "" : ", ") + std::to_string(p);
+      throw py::value_error("tetcut.Cutter: keep_labels: no tet is labelled " + std::to_string(l) + " (the mesh's labels: " +
+                            labels + ")");
+    }
+  }
+
   // The tets whose label is one of keep_labels_, as the labels stand now: uncuttable
   // (Cutter::set_uncuttable(), the paper's Fig. 7).
   void protect() {
@@ -219,18 +254,6 @@ class PyCutter {
 
 // Shared: methods take the holder, which pybind11 refuses for an instance __init__ never made.
 using CutterPtr = std::shared_ptr<PyCutter>;
-
-RemovalStrategy strategy_from(const std::string& s) {
-  const auto v = parse_removal_strategy(s);
-  if (!v) throw py::value_error("tetcut: strategy: basic, neighbours, combined or wide, not '" + s + "'");
-  return *v;
-}
-
-SplitMethod split_from(const std::string& s) {
-  const auto v = parse_split_method(s);
-  if (!v) throw py::value_error("tetcut: split: templates or bisection, not '" + s + "'");
-  return *v;
-}
 
 py::dict stats_of(const CutterPtr& held) {
   const PyCutter& cutter = *held;
@@ -315,21 +338,187 @@ PyObject* cut_fast(PyObject* self, PyObject* const* args, Py_ssize_t nargs, PyOb
 
 PyMethodDef cut_method = {
     "cut", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&cut_fast)), METH_FASTCALL | METH_KEYWORDS,
-    "cut(centre) -> CutReport\n\nOne cut with the tool centred there (3 real numbers): atomic (report.ok False: the "
-    "mesh is bit-identical to before). Releases the GIL."};
+    // A method descriptor of the class (PyDescr_NewMethod), for which "$self" is CPython's form.
+    "cut($self, /, centre)\n--\n\nOne cut with the tool centred at `centre` (3 real numbers, mesh units): a "
+    "CutReport. Atomic: report.ok False means refused, the mesh bit-identical to before. Releases the GIL while the "
+    "engine works."};
+
+// Keyword arguments read one by one, so that an error names the keyword: pybind11's overload
+// resolution says only "incompatible constructor arguments" and lists every parameter's type.
+class Keywords {
+ public:
+  Keywords(std::string where, const py::kwargs& given, std::vector<std::string> known)
+      : where_(std::move(where)), given_(given) {
+    for (auto item : given) {
+      const std::string name = py::str(item.first);
+      if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+      std::string all;
+      for (const std::string& k : known) all += (all.empty() ? "" : ", ") + k;
+      const py::list close = py::module_::import("difflib").attr("get_close_matches")(name, known, 1);
+      throw py::type_error(where_ + ": unknown keyword '" + name + "'" +
+                           (close.empty() ? std::string() : " (did you mean '" + py::str(close[0]).cast<std::string>() + "'?)") +
+                           "; the keywords: " + all);
+    }
+  }
+
+  // The value given for `name`, converted to T, or nullopt; TypeError naming it when it does not convert.
+  template <class T>
+  std::optional<T> get(const char* name, const char* expected) const {
+    if (!given_.contains(name)) return std::nullopt;
+    const py::handle value = given_[name];
+    if constexpr (std::is_integral_v<T> && std::is_unsigned_v<T> && !std::is_same_v<T, bool>) {
+      // An int out of range is a value error, named as one (pybind11 calls it a failed cast).
+      if (PyLong_Check(value.ptr()) && !PyBool_Check(value.ptr())) {
+        const py::int_ i = py::reinterpret_borrow<py::int_>(value);
+        if (i < py::int_(0) || i > py::int_(std::numeric_limits<T>::max())) {
+          throw py::value_error(where_ + ": " + name + "=" + text(name) + ": expected " +
+                                expected + " up to " + std::to_string(std::numeric_limits<T>::max()));
+        }
+      }
+    }
+    try {
+      return value.cast<T>();
+    } catch (const py::cast_error&) {
+      throw py::type_error(where_ + ": " + name + ": expected " + expected + ", got " +
+                           py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>());
+    }
+  }
+
+  [[nodiscard]] const std::string& where() const { return where_; }
+  // The value given for `name` as the caller wrote it (its repr).
+  [[nodiscard]] std::string text(const char* name) const { return py::repr(given_[name]); }
+
+ private:
+  std::string where_;
+  const py::kwargs& given_;
+};
+
+// A parameter out of range: the engine's words for it, after the keyword and the value given.
+void check_one(const Keywords& k, const char* name, const CutParams& with_it) {
+  if (const auto bad = validate(with_it)) throw py::value_error(k.where() + ": " + name + "=" + k.text(name) + ": " + *bad);
+}
+
+// Cutter(mesh, *, tool_diameter, ...): every CutParams field by keyword, tool_diameter required
+// (in the mesh's units: no default suits meshes in millimetres and in metres alike), each
+// checked on its own so that the error names it.
+CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
+  const std::string where = "tetcut.Cutter";
+  py::object mesh_object;
+  if (args.size() == 1 && !kwargs.contains("mesh")) {
+    mesh_object = args[0];
+  } else if (args.empty() && kwargs.contains("mesh")) {
+    mesh_object = kwargs["mesh"];
+  } else {
+    throw py::type_error(where + "(mesh, *, tool_diameter, ...) takes the mesh and every parameter by keyword; got " +
+                         std::to_string(args.size()) + " positional argument(s)");
+  }
+  MeshPtr mesh;
+  try {
+    mesh = mesh_object.cast<MeshPtr>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(where + ": mesh: expected a tetcut.Mesh, got " +
+                         py::str(py::type::handle_of(mesh_object).attr("__name__")).cast<std::string>());
+  }
+  if (!mesh) throw py::type_error(where + ": mesh: expected a tetcut.Mesh, got None");
+  const Keywords k(where, kwargs,
+                   {"mesh", "tool_diameter", "strategy", "split", "order", "d_ref_factor", "p", "search_depth",
+                    "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "keep_labels"});
+  CutParams params;
+  auto set = [&](const char* name, auto CutParams::*field, const char* expected) {
+    using T = std::remove_reference_t<decltype(params.*field)>;
+    const auto value = k.get<T>(name, expected);
+    if (!value) return;
+    CutParams alone;  // defaults and this one: the engine's message is about it alone
+    alone.*field = *value;
+    check_one(k, name, alone);
+    params.*field = *value;
+  };
+  const auto diameter = k.get<double>("tool_diameter", "a real number");
+  if (!diameter) {
+    throw py::type_error(where + ": tool_diameter is required: the tool's diameter in the mesh's units (no default "
+                         "suits every mesh)");
+  }
+  set("tool_diameter", &CutParams::tool_diameter, "a real number");
+  set("d_ref_factor", &CutParams::d_ref_factor, "a real number");
+  set("p", &CutParams::p, "a real number");
+  set("quality_floor", &CutParams::quality_floor, "a real number");
+  set("search_depth", &CutParams::search_depth, "a non-negative integer");
+  set("max_refine_iterations", &CutParams::max_refine_iterations, "a non-negative integer");
+  set("max_tets_created", &CutParams::max_tets_created, "a non-negative integer");
+  set("improve", &CutParams::improve, "True or False");
+  if (const auto s = k.get<std::string>("strategy", "a str")) {
+    const auto v = parse_removal_strategy(*s);
+    if (!v) throw py::value_error(where + ": strategy: basic, neighbours, combined or wide, not '" + *s + "'");
+    params.strategy = *v;
+  }
+  if (const auto s = k.get<std::string>("split", "a str")) {
+    const auto v = parse_split_method(*s);
+    if (!v) throw py::value_error(where + ": split: templates or bisection, not '" + *s + "'");
+    params.split_method = *v;
+  }
+  if (const auto s = k.get<std::string>("order", "a str")) {
+    const auto v = parse_removal_order(*s);
+    if (!v) throw py::value_error(where + ": order: direct-first or paper, not '" + *s + "'");
+    params.order = *v;
+  }
+  std::vector<std::uint32_t> keep_labels =
+      k.get<std::vector<std::uint32_t>>("keep_labels", "a sequence of labels (integers in 0..2^32-1)").value_or(std::vector<std::uint32_t>{});
+  return std::make_shared<PyCutter>(std::move(mesh), params, std::move(keep_labels));
+}
+
+// The text signature of Cutter.__init__, its defaults the engine's (CutParams{}).
+std::string cutter_init_doc() {
+  const CutParams d;
+  auto real = [](double x) { return py::repr(py::float_(x)).cast<std::string>(); };
+  const std::string parameters =
+      "self, /, mesh, *, tool_diameter, strategy='" + std::string(to_string(d.strategy)) + "', split='" +
+      to_string(d.split_method) + "', order='" + to_string(d.order) + "', d_ref_factor=" + real(d.d_ref_factor) +
+      ", p=" + real(d.p) + ", search_depth=" + std::to_string(d.search_depth) +
+      ", max_refine_iterations=" + std::to_string(d.max_refine_iterations) +
+      ", max_tets_created=" + std::to_string(d.max_tets_created) + ", improve=" + (d.improve ? "True" : "False") +
+      ", quality_floor=" + real(d.quality_floor) + ", keep_labels=()";
+  return signature_doc("__init__", parameters, R"doc(The cautery tool on `mesh`: indexes it (O(#T)), then cuts in O(tool).
+
+tool_diameter (required, mesh units) and the other CutParams fields (engine/include/tetcut/cut.hpp)
+by keyword: strategy basic|neighbours|combined|wide, split templates|bisection, order
+direct-first|paper, d_ref_factor (D_ref = d_ref_factor x tool_diameter, paper 3.2), p (shell edge
+ratio, 3.2), search_depth (3.5), max_refine_iterations, max_tets_created, improve (the improvement
+pass), quality_floor (its radius-ratio floor). keep_labels: labels (mesh.labels)
+whose tets no cut takes (Cutter::set_uncuttable, the paper's Fig. 7), each some tet's label.
+TypeError naming an unknown keyword or a value of the wrong type; ValueError naming one out of
+range or a label no tet has.)doc");
+}
+
+// A CutReport field as a read-only attribute: one line per field in bind_cutter.
+template <class T>
+void report_field(py::class_<Report>& c, const char* name, T CutReport::*field, const char* doc) {
+  c.def_property_readonly(name, [field](const Report& r) { return r.report.*field; }, doc);
+}
+
+std::string changes_repr(const Changes& c) {
+  return "<tetcut.Changes " + std::to_string(c.removed.size()) + " removed, " + std::to_string(c.created.size()) +
+         " created, " + std::to_string(c.new_vertices.size()) + " new vertices, " +
+         std::to_string(c.removed_vertices.size()) + " removed vertices>";
+}
 
 }  // namespace
 
+
 void bind_cutter(py::module_& m) {
-  py::class_<Changes> changes(m, "Changes", R"doc(
-A cut's net change (the engine's ChangeLog) as numpy arrays of engine ids (mesh.tet_ids and
-mesh.vertex_ids name them): apply removals first, then creations.)doc");
+  py::class_<Changes> changes(m, "Changes", R"doc(A cut's net change (the engine's ChangeLog) as numpy arrays of engine ids.
+
+mesh.tet_ids and mesh.vertex_ids name them; apply the removals first, then the creations. Net: a
+tet the refinement made and the removal then took is in neither list, and a parent the
+refinement replaced is in `removed` even though the tool never reached it, so len(removed)
+exceeds report.tets_removed whenever the cut refined. Every array is int64 (float64 for
+new_vertex_t and new_vertex_weights) and read-only: built once, on first access of
+report.changes, and the same arrays on every access.)doc");
   made_by_the_module_only(changes);
   changes.def_readonly("removed", &Changes::removed, "#R int64: tets live before the cut and gone after, sorted.")
       .def_readonly("created", &Changes::created, "#C int64: tets live after and not before, sorted.")
       .def_readonly("parent", &Changes::parent, "#C int64: each created tet's first parent (its only one for a split).")
-      .def_readonly("parents", &Changes::parents, "All parents, flat: created[i]'s are parents[parents_offsets[i]:parents_offsets[i+1]].")
-      .def_readonly("parents_offsets", &Changes::parents_offsets, "#C+1 int64.")
+      .def_readonly("parents", &Changes::parents, "int64, flat: created[i]'s parents are parents[parents_offsets[i]:parents_offsets[i+1]].")
+      .def_readonly("parents_offsets", &Changes::parents_offsets, "#C+1 int64: where each created tet's parents start in `parents`.")
       .def_readonly("new_vertices", &Changes::new_vertices, "#N int64: vertices the cut made and still uses.")
       .def_readonly("new_vertex_edges", &Changes::new_vertex_edges,
                     "#N by 2 int64: the old edge each new vertex lies on (-1, -1 when it was moved off it).")
@@ -337,41 +526,87 @@ mesh.vertex_ids name them): apply removals first, then creations.)doc");
       .def_readonly("new_vertex_from", &Changes::new_vertex_from,
                     "#N by 4 int64: the old vertices it is a convex combination of (-1 padded).")
       .def_readonly("new_vertex_weights", &Changes::new_vertex_weights, "#N by 4 float64: their weights (sum 1).")
-      .def_readonly("removed_vertices", &Changes::removed_vertices, "int64: vertices no tet uses any more.");
+      .def_readonly("removed_vertices", &Changes::removed_vertices, "int64: vertices no tet uses any more.")
+      .def("__repr__", &changes_repr);
 
-  py::class_<Report> report(m, "CutReport", "What one cut did (the engine's CutReport); report.changes as numpy arrays.");
+  py::class_<Report> report(m, "CutReport", R"doc(What one cut did: the engine's CutReport, field by field, and its change log.
+
+The counts are the engine's (and `tetcut cut --report`'s): tets_removed and tets_created count
+tets, while report.changes lists the net ids a simulator updates (see Changes). A cut that
+removes every tet (a tool larger than the organ) is ok: the mesh is then empty (num_tets 0).)doc");
   made_by_the_module_only(report);
-  report.def_property_readonly("centre", [](const Report& r) { return std::array<double, 3>{r.centre.x, r.centre.y, r.centre.z}; })
-      .def_property_readonly("ok", [](const Report& r) { return r.report.ok; }, "False: refused and rolled back (failure says why).")
-      .def_property_readonly("failure", [](const Report& r) { return r.report.failure; })
-      .def_property_readonly("tets_hit", [](const Report& r) { return r.report.tets_hit; })
-      .def_property_readonly("refine_iterations", [](const Report& r) { return r.report.refine_iterations; })
-      .def_property_readonly("edges_split", [](const Report& r) { return r.report.edges_split; })
-      .def_property_readonly("tets_refined", [](const Report& r) { return r.report.tets_refined; })
-      .def_property_readonly("requested", [](const Report& r) { return r.report.requested; })
-      .def_property_readonly("requests", [](const Report& r) { return r.report.requests; })
-      .def_property_readonly("tets_removed", [](const Report& r) { return r.report.tets_removed; })
-      .def_property_readonly("tets_created", [](const Report& r) { return r.report.tets_created; })
-      .def_property_readonly("direct", [](const Report& r) { return r.report.direct; })
-      .def_property_readonly("vertex_singularities", [](const Report& r) { return r.report.vertex_singularities; })
-      .def_property_readonly("edge_singularities", [](const Report& r) { return r.report.edge_singularities; })
-      .def_property_readonly("resolved_by_neighbours", [](const Report& r) { return r.report.resolved_by_neighbours; })
-      .def_property_readonly("resolved_by_refinement", [](const Report& r) { return r.report.resolved_by_refinement; })
-      .def_property_readonly("resolved_by_fallback", [](const Report& r) { return r.report.resolved_by_fallback; })
-      .def_property_readonly("unresolved", [](const Report& r) { return r.report.unresolved; })
-      .def_property_readonly("uncuttable_in_tool", [](const Report& r) { return r.report.uncuttable_in_tool; })
-      .def_property_readonly("min_radius_ratio", [](const Report& r) { return r.report.min_radius_ratio; })
-      .def_property_readonly("min_radius_ratio_before_improvement",
-                             [](const Report& r) { return r.report.min_radius_ratio_before_improvement; })
-      .def_property_readonly("quality_floor", [](const Report& r) { return r.report.quality_floor; })
-      .def_property_readonly("quality_met", [](const Report& r) { return r.report.quality_met; })
-      .def_property_readonly("improvement_flips", [](const Report& r) { return r.report.improvement_flips; })
-      .def_property_readonly("improvement_collapses", [](const Report& r) { return r.report.improvement_collapses; })
-      .def_property_readonly("improvement_moves", [](const Report& r) { return r.report.improvement_moves; })
-      .def_property_readonly("d_ref", [](const Report& r) { return r.report.d_ref; })
-      .def_readonly("wall_us", &Report::wall_us,
-                    "Wall time of the engine's cut alone (microseconds), timed around the C++ call by the binding: "
-                    "what a C++ caller would measure; a Python caller's own timing minus this is the binding's cost.")
+  report.def_property_readonly("centre", [](const Report& r) { return std::array<double, 3>{r.centre.x, r.centre.y, r.centre.z}; },
+                               "[x, y, z]: where the tool was centred (mesh units).");
+  // One line per CutReport field (engine/include/tetcut/cut.hpp), documented as the header is;
+  // python/tests/test_docs.py fails on a field of the header that is not here.
+  report_field(report, "ok", &CutReport::ok, "False: refused and rolled back, the mesh as before (failure says why).");
+  report_field(report, "failure", &CutReport::failure, "Why the cut was refused, for people ('' when ok).");
+  report.def_property_readonly("refusal", [](const Report& r) { return std::string(to_string(r.report.refusal)); },
+                               "Why the cut was refused, as a word: 'none' when ok, else 'stale index', 'parameters', "
+                               "'request', 'degenerate split', 'tet budget', 'quality floor' or 'tissue rule'.");
+  report_field(report, "tets_hit", &CutReport::tets_hit, "Live tets meeting the ball before refinement.");
+  report_field(report, "refine_iterations", &CutReport::refine_iterations, "Rounds of the refinement loop (paper 3.2).");
+  report_field(report, "edges_split", &CutReport::edges_split, "Edges the refinement loop split.");
+  report_field(report, "tets_refined", &CutReport::tets_refined, "Parents the refinement loop replaced by their children.");
+  report_field(report, "requested", &CutReport::requested,
+               "|T_removal| (paper 3.3): tets selected for removal, children of selected tets that joined it included.");
+  report_field(report, "requests", &CutReport::requests,
+               "Removal requests made: a tet another request's set swallowed is not requested (requests <= requested).");
+  report_field(report, "tets_removed", &CutReport::tets_removed, "Tets removed, neighbour sets included (not net: see Changes).");
+  report_field(report, "tets_created", &CutReport::tets_created,
+               "Tets created, by refinement and by removal, still there at the end (net).");
+  report_field(report, "direct", &CutReport::direct, "Requests removable directly (paper 3.3: no singularity).");
+  report_field(report, "vertex_singularities", &CutReport::vertex_singularities,
+               "Requests whose removal alone would leave a singular vertex (paper 3.4).");
+  report_field(report, "edge_singularities", &CutReport::edge_singularities,
+               "Requests whose removal alone would leave a singular edge (paper 3.4).");
+  report_field(report, "resolved_by_neighbours", &CutReport::resolved_by_neighbours,
+               "Singular requests resolved by removing a neighbour set (paper 3.5).");
+  report_field(report, "resolved_by_refinement", &CutReport::resolved_by_refinement,
+               "Singular requests resolved by local refinement (paper 3.4 / 3.7).");
+  report_field(report, "resolved_by_fallback", &CutReport::resolved_by_fallback,
+               "Singular requests resolved by the fallback construction (docs/removal-proof.md).");
+  report_field(report, "unresolved", &CutReport::unresolved,
+               "Requests left in place (the mesh still valid); a tet left twice counts twice.");
+  report_field(report, "kept_pieces_requested", &CutReport::kept_pieces_requested,
+               "Pieces of unselected tets a removal-time split left inside the tool, each requested once; counted in "
+               "`requests` too.");
+  report_field(report, "left_in_tool", &CutReport::left_in_tool,
+               "The tissue rule: live cuttable tets with their centroid in the tool and their edges within D_ref (what "
+               "the paper's selection takes) still there after the cut: unresolved requests' tets and pieces their "
+               "request did not remove. 0: the cut took all the tissue its rule takes.");
+  report_field(report, "volume_left_in_tool", &CutReport::volume_left_in_tool,
+               "Volume of cuttable tissue still inside the tool's ball: of each live cuttable tet meeting it, the part "
+               "inside (exact for tets wholly in or out, else the midpoint rule on the tet's 8 equal children).");
+  report_field(report, "volume_removed", &CutReport::volume_removed,
+               "Volume the cut removed as tissue (removal requests and the improvement pass's slivers).");
+  report_field(report, "tets_removed_beyond_tool", &CutReport::tets_removed_beyond_tool,
+               "Of the tets removed, those whose centroid lies outside the tool.");
+  report_field(report, "volume_removed_beyond_tool", &CutReport::volume_removed_beyond_tool,
+               "Of the volume removed, the part outside the tool's ball (estimated as volume_left_in_tool).");
+  report_field(report, "tets_removed_beyond_reach", &CutReport::tets_removed_beyond_reach,
+               "Removed tets with a corner beyond the cut's reach (the tool's ball grown by D_ref).");
+  report_field(report, "uncuttable_in_tool", &CutReport::uncuttable_in_tool,
+               "Uncuttable tets (Cutter keep_labels) the tool selected and left in place.");
+  report_field(report, "min_radius_ratio", &CutReport::min_radius_ratio,
+               "Worst radius ratio of the tets the cut created, after the improvement pass (1 when none).");
+  report_field(report, "min_radius_ratio_before_improvement", &CutReport::min_radius_ratio_before_improvement,
+               "The same before the improvement pass.");
+  report_field(report, "quality_floor", &CutReport::quality_floor,
+               "min(quality_floor, worst tet replaced): what every created tet must reach.");
+  report_field(report, "quality_met", &CutReport::quality_met, "Every created tet reaches quality_floor.");
+  report_field(report, "improvement_flips", &CutReport::improvement_flips, "Flips the improvement pass made.");
+  report_field(report, "improvement_collapses", &CutReport::improvement_collapses, "Edge collapses the improvement pass made.");
+  report_field(report, "improvement_moves", &CutReport::improvement_moves, "Vertex moves (smoothing) the improvement pass made.");
+  report_field(report, "improvement_insertions", &CutReport::improvement_insertions,
+               "Edge splits the improvement pass made and kept (insertion at an edge's midpoint).");
+  report_field(report, "tets_removed_by_improvement", &CutReport::tets_removed_by_improvement,
+               "Slivers the improvement pass let go with the tissue (apart from tets_removed).");
+  report_field(report, "d_ref", &CutReport::d_ref,
+               "The D_ref the cut was refined and judged at: d_ref_factor x tool_diameter (paper 3.2).");
+  report.def_readonly("wall_us", &Report::wall_us,
+                      "Wall time of the engine's cut alone (microseconds), timed around the C++ call by the binding: "
+                      "what a C++ caller would measure; a Python caller's own timing minus this is the binding's cost.")
       .def_property_readonly("time_us", [](const Report& r) {
         const CutTimings& t = r.report.time;
         py::dict d;
@@ -380,65 +615,63 @@ mesh.vertex_ids name them): apply removals first, then creations.)doc");
         d["select"] = t.select_us;
         d["remove"] = t.remove_us;
         d["improve"] = t.improve_us;
+        d["finish"] = t.finish_us;
         d["total"] = t.total_us;
         return d;
-      }, "Microseconds per stage and in total.")
+      }, "{stage: microseconds} for locate, refine, select, remove, improve, finish (the tissue audit, the commit "
+         "and the change log) and total (the whole call): the engine's CutReport.time.")
       .def_property_readonly("changes", [](Report& r) -> const Changes& {
         if (!r.changes) r.changes = changes_of(r.log);
         return *r.changes;
-      }, py::return_value_policy::reference_internal, "The net change as numpy arrays, built on first access.")
+      }, py::return_value_policy::reference_internal, "The net change as numpy arrays (Changes), built on first access.")
       .def("__repr__", [](const Report& r) {
-        return std::string("<tetcut.CutReport ") + (r.report.ok ? "ok" : "refused: " + r.report.failure) + ", " +
-               std::to_string(r.report.tets_removed) + " removed, " + std::to_string(r.report.tets_created) + " created>";
+        char centre[96];
+        std::snprintf(centre, sizeof centre, "(%.6g, %.6g, %.6g)", r.centre.x, r.centre.y, r.centre.z);
+        return std::string("<tetcut.CutReport at ") + centre + ": " +
+               (r.report.ok ? "ok" : "refused: " + r.report.failure) + ", " + std::to_string(r.report.tets_removed) +
+               " removed, " + std::to_string(r.report.tets_created) + " created>";
       });
 
-  py::class_<PyCutter, CutterPtr> cutter(m, "Cutter", R"doc(
-The cautery tool on a mesh (the engine's Cutter): indexes the mesh once, then cuts in O(tool).
+  py::class_<PyCutter, CutterPtr> cutter(m, "Cutter", R"doc(The cautery tool on a mesh (the engine's Cutter).
 
-Cutter(mesh, tool_diameter=1.0, strategy="combined", ...): the parameters of CutParams
-(engine/include/tetcut/cut.hpp); ValueError for one out of range. Keeps the mesh alive.
-keep_labels: labels (mesh.labels) whose tets no cut takes, as the paper's Fig. 7 keeps the portal
-vein (Cutter::set_uncuttable); ValueError on a mesh without labels.)doc");
-  cutter.def(py::init([](MeshPtr mesh, double tool_diameter, const std::string& strategy, const std::string& split,
-                       double d_ref_factor, double p, std::uint32_t search_depth, std::uint32_t max_refine_iterations,
-                       std::uint32_t max_tets_created, bool improve, double quality_floor,
-                       std::vector<std::uint32_t> keep_labels) {
-             CutParams params{.tool_diameter = tool_diameter, .d_ref_factor = d_ref_factor, .p = p,
-                              .search_depth = search_depth, .max_refine_iterations = max_refine_iterations,
-                              .max_tets_created = max_tets_created, .strategy = strategy_from(strategy),
-                              .split_method = split_from(split), .improve = improve, .quality_floor = quality_floor};
-             return std::make_shared<PyCutter>(std::move(mesh), params, std::move(keep_labels));
-           }),
-           py::arg("mesh").none(false), py::kw_only(), py::arg("tool_diameter") = 1.0, py::arg("strategy") = "combined",
-           py::arg("split") = "templates", py::arg("d_ref_factor") = 1.5, py::arg("p") = 1.5,
-           py::arg("search_depth") = 10, py::arg("max_refine_iterations") = 8, py::arg("max_tets_created") = 20000,
-           py::arg("improve") = true, py::arg("quality_floor") = 0.1,
-           py::arg("keep_labels") = std::vector<std::uint32_t>{})
+Cutter(mesh, *, tool_diameter, ...) indexes the mesh once, then each cut costs O(tool). It keeps
+the mesh alive; several Cutters may share one mesh (each re-indexes when another changed it).)doc");
+  cutter.def(py::init(&make_cutter), cutter_init_doc().c_str())
       .def("sweep",
            [](const CutterPtr& c, py::handle start, py::handle end, double step) {
              return c->sweep(point_from(start, "start"), point_from(end, "end"), step);
            },
            py::arg("start"), py::arg("end"), py::arg("step"),
-           "One cut every `step` from start to end (end included when a whole number of steps away), as "
-           "`tetcut cut --from --to --step`; stops after a refused cut. Releases the GIL.")
+           signature_doc("sweep", "self, /, start, end, step",
+                         "One cut every `step` from start to end, as `tetcut cut --from --to --step`, a scenario's "
+                         "sweep and `tetcut simulate --sweep` place them: the end is the last centre when it is a "
+                         "whole number of steps away, to within a billionth of a step. A list of CutReport; stops "
+                         "after a refused cut (its report is the last). Releases the GIL.")
+               .c_str())
       .def_property("tool_diameter", [](const CutterPtr& c) { return c->params().tool_diameter; },
                     [](const CutterPtr& c, double d) {
                       CutParams p = c->params();
                       p.tool_diameter = d;
                       c->set_params(p);
-                    })
-      .def_property_readonly("strategy", [](const CutterPtr& c) { return std::string(to_string(c->params().strategy)); })
-      .def_property_readonly("mesh", [](const CutterPtr& c) { return c->mesh(); });
+                    },
+                    "The tool's diameter (mesh units); settable between cuts (ValueError when not positive).")
+      .def_property_readonly("strategy", [](const CutterPtr& c) { return std::string(to_string(c->params().strategy)); },
+                             "The removal strategy: basic, neighbours, combined or wide (paper 3.4-3.7).")
+      .def_property_readonly("mesh", [](const CutterPtr& c) { return c->mesh(); }, "The Mesh this Cutter cuts.")
+      .def("__repr__", [](const CutterPtr& c) {
+        const CutParams& p = c->params();
+        return "<tetcut.Cutter tool_diameter=" + py::repr(py::float_(p.tool_diameter)).cast<std::string>() +
+               " strategy=" + to_string(p.strategy) + " on " + py::repr(py::cast(c->mesh())).cast<std::string>() + ">";
+      });
   // cut(): the one call a simulation loop makes per frame, bound without pybind11's dispatcher.
   report_type = py::detail::get_type_info(typeid(Report));
   cutter.attr("cut") = py::reinterpret_steal<py::object>(
       PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cutter.ptr()), &cut_method));
 
-  m.def("stats", &stats_of, py::arg("cutter").none(false), R"doc(
-The paper's statistics (Tables 1 and 2, section 3.6) over every removal request this Cutter made
+  m.def("stats", &stats_of, py::arg("cutter").none(false), signature_doc("stats", "cutter", R"doc(The paper's statistics (Tables 1 and 2, section 3.6) over every removal request this Cutter made
 since it was made or last re-indexed: {"removal": counts, "table1": {...}, "table2": {...}}, as
 `tetcut stats` computes its rows (tools/stats/removal_tables). A NaN is a ratio over nothing. Not
-`tetcut stats` itself, which reruns the paper's five scenarios (tens of seconds): run that command.)doc");
+`tetcut stats` itself, which reruns the paper's five scenarios (tens of seconds): run that command.)doc").c_str());
 }
 
 }  // namespace tetcut::python

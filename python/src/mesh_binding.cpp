@@ -26,6 +26,7 @@
 
 #include "mesh_handle.hpp"
 #include "mesh_input.hpp"  // tools/tetcut: the CLI's reader and its one-line messages
+#include "signature_doc.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/detail/local_tables.hpp"
 #include "tetcut/io.hpp"
@@ -163,12 +164,35 @@ std::vector<std::uint32_t> labels_from(py::handle obj, std::size_t tets) {
   return out;
 }
 
-MeshPtr from_arrays(py::handle points, py::handle tets, py::handle labels) {
+// Rows of `raw.positions` no tet names. The engine's vertices are its tets' corners: such a row
+// would become a tombstone (no row of mesh.points), and mesh.points would no longer line up
+// with the points given, so they are refused unless the caller asks for them to be dropped.
+void require_every_point_used(const RawMesh& raw, bool drop) {
+  if (drop) return;
+  std::vector<bool> used(raw.positions.size(), false);
+  for (const auto& t : raw.tets)
+    for (std::uint32_t v : t)
+      if (v < used.size()) used[v] = true;  // past the end: the builder's "dangling" message
+  std::vector<std::size_t> unused;
+  for (std::size_t v = 0; v < used.size(); ++v)
+    if (!used[v]) unused.push_back(v);
+  if (unused.empty()) return;
+  std::string rows;
+  for (std::size_t i = 0; i < std::min<std::size_t>(unused.size(), 5); ++i) rows += (i ? ", " : "") + std::to_string(unused[i]);
+  if (unused.size() > 5) rows += ", ...";
+  throw py::value_error("tetcut: points: " + std::to_string(unused.size()) + " of " + std::to_string(raw.positions.size()) +
+                        " points are used by no tet (rows " + rows + "); a mesh's vertices are its tets' corners. "
+                        "drop_unused_points=True drops them (mesh.vertex_ids then gives each row of mesh.points its "
+                        "row in these points)");
+}
+
+MeshPtr from_arrays(py::handle points, py::handle tets, py::handle labels, bool drop_unused_points) {
   RawMesh raw;
   raw.positions = points_from(points);
   raw.tets = tets_from(tets);
   raw.labels = labels_from(labels, raw.tets.size());
-  MeshPtr h = build(raw, "");
+  MeshPtr h = build(raw, "");  // first: a dangling index is the builder's to name
+  require_every_point_used(raw, drop_unused_points);
   h->labels.set(h->mesh, raw.labels);  // the builder keeps the tet order: TetId = row
   return h;
 }
@@ -199,8 +223,31 @@ MeshPtr read(const std::string& path) {
   if (!raw) throw py::value_error(failure.empty() ? "tetcut: " + path + ": unreadable mesh" : failure);
   MeshPtr h = build(*raw, path + ": ");
   h->labels.set(h->mesh, raw->labels);  // the builder keeps the file's tet order
+  // As `tetcut` reads a file, its points no tet uses are not vertices: said, not silent.
+  if (const std::size_t unused = raw->positions.size() - h->mesh.num_vertices(); unused > 0) {
+    const std::string note = "tetcut: " + path + ": note: " + std::to_string(unused) + " of " +
+                             std::to_string(raw->positions.size()) +
+                             " points are used by no tet and are not vertices of the mesh (mesh.vertex_ids gives "
+                             "each vertex's row in the file)";
+    if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) < 0) throw py::error_already_set();
+  }
   return h;
 }
+
+// mesh.copy(): the same mesh, ids, labels and attributes, sharing nothing with the original.
+MeshPtr copy_of(const MeshPtr& held) {
+  MeshHandle& h = *held;
+  MeshUse use(h);
+  auto copy = std::make_shared<MeshHandle>();
+  copy->mesh = h.mesh;
+  copy->labels = h.labels;
+  copy->flat_attributes = h.flat_attributes;
+  return copy;
+}
+
+// An empty mesh (a cut took every tet): what pickling one gives back. No file holds one (the
+// readers refuse "no tetrahedra"), so write() refuses it too.
+MeshPtr empty_mesh() { return std::make_shared<MeshHandle>(); }
 
 py::array_t<std::int64_t> ids_array(const std::vector<std::int64_t>& ids) {
   py::array_t<std::int64_t> a(static_cast<py::ssize_t>(ids.size()));
@@ -236,20 +283,28 @@ void bind_mesh(py::module_& m) {
   made_by_the_module_only(py::class_<SlotViewLock>(
       m, "_SlotViewLock", "Keeps a mesh alive and unchanged while a slot view of it exists (internal)."));
 
-  py::class_<MeshHandle, MeshPtr> mesh(m, "Mesh", R"doc(
-A manifold tetrahedral mesh (the engine's TetMesh), validated when made.
+  py::class_<MeshHandle, MeshPtr> mesh(m, "Mesh", R"doc(A manifold tetrahedral mesh (the engine's TetMesh), validated when made.
 
-Mesh(points, tets, labels=None): points #V by 3 (any real array-like), tets #T by 4 (integer
-vertex indices, 0-based, positively oriented), labels #T integers in 0..2^31-1 (a region, a
-material per tet) or None. All are copied. Raises ValueError with the message `tetcut`
-prints for what it refuses (NaN, dangling or repeated indices, inverted tets, a non-manifold
-input), ValueError / TypeError for a wrong shape or dtype.
-)doc");
-  mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"), py::arg("labels") = py::none());
+Mesh(points, tets, labels=None, *, drop_unused_points=False); tetcut.read(path) and
+tetcut.from_meshio(m) make one too. Index arrays are int64 everywhere but in the zero-copy slot
+views (slot_tets: uint32, 0xFFFFFFFF for a removed tet). copy.copy, copy.deepcopy, mesh.copy()
+and pickle work (a pickled mesh comes back with its ids renumbered densely, as compact() would).
+repr: "<tetcut.Mesh V vertices, T tets>".)doc");
+  mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"), py::arg("labels") = py::none(), py::kw_only(),
+           py::arg("drop_unused_points") = false,
+           signature_doc("__init__", "self, /, points, tets, labels=None, *, drop_unused_points=False", R"doc(A mesh from arrays, copied and validated.
+
+points: #V by 3 (any real array-like); tets: #T by 4 integer vertex indices (rows of points,
+0-based, positively oriented); labels: #T integers in 0..2^31-1 (a region, a material per tet)
+or None. Every point must be some tet's corner: ValueError naming the unused rows, unless
+drop_unused_points=True drops them (mesh.vertex_ids then gives each row of mesh.points its row
+in `points`). ValueError with the message `tetcut` prints for what the builder refuses (NaN,
+dangling or repeated indices, inverted tets, a non-manifold input); ValueError / TypeError naming
+the argument for a wrong shape or dtype.)doc").c_str());
 
   mesh.def_property_readonly("num_tets", [](const MeshPtr& held) {
         MeshHandle& h = *held; return h.mesh.num_tets(); },
-                             "Live tets.");
+                             "Live tets (0 once a cut removed them all).");
   mesh.def_property_readonly("num_vertices", [](const MeshPtr& held) {
         MeshHandle& h = *held; return h.mesh.num_vertices(); },
                              "Live vertices (used by a live tet).");
@@ -338,8 +393,9 @@ input), ValueError / TypeError for a wrong shape or dtype.
         return slot_view(h, {static_cast<py::ssize_t>(tets.size()), 4}, tets.data()->data());
       },
       R"doc(Slots by 4 uint32, read-only, no copy: the engine's tet array indexed by tet id, vertex
-ids as entries (rows of slot_points); a removed tet's slot has 0xFFFFFFFF in column 0 (see
-live_tet_mask). While this view (or any array made from it) is alive the mesh refuses every
+ids as entries (rows of slot_points); a removed tet's slot has 0xFFFFFFFF (4294967295) in
+column 0 (see live_tet_mask). The one index array that is not int64: it is the engine's own
+memory, not a copy. While this view (or any array made from it) is alive the mesh refuses every
 change (a cut, a sweep, compact) with RuntimeError, since a cut grows and rewrites these arrays:
 a view never dangles. Delete it before cutting again.)doc");
   mesh.def_property_readonly(
@@ -392,15 +448,19 @@ a view never dangles. Delete it before cutting again.)doc");
         }
         return a;
       },
-      "#F by 3 int64: the boundary triangles as rows of `points`, counter-clockwise seen from outside. "
-      "O(#T).");
+      signature_doc("surface", "self, /",
+                    "#F by 3 int64: the boundary triangles as rows of `points`, counter-clockwise seen from outside. "
+                    "O(#T).").c_str());
   mesh.def(
       "volume", [](const MeshPtr& held) {
-        MeshHandle& h = *held; MeshUse use(h); return h.mesh.total_volume(); }, "Total volume. O(#T).");
+        MeshHandle& h = *held; MeshUse use(h); return h.mesh.total_volume(); },
+      signature_doc("volume", "self, /", "Total volume (mesh units cubed). O(#T).").c_str());
   mesh.def(
       "hash", [](const MeshPtr& held) {
         MeshHandle& h = *held; MeshUse use(h); return hash_to_hex(canonical_hash(h.mesh)); },
-      "The canonical hash (16 hex digits) `tetcut` prints: independent of id numbering. O(#T log #T).");
+      signature_doc("hash", "self, /",
+                    "The canonical hash (16 hex digits) `tetcut` prints: independent of id numbering. O(#T log #T).")
+          .c_str());
 
   mesh.def_property_readonly(
       "attribute_names",
@@ -421,7 +481,10 @@ a view never dangles. Delete it before cutting again.)doc");
         const auto c = attributes.find(name);
         if (!c) throw py::key_error("tetcut: no vertex attribute named '" + name + "'");
         const std::uint32_t width = attributes.channel(*c).width;
-        py::array_t<double> a({static_cast<py::ssize_t>(h.mesh.num_vertices()), static_cast<py::ssize_t>(width)});
+        const auto rows = static_cast<py::ssize_t>(h.mesh.num_vertices());
+        py::array_t<double> a = h.flat_attributes.count(name)
+                                    ? py::array_t<double>(rows)
+                                    : py::array_t<double>({rows, static_cast<py::ssize_t>(width)});
         double* out = a.mutable_data();
         for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v) {
           if (!h.mesh.is_live(VertId{v})) continue;
@@ -430,8 +493,11 @@ a view never dangles. Delete it before cutting again.)doc");
         return a;
       },
       py::arg("name"),
-      "#V by width float64 (a copy), rows as `points`. Cuts interpolate every channel along the edges "
-      "they split (paper 3.2).");
+      signature_doc("vertex_attribute", "self, /, name",
+                    "The channel's values (a float64 copy), rows as `points`: #V for a channel set from #V values "
+                    "(meshio's shape for a scalar field), #V by width otherwise. Cuts interpolate every channel "
+                    "along the edges they split (paper 3.2). KeyError for an unknown name.")
+          .c_str());
   mesh.def(
       "set_vertex_attribute",
       [](const MeshPtr& held, const std::string& name, py::handle values) {
@@ -443,7 +509,8 @@ a view never dangles. Delete it before cutting again.)doc");
           throw py::type_error("tetcut: " + name + ": expected real numbers, got dtype " +
                                py::str(a.dtype()).cast<std::string>());
         }
-        if (a.ndim() == 1) a = a.attr("reshape")(-1, 1);
+        const bool flat = a.ndim() == 1;
+        if (flat) a = a.attr("reshape")(-1, 1);
         if (a.ndim() != 2 || a.shape(0) != h.mesh.num_vertices() || a.shape(1) < 1) {
           throw py::value_error("tetcut: " + name + ": expected shape (" + std::to_string(h.mesh.num_vertices()) +
                                 ",) or (" + std::to_string(h.mesh.num_vertices()) + ", width), got shape " +
@@ -458,9 +525,14 @@ a view never dangles. Delete it before cutting again.)doc");
           if (!h.mesh.is_live(VertId{v})) continue;
           for (double& x : attributes.value(*c, VertId{v})) x = *in++;
         }
+        if (flat) h.flat_attributes.insert(name);
+        else h.flat_attributes.erase(name);
       },
       py::arg("name"), py::arg("values"),
-      "Adds (or overwrites) a channel from #V values or #V by width values, rows as `points`.");
+      signature_doc("set_vertex_attribute", "self, /, name, values",
+                    "Adds (or overwrites) a channel from #V values or #V by width values, rows as `points`; "
+                    "vertex_attribute() gives it back in the shape given.")
+          .c_str());
 
   mesh.def(
       "write",
@@ -471,6 +543,10 @@ a view never dangles. Delete it before cutting again.)doc");
         if (compression == "zlib") options.compression = Compression::kZlib;
         else if (compression == "lzma") options.compression = Compression::kLzma;
         else if (compression != "none") throw py::value_error("tetcut: compression: none, zlib or lzma");
+        if (h.mesh.num_tets() == 0) {
+          throw py::value_error("tetcut: " + path + ": the mesh has no tets (the cuts removed them all): no format "
+                                "tetcut reads holds an empty mesh (tetcut.read refuses one), so none is written");
+        }
         RawMesh raw = h.mesh.to_raw();
         if (h.labels.labelled()) raw.labels = live_labels(h);
         WriteResult written;
@@ -481,9 +557,12 @@ a view never dangles. Delete it before cutting again.)doc");
         if (!written.ok) throw py::value_error("tetcut: " + written.error);
       },
       py::arg("path"), py::kw_only(), py::arg("binary") = false, py::arg("compression") = "none",
-      "Writes the live mesh (rows as `points` and `tets`), format by extension (.msh 2.2, .vtu, .vtk, "
-      ".mesh, .node/.ele), through a temporary file and a rename, with the labels when it has them. "
-      "Attributes are not written.");
+      signature_doc("write", "self, /, path, *, binary=False, compression='none'",
+                    "Writes the live mesh (rows as `points` and `tets`), format by extension (.msh 2.2, .vtu, .vtk, "
+                    ".mesh, .node/.ele), through a temporary file and a rename, with the labels when it has them. "
+                    "compression: none, zlib or lzma (.vtu). Attributes are not written. ValueError for an empty "
+                    "mesh (no tets), which no reader takes.")
+          .c_str());
 
   mesh.def(
       "compact",
@@ -495,32 +574,62 @@ a view never dangles. Delete it before cutting again.)doc");
         h.labels.renumber(r);
         ++h.version;
         std::vector<std::int64_t> tets(r.tet_old_to_new.size()), verts(r.vert_old_to_new.size());
+        // int64 before the choice: `valid() ? value : -1` would make the -1 a uint32 (4294967295).
         for (std::size_t i = 0; i < tets.size(); ++i)
-          tets[i] = r.tet_old_to_new[i].valid() ? r.tet_old_to_new[i].value : -1;
+          tets[i] = r.tet_old_to_new[i].valid() ? std::int64_t{r.tet_old_to_new[i].value} : std::int64_t{-1};
         for (std::size_t i = 0; i < verts.size(); ++i)
-          verts[i] = r.vert_old_to_new[i].valid() ? r.vert_old_to_new[i].value : -1;
+          verts[i] = r.vert_old_to_new[i].valid() ? std::int64_t{r.vert_old_to_new[i].value} : std::int64_t{-1};
         return py::make_tuple(ids_array(tets), ids_array(verts));
       },
-      "Renumbers tets and vertices densely; returns (tet_old_to_new, vertex_old_to_new), -1 for removed ids. "
-      "Cutters on the mesh re-index before their next cut.");
+      signature_doc("compact", "self, /",
+                    "Renumbers tets and vertices densely; returns (tet_old_to_new, vertex_old_to_new), int64 arrays "
+                    "indexed by old id, -1 for a removed id (so old_to_new[old_to_new >= 0] are the kept ones). "
+                    "Cutters on the mesh re-index before their next cut.")
+          .c_str());
 
   mesh.def("to_meshio", &to_meshio,
-           "A meshio.Mesh: points, one 'tetra' cell block, each attribute channel as point_data, the labels (if "
-           "any) as cell_data 'label'.");
+           signature_doc("to_meshio", "self, /",
+                         "A meshio.Mesh: points, one 'tetra' cell block, each attribute channel as point_data (in the "
+                         "shape vertex_attribute gives), the labels (if any) as cell_data 'label'.")
+               .c_str());
+  mesh.def("copy", &copy_of,
+           signature_doc("copy", "self, /",
+                         "An independent copy: the same ids, points, tets, labels and attributes (copy.copy and "
+                         "copy.deepcopy give the same). Cutters stay on the original.")
+               .c_str());
+  mesh.def("__copy__", &copy_of, signature_doc("__copy__", "self, /", "mesh.copy().").c_str());
+  mesh.def("__deepcopy__", [](const MeshPtr& held, py::handle) { return copy_of(held); }, py::arg("memo"),
+           signature_doc("__deepcopy__", "self, /, memo", "mesh.copy(): a Mesh shares nothing with another.").c_str());
+  // Pickled as the live mesh, rows as `points` and `tets` (ids renumbered densely, as compact()
+  // would), with its labels and attributes; rebuilt and validated like Mesh() when unpickled.
+  mesh.def(py::pickle(
+      [](py::object self) {
+        const MeshPtr held = self.cast<MeshPtr>();
+        py::dict attributes;
+        for (py::handle name : self.attr("attribute_names")) attributes[name] = self.attr("vertex_attribute")(name);
+        return py::make_tuple(1, self.attr("points"), self.attr("tets"), self.attr("labels"), attributes);
+      },
+      [](const py::tuple& state) {
+        if (state.size() != 5 || state[0].cast<int>() != 1) throw py::value_error("tetcut: not a pickled tetcut.Mesh");
+        MeshPtr h = py::len(state[2]) == 0 ? empty_mesh() : from_arrays(state[1], state[2], state[3], false);
+        py::object mesh = py::cast(h);
+        for (auto item : state[4].cast<py::dict>()) mesh.attr("set_vertex_attribute")(item.first, item.second);
+        return h;
+      }));
   mesh.def("__repr__", [](const MeshPtr& held) {
         MeshHandle& h = *held;
     return "<tetcut.Mesh " + std::to_string(h.mesh.num_vertices()) + " vertices, " + std::to_string(h.mesh.num_tets()) +
            " tets>";
   });
 
-  m.def("read", &read, py::arg("path"), R"doc(
-Reads a mesh file (Gmsh, VTK legacy and XML, medit, TetGen; format by content, else by
+  m.def("read", &read, py::arg("path"), signature_doc("read", "path", R"doc(Reads a mesh file (Gmsh, VTK legacy and XML, medit, TetGen; format by content, else by
 extension) and builds it. Raises ValueError with the line `tetcut` prints ("tetcut: FILE:LINE:
-reason"); the reader's notes come as UserWarning.)doc");
+reason"); the reader's notes come as UserWarning, and so do points no tet uses, which are not
+vertices of the mesh (as `tetcut` reads the file).)doc").c_str());
 
   m.def(
       "from_meshio",
-      [](py::handle meshio_mesh) {
+      [](py::handle meshio_mesh, bool drop_unused_points) {
         py::list blocks;
         std::vector<std::size_t> tetra_blocks;
         std::size_t index = 0;
@@ -549,8 +658,8 @@ reason"); the reader's notes come as UserWarning.)doc");
           labels = values;
           break;
         }
-        MeshPtr h = from_arrays(meshio_mesh.attr("points"), tets, labels);
-        // Point data on the points the mesh kept (a point no tet uses is dropped, as in `points`).
+        MeshPtr h = from_arrays(meshio_mesh.attr("points"), tets, labels, drop_unused_points);
+        // Point data on the points the mesh kept (rows of `points`).
         const py::ssize_t n = py::len(meshio_mesh.attr("points"));
         py::object mesh = py::cast(h);
         std::vector<std::int64_t> kept;
@@ -565,10 +674,14 @@ reason"); the reader's notes come as UserWarning.)doc");
         }
         return h;
       },
-      py::arg("mesh"),
-      "A Mesh from a meshio.Mesh: its points, its 'tetra' cells, its real point_data as attributes, its labels "
-      "from the first integer cell_data named label, gmsh:physical, medit:ref, CellEntityIds or tetgen:ref. "
-      "Validated as Mesh(points, tets, labels) is.");
+      py::arg("mesh"), py::kw_only(), py::arg("drop_unused_points") = false,
+      signature_doc("from_meshio", "mesh, *, drop_unused_points=False",
+                    "A Mesh from a meshio.Mesh: its points, its 'tetra' cells, its real point_data as attributes "
+                    "(in meshio's shapes), its labels from the first integer cell_data named label, gmsh:physical, "
+                    "medit:ref, CellEntityIds or tetgen:ref. Validated as Mesh(points, tets, labels, "
+                    "drop_unused_points=...) is: points no tetra uses (a file's other cells') are refused unless "
+                    "dropped.")
+          .c_str());
 }
 
 namespace {
@@ -579,8 +692,7 @@ py::object to_meshio(const MeshPtr& h) {
   py::dict point_data;
   for (std::uint32_t c = 0; c < h->mesh.attributes().channel_count(); ++c) {
     const std::string name = h->mesh.attributes().channel(c).name;
-    py::array values = mesh.attr("vertex_attribute")(name);
-    point_data[py::str(name)] = values.shape(1) == 1 ? values.attr("reshape")(-1) : values;
+    point_data[py::str(name)] = mesh.attr("vertex_attribute")(name);  // in the shape it was given
   }
   py::list cells;
   cells.append(py::make_tuple("tetra", mesh.attr("tets")));

@@ -19,6 +19,8 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
+#include <string>
 #include <span>
 
 #include "tetcut/change_log.hpp"
@@ -65,6 +67,9 @@ class MeshLabels {
 struct MeshHandle {
   TetMesh mesh;
   MeshLabels labels;
+  // Width-1 attribute channels set from a 1-D array: vertex_attribute() gives them back 1-D, as
+  // meshio's point_data has them; the others come back #V by width.
+  std::set<std::string> flat_attributes;
   std::atomic<bool> in_use{false};
   std::uint64_t version = 0;  // mutations so far (cuts, compactions)
   std::uint32_t slot_views = 0;  // alive slot views; changed with the GIL held

@@ -6,7 +6,14 @@
 #include "mesh_handle.hpp"
 
 PYBIND11_MODULE(tetcut, m) {
-  m.doc() = "tetcut: manifold-preserving tissue removal on tetrahedral meshes (Forest, Delingette, Ayache 2002).";
+  // Every function's docstring starts with its signature in CPython's form (signature_doc.hpp),
+  // which inspect.signature() reads; pybind11's own signature line would come before it.
+  pybind11::options options;
+  options.disable_function_signatures();
+  m.doc() = R"doc(tetcut: manifold-preserving tissue removal on tetrahedral meshes (Forest, Delingette, Ayache 2002).
+
+read() or Mesh() a mesh, Cutter() a tool on it, cut() or sweep() it, check() it: numpy in and out.
+docs/python.md has the whole API.)doc";
   m.attr("__version__") = TETCUT_VERSION;
   tetcut::python::bind_mesh(m);
   tetcut::python::bind_cutter(m);

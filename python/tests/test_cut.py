@@ -1,4 +1,6 @@
 """tetcut.Cutter: cuts, sweeps, the report and its changes, the GIL, tetcut.stats and tetcut.check."""
+import json
+import pickle
 import re
 import subprocess
 import threading
@@ -7,7 +9,7 @@ import numpy as np
 import pytest
 
 import tetcut
-from conftest import CORPUS, README_DIAMETER, README_SWEEP
+from conftest import CORPUS, README_DIAMETER, README_SWEEP, box_arrays
 
 
 def test_the_readme_sweep_gives_the_hash_tetcut_cut_prints(cli, tmp_path):
@@ -71,12 +73,27 @@ def test_a_cut_in_the_air_changes_nothing(box):
     assert box.hash() == before
 
 
-def test_bad_parameters_raise(box):
-    for kwargs, words in [({"tool_diameter": -1}, "diameter"), ({"tool_diameter": float("nan")}, "diameter"),
-                          ({"strategy": "greedy"}, "strategy: basic, neighbours, combined or wide"),
-                          ({"split": "halves"}, "split"), ({"quality_floor": 2.0}, "floor")]:
-        with pytest.raises(ValueError, match=words):
-            tetcut.Cutter(box, **kwargs)
+def test_bad_parameters_raise_naming_the_keyword(box):
+    for kwargs, words in [({"tool_diameter": -1}, "tool_diameter=-1: tool diameter must be a positive"),
+                          ({"tool_diameter": float("nan")}, "tool_diameter=nan: tool diameter"),
+                          ({"strategy": "greedy"}, "strategy: basic, neighbours, combined or wide, not 'greedy'"),
+                          ({"split": "halves"}, "split: templates or bisection"), ({"order": "random"}, "order: "),
+                          ({"quality_floor": 2.0}, "quality_floor=2.0: the quality floor"),
+                          ({"d_ref_factor": 0}, "d_ref_factor=0: D_ref factor"), ({"p": 1.0}, "p=1.0: p must"),
+                          ({"search_depth": 65}, "search_depth=65: search depth must be between 1 and 64"),
+                          ({"search_depth": -1}, "search_depth=-1: expected a non-negative integer"),
+                          ({"max_tets_created": 2**40}, "max_tets_created=1099511627776")]:
+        with pytest.raises(ValueError) as e:
+            tetcut.Cutter(box, **{"tool_diameter": 1.0, **kwargs})
+        assert words in str(e.value)
+    for kwargs, words in [({"tool_diameter": "8"}, "tool_diameter: expected a real number, got str"),
+                          ({"search_depth": 2.5}, "search_depth: expected a non-negative integer, got float"),
+                          ({"improve": "yes"}, "improve: expected True or False, got str"),
+                          ({"strategy": 3}, "strategy: expected a str, got int")]:
+        with pytest.raises(TypeError) as e:
+            tetcut.Cutter(box, **{"tool_diameter": 1.0, **kwargs})
+        assert words in str(e.value)
+    assert tetcut.Cutter(box, tool_diameter=1.0, order="paper", improve=False, search_depth=3).cut((2, 2, 4)).ok
     cutter = tetcut.Cutter(box, tool_diameter=1.0)
     with pytest.raises(ValueError, match="finite"):
         cutter.cut((np.nan, 0, 0))
@@ -95,7 +112,7 @@ def test_bad_parameters_raise(box):
     assert cutter.cut([50, 50, 50]).ok and cutter.cut((np.float64(50), 50.0, 50)).ok
     with pytest.raises(ValueError, match="step"):
         cutter.sweep((0, 0, 0), (1, 1, 1), 0.0)
-    with pytest.raises(ValueError, match="100000"):
+    with pytest.raises(ValueError, match="step: more than 100000 cuts"):
         cutter.sweep((0, 0, 0), (1e6, 0, 0), 1.0)
     with pytest.raises(ValueError):
         cutter.tool_diameter = 0.0
@@ -179,3 +196,111 @@ def test_misuse_raises_instead_of_crashing(box):
             cls()
         with pytest.raises(TypeError):
             cls.__new__(cls)
+
+
+def test_the_tool_diameter_is_required_and_keywords_are_named(box):
+    # No default: the engine's 1.0 would be half a liver in metres, a tenth of one in millimetres.
+    with pytest.raises(TypeError, match="tool_diameter is required"):
+        tetcut.Cutter(box)
+    with pytest.raises(TypeError) as e:
+        tetcut.Cutter(box, tool_diam=8.0)
+    assert "unknown keyword 'tool_diam' (did you mean 'tool_diameter'?)" in str(e.value)
+    with pytest.raises(TypeError, match="unknown keyword 'colour'; the keywords: mesh, tool_diameter, strategy"):
+        tetcut.Cutter(box, tool_diameter=1.0, colour="red")
+    with pytest.raises(TypeError, match="takes the mesh and every parameter by keyword; got 2 positional"):
+        tetcut.Cutter(box, 8.0)
+    with pytest.raises(TypeError, match="mesh: expected a tetcut.Mesh, got str"):
+        tetcut.Cutter("liver.msh", tool_diameter=8.0)
+    assert tetcut.Cutter(mesh=box, tool_diameter=8.0).mesh is box
+
+
+def sweep_cuts_of_the_cli(cli, mesh_path, start, end, step, diameter, tmp_path, *extra):
+    report = str(tmp_path / "report.json")
+    run = subprocess.run([cli, "cut", mesh_path, "--diameter", str(diameter), "--from", ",".join(map(repr, start)),
+                          "--to", ",".join(map(repr, end)), "--step", repr(step), "--report", report, *extra],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    with open(report) as f:
+        return json.load(f)
+
+
+def test_the_sweep_ends_where_the_cli_ends_it_within_a_billionth_of_a_step(cli, tmp_path):
+    # 1.4 / 0.05 is 27.999999999999996 in doubles: the end, 28 steps away, is cut too.
+    start, end, step = (-0.8, 0.0, -0.2), (0.6, 0.0, -0.2), 0.05
+    points, tets = box_arrays(4, 4.0)
+    path = str(tmp_path / "box.vtu")
+    tetcut.Mesh(points - 2.0, tets).write(path)  # the cube [-2, 2]^3
+    mesh = tetcut.read(path)
+    reports = tetcut.Cutter(mesh, tool_diameter=0.3).sweep(start, end, step)
+    assert len(reports) == 29
+    np.testing.assert_allclose(reports[-1].centre, end, atol=1e-12)
+    cli_report = sweep_cuts_of_the_cli(cli, path, start, end, step, 0.3, tmp_path)
+    assert cli_report["summary"]["cuts"] == 29 and cli_report["summary"]["hash"] == mesh.hash()
+    # Half a step short of a whole number: the sweep stops before the end, as before.
+    assert len(tetcut.Cutter(tetcut.Mesh(*box_arrays(2)), tool_diameter=0.1).sweep((0, 0, 0), (0.95, 0, 0), 0.1)) == 10
+
+
+def test_the_report_counts_are_the_clis_and_the_changes_are_net_ids(cli, tmp_path):
+    # The README's loop prints report.tets_removed: the counts `tetcut cut --report` gives, cut
+    # by cut, every field it reports. report.changes lists net ids instead (a parent the
+    # refinement replaced is "removed" though the tool never took it), so its length differs
+    # whenever the cut refined.
+    liver = str(CORPUS / "liver.msh")
+    s, e, step = README_SWEEP["start"], README_SWEEP["end"], README_SWEEP["step"]
+    cli_cuts = sweep_cuts_of_the_cli(cli, liver, s, e, step, README_DIAMETER, tmp_path)["cuts"]
+    reports = tetcut.Cutter(tetcut.read(liver), tool_diameter=README_DIAMETER).sweep(**README_SWEEP)
+    assert len(reports) == len(cli_cuts) == 36
+    compared = 0
+    for r, c in zip(reports, cli_cuts):
+        for key, value in c.items():
+            if key in ("index", "line") or key.endswith("_us"):
+                continue
+            assert getattr(r, key) == (list(value) if key == "centre" else value), key
+            compared += 1
+    assert compared > 36 * 20
+    refined = [r for r in reports if r.tets_refined > 0]
+    assert refined and all(len(r.changes.removed) > r.tets_removed for r in refined)
+
+
+def test_change_arrays_are_read_only_and_the_same_on_every_read(box):
+    report = tetcut.Cutter(box, tool_diameter=1.5).cut((2, 2, 4))
+    changes = report.changes
+    for name in ["removed", "created", "parent", "parents", "parents_offsets", "new_vertices", "new_vertex_edges",
+                 "new_vertex_t", "new_vertex_from", "new_vertex_weights", "removed_vertices"]:
+        a = getattr(changes, name)
+        assert not a.flags.writeable, name
+        with pytest.raises(ValueError, match="read-only"):
+            a[...] = 0
+    removed = changes.removed.copy()
+    with pytest.raises(ValueError):
+        report.changes.removed.sort()
+    np.testing.assert_array_equal(report.changes.removed, removed)
+    assert report.changes.removed is changes.removed
+
+
+def test_pieces_left_in_the_tool_are_reported():
+    # The basic strategy's splits (paper 3.4) leave pieces of unselected tets in the tool that
+    # their one request does not take (the README's sweep through the coarse liver).
+    basic = tetcut.Cutter(tetcut.read(str(CORPUS / "liver-coarse.msh")), tool_diameter=README_DIAMETER, strategy="basic")
+    reports = basic.sweep(**README_SWEEP)
+    assert sum(r.left_in_tool for r in reports) > 0 and sum(r.kept_pieces_requested for r in reports) > 0
+    assert any(r.left_in_tool != r.kept_pieces_requested for r in reports)  # two fields, not one twice
+    assert all(r.kept_pieces_requested <= r.requests for r in reports)
+    assert any(r.left_in_tool == 0 and r.unresolved == 0 for r in reports)  # and a cut that emptied its tool
+
+
+def test_a_tool_larger_than_the_organ_empties_it_and_every_function_says_so(tmp_path):
+    mesh = tetcut.read(str(CORPUS / "cylinder.msh"))
+    report = tetcut.Cutter(mesh, tool_diameter=1000.0).cut((0, 0, 2))
+    assert report.ok and mesh.num_tets == 0 and mesh.num_vertices == 0  # ok: it removed what it was asked to
+    assert tetcut.check(mesh) == [] and mesh.volume() == 0.0
+    assert mesh.points.shape == (0, 3) and mesh.tets.shape == (0, 4) and mesh.surface().shape == (0, 3)
+    with pytest.raises(ValueError, match=r"the mesh has no tets .*\(tetcut.read refuses one\)"):
+        mesh.write(str(tmp_path / "empty.msh"))
+    assert not (tmp_path / "empty.msh").exists()
+    # And read refuses what would be one: the two agree.
+    (tmp_path / "none.msh").write_text("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n0\n$EndNodes\n$Elements\n0\n$EndElements\n")
+    with pytest.raises(ValueError, match="no tetrahedra"):
+        tetcut.read(str(tmp_path / "none.msh"))
+    again = pickle.loads(pickle.dumps(mesh))
+    assert again.num_tets == 0 and again.hash() == mesh.hash() and mesh.copy().num_tets == 0

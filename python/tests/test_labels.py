@@ -157,4 +157,16 @@ def test_keep_labels_leaves_the_vessel_and_takes_the_tissue_above_it():
 def test_keep_labels_needs_labels():
     points, tets = box_arrays(2, 1.0)
     with pytest.raises(ValueError, match="no labels"):
-        tetcut.Cutter(tetcut.Mesh(points, tets), keep_labels=[2])
+        tetcut.Cutter(tetcut.Mesh(points, tets), tool_diameter=0.5, keep_labels=[2])
+
+
+def test_keep_labels_names_a_label_no_tet_has():
+    # A typo in keep_labels would protect nothing while looking like a protection.
+    mesh = vessel_box()
+    with pytest.raises(ValueError) as e:
+        tetcut.Cutter(mesh, tool_diameter=1.2, keep_labels=[2, 7])
+    assert "keep_labels: no tet is labelled 7 (the mesh's labels: 1, 2)" in str(e.value)
+    with pytest.raises(TypeError, match="keep_labels: expected a sequence of labels"):
+        tetcut.Cutter(mesh, tool_diameter=1.2, keep_labels=[-2])
+    reports = tetcut.Cutter(mesh, tool_diameter=1.2, keep_labels=np.array([2])).sweep((0.4, 2.0, 2.9), (3.6, 2.0, 2.9), 0.4)
+    assert sum(r.uncuttable_in_tool for r in reports) > 0  # a numpy array of labels works as well

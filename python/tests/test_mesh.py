@@ -1,4 +1,6 @@
 """tetcut.read, tetcut.Mesh, its arrays, slot views, attributes and files; bad input raising."""
+import copy
+import pickle
 import subprocess
 
 import numpy as np
@@ -138,7 +140,7 @@ def test_attributes_follow_the_cut(box):
     assert box.attribute_names == ["temperature", "texcoord"]
     tetcut.Cutter(box, tool_diameter=1.5).cut((2, 2, 4.1))
     # Edge splits interpolate every channel linearly: a linear field stays the same function.
-    np.testing.assert_allclose(box.vertex_attribute("temperature")[:, 0], 2.0 * box.points[:, 0], atol=1e-12)
+    np.testing.assert_allclose(box.vertex_attribute("temperature"), 2.0 * box.points[:, 0], atol=1e-12)
     np.testing.assert_allclose(box.vertex_attribute("texcoord"), box.points[:, :2], atol=1e-12)
     with pytest.raises(KeyError):
         box.vertex_attribute("pressure")
@@ -153,3 +155,103 @@ def test_attributes_follow_the_cut(box):
 def test_read_the_bundled_liver(liver):
     assert liver.num_tets > 1000
     assert repr(liver).startswith("<tetcut.Mesh ")
+
+
+def test_compact_gives_minus_one_for_removed_ids_as_int64(box):
+    cutter = tetcut.Cutter(box, tool_diameter=1.5)
+    for centre in [(2, 2, 4), (2, 2, 0), (3.5, 3.5, 3.5)]:  # the last frees the corner vertex
+        assert cutter.cut(centre).tets_removed > 0
+    live_tets, live_vertices = box.live_tet_mask, box.live_vertex_mask
+    assert not live_tets.all() and not live_vertices.all()  # tombstones to compact away
+    tet_map, vert_map = box.compact()
+    for old_to_new, live in [(tet_map, live_tets), (vert_map, live_vertices)]:
+        assert old_to_new.dtype == np.int64
+        np.testing.assert_array_equal(old_to_new < 0, ~live)
+        assert set(old_to_new[~live].tolist()) == {-1}  # not 4294967295
+        np.testing.assert_array_equal(np.sort(old_to_new[old_to_new >= 0]), np.arange(live.sum()))
+
+
+def test_every_index_array_is_int64_but_the_slot_views(box):
+    tetcut.Cutter(box, tool_diameter=1.5).cut((2, 2, 4))
+    report = tetcut.Cutter(box, tool_diameter=1.5).cut((2, 2, 3))
+    arrays = [box.tets, box.tet_ids, box.vertex_ids, box.surface(), *box.compact()]
+    arrays += [getattr(report.changes, n) for n in ["removed", "created", "parent", "parents", "parents_offsets",
+                                                    "new_vertices", "new_vertex_edges", "new_vertex_from", "removed_vertices"]]
+    assert all(a.dtype == np.int64 for a in arrays)
+    tetcut.Cutter(box, tool_diameter=1.5).cut((0, 4, 4))
+    slots = box.slot_tets
+    assert slots.dtype == np.uint32
+    dead = ~box.live_tet_mask
+    assert dead.any() and (slots[dead, 0] == 0xFFFFFFFF).all() and "0xFFFFFFFF" in type(box).slot_tets.__doc__
+
+
+def test_points_no_tet_uses_are_refused_unless_dropped():
+    points, tets = box_arrays(1)
+    extra = np.vstack([points, [[5.0, 5.0, 5.0]], points[:1] + 9.0])
+    with pytest.raises(ValueError) as e:
+        tetcut.Mesh(extra, tets)
+    assert "points: 2 of 10 points are used by no tet (rows 8, 9)" in str(e.value)
+    assert "drop_unused_points=True" in str(e.value)
+    mesh = tetcut.Mesh(extra, tets, drop_unused_points=True)
+    assert mesh.num_vertices == 8
+    np.testing.assert_array_equal(mesh.vertex_ids, np.arange(8))  # each row's row in the points given
+    np.testing.assert_array_equal(mesh.points, extra[mesh.vertex_ids])
+
+
+def test_reading_a_file_with_points_no_tet_uses_says_so(tmp_path):
+    (tmp_path / "extra.msh").write_text(
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 7 7 7\n$EndNodes\n"
+        "$Elements\n1\n1 4 2 1 1 1 2 3 4\n$EndElements\n")
+    with pytest.warns(UserWarning, match="1 of 5 points are used by no tet"):
+        mesh = tetcut.read(str(tmp_path / "extra.msh"))
+    assert mesh.num_vertices == 4
+
+
+def test_a_copy_is_the_same_mesh_and_shares_nothing(tmp_path):
+    points, tets = box_arrays(4, 4.0)
+    mesh = tetcut.Mesh(points, tets, labels=np.where(points[tets].mean(axis=1)[:, 0] < 2, 3, 7))
+    mesh.set_vertex_attribute("t", mesh.points[:, 0])
+    tetcut.Cutter(mesh, tool_diameter=1.5).cut((2, 2, 4))
+    for other in [mesh.copy(), copy.copy(mesh), copy.deepcopy(mesh)]:
+        assert other is not mesh and other.hash() == mesh.hash()
+        np.testing.assert_array_equal(other.tet_ids, mesh.tet_ids)  # the same ids, tombstones and all
+        np.testing.assert_array_equal(other.labels, mesh.labels)
+        np.testing.assert_array_equal(other.vertex_attribute("t"), mesh.vertex_attribute("t"))
+    twin = mesh.copy()
+    assert tetcut.Cutter(twin, tool_diameter=1.5).cut((2, 2, 0)).tets_removed > 0
+    assert twin.hash() != mesh.hash()
+    assert tetcut.check(twin) == [] and tetcut.check(mesh) == []
+
+
+def test_a_pickled_mesh_comes_back_compacted_with_labels_and_attributes():
+    points, tets = box_arrays(4, 4.0)
+    mesh = tetcut.Mesh(points, tets, labels=np.where(points[tets].mean(axis=1)[:, 0] < 2, 3, 7))
+    mesh.set_vertex_attribute("scalar", mesh.points[:, 2])
+    mesh.set_vertex_attribute("column", mesh.points[:, :1])
+    mesh.set_vertex_attribute("uv", mesh.points[:, :2])
+    tetcut.Cutter(mesh, tool_diameter=1.5).cut((2, 2, 4))
+    again = pickle.loads(pickle.dumps(mesh))
+    assert again.hash() == mesh.hash()
+    np.testing.assert_array_equal(again.points, mesh.points)
+    np.testing.assert_array_equal(again.tets, mesh.tets)
+    np.testing.assert_array_equal(again.labels, mesh.labels)
+    np.testing.assert_array_equal(again.tet_ids, np.arange(mesh.num_tets))  # dense ids, as compact() gives
+    for name in ["scalar", "column", "uv"]:
+        np.testing.assert_array_equal(again.vertex_attribute(name), mesh.vertex_attribute(name))
+    assert tetcut.Cutter(again, tool_diameter=1.5).cut((2, 2, 3)).ok
+    with pytest.raises(ValueError, match="not a pickled tetcut.Mesh"):
+        tetcut.Mesh.__new__(tetcut.Mesh).__setstate__((2, None, None, None, {}))
+
+
+def test_attributes_come_back_in_the_shape_given_as_meshio_gives_them(box):
+    box.set_vertex_attribute("scalar", box.points[:, 0])
+    box.set_vertex_attribute("column", box.points[:, :1])
+    box.set_vertex_attribute("uv", box.points[:, :2])
+    assert box.vertex_attribute("scalar").shape == (box.num_vertices,)
+    assert box.vertex_attribute("column").shape == (box.num_vertices, 1)
+    assert box.vertex_attribute("uv").shape == (box.num_vertices, 2)
+    box.set_vertex_attribute("column", box.points[:, 1])  # set again 1-D: 1-D from now on
+    assert box.vertex_attribute("column").shape == (box.num_vertices,)
+    tetcut.Cutter(box, tool_diameter=1.5).cut((2, 2, 4.1))  # new vertices, same shapes
+    assert box.vertex_attribute("scalar").shape == (box.num_vertices,)
+    np.testing.assert_allclose(box.vertex_attribute("scalar"), box.points[:, 0], atol=1e-12)

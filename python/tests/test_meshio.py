@@ -37,6 +37,8 @@ def test_from_meshio_without_tets_and_with_unused_points():
         tetcut.from_meshio(tri)
     points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [5, 5, 5]], dtype=float)
     m = meshio.Mesh(points, [("tetra", np.array([[0, 1, 2, 3]]))], point_data={"w": np.arange(5.0)})
-    mesh = tetcut.from_meshio(m)
-    assert mesh.num_vertices == 4  # the unused point is not a live vertex
-    np.testing.assert_array_equal(mesh.vertex_attribute("w")[:, 0], [0, 1, 2, 3])
+    with pytest.raises(ValueError, match=r"1 of 5 points are used by no tet \(rows 4\)"):
+        tetcut.from_meshio(m)
+    mesh = tetcut.from_meshio(m, drop_unused_points=True)
+    assert mesh.num_vertices == 4  # the unused point is not a vertex
+    np.testing.assert_array_equal(mesh.vertex_attribute("w"), [0, 1, 2, 3])  # 1-D, as meshio gave it

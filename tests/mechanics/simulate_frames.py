@@ -58,11 +58,18 @@ else:
     data = json.load(open(report))
     check(data["summary"]["ok"], "summary not ok")
     check(len(data["frames"]) == data["summary"]["frames"] > 5, "frame count")
+    # The default step is half the stable-step estimate before the cuts; the summary's worst is
+    # the frames' (a cut can lower the estimate, or raise it by taking the stiffest tets).
+    summary = data["summary"]
+    check(summary["dt"] == 0.5 * summary["stable_dt_initial"] and summary["dt_factor"] == 0.5, f"dt: {summary}")
+    check(summary["stable_dt_min"] == min([summary["stable_dt_initial"]] + [f["stable_dt"] for f in data["frames"]]),
+          f"stable_dt_min: {summary}")
+    check(summary["frames_above_stable_dt"] == sum(summary["dt"] > f["stable_dt"] for f in data["frames"]),
+          f"frames_above_stable_dt: {summary}")
     for f in data["frames"]:
         for key in ("cut_us", "update_us", "step_us", "stable_dt", "max_displacement_m"):
             check(math.isfinite(f[key]) and f[key] >= 0, f"frame {f['frame']}: {key} = {f[key]}")
-        check(0 < f["stable_dt"] <= data["summary"]["stable_dt_initial"] * (1 + 1e-12) or f["removed"] == 0,
-              f"frame {f['frame']}: stable_dt {f['stable_dt']}")
+        check(0 < f["stable_dt"] < math.inf, f"frame {f['frame']}: stable_dt {f['stable_dt']}")
         check(math.isfinite(f["energy"]["total"]), f"frame {f['frame']}: energy")
     written = sorted(os.listdir(frames))
     check(written == [f"frame_{k:05d}.vtu" for k in range(0, len(data["frames"]), 3)], f"frames written: {written}")

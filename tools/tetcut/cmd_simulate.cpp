@@ -5,14 +5,17 @@
 //
 // The tool moves in the world: each sweep point is mapped to the rest configuration through
 // the deformed tet that holds it (TensorMassModel::rest_point), and the rest mesh is cut there
-// (a point outside the deformed tissue is cut where it is). The report gives per frame the cut
-// time, the update time, the step time, the CFL estimate of the stable time step (smallest
-// altitude over the pressure wave speed: the slivers a cut leaves shrink it) and the energy, so
-// that a blow-up is visible; one stops the run with exit 1. A blow-up is the total energy
-// (kinetic + elastic + gravity's potential) growing over a frame's steps: damped, it can only
-// fall (to the integrator's O(dt) ripple, allowed up to 1 % of the energies' size), while an
-// unstable step grows it exponentially. Not the displacement: a piece the resection frees from
-// the fixed vertices falls under gravity (at the terminal speed g / damping), which is physics.
+// (a point outside the deformed tissue is cut where it is). The time step is fixed: by default
+// --dt-factor (0.5) times the stable-step estimate before the first cut (StableStepEstimator: a
+// few power iterations on M^-1 K, between 2/3 of the critical step 2 / omega_max and the step
+// itself). The report gives per frame the cut time, the update time, the step time, the
+// stable-step estimate after the cut (the slivers a cut leaves can lower it below the step) and
+// the energy, so that a blow-up is visible; one stops the run with exit 1. A blow-up is the
+// total energy (kinetic + elastic + gravity's potential) growing over a frame's steps: damped,
+// it can only fall (to the integrator's O(dt) ripple, allowed up to 1 % of the energies' size),
+// while an unstable step grows it exponentially. Not the displacement: a piece the resection
+// frees from the fixed vertices falls under gravity (at the terminal speed g / damping), which
+// is physics.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -26,10 +29,12 @@
 #include "simulation_frame.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mechanics/rendered_surface.hpp"
+#include "tetcut/mechanics/stable_step.hpp"
 #include "tetcut/mechanics/tensor_mass.hpp"
 #include "tetcut/mesh_builder.hpp"
 #include "tetcut/percentile.hpp"
 #include "tetcut/scenario/scenario.hpp"
+#include "tetcut/scenario/sweep.hpp"
 
 namespace tetcut::cli {
 
@@ -49,10 +54,16 @@ struct SimulateArgs {
 void add_simulate_options(CLI::App& app, SimulateArgs& a) {
   opt::text(app, "INPUT", a.input, "a mesh, or a scenario (.scn) whose mesh, diameter, strategy, cuts and sweeps are run", "")
       ->required();
-  app.add_option("--sweep", a.sweeps, "one cut every STEP from FROM to TO (X,Y,Z X,Y,Z S; repeatable)")
-      ->expected(3)
+  // Three values an occurrence, any number of occurrences (expected(3) alone would cap the
+  // option's values at three in all, refusing a second --sweep).
+  app.add_option("--sweep", a.sweeps,
+                 "one cut every STEP from FROM to TO, TO included when a whole number of steps away (X,Y,Z X,Y,Z S; "
+                 "repeatable: the sweeps run one after the other)")
+      ->type_size(3)
+      ->expected(1, CLI::detail::expected_max_vector_size)
+      ->allow_extra_args(false)
       ->type_name("FROM TO STEP");
-  opt::number(app, "--diameter", a.diameter, "the tool's diameter (mesh units; required with a mesh)", "D");
+  opt::number(app, "--diameter", a.diameter, "the tool's diameter (mesh units; required to cut a mesh with --sweep)", "D");
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
   opt::text(app, "--fix", a.fix, "vertices held in place: AXIS OP VALUE, e.g. \"x<10\" (mesh units)", "RULE");
   opt::point(app, "--gravity", a.gravity, "m/s2 (default 0,0,0)", "X,Y,Z");
@@ -69,14 +80,18 @@ void add_simulate_options(CLI::App& app, SimulateArgs& a) {
   opt::number(app, "--density", a.density, "kg/m3 (default 1000)", "RHO");
   opt::number(app, "--unit", a.unit, "metres per mesh unit (default 0.001: millimetres)", "M");
   opt::number(app, "--damping", a.damping, "mass-proportional damping in 1/s (default 20)", "G");
-  opt::number(app, "--dt", a.dt, "the fixed time step in s (default: --dt-factor x the initial CFL estimate)", "S");
-  opt::number(app, "--dt-factor", a.dt_factor, "fraction of the initial CFL estimate (default 0.5)", "F");
+  opt::number(app, "--dt", a.dt, "the fixed time step in s (default: --dt-factor x the initial stable-step estimate)", "S");
+  opt::number(app, "--dt-factor", a.dt_factor,
+              "fraction of the stable-step estimate before the first cut (default 0.5; the estimate lies between 2/3 "
+              "of the critical step and the step itself)",
+              "F");
   opt::count(app, "--steps", a.steps, "explicit steps per frame (default 10)");
   opt::count(app, "--settle", a.settle, "steps before the first cut (default 0)");
   opt::text(app, "--frames", a.frames, "a .vtu per frame with the displacement, for ParaView (DIR must exist)", "DIR");
   opt::count(app, "--frame-every", a.frame_every, "write every Nth frame (default 1)");
   opt::text(app, "--report", a.report,
-            "`frames` (cut_us, update_us, step_us, stable_dt, energy, max_displacement per frame) and `summary`", "R.json");
+            "`frames` (cut_us, update_us, step_us, stable_dt, energy, max_displacement_m per frame) and `summary`",
+            "R.json");
 }
 
 // "x<10", "z >= -5": the vertices held in place.
@@ -108,12 +123,26 @@ std::optional<std::pair<std::uint32_t, mechanics::Material>> parse_material(cons
   return std::pair{static_cast<std::uint32_t>(*label), mechanics::Material{values->x, values->y, values->z}};
 }
 
-// The cut centres of a sweep, as the scenario runner places them: every STEP from `a`, and `b`.
+// The cut centres of a sweep, where `tetcut cut` and a scenario place them.
 void add_sweep(const Vec3& a, const Vec3& b, double step, std::vector<Vec3>& out) {
-  const double length = norm(b - a);
-  const auto n = static_cast<std::uint64_t>(std::floor(length / step + 1e-9));
-  for (std::uint64_t k = 0; k <= n; ++k) out.push_back(length > 0 ? a + (k * step / length) * (b - a) : a);
-  if (length > 0 && n * step < length - 1e-9 * length) out.push_back(b);
+  const std::vector<Vec3> centres = scenario::sweep_centres(a, b, step);
+  out.insert(out.end(), centres.begin(), centres.end());
+}
+
+// An SI value in a message: "1.338e-04 s", so that a step of microseconds or an energy of
+// microjoules reads as one (std::to_string's six decimals print them as 0.000000).
+std::string si(double value, const char* unit) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.3e %s", value, unit);
+  return text;
+}
+
+// The largest displacement of a live vertex (m).
+double max_displacement(const TetMesh& mesh, const mechanics::TensorMassModel& model) {
+  double u = 0;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
+    if (mesh.is_live(VertId{v})) u = std::max(u, norm(model.displacement(VertId{v})));
+  return u;
 }
 
 double microseconds_since(std::chrono::steady_clock::time_point t0) {
@@ -172,9 +201,8 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
       }
     }
     if (mesh_path.empty()) return parser.usage_error(*a.input + ": the scenario names no mesh", err);
-  } else if (!a.diameter) {
-    return parser.usage_error("--diameter is required with a mesh", err);
   }
+  const bool from_scenario = a.input->ends_with(".scn");  // a scenario sets the diameter (or takes the default)
   if (a.diameter) params.tool_diameter = *a.diameter;
   if (a.strategy) params.strategy = *a.strategy;
   if (a.sweeps.size() % 3 != 0) return parser.usage_error("--sweep: expects FROM TO STEP", err);
@@ -183,8 +211,12 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
     const auto step = scenario::parse_double(a.sweeps[i + 2]);
     if (!from || !to) return parser.usage_error("--sweep: FROM and TO expect X,Y,Z", err);
     if (!step || *step <= 0) return parser.usage_error("--sweep: STEP must be a positive number", err);
-    if (norm(*to - *from) / *step > 100000) return parser.usage_error("--sweep: more than 100000 cuts", err);
+    if (norm(*to - *from) / *step > scenario::kMaxSweepCuts) return parser.usage_error("--sweep: more than 100000 cuts", err);
     add_sweep(*from, *to, *step, centres);
+  }
+  // A diameter only matters to a cut: a mesh left to settle under gravity needs none.
+  if (!centres.empty() && !a.diameter && !from_scenario) {
+    return parser.usage_error("--diameter is required to cut a mesh (--sweep)", err);
   }
   if (const auto bad = validate(params)) return parser.usage_error(*bad, err);
 
@@ -239,7 +271,9 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   mechanics::RenderedSurface surface(mesh);
   invariants::LocalChecker local(mesh.raw_view());
   const std::uint32_t fixed_count = fixed ? model.fix_where(mesh, fixed) : 0;
-  const auto initial = model.stable_time_step(mesh);
+  mechanics::StableStepEstimator stable_step;
+  const mechanics::StableStepEstimator::Estimate initial = stable_step.estimate(model);
+  if (!std::isfinite(initial.dt) && !a.dt) return parser.usage_error("--fix: every vertex is fixed: nothing moves", err);
   const double dt = a.dt.value_or(dt_factor * initial.dt);
   for (std::uint64_t s = 0; s < a.settle.value_or(0); ++s) model.step(dt);
 
@@ -251,7 +285,8 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   log.reserve(1u << 14);
   std::string failure;
   mechanics::Energy energy = model.energy();
-  double max_u = 0;
+  double max_u = max_displacement(mesh, model);  // after settling, should no frame follow
+  double stable_dt = initial.dt;
   for (std::size_t k = 0; k < centres.size(); ++k) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto rest = model.rest_point(mesh, centres[k], [&](const Vec3& p) { return cutter.tet_containing(p); });
@@ -273,12 +308,13 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
     const auto t2 = std::chrono::steady_clock::now();
     for (std::uint64_t s = 0; s < steps; ++s) model.step(dt);
     step_us.push_back(steps ? microseconds_since(t2) / static_cast<double>(steps) : 0.0);
-    const auto stable = model.stable_time_step(mesh);
-    min_stable = std::min(min_stable, stable.dt);
-    if (dt > stable.dt) ++unstable_frames;
+    // The estimate follows the cut: a few iterations from the last ones (stable_step.hpp); a cut
+    // that changed nothing leaves it where it was.
+    if (!log.removed.empty() || !log.created.empty()) stable_dt = stable_step.update(model).dt;
+    min_stable = std::min(min_stable, stable_dt);
+    if (dt > stable_dt) ++unstable_frames;
     energy = model.energy();
-    max_u = 0;
-    for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) max_u = std::max(max_u, norm(model.displacement(VertId{v})));
+    max_u = max_displacement(mesh, model);
     frames.push_back({{"frame", k},
                       {"centre", {centres[k].x, centres[k].y, centres[k].z}},
                       {"cut_ok", r.ok},
@@ -288,8 +324,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
                       {"cut_us", cut_us.back()},
                       {"update_us", update_us.back()},
                       {"step_us", step_us.back()},
-                      {"stable_dt", stable.dt},
-                      {"min_altitude_m", stable.min_altitude},
+                      {"stable_dt", stable_dt},
                       {"energy", {{"kinetic", energy.kinetic}, {"elastic", energy.elastic}, {"gravity", energy.gravity},
                                   {"total", energy.total()}}},
                       {"max_displacement_m", max_u}});
@@ -305,10 +340,9 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
     const double size = before_steps.kinetic + std::abs(before_steps.elastic) + std::abs(before_steps.gravity) +
                         energy.kinetic + std::abs(energy.elastic) + std::abs(energy.gravity);
     if (!std::isfinite(energy.total()) || energy.total() - before_steps.total() > 1e-2 * size) {
-      failure = "blow-up at frame " + std::to_string(k) + ": the energy went from " +
-                std::to_string(before_steps.total()) + " J to " + std::to_string(energy.total()) + " J in " +
-                std::to_string(steps) + " steps of " + std::to_string(dt) + " s (stable step " +
-                std::to_string(stable.dt) + " s)";
+      failure = "blow-up at frame " + std::to_string(k) + ": the energy went from " + si(before_steps.total(), "J") +
+                " to " + si(energy.total(), "J") + " in " + std::to_string(steps) + " steps of " + si(dt, "s") +
+                " (stable step estimate " + si(stable_dt, "s") + ")";
       break;
     }
   }
@@ -319,6 +353,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
                   {"cuts_refused", cuts_refused},
                   {"fixed_vertices", fixed_count},
                   {"dt", dt},
+                  {"dt_factor", a.dt ? Json(nullptr) : Json(dt_factor)},
                   {"stable_dt_initial", initial.dt},
                   {"stable_dt_min", min_stable},
                   {"frames_above_stable_dt", unstable_frames},
@@ -332,11 +367,12 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
                   {"frames_written", written},
                   {"ok", failure.empty()},
                   {"failure", failure}};
-  out << "simulate: " << frames.size() << " frames of " << steps << " steps at dt " << dt << " s (stable "
-      << initial.dt << " s before the cuts, " << min_stable << " s at worst after), " << fixed_count
-      << " fixed vertices, " << cuts_refused << " cuts refused\n"
+  out << "simulate: " << frames.size() << " frames of " << steps << " steps at dt " << si(dt, "s")
+      << " (stable step estimate " << si(initial.dt, "s") << " before the cuts, " << si(min_stable, "s")
+      << " at worst after), " << fixed_count << " fixed vertices, " << cuts_refused << " cuts refused\n"
       << "  per frame: cut p50 " << p(cut_us, 0.5) << " us, update p50 " << p(update_us, 0.5) << " us, step p50 "
-      << p(step_us, 0.5) << " us; final energy " << energy.total() << " J, largest displacement " << max_u << " m\n";
+      << p(step_us, 0.5) << " us; final energy " << si(energy.total(), "J") << ", largest displacement "
+      << si(max_u, "m") << "\n";
   if (a.report && !write_json_file(*a.report, Json{{"summary", summary}, {"frames", frames}}, err)) return kExitBadInput;
   if (!failure.empty()) {
     err << "tetcut simulate: " << failure << "\n";

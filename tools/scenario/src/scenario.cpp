@@ -13,6 +13,7 @@
 #include "tetcut/io.hpp"
 #include "tetcut/mechanics/tet_labels.hpp"
 #include "tetcut/mesh_builder.hpp"
+#include "tetcut/scenario/sweep.hpp"
 
 namespace tetcut::scenario {
 namespace {
@@ -339,10 +340,8 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
         break;
       case OpKind::kCut:
       case OpKind::kSweep: {
-        const double length = op.kind == OpKind::kSweep ? norm(op.b - op.a) : 0.0;
-        const auto steps = op.kind == OpKind::kSweep ? static_cast<std::uint64_t>(std::floor(length / op.step)) : 0;
-        for (std::uint64_t k = 0; k <= steps; ++k) {
-          const Vec3 centre = steps == 0 ? op.a : op.a + (static_cast<double>(k) * op.step / length) * (op.b - op.a);
+        const std::vector<Vec3> centres = op.kind == OpKind::kSweep ? sweep_centres(op.a, op.b, op.step) : std::vector{op.a};
+        for (const Vec3& centre : centres) {
           const CutReport r = cutter->cut(centre, log_if_labelled());
           if (r.ok && labelled) labels.apply(mesh, log);
           result.cuts.push_back({op.line, centre, r});

@@ -15,7 +15,8 @@
 //                                 removal takes (Cutter::set_uncuttable(): the paper's Fig. 7);
 //                                 `uncuttable none` lifts it. Needs a labelled mesh.
 //   cut X,Y,Z                     one cut with the tool centred there
-//   sweep X,Y,Z X,Y,Z STEP        one cut every STEP along the segment (both ends included)
+//   sweep X,Y,Z X,Y,Z STEP        one cut every STEP along the segment, the end included when a
+//                                 whole number of steps away (sweep.hpp: sweep_centres)
 //   remove X,Y,Z                  remove the tet containing the point with the strategy
 //   compact                       renumber densely
 //   check [local|full|exact]      the independent checker; the scenario fails when it objects

@@ -1,0 +1,94 @@
+// `tetcut simulate` as a user runs it, for what a first use tripped on (issue 42): a second
+// --sweep, a run that only settles, its summary, its messages' numbers, and the sweep's end,
+// which `tetcut cut`, a scenario and `simulate` place the same way (scenario::sweep_centres).
+#include <cmath>
+#include <regex>
+
+#include "cli_fixture.hpp"
+
+namespace tetcut::test {
+namespace {
+
+class Simulate : public Cli {
+ protected:
+  // A 4 x 4 x 4 box of side 1, in metres (--unit 1 keeps the numbers plain).
+  std::string box() { return write_box("box.vtu", 4, 4, 4); }
+
+  Json report_of(std::vector<std::string> args) {
+    args.insert(args.begin(), "simulate");
+    args.insert(args.end(), {"--report", path("r.json")});
+    const ProcessResult r = tetcut(args);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    std::ifstream in(path("r.json"));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return parse_json(text).value_or(Json{});
+  }
+};
+
+TEST_F(Simulate, ASecondSweepRunsAfterTheFirst) {
+  const std::string mesh = box();
+  const Json one = report_of({mesh, "--diameter", "0.2", "--unit", "1", "--steps", "1", "--sweep", "0.1,0.5,1", "0.9,0.5,1", "0.2"});
+  const Json two = report_of({mesh, "--diameter", "0.2", "--unit", "1", "--steps", "1", "--sweep", "0.1,0.5,1", "0.9,0.5,1", "0.2",
+                              "--fix", "x<0.01", "--sweep", "0.5,0.1,1", "0.5,0.9,1", "0.4"});
+  ASSERT_EQ(one["frames"].size(), 5u);
+  ASSERT_EQ(two["frames"].size(), 5u + 3u);
+  EXPECT_EQ(two["frames"][5]["centre"], Json({0.5, 0.1, 1.0}));
+  EXPECT_NEAR(two["frames"][7]["centre"][1].get<double>(), 0.9, 1e-12);
+}
+
+TEST_F(Simulate, SettlingAloneNeedsNoDiameterAndItsSummaryMeasuresTheSag) {
+  const std::string mesh = box();
+  const Json r = report_of({mesh, "--unit", "0.01", "--fix", "x<0.01", "--gravity", "0,0,-9.81", "--settle", "300"});
+  EXPECT_EQ(r["summary"]["frames"], 0);
+  EXPECT_GT(r["summary"]["max_displacement_m"].get<double>(), 1e-6) << "the cantilever sagged under gravity";
+  // Cutting still needs the tool.
+  const ProcessResult cut = tetcut({"simulate", mesh, "--unit", "0.01", "--sweep", "0.1,0.5,1", "0.9,0.5,1", "0.2"});
+  EXPECT_EQ(cut.exit_code, 2);
+  EXPECT_NE(cut.err.find("--diameter is required to cut"), std::string::npos) << cut.err;
+}
+
+TEST_F(Simulate, TheDefaultStepIsHalfTheStableStepEstimate) {
+  const Json r = report_of({box(), "--unit", "0.01", "--fix", "x<0.01", "--settle", "1"});
+  const double estimate = r["summary"]["stable_dt_initial"].get<double>();
+  EXPECT_GT(estimate, 0.0);
+  EXPECT_EQ(r["summary"]["dt_factor"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(r["summary"]["dt"].get<double>(), 0.5 * estimate);
+  const Json given = report_of({box(), "--unit", "0.01", "--fix", "x<0.01", "--settle", "1", "--dt", "1e-5"});
+  EXPECT_TRUE(given["summary"]["dt_factor"].is_null());
+  EXPECT_EQ(given["summary"]["dt"].get<double>(), 1e-5);
+}
+
+TEST_F(Simulate, ABlowUpSaysItsNumbersInScientificNotation) {
+  const ProcessResult r = tetcut({"simulate", box(), "--diameter", "0.2", "--unit", "0.01", "--fix", "x<0.01", "--gravity",
+                                  "0,0,-9.81", "--sweep", "0.1,0.5,1", "0.9,0.5,1", "0.2", "--dt", "0.01"});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  const std::regex message(R"(blow-up at frame \d+: the energy went from -?\d\.\d{3}e[-+]\d+ J to -?\d\.\d{3}e[-+]\d+ J )"
+                           R"(in 10 steps of 1\.000e-02 s \(stable step estimate \d\.\d{3}e[-+]\d+ s\))");
+  EXPECT_TRUE(std::regex_search(r.err, message)) << r.err;
+  EXPECT_EQ(r.err.find("0.000000"), std::string::npos) << r.err;
+}
+
+TEST_F(Simulate, TheEndOfASweepIsCutByCutRunAndSimulateWithinABillionthOfAStep) {
+  // 0.7 / 0.1 is 6.999999999999999 in doubles: the end, 7 steps away, is the 8th cut.
+  const std::string mesh = write_box("cube.vtu", 4, 4, 4);
+  const std::vector<std::string> sweep = {"0.05,0.5,0.9", "0.75,0.5,0.9", "0.1"};
+  ASSERT_LT(norm(Vec3{0.75, 0.5, 0.9} - Vec3{0.05, 0.5, 0.9}) / 0.1, 7.0);
+  const Json simulated =
+      report_of({mesh, "--diameter", "0.1", "--unit", "1", "--steps", "1", "--sweep", sweep[0], sweep[1], sweep[2]});
+  EXPECT_EQ(simulated["frames"].size(), 8u);
+  EXPECT_NEAR(simulated["frames"].back()["centre"][0].get<double>(), 0.75, 1e-12);
+  const ProcessResult cut = tetcut({"cut", mesh, "--diameter", "0.1", "--from", sweep[0], "--to", sweep[1], "--step",
+                                    sweep[2], "--report", path("cut.json")});
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  std::ifstream in(path("cut.json"));
+  const Json cut_report = Json::parse(in);
+  EXPECT_EQ(cut_report["summary"]["cuts"], 8);
+  const std::string scenario = write("sweep.scn", "mesh cube.vtu\ndiameter 0.1\nsweep " + sweep[0] + " " + sweep[1] + " " +
+                                                      sweep[2] + "\nexpect hash " +
+                                                      cut_report["summary"]["hash"].get<std::string>() + "\n");
+  const ProcessResult run = tetcut({"run", scenario});
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+}
+
+}  // namespace
+}  // namespace tetcut::test
