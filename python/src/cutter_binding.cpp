@@ -490,8 +490,10 @@ range or a label no tet has.)doc");
 }
 
 // A CutReport field as a read-only attribute: one line per field in bind_cutter.
-template <class T>
-void report_field(py::class_<Report>& c, const char* name, T CutReport::*field, const char* doc) {
+// (A field of CutReport or of its base RequestCounts.)
+template <class Owner, class T>
+  requires std::is_base_of_v<Owner, CutReport>
+void report_field(py::class_<Report>& c, const char* name, T Owner::*field, const char* doc) {
   c.def_property_readonly(name, [field](const Report& r) { return r.report.*field; }, doc);
 }
 

@@ -30,10 +30,11 @@ struct RemovalContext {
   const UncuttableTets* uncuttable = nullptr;  // tets no set may take, if any
   TissueRemoval* tissue = nullptr;             // the one removal path (tissue_removal.hpp)
 
-  // Whether `set` may go: it holds no uncuttable tet. Asked with the removability test, before
-  // every removal (plan, then apply).
+  // Whether `set` may go: it holds no uncuttable tet and lies within the cut's reach
+  // (tissue_removal.hpp). Asked with the removability test, before every removal (plan, then
+  // apply).
   [[nodiscard]] bool may_remove(std::span<const TetId> set) const {
-    return !uncuttable || !uncuttable->any_of(mesh, set);
+    return (!uncuttable || !uncuttable->any_of(mesh, set)) && tissue->within_reach(mesh, set);
   }
 
   // Splits `edges` (templates). False, the mesh untouched, if the splitter refuses (degenerate

@@ -13,6 +13,17 @@ void TissueRemoval::begin(const Ball* tool, double reach_radius) {
   }
 }
 
+bool TissueRemoval::within_reach(const TetMesh& mesh, std::span<const TetId> set) const {
+  if (!has_tool_) return true;
+  const double r2 = reach_.radius * reach_.radius;
+  for (TetId t : set)
+    for (VertId v : mesh.tet(t)) {
+      const Vec3 d = mesh.position(v) - reach_.centre;
+      if (dot(d, d) > r2) return false;
+    }
+  return true;
+}
+
 void TissueRemoval::remove(TetMesh& mesh, std::span<const TetId> set) {
   for (TetId t : set) {
     const TetMesh::TetVerts v = mesh.tet(t);
@@ -31,11 +42,7 @@ void TissueRemoval::remove(TetMesh& mesh, std::span<const TetId> set) {
     // A tet whose centroid is in the ball meets it: the estimate need not test that again.
     const double share = beyond ? share_in_ball(tool_, a, b, c, d) : share_in_ball_meeting(tool_, a, b, c, d);
     removed_.volume_beyond_tool += volume * (1.0 - share);
-    for (const Vec3* p : {&a, &b, &c, &d})
-      if (norm(*p - reach_.centre) > reach_.radius) {
-        ++removed_.tets_beyond_reach;
-        break;
-      }
+    if (!within_reach(mesh, std::span<const TetId>(&t, 1))) ++removed_.tets_beyond_reach;
   }
   mesh.remove_tets(set);
 }

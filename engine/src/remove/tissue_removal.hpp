@@ -7,8 +7,11 @@
 // within which the cut may take more than the tool holds: paper 3.5's neighbours, the pieces of
 // 3.4 and 3.7, the fallback's).
 //
-// The caller has decided that the set may go (plan, then apply): removable (set_removal.hpp, or
-// paper 3.3's test for one tet) and holding no uncuttable tet.
+// What a cut takes beyond its tool stays within its reach: a set with a tet reaching beyond it is
+// refused like one holding an uncuttable tet (within_reach(), asked by RemovalContext::may_remove
+// and the improvement pass's sliver removal), and the request goes on to its next stage. The
+// caller has decided that the set may go (plan, then apply): removable (set_removal.hpp, or
+// paper 3.3's test for one tet), within reach and holding no uncuttable tet.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +38,9 @@ class TissueRemoval {
  public:
   // A new transaction: the cut's tool and reach (none: a removal request), nothing removed yet.
   void begin(const Ball* tool, double reach_radius);
+  // Whether every tet of `set` lies within the cut's reach (all its corners: it is convex).
+  // Always true for a removal request, which has no tool.
+  [[nodiscard]] bool within_reach(const TetMesh& mesh, std::span<const TetId> set) const;
   // Removes `set` (live, distinct) and tallies it.
   void remove(TetMesh& mesh, std::span<const TetId> set);
   [[nodiscard]] const RemovedTissue& removed() const { return removed_; }
