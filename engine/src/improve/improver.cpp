@@ -1,8 +1,8 @@
 #include "improve/improver.hpp"
 
 #include <algorithm>
-#include <limits>
 
+#include "core/host_location.hpp"
 #include "core/quality.hpp"
 #include "remove/removability.hpp"
 #include "tetcut/detail/local_tables.hpp"
@@ -14,21 +14,6 @@ namespace {
 double quality(const TetMesh& mesh, TetId t) {
   const TetMesh::TetVerts v = mesh.tet(t);
   return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
-double volume6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return dot(b - a, cross(c - a, d - a)); }
-
-// The smallest barycentric coordinate of p in the tet (a, b, c, d): >= 0 inside.
-double depth_inside(const Vec3& p, const std::array<Vec3, 4>& x) {
-  const double whole = volume6(x[0], x[1], x[2], x[3]);
-  if (!(whole > 0.0)) return -std::numeric_limits<double>::infinity();
-  double lowest = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 4; ++i) {
-    std::array<Vec3, 4> y = x;
-    y[static_cast<std::size_t>(i)] = p;
-    lowest = std::min(lowest, volume6(y[0], y[1], y[2], y[3]) / whole);
-  }
-  return lowest;
 }
 
 // A flip or a move must lift the worst tet it touches by this much (relative): what makes the
@@ -77,15 +62,7 @@ double Improver::floor_of(TetMesh& mesh, double floor_f) {
       // After a flip: the ancestor that holds the tet's centroid.
       const TetMesh::TetVerts v = mesh.tet(t);
       const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
-      double deepest = -std::numeric_limits<double>::infinity();
-      for (TetId a : ancestors_) {
-        const TetMesh::TetVerts c = mesh.tet_at_start(a);
-        const double d = depth_inside(centroid, {mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3])});
-        if (d > deepest) {
-          deepest = d;
-          host = a;
-        }
-      }
+      if (const DeepestTet deepest = deepest_at_start(mesh, ancestors_, centroid); deepest.found()) host = deepest.tet();
     }
     double q = 0.0;
     if (const double* known = host_quality_.find(host)) {

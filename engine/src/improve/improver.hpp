@@ -4,9 +4,9 @@
 //
 // The floor is the checker's, computed the engine's way: a made tet's host is the tet that was
 // there before the transaction and holds it (its one ancestor in the journal after splits, the
-// ancestor containing its centroid after flips), and the worst host sets it. Then, worst made tet
-// first, the operations Klingner and Shewchuk's Stellar combines, each accepted only when the worst
-// tet it touches gets better:
+// ancestor containing its centroid after flips: core/host_location.hpp), and the worst host sets
+// it. Then, worst made tet first, the operations Klingner and Shewchuk's Stellar combines, each
+// accepted only when the worst tet it touches gets better:
 //   edge removal and the 2-3 flip (flips.hpp), the best of them on the tet's edges and faces;
 //   collapse of one of the tet's vertices that the transaction made into any neighbour
 //   (collapse.hpp), the best such;
