@@ -30,11 +30,6 @@ TetMesh corpus_mesh(const std::string& name) {
   return build_or_fail(*read.mesh);
 }
 
-double quality(const TetMesh& mesh, TetId t) {
-  const auto v = mesh.tet(t);
-  return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
 // The tets the open transaction made since `point` that are still live.
 std::vector<TetId> made_since(const TetMesh& mesh, const TetMesh::Savepoint& point) {
   std::vector<TetId> out;

@@ -11,10 +11,6 @@
 namespace tetcut::detail {
 namespace {
 
-double quality(const TetMesh& mesh, const TetMesh::TetVerts& v) {
-  return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
 template <class T>
 bool has(const std::vector<T>& list, const T& x) {
   return std::find(list.begin(), list.end(), x) != list.end();

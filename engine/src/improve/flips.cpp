@@ -12,18 +12,8 @@
 namespace tetcut::detail {
 namespace {
 
-double quality(const TetMesh& mesh, const TetMesh::TetVerts& v) {
-  return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
 bool positive(const TetMesh& mesh, const TetMesh::TetVerts& v) {
   return orientation(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])) > 0;
-}
-
-double worst_of(const TetMesh& mesh, std::span<const TetId> tets) {
-  double worst = 1.0;
-  for (TetId t : tets) worst = std::min(worst, quality(mesh, mesh.tet(t)));
-  return worst;
 }
 
 // The vertex of u other than a, b and `not_this` (u has a and b).
@@ -97,7 +87,7 @@ bool Flipper::plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge, do
     if (std::abs(dot(pb - pa, cross(r0 - pa, rm - pa))) > 1e-12 * cube_scale(pa, pb, r0, rm)) return false;
   }
 
-  plan.worst_before = worst_of(mesh, shell_);
+  plan.worst_before = worst_quality(mesh, shell_);
   // Tets (r_i, r_j, r_k, a) and (r_i, r_k, r_j, b) for i < j < k when the ring turns
   // counter-clockwise seen from a, which orientation(a, b, r_0, r_1) < 0 says; mirrored otherwise.
   const bool ccw_from_a = orientation(pa, pb, mesh.position(ring[0]), mesh.position(ring[1])) < 0;
@@ -176,7 +166,7 @@ bool Flipper::plan_face_flip(const TetMesh& mesh, TetId t, int face, double marg
   if (sign < 0)
     for (auto& v : tets) std::swap(v[0], v[1]);
   const TetId pair[2] = {t, across.tet};
-  plan.worst_before = worst_of(mesh, pair);
+  plan.worst_before = worst_quality(mesh, pair);
   plan.worst_after = std::min({quality(mesh, tets[0]), quality(mesh, tets[1]), quality(mesh, tets[2])});
   if (!(plan.worst_after > plan.worst_before * (1.0 + margin))) return false;
   if (has_edge(mesh, d, e)) return false;

@@ -2,8 +2,8 @@
 // polytope (Shewchuk, "Two discrete optimization algorithms for the topological improvement of
 // tetrahedral meshes", 2002; Klingner and Shewchuk, "Aggressive tetrahedral mesh improvement",
 // 2007). Each is planned on the const mesh and applied only when its worst tet is better than the
-// worst tet it replaces (the radius ratio, as everywhere in I7), so a sequence of them never
-// lowers the worst quality of a region and ends.
+// worst tet it replaces (by quality(), core/quality.hpp, as every operator of the pass), so a
+// sequence of them never lowers the worst quality of a region and ends.
 //
 //   edge removal  the n tets around an interior edge (a, b), n = 3..kMaxRing, replaced by
 //                 2(n - 2) tets: a triangulation of their ring polygon coned to a and to b,

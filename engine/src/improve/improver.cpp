@@ -11,11 +11,6 @@
 namespace tetcut::detail {
 namespace {
 
-double quality(const TetMesh& mesh, TetId t) {
-  const TetMesh::TetVerts v = mesh.tet(t);
-  return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
 // A flip or a move must lift the worst tet it touches by this much (relative): what makes the
 // pass end, and keeps it from trading places between equal tets.
 constexpr double kMargin = 1e-6;
@@ -69,8 +64,7 @@ double Improver::floor_of(TetMesh& mesh, double floor_f) {
       q = *known;
     } else {
       // The host as it was: its vertices were there before the transaction and never move.
-      const TetMesh::TetVerts c = mesh.tet_at_start(host);
-      q = radius_ratio(mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3]));
+      q = quality(mesh, mesh.tet_at_start(host));
       host_quality_.set(host, q);
     }
     floor = std::min(floor, q);
@@ -158,8 +152,7 @@ bool Improver::insert_on_longest_edge(TetMesh& mesh, TetId t) {
     }
   const Edge edge{v[kEdgeVerts[longest][0]], v[kEdgeVerts[longest][1]], t};
   mesh.edge_shell(t, longest, star_);
-  double worst_before = 1.0;
-  for (TetId u : star_) worst_before = std::min(worst_before, quality(mesh, u));
+  const double worst_before = worst_quality(mesh, star_);
   const TetMesh::Savepoint point = mesh.savepoint();
   const std::size_t before = created_.size();
   if (!splitter_.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates, &created_).ok()) return false;
@@ -168,8 +161,7 @@ bool Improver::insert_on_longest_edge(TetMesh& mesh, TetId t) {
     Smoother::apply(mesh, smooth_candidate_, created_);
   // The worst of the midpoint's star now (the split's children, moved).
   mesh.vertex_shell(midpoint, star_);
-  double worst_after = 1.0;
-  for (TetId u : star_) worst_after = std::min(worst_after, quality(mesh, u));
+  const double worst_after = worst_quality(mesh, star_);
   if (worst_after > worst_before * (1.0 + kMargin)) return true;
   mesh.rollback_to(point);
   created_.resize(before);

@@ -34,9 +34,9 @@ double Smoother::evaluate(const Vec3& p, double floor) const {
   for (const StarTet& t : star_) {
     std::array<Vec3, 4> c = t.corners;
     c[static_cast<std::size_t>(t.slot)] = p;
-    // The ratio first (cheap): a tet at or below the floor ends the evaluation; the exact
+    // The quality first (cheap): a tet at or below the floor ends the evaluation; the exact
     // orientation only for a candidate still in the running.
-    const double r = radius_ratio(c[0], c[1], c[2], c[3]);
+    const double r = quality(c[0], c[1], c[2], c[3]);
     if (r <= floor) return r;
     q = std::min(q, r);
   }
@@ -53,7 +53,7 @@ Vec3 Smoother::gradient(std::size_t i, const Vec3& p, int dims, double h) const 
   auto ratio_at = [&](const Vec3& x) {
     std::array<Vec3, 4> c = t.corners;
     c[static_cast<std::size_t>(t.slot)] = x;
-    return radius_ratio(c[0], c[1], c[2], c[3]);
+    return quality(c[0], c[1], c[2], c[3]);
   };
   Vec3 g{};
   for (int k = 0; k < dims; ++k) {
@@ -153,7 +153,7 @@ bool Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* to
     for (std::size_t i = 0; i < star_.size(); ++i) {
       std::array<Vec3, 4> c = star_[i].corners;
       c[static_cast<std::size_t>(star_[i].slot)] = p;
-      if (radius_ratio(c[0], c[1], c[2], c[3]) <= q * 1.02) active_.push_back(gradient(i, p, dims, h));
+      if (quality(c[0], c[1], c[2], c[3]) <= q * 1.02) active_.push_back(gradient(i, p, dims, h));
       if (active_.size() == kMaxActive) break;
     }
     Vec3 direction{};
