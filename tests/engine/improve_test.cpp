@@ -66,8 +66,7 @@ TEST(Improve, EveryFlipAndCollapseKeepsTheMeshValidAndLiftsTheWorstTetItTouches)
   invariants::LocalChecker local(mesh.raw_view());
   detail::Flipper flipper;
   detail::Collapser collapser;
-  detail::FlipPlan plan;
-  detail::CollapsePlan collapse;
+  detail::Plan plan, collapse;
   std::vector<TetId> created, removed, made;
   int flips = 0, collapses = 0;
   for (TetId t : made_since(mesh, r.start)) {
@@ -76,25 +75,25 @@ TEST(Improve, EveryFlipAndCollapseKeepsTheMeshValidAndLiftsTheWorstTetItTouches)
     bool applied = false;
     const TetMesh::Savepoint before = mesh.savepoint();
     for (int e = 0; e < 6 && !applied; ++e)
-      if (flipper.plan_edge_removal(mesh, t, e, 1e-6, plan)) {
+      if (flipper.plan_edge_removal(mesh, t, e, 1e-6, plan) == detail::Refusal::kNone) {
         EXPECT_GT(plan.worst_after, plan.worst_before);
-        detail::Flipper::apply(mesh, plan, created);
+        plan.apply(mesh, created);
         applied = true;
         ++flips;
       }
     for (int f = 0; f < 4 && !applied; ++f)
-      if (flipper.plan_face_flip(mesh, t, f, 1e-6, plan)) {
+      if (flipper.plan_face_flip(mesh, t, f, 1e-6, plan) == detail::Refusal::kNone) {
         EXPECT_GT(plan.worst_after, plan.worst_before);
-        detail::Flipper::apply(mesh, plan, created);
+        plan.apply(mesh, created);
         applied = true;
         ++flips;
       }
     for (VertId v : mesh.tet(t)) {
       if (applied || !mesh.made_in_transaction(v)) continue;
       for (VertId w : mesh.tet(t))
-        if (!applied && w != v && collapser.plan(mesh, v, w, 1e-6, 0.0, collapse)) {
+        if (!applied && w != v && collapser.plan(mesh, v, w, 1e-6, 0.0, collapse) == detail::Refusal::kNone) {
           EXPECT_GT(collapse.worst_after, collapse.worst_before);
-          detail::Collapser::apply(mesh, collapse, created);
+          collapse.apply(mesh, created);
           applied = true;
           ++collapses;
         }
@@ -120,7 +119,7 @@ TEST(Improve, ThePassLiftsWhatARefinementMadeToTheFloorAndMovesNoVertexThatWasTh
   for (TetId t : made_since(mesh, r.start)) worst_made = std::min(worst_made, quality(mesh, t));
   ASSERT_LT(worst_made, 0.1) << "the refinement makes slivers: something to improve";
   detail::Improver improver;
-  const detail::ImproveOutcome outcome = improver.run(mesh, r.start, 0.1, true);
+  const detail::ImproveOutcome outcome = improver.run(mesh, r.start, {.floor = 0.1});
   EXPECT_TRUE(outcome.met);
   EXPECT_GE(outcome.worst_after, outcome.floor);
   EXPECT_GT(outcome.flips + outcome.collapses + outcome.moves + outcome.insertions, 0u);

@@ -121,10 +121,11 @@ int Smoother::constraint(const TetMesh& mesh, VertId v, const Ball* tool) {
   return norm(basis_[0]) > 0.0 ? 1 : 0;
 }
 
-bool Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, SmoothPlan& plan) {
+Refusal Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, Plan& plan) {
+  plan.start(Operator::kSmoothing);
   mesh.vertex_shell(v, shell_);
   const int dims = constraint(mesh, v, tool);
-  if (dims == 0) return false;
+  if (dims == 0) return Refusal::kSurfaceConstraint;
   star_.clear();
   double shortest = 0.0;
   for (TetId t : shell_) {
@@ -191,11 +192,15 @@ bool Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* to
     }
     if (!moved) break;
   }
-  plan.vertex = v;
-  plan.to = p;
+  plan.placed = v;
+  plan.placed_at = p;
   plan.worst_before = q_start;
   plan.worst_after = q;
-  return q > q_start * (1.0 + margin);
+  if (!(q > q_start * (1.0 + margin))) return Refusal::kNotBetter;
+  // The star, as it goes and as it comes back around v's new position.
+  plan.removed.assign(shell_.begin(), shell_.end());
+  for (TetId t : shell_) plan.added.push_back(mesh.tet(t));
+  return Refusal::kNone;
 }
 
 }  // namespace tetcut::detail

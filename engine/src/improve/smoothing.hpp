@@ -22,29 +22,22 @@
 #include <vector>
 
 #include "core/tool_ball.hpp"
+#include "improve/operation.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::detail {
 
 inline constexpr double kCutSurfaceTolerance = 0.05;
 
-struct SmoothPlan {
-  VertId vertex;
-  Vec3 to;
-  double worst_before = 0.0, worst_after = 0.0;  // of v's star
-};
-
 class Smoother {
  public:
   void reserve();
   // Where to move v (made in the open transaction) so that the worst quality() of its star
-  // rises by more than the relative `margin`; false when nowhere found does.
-  // `reach`: the cut's reach, where the cut's own surface may move within the tolerance.
-  bool plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, SmoothPlan& plan);
-  // The star's tets are made anew (TetMesh::move_vertex): their ids appended to `created`.
-  static void apply(TetMesh& mesh, const SmoothPlan& plan, std::vector<TetId>& created) {
-    mesh.move_vertex(plan.vertex, plan.to, &created);
-  }
+  // rises by more than the relative `margin` (Operator::kSmoothing: v's star removed and added
+  // again, v placed at its new position); kNotBetter when nowhere found does, kSurfaceConstraint
+  // when v may not move at all.
+  // `tool`: the cut's reach, where the cut's own surface may move within the tolerance.
+  [[nodiscard]] Refusal plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, Plan& plan);
 
  private:
   struct StarTet {
