@@ -108,7 +108,11 @@ Refusal Improver::region_rule(TetMesh& mesh, const Plan& plan) const {
 }
 
 Refusal Improver::admit(TetMesh& mesh, const Plan& plan, ImproveOutcome& out) {
-  const Refusal verdict = region_rule(mesh, plan);
+  Refusal verdict = region_rule(mesh, plan);
+  if (verdict == Refusal::kNone && veto_) {
+    verdict = veto_(mesh, plan);
+    out.vetoed += verdict != Refusal::kNone;
+  }
   if (verdict != Refusal::kNone) count(out, verdict);
   return verdict;
 }
@@ -182,11 +186,20 @@ bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
   // The insertion as it ends: the midpoint's star, the split's halves, moved.
   mesh.vertex_shell(midpoint, star_);
   insertion_.worst_after = worst_quality(mesh, star_);
-  if (insertion_.worst_after > insertion_.worst_before * (1.0 + kMargin)) {
-    made_.insert(made_.end(), created_.begin() + static_cast<std::ptrdiff_t>(before), created_.end());
-    return true;
+  if (!(insertion_.worst_after > insertion_.worst_before * (1.0 + kMargin))) {
+    count(out, Refusal::kNotBetter);
+  } else {
+    // Shown to the rules and the hook as it ends: the tets split, the new vertex's star where it
+    // now is.
+    insertion_.added.clear();
+    for (TetId u : star_) insertion_.added.push_back(mesh.tet(u));
+    insertion_.placed = midpoint;
+    insertion_.placed_at = mesh.position(midpoint);
+    if (admit(mesh, insertion_, out) == Refusal::kNone) {
+      made_.insert(made_.end(), created_.begin() + static_cast<std::ptrdiff_t>(before), created_.end());
+      return true;
+    }
   }
-  count(out, Refusal::kNotBetter);
   mesh.rollback_to(point);
   created_.resize(before);
   return false;
@@ -235,6 +248,7 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
   host_quality_.clear();
   tool_ = params.reach;
   uncuttable_ = params.uncuttable;
+  veto_ = params.veto;
   tissue_ = params.tissue;
   if (!tissue_) {
     own_tissue_.begin(nullptr, 0.0);

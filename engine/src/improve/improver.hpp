@@ -19,7 +19,8 @@
 // removable on its own, goes with the tissue (sliver_removal.hpp), reported apart
 // (ImproveOutcome::removed).
 // Every plan passes, after its operator's own tests, the run's rules (uncuttable tissue keeps
-// its region); a plan refused for any reason is not applied, and the outcome counts why.
+// its region) and then the caller's hook (plan_veto.hpp), which may veto it; a plan refused for
+// any reason is not applied, and the outcome counts why.
 // The ops run inside the transaction: the journal records them (a flip's tets get every replaced
 // tet as parents, a moved vertex its barycentric origin), so a consumer still sees one net
 // change, and a rollback undoes them with the rest.
@@ -40,6 +41,7 @@
 #include "improve/flips.hpp"
 #include "improve/insertion.hpp"
 #include "improve/operation.hpp"
+#include "improve/plan_veto.hpp"
 #include "improve/smoothing.hpp"
 #include "remove/tissue_removal.hpp"
 #include "tetcut/detail/stamped_property.hpp"
@@ -60,6 +62,8 @@ struct ImproveParams {
   // The transaction's removal path (remove/tissue_removal.hpp), through which the slivers go and
   // are tallied with the rest of what it took (none: one of the Improver's own, untallied).
   TissueRemoval* tissue = nullptr;
+  // The caller's say over every plan the pass would apply (empty: none).
+  PlanVeto veto{};
 };
 
 struct ImproveOutcome {
@@ -69,7 +73,8 @@ struct ImproveOutcome {
   double worst_after = 1.0;   // and after: the worst tet the transaction made
   std::uint32_t flips = 0, collapses = 0, moves = 0, insertions = 0;
   std::uint32_t removed = 0;  // slivers removed with the tissue
-  // Plans refused, by Refusal: a plan that was made but lifted the tet less
+  std::uint32_t vetoed = 0;   // plans the caller's hook vetoed
+  // Plans refused, by Refusal (the hook's included): a plan that was made but lifted the tet less
   // than another is not refused, only not chosen.
   std::array<std::uint32_t, kRefusalCount> refused{};
   bool met = true;            // every made tet at or above the floor
@@ -96,7 +101,7 @@ class Improver {
   // candidate_, just planned (`planned`: kNone, or why not), becomes best_ when it lifts the tet
   // more than best_ does and admit() lets it through.
   void offer(TetMesh& mesh, Refusal planned, ImproveOutcome& out);
-  // The run's rules on a plan its operator made; a refusal is counted.
+  // The run's rules, then the caller's hook, on a plan its operator made; a refusal is counted.
   Refusal admit(TetMesh& mesh, const Plan& plan, ImproveOutcome& out);
   // Uncuttable tissue keeps its region: a flip retriangulates the polytope it replaces, so it only
   // needs tets of one kind; a split child lies in its parent; the other plans touch none.
@@ -105,7 +110,7 @@ class Improver {
   // the transaction and none of its tets is uncuttable, else why not. Asked before planning.
   Refusal star_rule(TetMesh& mesh, VertId v);
   // Insertion on t's longest edge, with its new vertex smoothed: kept when it lifts the worst
-  // tet around the edge, else rolled back.
+  // tet around the edge and the hook lets it through, else rolled back.
   bool insert(TetMesh& mesh, TetId t, ImproveOutcome& out);
   // The made tets still below the floor that go with the tissue.
   void remove_slivers(TetMesh& mesh, ImproveOutcome& out);
@@ -127,6 +132,7 @@ class Improver {
   const UncuttableTets* uncuttable_ = nullptr;  // the run's, if any
   TissueRemoval* tissue_ = nullptr;             // the run's removal path
   TissueRemoval own_tissue_;
+  PlanVeto veto_;                               // the run's, if any
   std::vector<TetId> made_, ancestors_, created_;
   std::vector<std::pair<double, TetId>> bad_;  // (quality, tet), worst first
   StampedMap<TetId, double> host_quality_;

@@ -32,6 +32,7 @@ std::string_view to_string(Refusal refusal) {
     case Refusal::kUncuttable: return "uncuttable";
     case Refusal::kOutOfReach: return "out of the cut's reach";
     case Refusal::kNotRemovable: return "not removable";
+    case Refusal::kVetoed: return "vetoed by the caller";
   }
   return "?";
 }

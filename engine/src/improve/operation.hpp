@@ -3,8 +3,9 @@
 // After CGAL Tetrahedral_remeshing's Elementary_operation (what an operation touches, how it is
 // executed, its name) and Mmg's simulate-then-apply (split_3d.c): an operator plans on the const
 // mesh the tets it would remove and the tets it would add, as vertex quadruples, with the one
-// vertex position it sets (a smoothing move's target, an inserted point), so that anyone
-// measures the new tets before the mesh changes. Only an accepted plan is applied. A plan that cannot be made says why (Refusal, as
+// vertex position it sets (a smoothing move's target, an inserted point), so that anyone, the
+// pass or a caller's acceptance hook (plan_veto.hpp), measures the new tets before the mesh
+// changes. Only an accepted plan is applied. A plan that cannot be made says why (Refusal, as
 // CGAL's Sliver_removal_result does), and the mesh is untouched.
 //
 // The operators (Klingner and Shewchuk, "Aggressive tetrahedral mesh improvement", 2007, combine
@@ -55,8 +56,9 @@ enum class Refusal : std::uint8_t {
   kUncuttable,         // reshapes uncuttable tissue, or mixes it with cuttable tissue
   kOutOfReach,         // outside the cut's reach
   kNotRemovable,       // removing the tet alone would leave the mesh non-manifold (paper 3.3)
+  kVetoed,             // the caller's acceptance hook said no
 };
-inline constexpr std::size_t kRefusalCount = 12;
+inline constexpr std::size_t kRefusalCount = 13;
 
 [[nodiscard]] std::string_view to_string(Operator op);
 [[nodiscard]] std::string_view to_string(Refusal refusal);
