@@ -9,7 +9,7 @@
 // CGAL's Sliver_removal_result does), and the mesh is untouched.
 //
 // The operators (Klingner and Shewchuk, "Aggressive tetrahedral mesh improvement", 2007, combine
-// the same; Mmg's opttyp names them too):
+// the same; Mmg's optimisation has the like):
 //   edge removal, face removal  flips.hpp
 //   collapse                    collapse.hpp
 //   smoothing                   smoothing.hpp
@@ -19,6 +19,7 @@
 // that carries it out; the pass offers its plans like any other (improver.cpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -41,6 +42,7 @@ enum class Operator : std::uint8_t {
   kSliverRemoval,  // a sliver at the cut's surface, gone with the tissue
 };
 inline constexpr std::size_t kOperatorCount = 6;
+static_assert(static_cast<std::size_t>(Operator::kSliverRemoval) + 1 == kOperatorCount, "the last operator");
 
 // Why a plan was not made, or not taken.
 enum class Refusal : std::uint8_t {
@@ -59,6 +61,7 @@ enum class Refusal : std::uint8_t {
   kVetoed,             // the caller's acceptance hook said no
 };
 inline constexpr std::size_t kRefusalCount = 13;
+static_assert(static_cast<std::size_t>(Refusal::kVetoed) + 1 == kRefusalCount, "the last refusal");
 
 [[nodiscard]] std::string_view to_string(Operator op);
 [[nodiscard]] std::string_view to_string(Refusal refusal);
