@@ -12,58 +12,12 @@
 #include "improve/collapse.hpp"
 #include "improve/flips.hpp"
 #include "improve/improver.hpp"
-#include "refine/refine.hpp"
-#include "test_meshes.hpp"
+#include "improve_test_support.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
-#include "tetcut/io.hpp"
 
 namespace tetcut::testing {
 namespace {
-
-TetMesh corpus_mesh(const std::string& name) {
-  ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/meshes/" + name);
-  if (!read.mesh) {
-    ADD_FAILURE() << "cannot read " << name;
-    return {};
-  }
-  return build_or_fail(*read.mesh);
-}
-
-double quality(const TetMesh& mesh, TetId t) {
-  const auto v = mesh.tet(t);
-  return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
-// The tets the open transaction made since `point` that are still live.
-std::vector<TetId> made_since(const TetMesh& mesh, const TetMesh::Savepoint& point) {
-  std::vector<TetId> out;
-  for (const TetMesh::TetBirth& b : mesh.tets_made_since(point))
-    if (mesh.is_live(b.tet)) out.push_back(b.tet);
-  return out;
-}
-
-// A refinement around a small ball of the coarse liver inside an open transaction: children of
-// vertex-order templates, some of them slivers, to improve.
-struct Refined {
-  TetMesh mesh;
-  TetMesh::Savepoint start;
-};
-Refined refined_liver(const Vec3& centre, double radius) {
-  Refined r{corpus_mesh("liver-coarse.msh"), {}};
-  r.mesh.begin_transaction();
-  r.start = r.mesh.savepoint();
-  std::vector<TetId> hit, region;
-  for (std::uint32_t t = 0; t < r.mesh.tet_capacity(); ++t) {
-    const auto v = r.mesh.tet(TetId{t});
-    if (intersects(Ball{centre, radius}, r.mesh.position(v[0]), r.mesh.position(v[1]), r.mesh.position(v[2]),
-                   r.mesh.position(v[3])))
-      hit.push_back(TetId{t});
-  }
-  Refiner refiner;
-  refiner.refine(r.mesh, hit, {.d_ref = 3.0 * radius, .focus = Ball{centre, radius}}, region);
-  return r;
-}
 
 TEST(Improve, EveryFlipAndCollapseKeepsTheMeshValidAndLiftsTheWorstTetItTouches) {
   Refined r = refined_liver({95, 100, 100}, 1.5);
@@ -71,8 +25,7 @@ TEST(Improve, EveryFlipAndCollapseKeepsTheMeshValidAndLiftsTheWorstTetItTouches)
   invariants::LocalChecker local(mesh.raw_view());
   detail::Flipper flipper;
   detail::Collapser collapser;
-  detail::FlipPlan plan;
-  detail::CollapsePlan collapse;
+  detail::Plan plan, collapse;
   std::vector<TetId> created, removed, made;
   int flips = 0, collapses = 0;
   for (TetId t : made_since(mesh, r.start)) {
@@ -81,25 +34,25 @@ TEST(Improve, EveryFlipAndCollapseKeepsTheMeshValidAndLiftsTheWorstTetItTouches)
     bool applied = false;
     const TetMesh::Savepoint before = mesh.savepoint();
     for (int e = 0; e < 6 && !applied; ++e)
-      if (flipper.plan_edge_removal(mesh, t, e, 1e-6, plan)) {
+      if (flipper.plan_edge_removal(mesh, t, e, 1e-6, plan) == detail::Refusal::kNone) {
         EXPECT_GT(plan.worst_after, plan.worst_before);
-        detail::Flipper::apply(mesh, plan, created);
+        plan.apply(mesh, created);
         applied = true;
         ++flips;
       }
     for (int f = 0; f < 4 && !applied; ++f)
-      if (flipper.plan_face_flip(mesh, t, f, 1e-6, plan)) {
+      if (flipper.plan_face_flip(mesh, t, f, 1e-6, plan) == detail::Refusal::kNone) {
         EXPECT_GT(plan.worst_after, plan.worst_before);
-        detail::Flipper::apply(mesh, plan, created);
+        plan.apply(mesh, created);
         applied = true;
         ++flips;
       }
     for (VertId v : mesh.tet(t)) {
       if (applied || !mesh.made_in_transaction(v)) continue;
       for (VertId w : mesh.tet(t))
-        if (!applied && w != v && collapser.plan(mesh, v, w, 1e-6, 0.0, collapse)) {
+        if (!applied && w != v && collapser.plan(mesh, v, w, 1e-6, 0.0, collapse) == detail::Refusal::kNone) {
           EXPECT_GT(collapse.worst_after, collapse.worst_before);
-          detail::Collapser::apply(mesh, collapse, created);
+          collapse.apply(mesh, created);
           applied = true;
           ++collapses;
         }
@@ -125,7 +78,7 @@ TEST(Improve, ThePassLiftsWhatARefinementMadeToTheFloorAndMovesNoVertexThatWasTh
   for (TetId t : made_since(mesh, r.start)) worst_made = std::min(worst_made, quality(mesh, t));
   ASSERT_LT(worst_made, 0.1) << "the refinement makes slivers: something to improve";
   detail::Improver improver;
-  const detail::ImproveOutcome outcome = improver.run(mesh, r.start, 0.1, true);
+  const detail::ImproveOutcome outcome = improver.run(mesh, r.start, {.floor = 0.1});
   EXPECT_TRUE(outcome.met);
   EXPECT_GE(outcome.worst_after, outcome.floor);
   EXPECT_GT(outcome.flips + outcome.collapses + outcome.moves + outcome.insertions, 0u);

@@ -12,6 +12,8 @@
 
 #include "tetcut/mesh.hpp"
 
+#include "core/host_location.hpp"
+
 namespace tetcut {
 
 TetMesh::Savepoint TetMesh::savepoint() {
@@ -169,8 +171,6 @@ TetMesh::TetVerts TetMesh::tet_at_start(TetId t) {
 
 namespace {
 
-double signed_volume6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return dot(b - a, cross(c - a, d - a)); }
-
 // The birth a per-id slot points to, if that birth still names the id (a rollback leaves the
 // slots of undone births behind).
 template <class Births, class Id>
@@ -252,44 +252,32 @@ void TetMesh::ancestors_at_start(TetId t, std::vector<TetId>& out) {
 void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
   // Barycentric coordinates are relative to the tet's size: below this, outside by rounding only.
   constexpr double kOutsideRounding = 1e-12;
-  const Vec3& p = positions_[v.value];
-  double best_min = -std::numeric_limits<double>::infinity();
-  auto consider = [&](TetId root) {
-    const TetVerts c = tet_at_start(root);
-    if (c[0].value == kDeadTetMarker) return;
-    const Vec3 x[4] = {positions_[c[0].value], positions_[c[1].value], positions_[c[2].value], positions_[c[3].value]};
-    const double whole = signed_volume6(x[0], x[1], x[2], x[3]);
-    if (!(whole > 0.0)) return;
-    std::array<double, 4> w{};
-    for (int i = 0; i < 4; ++i) {
-      Vec3 y[4] = {x[0], x[1], x[2], x[3]};
-      y[i] = p;
-      w[i] = signed_volume6(y[0], y[1], y[2], y[3]) / whole;
-    }
-    const double lowest = std::min(std::min(w[0], w[1]), std::min(w[2], w[3]));
-    if (lowest <= best_min) return;
-    best_min = lowest;
-    // Inside to within rounding: coordinates clamped at 0. Outside (v moved off the region the
-    // transaction started with): the coordinates as they are, one or more slightly negative, so
-    // that they still reproduce v's position.
-    const bool inside = lowest >= -kOutsideRounding;
-    double sum = 0.0;
-    for (double& wi : w) sum += wi = inside ? std::max(wi, 0.0) : wi;
-    out.count = 0;
-    for (int i = 0; i < 4; ++i) {
-      if (std::abs(w[i] / sum) <= 1e-12) continue;
-      out.from[out.count] = c[i];
-      out.weight[out.count++] = w[i] / sum;
-    }
-  };
   locate_scratch_.clear();
   ancestors_at_start(vert_tet_[v.value], locate_scratch_);
-  for (TetId root : locate_scratch_) consider(root);
-  if (best_min < -kOutsideRounding) {
+  detail::DeepestTet host = detail::deepest_at_start(*this, locate_scratch_, positions_[v.value]);
+  if (host.depth() < -kOutsideRounding) {
     for (const JournalEntry& e : journal_.entries)
-      if (e.array == Array::kTetVerts && e.index < journal_.start.tets) consider(TetId{e.index});
+      if (e.array == Array::kTetVerts && e.index < journal_.start.tets) {
+        const TetVerts c = tet_at_start(TetId{e.index});
+        if (c[0].value == kDeadTetMarker) continue;
+        host.offer(TetId{e.index}, c, {positions_[c[0].value], positions_[c[1].value], positions_[c[2].value], positions_[c[3].value]});
+      }
   }
-  assert(out.count > 0 && "a vertex made in the transaction lies in no tet that was there before it");
+  assert(host.found() && "a vertex made in the transaction lies in no tet that was there before it");
+  if (!host.found()) return;
+  // Inside to within rounding: coordinates clamped at 0. Outside (v moved off the region the
+  // transaction started with): the coordinates as they are, one or more slightly negative, so
+  // that they still reproduce v's position.
+  const bool inside = host.depth() >= -kOutsideRounding;
+  std::array<double, 4> w = host.weights();
+  double sum = 0.0;
+  for (double& wi : w) sum += wi = inside ? std::max(wi, 0.0) : wi;
+  out.count = 0;
+  for (int i = 0; i < 4; ++i) {
+    if (std::abs(w[i] / sum) <= 1e-12) continue;
+    out.from[out.count] = host.corners()[i];
+    out.weight[out.count++] = w[i] / sum;
+  }
 }
 
 // out := (1 - t) * origin(a) + t * origin(b), over vertices live at begin_transaction(); count 0

@@ -58,4 +58,10 @@ double min_radius_ratio(const TetMesh& mesh, std::span<const TetId> tets) {
   return worst;
 }
 
+double worst_quality(const TetMesh& mesh, std::span<const TetId> tets) {
+  double worst = 1.0;
+  for (TetId t : tets) worst = std::min(worst, quality(mesh, t));
+  return worst;
+}
+
 }  // namespace tetcut

@@ -285,8 +285,10 @@ bool Cutter::Pipeline::improve(CutReport& report) {
   const Ball* tool = selection_.tool();
   const std::optional<Ball> reach =
       tool ? std::optional<Ball>(Ball{tool->centre, tool->radius + params_.d_ref()}) : std::nullopt;
-  const detail::ImproveOutcome outcome = improver_.run(mesh_, transaction_.start(), params_.quality_floor, params_.improve,
-                                                       reach ? &*reach : nullptr, &uncuttable_, &tissue_);
+  const detail::ImproveOutcome outcome =
+      improver_.run(mesh_, transaction_.start(),
+                    {.floor = params_.quality_floor, .improve = params_.improve, .reach = reach ? &*reach : nullptr,
+                     .uncuttable = &uncuttable_, .tissue = &tissue_});
   report.tets_removed_by_improvement = outcome.removed;
   report.min_radius_ratio_before_improvement = outcome.worst_before;
   report.min_radius_ratio = outcome.worst_after;  // the worst net new tet: the made tets still live

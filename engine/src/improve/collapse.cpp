@@ -11,10 +11,6 @@
 namespace tetcut::detail {
 namespace {
 
-double quality(const TetMesh& mesh, const TetMesh::TetVerts& v) {
-  return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
 template <class T>
 bool has(const std::vector<T>& list, const T& x) {
   return std::find(list.begin(), list.end(), x) != list.end();
@@ -94,48 +90,44 @@ int Collapser::boundary_planes(const TetMesh& mesh, VertId x, std::span<const Te
   return count;
 }
 
-bool Collapser::plan(const TetMesh& mesh, VertId v, VertId w, double margin, double to_beat, CollapsePlan& plan) {
-  if (v == w) return false;
+Refusal Collapser::plan(const TetMesh& mesh, VertId v, VertId w, double margin, double to_beat, Plan& plan) {
+  plan.start(Operator::kCollapse);
+  if (v == w) return Refusal::kNotAnEdge;
   mesh.vertex_shell(v, star_v_);
   ring_.clear();
   for (TetId t : star_v_)
     if (mesh.local_index(t, w) >= 0) ring_.push_back(t);
-  if (ring_.empty()) return false;  // not an edge
+  if (ring_.empty()) return Refusal::kNotAnEdge;
 
   // The surface keeps its shape.
   if (mesh.is_boundary_vertex(v)) {
     const TetId t = ring_.front();
-    if (!mesh.is_boundary_edge(t, mesh.local_edge(t, v, w))) return false;
+    if (!mesh.is_boundary_edge(t, mesh.local_edge(t, v, w))) return Refusal::kSurfaceConstraint;
     std::array<Vec3, 3> planes{};
     const int count = boundary_planes(mesh, v, star_v_, planes);
     if (count == 2) {
       const Vec3 d = mesh.position(w) - mesh.position(v);
       for (int k = 0; k < 2; ++k)
-        if (std::abs(dot(planes[k], d)) > 1e-9 * norm(d)) return false;
+        if (std::abs(dot(planes[k], d)) > 1e-9 * norm(d)) return Refusal::kSurfaceConstraint;
     } else if (count != 1) {
-      return false;
+      return Refusal::kSurfaceConstraint;
     }
   }
 
   // The new tets: positive, and better than v's star.
-  plan.from = v;
-  plan.to = w;
   plan.removed.assign(star_v_.begin(), star_v_.end());
-  plan.added.clear();
-  plan.worst_before = 1.0;
-  plan.worst_after = 1.0;
   for (TetId t : star_v_) {
     TetMesh::TetVerts q = mesh.tet(t);
     plan.worst_before = std::min(plan.worst_before, quality(mesh, q));
     if (mesh.local_index(t, w) >= 0) continue;
     q[static_cast<std::size_t>(mesh.local_index(t, v))] = w;
-    if (orientation(mesh.position(q[0]), mesh.position(q[1]), mesh.position(q[2]), mesh.position(q[3])) <= 0) return false;
+    if (orientation(mesh.position(q[0]), mesh.position(q[1]), mesh.position(q[2]), mesh.position(q[3])) <= 0)
+      return Refusal::kInvertedChild;
     plan.worst_after = std::min(plan.worst_after, quality(mesh, q));
-    if (plan.worst_after <= to_beat) return false;
+    if (plan.worst_after <= to_beat) return Refusal::kNotBetter;
     plan.added.push_back(q);
   }
-  if (!(plan.worst_after > plan.worst_before * (1.0 + margin))) return false;
-
+  if (!(plan.worst_after > plan.worst_before * (1.0 + margin))) return Refusal::kNotBetter;
 
   // Dey's link condition, with the surface's cone: Lk(v) and Lk(w) meet in Lk(vw) only.
   mesh.vertex_shell(w, star_w_);
@@ -148,11 +140,11 @@ bool Collapser::plan(const TetMesh& mesh, VertId v, VertId w, double margin, dou
     return std::any_of(ring_.begin(), ring_.end(), [&](TetId t) { return mesh.local_index(t, x) >= 0 && mesh.local_index(t, y) >= 0; });
   };
   for (VertId x : near_v_)
-    if (x != w && has(near_w_, x) && !ring_has(x)) return false;
+    if (x != w && has(near_w_, x) && !ring_has(x)) return Refusal::kLinkCondition;
   for (const auto& e : edges_v_)
-    if (e[0] != w && e[1] != w && has(edges_w_, e) && !ring_has_edge(e[0], e[1])) return false;
+    if (e[0] != w && e[1] != w && has(edges_w_, e) && !ring_has_edge(e[0], e[1])) return Refusal::kLinkCondition;
   for (const auto& f : faces_v_)
-    if (has(faces_w_, f)) return false;
+    if (has(faces_w_, f)) return Refusal::kLinkCondition;
   if (mesh.is_boundary_vertex(v) && mesh.is_boundary_vertex(w)) {
     // The cone over the surface: a vertex joined to both by boundary edges must be on a boundary
     // face with both, and no boundary edge of one's surface link may be in the other's (two
@@ -161,20 +153,14 @@ bool Collapser::plan(const TetMesh& mesh, VertId v, VertId w, double margin, dou
     boundary_link(mesh, w, star_w_, surface_w_);
     for (const auto& e : surface_v_) {
       if (e[0] == w || e[1] == w) continue;
-      if (has(surface_w_, e)) return false;
+      if (has(surface_w_, e)) return Refusal::kLinkCondition;
       for (VertId x : e) {
         const bool joined_to_w = std::any_of(surface_w_.begin(), surface_w_.end(), [&](const auto& f) { return f[0] == x || f[1] == x; });
-        if (joined_to_w && !has(surface_v_, sorted(w, x))) return false;
+        if (joined_to_w && !has(surface_v_, sorted(w, x))) return Refusal::kLinkCondition;
       }
     }
   }
-
-  return true;
-}
-
-void Collapser::apply(TetMesh& mesh, const CollapsePlan& plan, std::vector<TetId>& created) {
-  // The new tets fill v's star together: each has all of it as parents (a flip's record).
-  mesh.replace_tets(plan.removed, plan.added, &created);
+  return Refusal::kNone;
 }
 
 }  // namespace tetcut::detail

@@ -16,25 +16,19 @@
 #include <cstdint>
 #include <vector>
 
+#include "improve/operation.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::detail {
 
-struct CollapsePlan {
-  VertId from, to;
-  std::vector<TetId> removed;                 // v's star
-  std::vector<TetMesh::TetVerts> added;       // the tets around v without w, with w for v
-  double worst_before = 0.0, worst_after = 0.0;
-};
-
 class Collapser {
  public:
   void reserve();
-  // Plans merging v into w; false when the link condition, the surface, orientation or quality
+  // Plans merging v into w (Operator::kCollapse: v's star removed, the tets around v without w
+  // added with w for v). Refused when the link condition, the surface, orientation or quality
   // refuses it, or when its worst new tet would not beat `to_beat` (the caller's best so far:
   // the cheap tests run first, the link condition last).
-  bool plan(const TetMesh& mesh, VertId v, VertId w, double margin, double to_beat, CollapsePlan& plan);
-  static void apply(TetMesh& mesh, const CollapsePlan& plan, std::vector<TetId>& created);
+  [[nodiscard]] Refusal plan(const TetMesh& mesh, VertId v, VertId w, double margin, double to_beat, Plan& plan);
 
  private:
   // The planes of the boundary faces at x (at most 3 recorded), from its star.

@@ -12,18 +12,8 @@
 namespace tetcut::detail {
 namespace {
 
-double quality(const TetMesh& mesh, const TetMesh::TetVerts& v) {
-  return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
 bool positive(const TetMesh& mesh, const TetMesh::TetVerts& v) {
   return orientation(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])) > 0;
-}
-
-double worst_of(const TetMesh& mesh, std::span<const TetId> tets) {
-  double worst = 1.0;
-  for (TetId t : tets) worst = std::min(worst, quality(mesh, mesh.tet(t)));
-  return worst;
 }
 
 // The vertex of u other than a, b and `not_this` (u has a and b).
@@ -55,11 +45,12 @@ bool Flipper::has_face(const TetMesh& mesh, VertId u, VertId w, VertId x) {
   return std::any_of(scratch_.begin(), scratch_.end(), [&](TetId t) { return shares(mesh, t, w) && shares(mesh, t, x); });
 }
 
-bool Flipper::plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge, double margin, FlipPlan& plan) {
+Refusal Flipper::plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge, double margin, Plan& plan) {
+  plan.start(Operator::kEdgeRemoval);
   const VertId a = mesh.vertex(t, kEdgeVerts[local_edge][0]), b = mesh.vertex(t, kEdgeVerts[local_edge][1]);
   const bool open = mesh.edge_shell(t, local_edge, shell_);
   const int n = static_cast<int>(shell_.size());
-  if (open ? (n < 2 || n + 1 > kMaxRing) : (n < 3 || n > kMaxRing)) return false;
+  if (open ? (n < 2 || n + 1 > kMaxRing) : (n < 3 || n > kMaxRing)) return Refusal::kNotFlippable;
 
   // The ring of vertices around (a, b), in the shell's rotation order: tet i holds ring[i] and
   // ring[i + 1] (ring[n] is ring[0] when the shell closes).
@@ -88,16 +79,16 @@ bool Flipper::plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge, do
     std::rotate(ring.begin(), ring.begin() + m - 1, ring.begin() + m);  // ring[0] is shared by tets n-1 and 0
   }
   for (int i = 0; i < m; ++i)
-    if (!ring[i].valid()) return false;
+    if (!ring[i].valid()) return Refusal::kNotFlippable;
   const Vec3 pa = mesh.position(a), pb = mesh.position(b);
   if (open) {
     // On the surface only where the boundary stays the same plane: the two boundary faces at
     // (a, b) coplanar, to rounding of their own coordinates.
     const Vec3 r0 = mesh.position(ring[0]), rm = mesh.position(ring[m - 1]);
-    if (std::abs(dot(pb - pa, cross(r0 - pa, rm - pa))) > 1e-12 * cube_scale(pa, pb, r0, rm)) return false;
+    if (std::abs(dot(pb - pa, cross(r0 - pa, rm - pa))) > 1e-12 * cube_scale(pa, pb, r0, rm)) return Refusal::kSurfaceConstraint;
   }
 
-  plan.worst_before = worst_of(mesh, shell_);
+  plan.worst_before = worst_quality(mesh, shell_);
   // Tets (r_i, r_j, r_k, a) and (r_i, r_k, r_j, b) for i < j < k when the ring turns
   // counter-clockwise seen from a, which orientation(a, b, r_0, r_1) < 0 says; mirrored otherwise.
   const bool ccw_from_a = orientation(pa, pb, mesh.position(ring[0]), mesh.position(ring[1])) < 0;
@@ -131,36 +122,36 @@ bool Flipper::plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge, do
       }
     }
   plan.worst_after = best[0][m - 1];
-  if (!(plan.worst_after > 0.0) || !(plan.worst_after > plan.worst_before * (1.0 + margin))) return false;
+  if (!(plan.worst_after > 0.0)) return Refusal::kInvertedChild;
+  if (!(plan.worst_after > plan.worst_before * (1.0 + margin))) return Refusal::kNotBetter;
 
   // Collect the triangles; every chord that is not a ring edge is a new edge and must not exist
   // yet (nor, for three tets, the one new face).
-  plan.removed_count = 0;
-  for (TetId u : shell_) plan.removed[plan.removed_count++] = u;
-  plan.added_count = 0;
+  plan.removed.assign(shell_.begin(), shell_.end());
   std::array<std::pair<std::int8_t, std::int8_t>, 2 * kMaxRing> stack{};
   int top = 0;
   stack[top++] = {0, static_cast<std::int8_t>(m - 1)};
-  if (open && has_edge(mesh, ring[0], ring[m - 1])) return false;
+  if (open && has_edge(mesh, ring[0], ring[m - 1])) return Refusal::kExistingSimplex;
   while (top > 0) {
     const auto [i, j] = stack[--top];
     if (j - i < 2) continue;
     const int k = split[i][j];
     const auto tets = triangle_tets(i, k, j);
-    plan.added[plan.added_count++] = tets[0];
-    plan.added[plan.added_count++] = tets[1];
+    plan.added.push_back(tets[0]);
+    plan.added.push_back(tets[1]);
     for (const auto& [x, y] : {std::pair<int, int>{i, k}, std::pair<int, int>{k, j}}) {
-      if (y - x >= 2 && has_edge(mesh, ring[x], ring[y])) return false;
+      if (y - x >= 2 && has_edge(mesh, ring[x], ring[y])) return Refusal::kExistingSimplex;
       stack[top++] = {static_cast<std::int8_t>(x), static_cast<std::int8_t>(y)};
     }
   }
-  if (!open && m == 3 && has_face(mesh, ring[0], ring[1], ring[2])) return false;
-  return true;
+  if (!open && m == 3 && has_face(mesh, ring[0], ring[1], ring[2])) return Refusal::kExistingSimplex;
+  return Refusal::kNone;
 }
 
-bool Flipper::plan_face_flip(const TetMesh& mesh, TetId t, int face, double margin, FlipPlan& plan) {
+Refusal Flipper::plan_face_flip(const TetMesh& mesh, TetId t, int face, double margin, Plan& plan) {
+  plan.start(Operator::kFaceRemoval);
   const FaceRef across = mesh.neighbour(t, face);
-  if (!across.valid()) return false;
+  if (!across.valid()) return Refusal::kNotFlippable;
   const VertId d = mesh.vertex(t, face), e = mesh.vertex(across.tet, across.face);
   const VertId p = mesh.vertex(t, kFaceVerts[face][0]), q = mesh.vertex(t, kFaceVerts[face][1]),
                r = mesh.vertex(t, kFaceVerts[face][2]);
@@ -170,26 +161,19 @@ bool Flipper::plan_face_flip(const TetMesh& mesh, TetId t, int face, double marg
   int sign = 0;
   for (auto& v : tets) {
     const int s = orientation(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-    if (s == 0 || (sign != 0 && s != sign)) return false;
+    if (s == 0 || (sign != 0 && s != sign)) return Refusal::kNotFlippable;
     sign = s;
   }
   if (sign < 0)
     for (auto& v : tets) std::swap(v[0], v[1]);
   const TetId pair[2] = {t, across.tet};
-  plan.worst_before = worst_of(mesh, pair);
+  plan.worst_before = worst_quality(mesh, pair);
   plan.worst_after = std::min({quality(mesh, tets[0]), quality(mesh, tets[1]), quality(mesh, tets[2])});
-  if (!(plan.worst_after > plan.worst_before * (1.0 + margin))) return false;
-  if (has_edge(mesh, d, e)) return false;
-  plan.removed_count = 2;
-  plan.removed[0] = t;
-  plan.removed[1] = across.tet;
-  plan.added_count = 3;
-  std::copy(tets.begin(), tets.end(), plan.added.begin());
-  return true;
-}
-
-void Flipper::apply(TetMesh& mesh, const FlipPlan& plan, std::vector<TetId>& created) {
-  mesh.replace_tets(plan.removed_tets(), plan.added_tets(), &created);
+  if (!(plan.worst_after > plan.worst_before * (1.0 + margin))) return Refusal::kNotBetter;
+  if (has_edge(mesh, d, e)) return Refusal::kExistingSimplex;
+  plan.removed.assign(std::begin(pair), std::end(pair));
+  plan.added.assign(tets.begin(), tets.end());
+  return Refusal::kNone;
 }
 
 }  // namespace tetcut::detail

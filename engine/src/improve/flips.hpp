@@ -2,8 +2,8 @@
 // polytope (Shewchuk, "Two discrete optimization algorithms for the topological improvement of
 // tetrahedral meshes", 2002; Klingner and Shewchuk, "Aggressive tetrahedral mesh improvement",
 // 2007). Each is planned on the const mesh and applied only when its worst tet is better than the
-// worst tet it replaces (the radius ratio, as everywhere in I7), so a sequence of them never
-// lowers the worst quality of a region and ends.
+// worst tet it replaces (by quality(), core/quality.hpp, as every operator of the pass), so a
+// sequence of them never lowers the worst quality of a region and ends.
 //
 //   edge removal  the n tets around an interior edge (a, b), n = 3..kMaxRing, replaced by
 //                 2(n - 2) tets: a triangulation of their ring polygon coned to a and to b,
@@ -18,14 +18,14 @@
 // Why the mesh stays a conformal 3-manifold: a flip retriangulates a polytope whose boundary it
 // keeps (same boundary triangles, or on the surface the same plane), with every new tet
 // positively oriented by the exact predicate; and no new edge or face may already exist
-// elsewhere in the mesh (a duplicate edge would give it two disconnected shells, I6). Plan, then
-// apply: a refused plan leaves the mesh untouched.
+// elsewhere in the mesh (a duplicate edge would give it two disconnected shells, I6). Plan
+// (operation.hpp), then apply: a refused plan says why and leaves the mesh untouched.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
+#include "improve/operation.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 
@@ -33,29 +33,15 @@ namespace tetcut::detail {
 
 inline constexpr int kMaxRing = 9;  // tets around an edge that edge removal considers
 
-struct FlipPlan {
-  std::array<TetId, kMaxRing> removed{};
-  std::array<TetMesh::TetVerts, 2 * (kMaxRing - 1)> added{};
-  std::uint8_t removed_count = 0, added_count = 0;
-  double worst_before = 0.0, worst_after = 0.0;  // radius ratios
-
-  [[nodiscard]] std::span<const TetId> removed_tets() const { return {removed.data(), removed_count}; }
-  [[nodiscard]] std::span<const TetMesh::TetVerts> added_tets() const { return {added.data(), added_count}; }
-};
-
 class Flipper {
  public:
   // Working sizes, allocated and touched now.
   void reserve();
   // The best retriangulation of the tets around edge (t, local_edge), if its worst tet beats the
-  // worst of those by more than `margin` (a relative improvement). False: not flippable, or no
-  // better.
-  bool plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge, double margin, FlipPlan& plan);
-  // The 2-3 flip of the interior face (t, face), under the same rule.
-  bool plan_face_flip(const TetMesh& mesh, TetId t, int face, double margin, FlipPlan& plan);
-  // Replaces plan.removed by plan.added (every removed tet a parent of every added one, in the
-  // journal); the new ids are appended to `created`.
-  static void apply(TetMesh& mesh, const FlipPlan& plan, std::vector<TetId>& created);
+  // worst of those by more than `margin` (a relative improvement): Operator::kEdgeRemoval.
+  [[nodiscard]] Refusal plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge, double margin, Plan& plan);
+  // The 2-3 flip of the interior face (t, face), under the same rule: Operator::kFaceRemoval.
+  [[nodiscard]] Refusal plan_face_flip(const TetMesh& mesh, TetId t, int face, double margin, Plan& plan);
 
  private:
   // Whether an edge (u, w) or a face (u, w, x) exists anywhere in the mesh.

@@ -1,55 +1,46 @@
 #include "improve/improver.hpp"
 
 #include <algorithm>
-#include <limits>
 
+#include "core/host_location.hpp"
 #include "core/quality.hpp"
-#include "remove/removability.hpp"
-#include "tetcut/detail/local_tables.hpp"
+#include "improve/sliver_removal.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut::detail {
 namespace {
-
-double quality(const TetMesh& mesh, TetId t) {
-  const TetMesh::TetVerts v = mesh.tet(t);
-  return radius_ratio(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-}
-
-double volume6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return dot(b - a, cross(c - a, d - a)); }
-
-// The smallest barycentric coordinate of p in the tet (a, b, c, d): >= 0 inside.
-double depth_inside(const Vec3& p, const std::array<Vec3, 4>& x) {
-  const double whole = volume6(x[0], x[1], x[2], x[3]);
-  if (!(whole > 0.0)) return -std::numeric_limits<double>::infinity();
-  double lowest = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 4; ++i) {
-    std::array<Vec3, 4> y = x;
-    y[static_cast<std::size_t>(i)] = p;
-    lowest = std::min(lowest, volume6(y[0], y[1], y[2], y[3]) / whole);
-  }
-  return lowest;
-}
 
 // A flip or a move must lift the worst tet it touches by this much (relative): what makes the
 // pass end, and keeps it from trading places between equal tets.
 constexpr double kMargin = 1e-6;
 // Operations per pass: far above what a cut needs (a few dozen), a bound for pathological ones.
 constexpr std::uint32_t kMaxOperations = 512;
+// Tets a plan may remove or add before its storage grows: a star of a vertex in a real mesh.
+constexpr std::size_t kPlanTets = 128;
+
+void count(ImproveOutcome& out, Refusal refusal) { ++out.refused[static_cast<std::size_t>(refusal)]; }
+
+void count_applied(ImproveOutcome& out, Operator op) {
+  switch (op) {
+    case Operator::kEdgeRemoval:
+    case Operator::kFaceRemoval: ++out.flips; break;
+    case Operator::kCollapse: ++out.collapses; break;
+    case Operator::kSmoothing: ++out.moves; break;
+    case Operator::kInsertion: ++out.insertions; break;
+    case Operator::kSliverRemoval: ++out.removed; break;
+  }
+}
 
 }  // namespace
 
 void Improver::reserve(std::uint32_t tets) {
   flipper_.reserve();
-  splitter_.reserve(tets);
   collapser_.reserve();
   smoother_.reserve();
+  inserter_.reserve(tets);
+  for (Plan* p : {&best_, &candidate_, &insertion_}) p->reserve(kPlanTets);
   reserve_touched(star_, 128);
   reserve_touched(neighbours_, 128);
-  collapse_.removed.reserve(128);
-  collapse_.added.reserve(128);
-  collapse_candidate_.removed.reserve(128);
-  collapse_candidate_.added.reserve(128);
   for (auto* v : {&made_, &created_}) reserve_touched(*v, 4096);
   reserve_touched(bad_, 4096);
   reserve_touched(ancestors_, 64);
@@ -77,23 +68,14 @@ double Improver::floor_of(TetMesh& mesh, double floor_f) {
       // After a flip: the ancestor that holds the tet's centroid.
       const TetMesh::TetVerts v = mesh.tet(t);
       const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
-      double deepest = -std::numeric_limits<double>::infinity();
-      for (TetId a : ancestors_) {
-        const TetMesh::TetVerts c = mesh.tet_at_start(a);
-        const double d = depth_inside(centroid, {mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3])});
-        if (d > deepest) {
-          deepest = d;
-          host = a;
-        }
-      }
+      if (const DeepestTet deepest = deepest_at_start(mesh, ancestors_, centroid); deepest.found()) host = deepest.tet();
     }
     double q = 0.0;
     if (const double* known = host_quality_.find(host)) {
       q = *known;
     } else {
       // The host as it was: its vertices were there before the transaction and never move.
-      const TetMesh::TetVerts c = mesh.tet_at_start(host);
-      q = radius_ratio(mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3]));
+      q = quality(mesh, mesh.tet_at_start(host));
       host_quality_.set(host, q);
     }
     floor = std::min(floor, q);
@@ -101,149 +83,173 @@ double Improver::floor_of(TetMesh& mesh, double floor_f) {
   return floor;
 }
 
-bool Improver::may_reshape_star(TetMesh& mesh, VertId v) {
-  if (!uncuttable_ || uncuttable_->empty()) return true;
+Refusal Improver::star_rule(TetMesh& mesh, VertId v) {
+  if (!mesh.made_in_transaction(v)) return Refusal::kNotMadeByCut;
+  if (!uncuttable_ || uncuttable_->empty()) return Refusal::kNone;
   mesh.vertex_shell(v, star_);
-  return !uncuttable_->any_of(mesh, star_);
+  return uncuttable_->any_of(mesh, star_) ? Refusal::kUncuttable : Refusal::kNone;
 }
 
-bool Improver::may_flip(TetMesh& mesh, const FlipPlan& plan) const {
-  if (!uncuttable_ || uncuttable_->empty()) return true;
-  return !uncuttable_->any_of(mesh, plan.removed_tets()) || uncuttable_->all_of(mesh, plan.removed_tets());
+Refusal Improver::region_rule(TetMesh& mesh, const Plan& plan) const {
+  if (!uncuttable_ || uncuttable_->empty()) return Refusal::kNone;
+  switch (plan.op) {
+    case Operator::kEdgeRemoval:
+    case Operator::kFaceRemoval:
+      return !uncuttable_->any_of(mesh, plan.removed_tets()) || uncuttable_->all_of(mesh, plan.removed_tets())
+                 ? Refusal::kNone
+                 : Refusal::kUncuttable;
+    case Operator::kInsertion: return Refusal::kNone;
+    case Operator::kCollapse:
+    case Operator::kSmoothing:
+    case Operator::kSliverRemoval:
+      return uncuttable_->any_of(mesh, plan.removed_tets()) ? Refusal::kUncuttable : Refusal::kNone;
+  }
+  return Refusal::kNone;
 }
 
-bool Improver::improve_tet(TetMesh& mesh, TetId t) {
-  // Every operation that would lift the tet, planned; the one whose worst touched tet ends best
-  // is applied (ties: a flip, then a collapse, then a move, in the order they are tried).
-  enum class Best : std::uint8_t { kNone, kFlip, kCollapse, kMove } best = Best::kNone;
-  double best_after = 0.0;
-  for (int e = 0; e < 6; ++e)
-    if (flipper_.plan_edge_removal(mesh, t, e, kMargin, candidate_) && candidate_.worst_after > best_after &&
-        may_flip(mesh, candidate_)) {
-      plan_ = candidate_;
-      best_after = candidate_.worst_after;
-      best = Best::kFlip;
-    }
-  for (int f = 0; f < 4; ++f)
-    if (flipper_.plan_face_flip(mesh, t, f, kMargin, candidate_) && candidate_.worst_after > best_after &&
-        may_flip(mesh, candidate_)) {
-      plan_ = candidate_;
-      best_after = candidate_.worst_after;
-      best = Best::kFlip;
-    }
+Refusal Improver::admit(TetMesh& mesh, const Plan& plan, ImproveOutcome& out) {
+  Refusal verdict = region_rule(mesh, plan);
+  if (verdict == Refusal::kNone && veto_) {
+    verdict = veto_(mesh, plan);
+    out.vetoed += verdict != Refusal::kNone;
+  }
+  if (verdict != Refusal::kNone) count(out, verdict);
+  return verdict;
+}
+
+void Improver::offer(TetMesh& mesh, Refusal planned, ImproveOutcome& out) {
+  if (planned != Refusal::kNone) {
+    count(out, planned);
+    return;
+  }
+  if (!(candidate_.worst_after > best_after_)) return;  // made, but another lifts the tet more
+  if (admit(mesh, candidate_, out) != Refusal::kNone) return;
+  std::swap(best_, candidate_);
+  best_after_ = best_.worst_after;
+  has_best_ = true;
+}
+
+void Improver::apply(TetMesh& mesh, const Plan& plan) {
+  const std::size_t before = created_.size();
+  plan.apply(mesh, created_);
+  made_.insert(made_.end(), created_.begin() + static_cast<std::ptrdiff_t>(before), created_.end());
+}
+
+std::optional<Operator> Improver::improve_tet(TetMesh& mesh, TetId t, ImproveOutcome& out) {
+  // Every operation that would lift the tet, planned; the one whose worst tet ends best is
+  // applied (ties: the first offered: a flip, then a collapse, then a move).
+  best_after_ = 0.0;
+  has_best_ = false;
+  for (int e = 0; e < 6; ++e) offer(mesh, flipper_.plan_edge_removal(mesh, t, e, kMargin, candidate_), out);
+  for (int f = 0; f < 4; ++f) offer(mesh, flipper_.plan_face_flip(mesh, t, f, kMargin, candidate_), out);
   // A flip that lifts the tet well past the goal is taken as it is (the dearer plans below would
   // rarely beat it by much).
-  if (best_after >= 2.0 * goal_) {
-    Flipper::apply(mesh, plan_, created_);
-    made_.insert(made_.end(), created_.end() - static_cast<std::ptrdiff_t>(plan_.added_count), created_.end());
-    last_ = Operation::kFlip;
-    return true;
+  if (has_best_ && best_after_ >= 2.0 * goal_) {
+    apply(mesh, best_);
+    return best_.op;
   }
   const TetMesh::TetVerts corners = mesh.tet(t);
   for (VertId v : corners) {
-    if (!mesh.made_in_transaction(v) || !may_reshape_star(mesh, v)) continue;
+    if (const Refusal r = star_rule(mesh, v); r != Refusal::kNone) {
+      count(out, r);
+      continue;
+    }
     // Into any neighbour: v's going removes the tet whichever way it goes.
     mesh.vertex_neighbours(v, neighbours_, star_);
-    for (VertId w : neighbours_)
-      if (collapser_.plan(mesh, v, w, kMargin, best_after, collapse_candidate_)) {
-        std::swap(collapse_, collapse_candidate_);
-        best_after = collapse_.worst_after;
-        best = Best::kCollapse;
-      }
-    if (smoother_.plan(mesh, v, kMargin, tool_, smooth_candidate_) && smooth_candidate_.worst_after > best_after) {
-      smooth_ = smooth_candidate_;
-      best_after = smooth_.worst_after;
-      best = Best::kMove;
-    }
+    for (VertId w : neighbours_) offer(mesh, collapser_.plan(mesh, v, w, kMargin, best_after_, candidate_), out);
+    offer(mesh, smoother_.plan(mesh, v, kMargin, tool_, candidate_), out);
   }
-  const std::size_t before = created_.size();
-  switch (best) {
-    case Best::kNone:
-      if (!insert_on_longest_edge(mesh, t)) return false;
-      last_ = Operation::kInsert;
-      break;
-    case Best::kFlip: Flipper::apply(mesh, plan_, created_); last_ = Operation::kFlip; break;
-    case Best::kCollapse: Collapser::apply(mesh, collapse_, created_); last_ = Operation::kCollapse; break;
-    case Best::kMove: Smoother::apply(mesh, smooth_, created_); last_ = Operation::kMove; break;
+  if (!has_best_) {
+    if (!insert(mesh, t, out)) return std::nullopt;
+    return Operator::kInsertion;
   }
-  made_.insert(made_.end(), created_.begin() + static_cast<std::ptrdiff_t>(before), created_.end());
-  return true;
+  apply(mesh, best_);
+  return best_.op;
 }
 
-bool Improver::insert_on_longest_edge(TetMesh& mesh, TetId t) {
-  int longest = 0;
-  double length = -1.0;
-  const TetMesh::TetVerts v = mesh.tet(t);
-  for (int e = 0; e < 6; ++e)
-    if (const double l = norm(mesh.position(v[kEdgeVerts[e][1]]) - mesh.position(v[kEdgeVerts[e][0]])); l > length) {
-      length = l;
-      longest = e;
-    }
-  const Edge edge{v[kEdgeVerts[longest][0]], v[kEdgeVerts[longest][1]], t};
-  mesh.edge_shell(t, longest, star_);
-  double worst_before = 1.0;
-  for (TetId u : star_) worst_before = std::min(worst_before, quality(mesh, u));
+bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
   const TetMesh::Savepoint point = mesh.savepoint();
+  if (const Refusal r = inserter_.plan(mesh, t, insertion_); r != Refusal::kNone) {
+    count(out, r);
+    return false;
+  }
   const std::size_t before = created_.size();
-  if (!splitter_.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates, &created_).ok()) return false;
+  insertion_.apply(mesh, created_);
   const VertId midpoint = mesh.vertices_made_since(point).front().vertex;
-  if (may_reshape_star(mesh, midpoint) && smoother_.plan(mesh, midpoint, 0.0, tool_, smooth_candidate_))
-    Smoother::apply(mesh, smooth_candidate_, created_);
-  // The worst of the midpoint's star now (the split's children, moved).
+  if (const Refusal r = star_rule(mesh, midpoint); r != Refusal::kNone) {
+    count(out, r);
+  } else if (const Refusal s = smoother_.plan(mesh, midpoint, 0.0, tool_, candidate_); s != Refusal::kNone) {
+    count(out, s);
+  } else if (admit(mesh, candidate_, out) == Refusal::kNone) {
+    candidate_.apply(mesh, created_);
+  }
+  // The insertion as it ends: the midpoint's star, the split's halves, moved.
   mesh.vertex_shell(midpoint, star_);
-  double worst_after = 1.0;
-  for (TetId u : star_) worst_after = std::min(worst_after, quality(mesh, u));
-  if (worst_after > worst_before * (1.0 + kMargin)) return true;
+  insertion_.worst_after = worst_quality(mesh, star_);
+  if (!(insertion_.worst_after > insertion_.worst_before * (1.0 + kMargin))) {
+    count(out, Refusal::kNotBetter);
+  } else {
+    // Shown to the rules and the hook as it ends: the tets split, the new vertex's star where it
+    // now is.
+    insertion_.added.clear();
+    for (TetId u : star_) insertion_.added.push_back(mesh.tet(u));
+    insertion_.placed = midpoint;
+    insertion_.placed_at = mesh.position(midpoint);
+    if (admit(mesh, insertion_, out) == Refusal::kNone) {
+      made_.insert(made_.end(), created_.begin() + static_cast<std::ptrdiff_t>(before), created_.end());
+      return true;
+    }
+  }
   mesh.rollback_to(point);
   created_.resize(before);
   return false;
 }
 
+void Improver::remove_slivers(TetMesh& mesh, ImproveOutcome& out) {
+  for (TetId t : made_) {
+    if (!mesh.is_live(t) || quality(mesh, t) >= goal_) continue;
+    if (const Refusal r = plan_sliver_removal(mesh, t, tool_, *tissue_, candidate_); r != Refusal::kNone) {
+      count(out, r);
+      continue;
+    }
+    if (admit(mesh, candidate_, out) != Refusal::kNone) continue;
+    candidate_.apply(mesh, created_);
+    count_applied(out, Operator::kSliverRemoval);
+  }
+}
+
 void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operations) {
   // The checker compares with its own formula: aim a rounding above the floor.
-  const double goal = out.floor * (1.0 + 1e-9);
-  goal_ = goal;
+  goal_ = out.floor * (1.0 + 1e-9);
   for (bool progress = true; progress && operations < kMaxOperations;) {
     progress = false;
     // The made tets below the goal, worst first (ties by id: deterministic).
     bad_.clear();
     for (TetId t : made_)
       if (mesh.is_live(t))
-        if (const double q = quality(mesh, t); q < goal) bad_.push_back({q, t});
+        if (const double q = quality(mesh, t); q < goal_) bad_.push_back({q, t});
     if (bad_.empty()) break;
     std::sort(bad_.begin(), bad_.end());
-    for (const auto& [ratio, t] : bad_) {
-      if (!mesh.is_live(t) || quality(mesh, t) >= goal) continue;
-      if (!improve_tet(mesh, t)) continue;
+    for (const auto& [q, t] : bad_) {
+      if (!mesh.is_live(t) || quality(mesh, t) >= goal_) continue;
+      const std::optional<Operator> applied = improve_tet(mesh, t, out);
+      if (!applied) continue;
       progress = true;
-      (last_ == Operation::kFlip       ? out.flips
-       : last_ == Operation::kCollapse ? out.collapses
-       : last_ == Operation::kInsert   ? out.insertions
-                                       : out.moves) += 1;
+      count_applied(out, *applied);
       if (++operations == kMaxOperations) break;
     }
   }
   // Slivers left at the cut's surface go with the tissue (the header says when).
-  for (TetId t : made_) {
-    if (!mesh.is_live(t) || quality(mesh, t) >= goal || mesh.boundary_face_count(t) == 0) continue;
-    if (tool_) {
-      const TetMesh::TetVerts c = mesh.tet(t);
-      if (!intersects(*tool_, mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3]))) continue;
-    }
-    if (!removability(mesh, t).removable()) continue;
-    if (uncuttable_ && uncuttable_->contains(mesh, t)) continue;
-    tissue_->remove(mesh, std::span<const TetId>(&t, 1));
-    ++out.removed;
-  }
+  remove_slivers(mesh, out);
 }
 
-ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, double floor_f, bool improve,
-                             const Ball* reach, const UncuttableTets* uncuttable, TissueRemoval* tissue) {
+ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params) {
   ImproveOutcome out;
   host_quality_.clear();
-  tool_ = reach;
-  uncuttable_ = uncuttable;
-  tissue_ = tissue;
+  tool_ = params.reach;
+  uncuttable_ = params.uncuttable;
+  veto_ = params.veto;
+  tissue_ = params.tissue;
   if (!tissue_) {
     own_tissue_.begin(nullptr, 0.0);
     tissue_ = &own_tissue_;
@@ -251,12 +257,12 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, dou
   out.worst_before = out.worst_after = collect_made(mesh, start);
   if (made_.empty()) return out;
   // Every made tet at or above F is above min(F, any host): met, without locating the hosts.
-  if (out.worst_before >= floor_f) {
-    out.floor = floor_f;
+  if (out.worst_before >= params.floor) {
+    out.floor = params.floor;
     return out;
   }
-  out.floor = floor_of(mesh, floor_f);
-  if (improve) {
+  out.floor = floor_of(mesh, params.floor);
+  if (params.improve) {
     created_.clear();
     std::uint32_t operations = 0;
     // The floor is the hosts' of what the transaction made in the end: an operation that leaves
@@ -267,7 +273,7 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, dou
       // The made set again: flips replaced some made tets and some that were there before,
       // whose hosts now count too.
       out.worst_after = collect_made(mesh, start);
-      out.floor = floor_of(mesh, floor_f);
+      out.floor = floor_of(mesh, params.floor);
     }
   }
   out.met = out.worst_after >= out.floor * (1.0 + 1e-9);

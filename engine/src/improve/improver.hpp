@@ -4,20 +4,23 @@
 //
 // The floor is the checker's, computed the engine's way: a made tet's host is the tet that was
 // there before the transaction and holds it (its one ancestor in the journal after splits, the
-// ancestor containing its centroid after flips), and the worst host sets it. Then, worst made tet
-// first, the operations Klingner and Shewchuk's Stellar combines, each accepted only when the worst
-// tet it touches gets better:
-//   edge removal and the 2-3 flip (flips.hpp), the best of them on the tet's edges and faces;
+// ancestor containing its centroid after flips: core/host_location.hpp), and the worst host sets
+// it. Then, worst made tet first, the operations Klingner and Shewchuk's Stellar combines, every
+// one a Plan (operation.hpp) made on the const mesh and offered to the pass, which applies the
+// one whose worst new tet ends best, and only when it beats the worst tet it replaces:
+//   edge removal and the 2-3 flip (flips.hpp), on the tet's edges and faces;
 //   collapse of one of the tet's vertices that the transaction made into any neighbour
-//   (collapse.hpp), the best such;
+//   (collapse.hpp);
 //   smoothing of the tet's vertices that the transaction made (smoothing.hpp), never another;
-//   and when none of those lifts it, insertion: the tet's longest edge split at its midpoint
-//   (refine/edge_split.hpp: every tet around it halved), the new vertex smoothed, kept only
-//   when the worst tet of what was split ends better (else rolled back to a savepoint).
-// A made tet still below the floor after all that, on the surface, within the cut's reach (the
-// tool's ball grown by D_ref) and removable on its own (paper 3.3), goes with the tissue: a
-// sliver at the surface of the cut's making, the least tissue there is to remove. Reported
-// apart (ImproveOutcome::removed).
+//   and when none of those lifts it, insertion (insertion.hpp): the tet's longest edge split at
+//   its midpoint, the new vertex smoothed, kept only when the worst tet of what was split ends
+//   better (else rolled back to a savepoint).
+// A made tet still below the floor after all that, on the surface, within the cut's reach and
+// removable on its own, goes with the tissue (sliver_removal.hpp), reported apart
+// (ImproveOutcome::removed).
+// Every plan passes, after its operator's own tests, the run's rules (uncuttable tissue keeps
+// its region) and then the caller's hook (plan_veto.hpp), which may veto it; a plan refused for
+// any reason is not applied, and the outcome counts why.
 // The ops run inside the transaction: the journal records them (a flip's tets get every replaced
 // tet as parents, a moved vertex its barycentric origin), so a consumer still sees one net
 // change, and a rollback undoes them with the rest.
@@ -26,21 +29,42 @@
 // operation is O(its star), and a bound on the operations keeps a pathological cut from looping.
 #pragma once
 
+#include <array>
 #include <cstdint>
-#include <span>
+#include <optional>
+#include <utility>
 #include <vector>
 
-#include "improve/collapse.hpp"
 #include "core/tool_ball.hpp"
 #include "core/uncuttable_tets.hpp"
+#include "improve/collapse.hpp"
 #include "improve/flips.hpp"
+#include "improve/insertion.hpp"
+#include "improve/operation.hpp"
+#include "improve/plan_veto.hpp"
 #include "improve/smoothing.hpp"
-#include "refine/edge_split.hpp"
 #include "remove/tissue_removal.hpp"
 #include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::detail {
+
+// What one run works with.
+struct ImproveParams {
+  double floor = 0.1;  // F: a made tet must reach min(F, the worst of its hosts)
+  bool improve = true;  // false: the made tets are only measured against the floor
+  // The cut's ball grown by D_ref (none for a removal request), where a sliver may go with the
+  // tissue and the cut's surface may move within its tolerance.
+  const Ball* reach = nullptr;
+  // Tets the pass must leave as a region (uncuttable_tets.hpp): it flips only among tets all or
+  // none of which are uncuttable, moves and collapses no vertex of one, and removes none.
+  const UncuttableTets* uncuttable = nullptr;
+  // The transaction's removal path (remove/tissue_removal.hpp), through which the slivers go and
+  // are tallied with the rest of what it took (none: one of the Improver's own, untallied).
+  TissueRemoval* tissue = nullptr;
+  // The caller's say over every plan the pass would apply (empty: none).
+  PlanVeto veto{};
+};
 
 struct ImproveOutcome {
   double floor = 1.0;         // min(F, worst host): the quality every made tet must reach (F
@@ -49,6 +73,10 @@ struct ImproveOutcome {
   double worst_after = 1.0;   // and after: the worst tet the transaction made
   std::uint32_t flips = 0, collapses = 0, moves = 0, insertions = 0;
   std::uint32_t removed = 0;  // slivers removed with the tissue
+  std::uint32_t vetoed = 0;   // plans the caller's hook vetoed
+  // Plans refused, by Refusal (the hook's included): a plan that was made but lifted the tet less
+  // than another is not refused, only not chosen.
+  std::array<std::uint32_t, kRefusalCount> refused{};
   bool met = true;            // every made tet at or above the floor
 };
 
@@ -57,53 +85,56 @@ class Improver {
   // Working sizes for meshes up to `tets` tet ids, allocated and touched now.
   void reserve(std::uint32_t tets);
   // The tets the open transaction made since `start` (and still has) against min(F, worst host);
-  // improved when `improve`, only measured otherwise.
-  // `reach`: the cut's ball grown by D_ref (none for a removal request), where a sliver may go
-  // with the tissue and the cut's surface may move within its tolerance.
-  // `uncuttable`: tets the pass must leave as a region (uncuttable_tets.hpp): it flips only among
-  // tets all or none of which are uncuttable, moves and collapses no vertex of one, and removes
-  // none.
-  // `tissue`: the transaction's removal path, through which the slivers go (none: removed
-  // through one of the Improver's own, untallied).
-  ImproveOutcome run(TetMesh& mesh, const TetMesh::Savepoint& start, double floor_f, bool improve,
-                     const Ball* reach = nullptr, const UncuttableTets* uncuttable = nullptr,
-                     TissueRemoval* tissue = nullptr);
+  // improved when params.improve, only measured otherwise.
+  ImproveOutcome run(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params);
 
  private:
-  // The made tets still live into made_; their worst radius ratio.
+  // The made tets still live into made_; their worst quality.
   double collect_made(TetMesh& mesh, const TetMesh::Savepoint& start);
   // min(F, the worst host of made_).
   double floor_of(TetMesh& mesh, double floor_f);
   // Operations on the made tets below out.floor, worst first, until none helps (counted in
   // `out`, at most kMaxOperations in all), then the slivers that go with the tissue.
   void lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operations);
-  // One operation that lifts tet t, applied; false when none does.
-  bool improve_tet(TetMesh& mesh, TetId t);
-  // Insertion at the midpoint of t's longest edge, kept when it lifts the worst tet around it.
-  bool insert_on_longest_edge(TetMesh& mesh, TetId t);
-  // Whether the operations may reshape v's star (move v, collapse v): none of its tets is
-  // uncuttable. A flip keeps the polytope it replaces, so it only needs tets of one kind.
-  bool may_reshape_star(TetMesh& mesh, VertId v);
-  bool may_flip(TetMesh& mesh, const FlipPlan& plan) const;
+  // The operation that lifts tet t most, applied: which one, or none when nothing lifts it.
+  std::optional<Operator> improve_tet(TetMesh& mesh, TetId t, ImproveOutcome& out);
+  // candidate_, just planned (`planned`: kNone, or why not), becomes best_ when it lifts the tet
+  // more than best_ does and admit() lets it through.
+  void offer(TetMesh& mesh, Refusal planned, ImproveOutcome& out);
+  // The run's rules, then the caller's hook, on a plan its operator made; a refusal is counted.
+  Refusal admit(TetMesh& mesh, const Plan& plan, ImproveOutcome& out);
+  // Uncuttable tissue keeps its region: a flip retriangulates the polytope it replaces, so it only
+  // needs tets of one kind; a split child lies in its parent; the other plans touch none.
+  Refusal region_rule(TetMesh& mesh, const Plan& plan) const;
+  // Whether the operations may reshape v's star (move v, collapse v): kNone when v was made by
+  // the transaction and none of its tets is uncuttable, else why not. Asked before planning.
+  Refusal star_rule(TetMesh& mesh, VertId v);
+  // Insertion on t's longest edge, with its new vertex smoothed: kept when it lifts the worst
+  // tet around the edge and the hook lets it through, else rolled back.
+  bool insert(TetMesh& mesh, TetId t, ImproveOutcome& out);
+  // The made tets still below the floor that go with the tissue.
+  void remove_slivers(TetMesh& mesh, ImproveOutcome& out);
+  // Applies an admitted plan; what it made joins made_.
+  void apply(TetMesh& mesh, const Plan& plan);
 
   Flipper flipper_;
   Collapser collapser_;
   Smoother smoother_;
-  CollapsePlan collapse_, collapse_candidate_;
-  SmoothPlan smooth_, smooth_candidate_;
+  Inserter inserter_;
+  // The best plan so far for the tet being improved, the plan being offered, and an insertion's.
+  Plan best_, candidate_, insertion_;
+  double best_after_ = 0.0;  // best_.worst_after, 0 while there is no best_
+  bool has_best_ = false;
   std::vector<TetId> star_;
   std::vector<VertId> neighbours_;
-  EdgeSplitter splitter_;
-  enum class Operation : std::uint8_t { kFlip, kCollapse, kMove, kInsert };
-  Operation last_ = Operation::kFlip;  // what improve_tet() applied
   double goal_ = 0.0;                  // the run's floor, a rounding above
   const Ball* tool_ = nullptr;         // the run's reach, if a cut
   const UncuttableTets* uncuttable_ = nullptr;  // the run's, if any
   TissueRemoval* tissue_ = nullptr;             // the run's removal path
   TissueRemoval own_tissue_;
-  FlipPlan plan_, candidate_;
+  PlanVeto veto_;                               // the run's, if any
   std::vector<TetId> made_, ancestors_, created_;
-  std::vector<std::pair<double, TetId>> bad_;  // (radius ratio, tet), worst first
+  std::vector<std::pair<double, TetId>> bad_;  // (quality, tet), worst first
   StampedMap<TetId, double> host_quality_;
 };
 

@@ -34,9 +34,9 @@ double Smoother::evaluate(const Vec3& p, double floor) const {
   for (const StarTet& t : star_) {
     std::array<Vec3, 4> c = t.corners;
     c[static_cast<std::size_t>(t.slot)] = p;
-    // The ratio first (cheap): a tet at or below the floor ends the evaluation; the exact
+    // The quality first (cheap): a tet at or below the floor ends the evaluation; the exact
     // orientation only for a candidate still in the running.
-    const double r = radius_ratio(c[0], c[1], c[2], c[3]);
+    const double r = quality(c[0], c[1], c[2], c[3]);
     if (r <= floor) return r;
     q = std::min(q, r);
   }
@@ -53,7 +53,7 @@ Vec3 Smoother::gradient(std::size_t i, const Vec3& p, int dims, double h) const 
   auto ratio_at = [&](const Vec3& x) {
     std::array<Vec3, 4> c = t.corners;
     c[static_cast<std::size_t>(t.slot)] = x;
-    return radius_ratio(c[0], c[1], c[2], c[3]);
+    return quality(c[0], c[1], c[2], c[3]);
   };
   Vec3 g{};
   for (int k = 0; k < dims; ++k) {
@@ -121,10 +121,11 @@ int Smoother::constraint(const TetMesh& mesh, VertId v, const Ball* tool) {
   return norm(basis_[0]) > 0.0 ? 1 : 0;
 }
 
-bool Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, SmoothPlan& plan) {
+Refusal Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, Plan& plan) {
+  plan.start(Operator::kSmoothing);
   mesh.vertex_shell(v, shell_);
   const int dims = constraint(mesh, v, tool);
-  if (dims == 0) return false;
+  if (dims == 0) return Refusal::kSurfaceConstraint;
   star_.clear();
   double shortest = 0.0;
   for (TetId t : shell_) {
@@ -153,7 +154,7 @@ bool Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* to
     for (std::size_t i = 0; i < star_.size(); ++i) {
       std::array<Vec3, 4> c = star_[i].corners;
       c[static_cast<std::size_t>(star_[i].slot)] = p;
-      if (radius_ratio(c[0], c[1], c[2], c[3]) <= q * 1.02) active_.push_back(gradient(i, p, dims, h));
+      if (quality(c[0], c[1], c[2], c[3]) <= q * 1.02) active_.push_back(gradient(i, p, dims, h));
       if (active_.size() == kMaxActive) break;
     }
     Vec3 direction{};
@@ -191,11 +192,15 @@ bool Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* to
     }
     if (!moved) break;
   }
-  plan.vertex = v;
-  plan.to = p;
+  plan.placed = v;
+  plan.placed_at = p;
   plan.worst_before = q_start;
   plan.worst_after = q;
-  return q > q_start * (1.0 + margin);
+  if (!(q > q_start * (1.0 + margin))) return Refusal::kNotBetter;
+  // The star, as it goes and as it comes back around v's new position.
+  plan.removed.assign(shell_.begin(), shell_.end());
+  for (TetId t : shell_) plan.added.push_back(mesh.tet(t));
+  return Refusal::kNone;
 }
 
 }  // namespace tetcut::detail

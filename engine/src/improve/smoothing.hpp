@@ -1,5 +1,5 @@
-// Smoothing of the vertices a cut made: moving one vertex to raise the worst radius ratio of the
-// tets around it (optimization-based smoothing: Freitag, Jones and Plassmann 1995, as Klingner and
+// Smoothing of the vertices a cut made: moving one vertex to raise the worst quality() (core/
+// quality.hpp) of the tets around it (optimization-based smoothing: Freitag, Jones and Plassmann 1995, as Klingner and
 // Shewchuk's Stellar uses it, reduced to its core: a direction that raises every tet of the star
 // within a few per cent of the worst one (the active set), a backtracking line search, accepted
 // only when the worst tet of the star improves and every tet stays positive by the exact
@@ -22,39 +22,32 @@
 #include <vector>
 
 #include "core/tool_ball.hpp"
+#include "improve/operation.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::detail {
 
 inline constexpr double kCutSurfaceTolerance = 0.05;
 
-struct SmoothPlan {
-  VertId vertex;
-  Vec3 to;
-  double worst_before = 0.0, worst_after = 0.0;  // of v's star
-};
-
 class Smoother {
  public:
   void reserve();
-  // Where to move v (made in the open transaction) so that the worst radius ratio of its star
-  // rises by more than the relative `margin`; false when nowhere found does.
-  // `reach`: the cut's reach, where the cut's own surface may move within the tolerance.
-  bool plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, SmoothPlan& plan);
-  // The star's tets are made anew (TetMesh::move_vertex): their ids appended to `created`.
-  static void apply(TetMesh& mesh, const SmoothPlan& plan, std::vector<TetId>& created) {
-    mesh.move_vertex(plan.vertex, plan.to, &created);
-  }
+  // Where to move v (made in the open transaction) so that the worst quality() of its star
+  // rises by more than the relative `margin` (Operator::kSmoothing: v's star removed and added
+  // again, v placed at its new position); kNotBetter when nowhere found does, kSurfaceConstraint
+  // when v may not move at all.
+  // `tool`: the cut's reach, where the cut's own surface may move within the tolerance.
+  [[nodiscard]] Refusal plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, Plan& plan);
 
  private:
   struct StarTet {
     std::array<Vec3, 4> corners;  // v's slot holds its current position
     int slot;
   };
-  // The worst radius ratio of the star with v at p (-1 when a tet is not positive); stops at the
-  // first tet not above `floor` (what a candidate must beat) and returns its ratio.
+  // The worst quality() of the star with v at p (-1 when a tet is not positive); stops at the
+  // first tet not above `floor` (what a candidate must beat) and returns its quality.
   double evaluate(const Vec3& p, double floor = -1.0) const;
-  // The gradient of star tet i's radius ratio at p, projected on the directions v may take.
+  // The gradient of star tet i's quality() at p, projected on the directions v may take.
   Vec3 gradient(std::size_t i, const Vec3& p, int dims, double h) const;
   // The directions v may move in: 3 (interior, or the cut's surface within the tolerance), 2 (a
   // plane), 1 (a line) or 0.

@@ -1,0 +1,22 @@
+#include "improve/sliver_removal.hpp"
+
+#include "core/quality.hpp"
+#include "remove/removability.hpp"
+
+namespace tetcut::detail {
+
+Refusal plan_sliver_removal(const TetMesh& mesh, TetId t, const Ball* reach, TissueRemoval& tissue, Plan& plan) {
+  plan.start(Operator::kSliverRemoval);
+  // Inside the organ it would open a cavity: only a tet with a face on the surface goes.
+  if (mesh.boundary_face_count(t) == 0) return Refusal::kNotRemovable;
+  const TetMesh::TetVerts c = mesh.tet(t);
+  if (reach && !intersects(*reach, mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3])))
+    return Refusal::kOutOfReach;
+  if (!removability(mesh, t).removable()) return Refusal::kNotRemovable;
+  plan.removed.push_back(t);
+  plan.tissue = &tissue;
+  plan.worst_before = quality(mesh, c);
+  return Refusal::kNone;
+}
+
+}  // namespace tetcut::detail
