@@ -124,6 +124,7 @@ std::uint32_t Refiner::add_shell_edges(const TetMesh& mesh, double p) {
 
 RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, const RefineParams& params,
                              std::vector<TetId>& region) {
+  if (params.rule == RefinementRule::kGraded) return graded_.refine(mesh, initial, params, region, splitter_);
   RefineReport report;
   region.assign(initial.begin(), initial.end());
   current_.assign(initial.begin(), initial.end());
@@ -168,6 +169,7 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
 void Refiner::reserve(std::uint32_t tets) {
   using detail::reserve_touched;
   splitter_.reserve(tets);
+  graded_.reserve(tets);
   born_.reserve(tets);
   reserve_touched(current_, 4096);
   reserve_touched(created_, 4096);
