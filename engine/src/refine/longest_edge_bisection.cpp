@@ -86,12 +86,10 @@ RefineReport LongestEdgeBisection::refine(TetMesh& mesh, std::span<const TetId> 
         parents_.push_back({std::min(c, d), std::max(c, d), target_.contains(u)});
         if (born_.contains(u)) ++born_parents;
       }
-      // After the bisection: net + children - born_parents, which must stay within the budget.
-      const std::uint64_t allowed =
-          params.max_tets_created - std::min<std::uint64_t>(net, params.max_tets_created) + born_parents;
       const Edge split_edge{VertId{edge.lo}, VertId{edge.hi}, edge.tet};
       created_.clear();
-      const SplitResult split = splitter.split(mesh, std::span(&split_edge, 1), SplitMethod::kBisection, &created_, allowed);
+      const SplitResult split = splitter.split(mesh, std::span(&split_edge, 1), SplitMethod::kBisection, &created_,
+                                               children_allowed(params, net, born_parents));
       if (!split.ok()) {
         report.refusal = split.refusal;
         break;
@@ -123,18 +121,12 @@ RefineReport LongestEdgeBisection::refine(TetMesh& mesh, std::span<const TetId> 
         queue_.push_back(child);
       }
       net = net + split.tets_created - born_parents;
-      report.net_tets_created = static_cast<std::uint32_t>(net);
-      ++report.iterations;
-      report.edges_split += split.edges_split;
-      report.tets_created += split.tets_created;
-      report.tets_removed += split.tets_removed;
+      count_split(report, split, net);
       if (params.measure_quality) report.min_radius_ratio = std::min(report.min_radius_ratio, min_radius_ratio(mesh, created_));
       region.insert(region.end(), created_.begin(), created_.end());
     }
   }
-  std::sort(region.begin(), region.end());
-  region.erase(std::unique(region.begin(), region.end()), region.end());
-  region.erase(std::remove_if(region.begin(), region.end(), [&](TetId t) { return !mesh.is_live(t); }), region.end());
+  finish_region(mesh, region);
   return report;
 }
 

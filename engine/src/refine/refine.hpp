@@ -92,6 +92,15 @@ struct RefineReport {
   std::uint32_t paths_cut_short = 0;
 };
 
+// What both rules share (refine.cpp, longest_edge_bisection.cpp):
+// the children a split may plan when `net` tets this call made are live and `born_parents` of the
+// split's parents are among them, so that net + children - born_parents stays within the budget;
+std::uint64_t children_allowed(const RefineParams& params, std::uint64_t net, std::uint32_t born_parents);
+// an applied split in the report, `net` the tets this call made still live after it;
+void count_split(RefineReport& report, const SplitResult& split, std::uint64_t net);
+// the region as Refiner::refine returns it: live, distinct, sorted by id.
+void finish_region(const TetMesh& mesh, std::vector<TetId>& region);
+
 class Refiner {
  public:
   // Refines around `initial` (live tet ids). Afterwards `region` holds the live tets among the
