@@ -15,19 +15,20 @@
 // CutParams (combined, the improvement pass on, floor 0.1) and the refinement rule asked for.
 //
 // After every cut the independent checker runs on what it changed, with I7's no-degradation rule at
-// the cut's floor (scenario::transaction_check_options), and measures the created tets
-// (invariants::quality_of). Per mesh and tool: cuts made and refused (a cut the pass cannot lift
-// to the floor is refused and leaves the mesh as it was), checker violations, cuts that left a
-// tet meeting the tool with an edge over D_ref (the selection's bound, paper 3.3), cuts that
-// allocated, the input's worst radius ratio, the goal min(0.1, that), the worst created radius
-// ratio and dihedral angle, the tets one cut created (p99, max: net, ok cuts), and the cut times
-// (p50, p99, max: every cut that met the mesh, the refused ones included, since a refusal costs
-// its attempt).
+// the cut's floor and I10, the tissue rule, with its tool (scenario::cut_check_options), and
+// measures the created tets (invariants::quality_of). Per mesh and tool: cuts made and refused, by
+// reason (a refused cut leaves the mesh as it was: the quality floor the pass cannot lift a
+// created tet to, the tissue rule, the tet budget, a degenerate split), checker violations, cuts
+// that left tissue in the tool (CutReport::left_in_tool), cuts that allocated, the input's worst
+// radius ratio, the goal min(0.1, that), the worst created radius ratio and dihedral angle, the
+// tets one cut created (p99, max: net, ok cuts), and the cut times (p50, p99, max: every cut that
+// met the mesh, the refused ones included, since a refusal costs its attempt).
 //
 // Deterministic but for the times: the meshers are seeded, and so are the chords (SplitMix64).
 // Exit 0; 1 when the checker objected to a cut or a created tet is below its goal; 2 on bad
 // arguments or a mesher failure.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -42,10 +43,8 @@
 
 #include "bench_meshes.hpp"
 #include "core/random.hpp"
-#include "core/tool_ball.hpp"
 #include "counting_allocator.hpp"
 #include "tetcut/cut.hpp"
-#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/generators/liver.hpp"
 #include "tetcut/generators/shapes.hpp"
 #include "tetcut/invariants/check.hpp"
@@ -96,8 +95,9 @@ struct Row {
   std::uint32_t tets = 0;
   double input_worst = 1, goal = 0.1;
   std::uint64_t cuts = 0, refused = 0, violations = 0, max_created = 0;
-  std::uint64_t long_in_tool = 0;  // ok cuts leaving a tet meeting the tool with an edge over D_ref
+  std::uint64_t left = 0;          // ok cuts that left tissue in the tool (CutReport::left_in_tool)
   std::uint64_t allocating = 0;    // cuts that allocated on the heap
+  std::array<std::uint64_t, tetcut::kCutRefusals> refused_by{};  // by CutRefusal
   inv::QualityStats created;
   std::vector<double> cut_us;      // every cut that met the mesh, refused ones included
   std::vector<double> made;        // net tets created, per ok cut
@@ -109,14 +109,16 @@ double max_of(const std::vector<double>& values) {
   return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
 }
 
-// Whether a tet the cut made meets the tool with an edge longer than D_ref. Only made tets can:
-// a tet there before the cut that meets the tool was refined unless its edges were within D_ref.
-bool long_in_tool(const TetMesh& mesh, tetcut::TetId t, const tetcut::Ball& tool, double d_ref) {
-  if (!tetcut::tet_meets_ball(mesh, t, tool)) return false;
-  for (int e = 0; e < 6; ++e)
-    if (norm(mesh.position(mesh.vertex(t, tetcut::kEdgeVerts[e][1])) - mesh.position(mesh.vertex(t, tetcut::kEdgeVerts[e][0]))) > d_ref)
-      return true;
-  return false;
+// The refusals by reason, the common ones first: "floor 12, tissue 3".
+std::string refusal_reasons(const Row& row) {
+  std::string out;
+  for (int k = 1; k < tetcut::kCutRefusals; ++k) {
+    if (row.refused_by[static_cast<std::size_t>(k)] == 0) continue;
+    if (!out.empty()) out += ", ";
+    out += std::string(tetcut::to_string(static_cast<tetcut::CutRefusal>(k))) + " " +
+           std::to_string(row.refused_by[static_cast<std::size_t>(k)]);
+  }
+  return out;
 }
 
 double median_edge(const TetMesh& mesh) {
@@ -143,12 +145,7 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
     return Vec3{box.lo.x + rng.unit() * (box.hi.x - box.lo.x), box.lo.y + rng.unit() * (box.hi.y - box.lo.y),
                 box.lo.z + rng.unit() * (box.hi.z - box.lo.z)};
   };
-  tetcut::CutParams params{.tool_diameter = tool.diameter, .refinement = rule};
-  // A cut the pass cannot lift is refused, not tried again at a coarser D_ref whose tissue rule
-  // is not the user's: the refusals are the rule's own.
-  params.coarser_retries = 0;
-  const double d_ref = params.d_ref_factor * params.tool_diameter;
-  const inv::CheckOptions check = tetcut::scenario::transaction_check_options(params);
+  const tetcut::CutParams params{.tool_diameter = tool.diameter, .refinement = rule};
   for (int s = 0; s < sweeps; ++s) {
     TetMesh mesh = base;
     tetcut::Cutter cutter(mesh, params);
@@ -163,18 +160,18 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
       if (r.tets_hit > 0) row.cut_us.push_back(r.time.total_us);
       if (!r.ok) {
         if (row.refused++ == 0) row.first_refusal = r.failure;
+        ++row.refused_by[static_cast<std::size_t>(r.refusal)];
         continue;
       }
       if (r.tets_hit == 0) continue;  // the tool in the air: not a cut
       ++row.cuts;
       row.made.push_back(r.tets_created);
       row.max_created = std::max<std::uint64_t>(row.max_created, r.tets_created);
-      const tetcut::Ball ball{centre, tool.diameter / 2};
-      row.long_in_tool += std::any_of(cutter.last_created().begin(), cutter.last_created().end(),
-                                      [&](tetcut::TetId t) { return long_in_tool(mesh, t, ball, d_ref); });
+      row.left += r.left_in_tool > 0 ? 1 : 0;
       inv::pool(row.created, inv::quality_of(mesh.raw_view(), cutter.last_created()));
-      const inv::CheckReport report = local.after_operation(mesh.raw_view(), cutter.last_removed(),
-                                                            cutter.last_created(), check);
+      const inv::CheckReport report =
+          local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(),
+                                tetcut::scenario::cut_check_options(params, centre, cutter.last_left_in_tool()));
       if (!report.ok() && row.violations++ == 0) row.first_violation = inv::to_string(report);
     }
   }
@@ -189,19 +186,21 @@ std::string figure(double value, const char* format) {
 
 void print(const std::vector<Row>& rows) {
   std::printf("%-13s %-6s %-6s %8s %6s %6s %7s %5s %5s %5s %7s %6s %7s %7s %7s %7s %9s %9s %9s\n", "mesh", "rule", "tool",
-              "diameter", "tets", "cuts", "refused", "viol.", "long", "alloc", "input", "goal", "worst", "min dih",
+              "diameter", "tets", "cuts", "refused", "viol.", "left", "alloc", "input", "goal", "worst", "min dih",
               "made p99", "max", "p50 us", "p99 us", "max us");
   for (const Row& r : rows)
     std::printf("%-13s %-6s %-6s %8.3g %6u %6llu %7llu %5llu %5llu %5llu %7.3g %6.3g %7s %7s %7.0f %7llu %9.1f %9.1f %9.1f%s\n",
                 r.mesh.c_str(), r.refinement.c_str(), r.tool.c_str(), r.diameter, r.tets,
                 static_cast<unsigned long long>(r.cuts), static_cast<unsigned long long>(r.refused),
-                static_cast<unsigned long long>(r.violations), static_cast<unsigned long long>(r.long_in_tool),
+                static_cast<unsigned long long>(r.violations), static_cast<unsigned long long>(r.left),
                 static_cast<unsigned long long>(r.allocating), r.input_worst, r.goal,
                 r.created.tets ? figure(r.created.min_radius_ratio, "%.3g").c_str() : "-",
                 r.created.tets ? figure(r.created.min_dihedral_deg, "%.1f").c_str() : "-",
                 tetcut::percentile(r.made, 0.99), static_cast<unsigned long long>(r.max_created),
                 tetcut::percentile(r.cut_us, 0.5), tetcut::percentile(r.cut_us, 0.99), max_of(r.cut_us),
                 r.goal_met() ? "" : "  BELOW GOAL");
+  for (const Row& r : rows)
+    if (r.refused) std::printf("%s, %s: refused %s\n", r.mesh.c_str(), r.tool.c_str(), refusal_reasons(r).c_str());
   for (const Row& r : rows)
     if (r.violations) std::printf("%s, %s: %s\n", r.mesh.c_str(), r.tool.c_str(), r.first_violation.c_str());
 }
@@ -219,7 +218,7 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
                           {"cuts", r.cuts},
                           {"refused", r.refused},
                           {"checker_violations", r.violations},
-                          {"long_edge_in_tool_cuts", r.long_in_tool},
+                          {"cuts_leaving_tissue", r.left},
                           {"allocating_cuts", r.allocating},
                           {"input_worst_radius_ratio", r.input_worst},
                           {"goal", r.goal},
@@ -234,7 +233,14 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
       row["worst_created_radius_ratio"] = r.created.min_radius_ratio;
       row["worst_created_min_dihedral_deg"] = r.created.min_dihedral_deg;
     }
-    if (r.refused) row["first_refusal"] = r.first_refusal;
+    if (r.refused) {
+      row["first_refusal"] = r.first_refusal;
+      nlohmann::json reasons = nlohmann::json::object();
+      for (int k = 1; k < tetcut::kCutRefusals; ++k)
+        if (r.refused_by[static_cast<std::size_t>(k)])
+          reasons[tetcut::to_string(static_cast<tetcut::CutRefusal>(k))] = r.refused_by[static_cast<std::size_t>(k)];
+      row["refusals"] = std::move(reasons);
+    }
     if (r.violations) row["first_violation"] = r.first_violation;
     out_rows.push_back(std::move(row));
   }
