@@ -3,8 +3,8 @@
 // volume, created tets not much worse than the ones they replace, the same bits every run, the
 // budget) and inside a Cutter (cuts that keep the checker's rules, a refused cut rolled back).
 //
-// COST: 1.1 s of CPU in Release, 2.7 s under ASan (3.5 s and 9 s of wall time on the 2-core
-// machine at load 10); the fine sweep with the checker after every cut is half of it.
+// COST: 1.0 s of CPU in Release, 3.0 s under ASan (1.5 s and 5.1 s of wall time on the 2-core
+// machine at load 6); the fine sweep with the checker after every cut is half of it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
