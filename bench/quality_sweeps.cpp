@@ -1,33 +1,40 @@
 // tetcut_quality_sweeps: random cautery sweeps on meshes tetcut did not write, and the shape of
-// the tets the cuts create (issue 29, item 4's sweeps).
+// the tets the cuts create, under either refinement rule.
 //
-//   tetcut_quality_sweeps [--sweeps N] [--seed S] [--only NAME] [--json FILE]
+//   tetcut_quality_sweeps [--sweeps N] [--seed S] [--only MESH] [--tool TOOL]
+//                         [--refinement paper|graded] [--json FILE]
 //
 // The meshes come from other meshers at other densities: TetGen (through tools/generators) fills
 // a box at three densities, one without TetGen's quality bound (its plain Delaunay
-// tetrahedralization of the box's points), and a cylinder; CGAL Mesh_3 makes a liver of about 6,000 tets from Debian's
-// liver image; and the bundled 16k liver (also Mesh_3). On each mesh, for each tool (4, 8 and
-// 12 % of the bounding box's diagonal, and a fine tool a tenth of the median edge, a fine cautery
-// on a coarse mesh), N sweeps along random chords of the bounding box, one cut every half tool
-// diameter, each sweep on a fresh copy of the mesh, with the default CutParams (combined, the
-// improvement pass on, floor 0.1).
+// tetrahedralization of the box's points), a cylinder and an icosphere (a curved boundary of even
+// density); CGAL Mesh_3 makes a liver of about 6,000 tets from Debian's liver image; and the
+// bundled 16k liver (also Mesh_3). On each mesh, for each tool (4, 8 and 12 % of the bounding
+// box's diagonal, and 0.05, 0.1, 0.3, 1 and 3 times the median edge: a fine cautery on a coarse
+// mesh up to a coarse one on a fine mesh), N sweeps along random chords of the bounding box, one
+// cut every half tool diameter, each sweep on a fresh copy of the mesh, with the default
+// CutParams (combined, the improvement pass on, floor 0.1) and the refinement rule asked for.
 //
 // After every cut the independent checker runs on what it changed, with I7's no-degradation rule at
-// the cut's floor (scenario::transaction_check_options), and measures the created tets
-// (invariants::quality_of). Per mesh and tool: cuts made and refused (a cut the pass cannot lift
-// to the floor is refused and leaves the mesh as it was), checker violations, the input's worst
+// the cut's floor and I10, the tissue rule, with its tool (scenario::cut_check_options), and
+// measures the created tets (invariants::quality_of). Per mesh and tool: cuts made and refused, by
+// reason (a refused cut leaves the mesh as it was: the quality floor the pass cannot lift a
+// created tet to, the tissue rule, the tet budget, a degenerate split), checker violations, cuts
+// that left tissue in the tool (CutReport::left_in_tool), cuts that allocated, the input's worst
 // radius ratio, the goal min(0.1, that), the worst created radius ratio and dihedral angle, the
-// most tets one cut created, and the cut times' p50 and p99.
+// tets one cut created (p99, max: net, ok cuts), and the cut times (p50, p99, max: every cut that
+// met the mesh, the refused ones included, since a refusal costs its attempt).
 //
 // Deterministic but for the times: the meshers are seeded, and so are the chords (SplitMix64).
 // Exit 0; 1 when the checker objected to a cut or a created tet is below its goal; 2 on bad
 // arguments or a mesher failure.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +43,7 @@
 
 #include "bench_meshes.hpp"
 #include "core/random.hpp"
+#include "counting_allocator.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/generators/liver.hpp"
 #include "tetcut/generators/shapes.hpp"
@@ -66,6 +74,10 @@ std::vector<SourceMesh> source_meshes() {
        [] { return gen::generate_box({.spacing = 0.15, .radius_edge_ratio = 0.0, .min_dihedral_deg = 0.0}); }},
       {"cylinder", "TetGen, radius 1, height 4, 24 sides",
        [] { return gen::generate_cylinder({.segments = 24}); }},
+      // The icosphere of 2 subdivisions (320 triangles, edges about 0.3) filled with tets of that
+      // size: 5,754 tets (TetGen's default volume bound for it gives 3,088).
+      {"sphere", "TetGen, icosphere of 2 subdivisions, -a0.0042",
+       [] { return gen::generate_sphere({.subdivisions = 2, .max_volume = 0.0042}); }},
       {"liver-6k", "CGAL Mesh_3, about 6,000 tets",
        [] { return gen::generate_liver({.cell_size = gen::liver_cell_size_for_tets(6000)}); }},
       {"liver-16k", "CGAL Mesh_3, the bundled liver.msh", {}},
@@ -78,16 +90,36 @@ struct Tool {
 };
 
 struct Row {
-  std::string mesh, made_by, tool;
+  std::string mesh, made_by, tool, refinement;
   double diameter = 0;
   std::uint32_t tets = 0;
   double input_worst = 1, goal = 0.1;
   std::uint64_t cuts = 0, refused = 0, violations = 0, max_created = 0;
+  std::uint64_t left = 0;          // ok cuts that left tissue in the tool (CutReport::left_in_tool)
+  std::uint64_t allocating = 0;    // cuts that allocated on the heap
+  std::array<std::uint64_t, tetcut::kCutRefusals> refused_by{};  // by CutRefusal
   inv::QualityStats created;
-  std::vector<double> cut_us;
+  std::vector<double> cut_us;      // every cut that met the mesh, refused ones included
+  std::vector<double> made;        // net tets created, per ok cut
   std::string first_violation, first_refusal;
   [[nodiscard]] bool goal_met() const { return created.tets == 0 || created.min_radius_ratio >= goal; }
 };
+
+double max_of(const std::vector<double>& values) {
+  return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
+}
+
+// The refusals by reason, the common ones first: "floor 12, tissue 3".
+std::string refusal_reasons(const Row& row) {
+  std::string out;
+  for (int k = 1; k < tetcut::kCutRefusals; ++k) {
+    if (row.refused_by[static_cast<std::size_t>(k)] == 0) continue;
+    if (!out.empty()) out += ", ";
+    out += std::string(tetcut::to_string(static_cast<tetcut::CutRefusal>(k))) + " " +
+           std::to_string(row.refused_by[static_cast<std::size_t>(k)]);
+  }
+  return out;
+}
 
 double median_edge(const TetMesh& mesh) {
   std::vector<double> lengths;
@@ -100,9 +132,10 @@ double median_edge(const TetMesh& mesh) {
   return tetcut::percentile(lengths, 0.5);  // each interior edge once per tet around it: a weighted median
 }
 
-Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int sweeps, std::uint64_t seed) {
-  Row row{.mesh = source.name, .made_by = source.made_by, .tool = tool.name, .diameter = tool.diameter,
-          .tets = base.num_tets()};
+Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int sweeps, std::uint64_t seed,
+          tetcut::RefinementRule rule) {
+  Row row{.mesh = source.name, .made_by = source.made_by, .tool = tool.name, .refinement = tetcut::to_string(rule),
+          .diameter = tool.diameter, .tets = base.num_tets()};
   const inv::QualityStats input = inv::check_mesh(base.raw_view()).quality;
   row.input_worst = input.min_radius_ratio;
   row.goal = std::min(0.1, row.input_worst);
@@ -112,8 +145,7 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
     return Vec3{box.lo.x + rng.unit() * (box.hi.x - box.lo.x), box.lo.y + rng.unit() * (box.hi.y - box.lo.y),
                 box.lo.z + rng.unit() * (box.hi.z - box.lo.z)};
   };
-  const tetcut::CutParams params{.tool_diameter = tool.diameter};
-  const inv::CheckOptions check = tetcut::scenario::transaction_check_options(params);
+  const tetcut::CutParams params{.tool_diameter = tool.diameter, .refinement = rule};
   for (int s = 0; s < sweeps; ++s) {
     TetMesh mesh = base;
     tetcut::Cutter cutter(mesh, params);
@@ -122,18 +154,24 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
     const auto steps = static_cast<int>(norm(b - a) / (0.5 * tool.diameter));
     for (int k = 0; k <= steps; ++k) {
       const Vec3 centre = steps == 0 ? a : a + (static_cast<double>(k) / steps) * (b - a);
+      const std::uint64_t allocations = tetcut::bench::allocations();
       const tetcut::CutReport r = cutter.cut(centre);
+      row.allocating += tetcut::bench::allocations() != allocations ? 1 : 0;
+      if (r.tets_hit > 0) row.cut_us.push_back(r.time.total_us);
       if (!r.ok) {
         if (row.refused++ == 0) row.first_refusal = r.failure;
+        ++row.refused_by[static_cast<std::size_t>(r.refusal)];
         continue;
       }
       if (r.tets_hit == 0) continue;  // the tool in the air: not a cut
       ++row.cuts;
-      row.cut_us.push_back(r.time.total_us);
+      row.made.push_back(r.tets_created);
       row.max_created = std::max<std::uint64_t>(row.max_created, r.tets_created);
+      row.left += r.left_in_tool > 0 ? 1 : 0;
       inv::pool(row.created, inv::quality_of(mesh.raw_view(), cutter.last_created()));
-      const inv::CheckReport report = local.after_operation(mesh.raw_view(), cutter.last_removed(),
-                                                            cutter.last_created(), check);
+      const inv::CheckReport report =
+          local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(),
+                                tetcut::scenario::cut_check_options(params, centre, cutter.last_left_in_tool()));
       if (!report.ok() && row.violations++ == 0) row.first_violation = inv::to_string(report);
     }
   }
@@ -147,48 +185,67 @@ std::string figure(double value, const char* format) {
 }
 
 void print(const std::vector<Row>& rows) {
-  std::printf("%-15s %-6s %8s %7s %6s %7s %5s %9s %7s %9s %7s %9s %9s %9s\n", "mesh", "tool", "diameter", "tets",
-              "cuts", "refused", "viol.", "input", "goal", "worst", "min dih", "max/cut", "p50 us", "p99 us");
+  std::printf("%-13s %-6s %-6s %8s %6s %6s %7s %5s %5s %5s %7s %6s %7s %7s %7s %7s %9s %9s %9s\n", "mesh", "rule", "tool",
+              "diameter", "tets", "cuts", "refused", "viol.", "left", "alloc", "input", "goal", "worst", "min dih",
+              "made p99", "max", "p50 us", "p99 us", "max us");
   for (const Row& r : rows)
-    std::printf("%-15s %-6s %8.3g %7u %6llu %7llu %5llu %9.3g %7.3g %9s %7s %9llu %9.1f %9.1f%s\n", r.mesh.c_str(),
-                r.tool.c_str(), r.diameter, r.tets, static_cast<unsigned long long>(r.cuts),
-                static_cast<unsigned long long>(r.refused), static_cast<unsigned long long>(r.violations),
-                r.input_worst, r.goal, r.created.tets ? figure(r.created.min_radius_ratio, "%.3g").c_str() : "-",
+    std::printf("%-13s %-6s %-6s %8.3g %6u %6llu %7llu %5llu %5llu %5llu %7.3g %6.3g %7s %7s %7.0f %7llu %9.1f %9.1f %9.1f%s\n",
+                r.mesh.c_str(), r.refinement.c_str(), r.tool.c_str(), r.diameter, r.tets,
+                static_cast<unsigned long long>(r.cuts), static_cast<unsigned long long>(r.refused),
+                static_cast<unsigned long long>(r.violations), static_cast<unsigned long long>(r.left),
+                static_cast<unsigned long long>(r.allocating), r.input_worst, r.goal,
+                r.created.tets ? figure(r.created.min_radius_ratio, "%.3g").c_str() : "-",
                 r.created.tets ? figure(r.created.min_dihedral_deg, "%.1f").c_str() : "-",
-                static_cast<unsigned long long>(r.max_created), tetcut::percentile(r.cut_us, 0.5),
-                tetcut::percentile(r.cut_us, 0.99), r.goal_met() ? "" : "  BELOW GOAL");
+                tetcut::percentile(r.made, 0.99), static_cast<unsigned long long>(r.max_created),
+                tetcut::percentile(r.cut_us, 0.5), tetcut::percentile(r.cut_us, 0.99), max_of(r.cut_us),
+                r.goal_met() ? "" : "  BELOW GOAL");
+  for (const Row& r : rows)
+    if (r.refused) std::printf("%s, %s: refused %s\n", r.mesh.c_str(), r.tool.c_str(), refusal_reasons(r).c_str());
   for (const Row& r : rows)
     if (r.violations) std::printf("%s, %s: %s\n", r.mesh.c_str(), r.tool.c_str(), r.first_violation.c_str());
 }
 
-bool write_json(const std::string& path, const std::vector<Row>& rows, int sweeps, std::uint64_t seed) {
+bool write_json(const std::string& path, const std::vector<Row>& rows, int sweeps, std::uint64_t seed,
+                tetcut::RefinementRule rule) {
   nlohmann::json out_rows = nlohmann::json::array();
   for (const Row& r : rows) {
     nlohmann::json row = {{"mesh", r.mesh},
                           {"made_by", r.made_by},
                           {"tets", r.tets},
                           {"tool", r.tool},
+                          {"refinement", r.refinement},
                           {"tool_diameter", r.diameter},
                           {"cuts", r.cuts},
                           {"refused", r.refused},
                           {"checker_violations", r.violations},
+                          {"cuts_leaving_tissue", r.left},
+                          {"allocating_cuts", r.allocating},
                           {"input_worst_radius_ratio", r.input_worst},
                           {"goal", r.goal},
                           {"goal_met", r.goal_met()},
                           {"created_tets", r.created.tets},
                           {"max_created_per_cut", r.max_created},
+                          {"p99_created_per_cut", tetcut::percentile(r.made, 0.99)},
                           {"p50_us", tetcut::percentile(r.cut_us, 0.5)},
                           {"p99_us", tetcut::percentile(r.cut_us, 0.99)},
-                          {"max_us", r.cut_us.empty() ? 0.0 : *std::max_element(r.cut_us.begin(), r.cut_us.end())}};
+                          {"max_us", max_of(r.cut_us)}};
     if (r.created.tets) {
       row["worst_created_radius_ratio"] = r.created.min_radius_ratio;
       row["worst_created_min_dihedral_deg"] = r.created.min_dihedral_deg;
     }
-    if (r.refused) row["first_refusal"] = r.first_refusal;
+    if (r.refused) {
+      row["first_refusal"] = r.first_refusal;
+      nlohmann::json reasons = nlohmann::json::object();
+      for (int k = 1; k < tetcut::kCutRefusals; ++k)
+        if (r.refused_by[static_cast<std::size_t>(k)])
+          reasons[tetcut::to_string(static_cast<tetcut::CutRefusal>(k))] = r.refused_by[static_cast<std::size_t>(k)];
+      row["refusals"] = std::move(reasons);
+    }
     if (r.violations) row["first_violation"] = r.first_violation;
     out_rows.push_back(std::move(row));
   }
-  const nlohmann::json out = {{"sweeps_per_tool", sweeps}, {"seed", seed}, {"rows", std::move(out_rows)}};
+  const nlohmann::json out = {
+      {"sweeps_per_tool", sweeps}, {"seed", seed}, {"refinement", tetcut::to_string(rule)}, {"rows", std::move(out_rows)}};
   const std::string tmp = path + ".tmp";
   {
     std::ofstream file(tmp);
@@ -203,16 +260,23 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
 int main(int argc, char** argv) {
   int sweeps = 4;
   std::uint64_t seed = 29;
-  std::string only, json;
-  CLI::App app{"random cautery sweeps on meshes from TetGen and CGAL: the tets the cuts create (issue 29)"};
+  std::string only, only_tool, json, refinement = "paper";
+  CLI::App app{"random cautery sweeps on meshes from TetGen and CGAL: the tets the cuts create"};
   app.add_option("--sweeps", sweeps, "sweeps per mesh and tool")->check(CLI::Range(1, 1000));
   app.add_option("--seed", seed, "the chords' random seed");
-  app.add_option("--only", only, "one mesh: box-coarse, box-fine, box-delaunay, cylinder, liver-6k, liver-16k");
+  app.add_option("--only", only, "one mesh: box-coarse, box-fine, box-delaunay, cylinder, sphere, liver-6k, liver-16k");
+  app.add_option("--tool", only_tool, "one tool: 4%, 8%, 12%, 0.05x, 0.1x, 0.3x, 1x, 3x (x the median edge)");
+  app.add_option("--refinement", refinement, "the refinement rule: paper (3.2, the default) or graded");
   app.add_option("--json", json, "also write the rows to FILE");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
+  }
+  const std::optional<tetcut::RefinementRule> rule = tetcut::parse_refinement_rule(refinement);
+  if (!rule) {
+    std::fprintf(stderr, "tetcut_quality_sweeps: --refinement %s: must be paper or graded\n", refinement.c_str());
+    return 2;
   }
 
   std::vector<Row> rows;
@@ -239,18 +303,23 @@ int main(int argc, char** argv) {
     }
     const tetcut::bench::Bounds box = tetcut::bench::bounds(base);
     const double diagonal = norm(box.hi - box.lo);
-    const std::vector<Tool> tools = {{"4%", 0.04 * diagonal},
-                                     {"8%", 0.08 * diagonal},
-                                     {"12%", 0.12 * diagonal},
-                                     {"fine", 0.1 * median_edge(base)}};
-    for (const Tool& tool : tools) rows.push_back(sweep(source, base, tool, sweeps, seed));
+    const double median = median_edge(base);
+    const std::vector<Tool> tools = {{"4%", 0.04 * diagonal},    {"8%", 0.08 * diagonal},   {"12%", 0.12 * diagonal},
+                                     {"0.05x", 0.05 * median}, {"0.1x", 0.1 * median}, {"0.3x", 0.3 * median},
+                                     {"1x", median},           {"3x", 3 * median}};
+    for (const Tool& tool : tools)
+      if (only_tool.empty() || tool.name == only_tool) rows.push_back(sweep(source, base, tool, sweeps, seed, *rule));
   }
   if (!known) {
     std::fprintf(stderr, "tetcut_quality_sweeps: --only %s: no such mesh\n", only.c_str());
     return 2;
   }
+  if (rows.empty() && !only_tool.empty()) {
+    std::fprintf(stderr, "tetcut_quality_sweeps: --tool %s: no such tool\n", only_tool.c_str());
+    return 2;
+  }
   print(rows);
-  if (!json.empty() && !write_json(json, rows, sweeps, seed)) {
+  if (!json.empty() && !write_json(json, rows, sweeps, seed, *rule)) {
     std::fprintf(stderr, "tetcut_quality_sweeps: cannot write %s\n", json.c_str());
     return 2;
   }

@@ -44,11 +44,11 @@ const std::vector<CommandCase>& cases() {
        {"BOX", "--random", "all", "--seed", "1e3", "-o", "OUT"},
        "--seed"},
       {"cut",
-       {"MESH", "--diameter", "--from", "--to", "--step", "--strategy", "--split", "--dref-factor", "--p", "--depth",
-        "--check", "--out", "--report", "--frames"},
+       {"MESH", "--diameter", "--from", "--to", "--step", "--strategy", "--split", "--refinement", "--dref-factor", "--p",
+        "--depth", "--check", "--out", "--report", "--frames"},
        {"BOX", "--diameter", "1e3x", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"},
        "--diameter"},
-      {"run", {"SCENARIO", "--check", "--out", "--report"}, {}, ""},
+      {"run", {"SCENARIO", "--refinement", "--check", "--out", "--report"}, {}, ""},
       {"stats", {"--corpus", "--mesh", "--check", "--json", "--html", "--pictures"}, {}, ""},
       {"replay", {"INPUT", "--target", "--scenario-out"}, {}, ""},
       {"minimize", {"SCENARIO", "-o", "--max-runs"}, {"BOX", "-o", "OUT", "--max-runs", "inf"}, "--max-runs"},
@@ -156,6 +156,35 @@ TEST_F(Cli, CutIsTheScenarioSweepThatRunRuns) {
   EXPECT_EQ(cut_report->at("summary").at("cuts").get<int>(), 5);
   EXPECT_GT(cut_report->at("summary").at("tets_removed").get<int>(), 0);
   EXPECT_EQ(read_text(path("cut.msh")), read_text(path("run.msh")));
+}
+
+// The graded rule reaches the engine from each place a user chooses it: `tetcut cut
+// --refinement graded`, a scenario's `refinement graded` line and `tetcut run --refinement graded`
+// give one mesh, which the paper's rule does not.
+TEST_F(Cli, TheGradedRefinementIsTheSameRuleFromCutRunAndAScenarioLine) {
+  write_box("box.msh", 3, 3, 3);
+  const std::vector<std::string> sweep = {"--diameter", "0.08", "--from", "0.2,0.45,0.5", "--to", "0.8,0.45,0.5",
+                                          "--step", "0.2"};
+  auto cut = [&](const std::string& rule, const std::string& out) {
+    std::vector<std::string> args = {"cut", path("box.msh")};
+    args.insert(args.end(), sweep.begin(), sweep.end());
+    for (const std::string& a : {std::string("--refinement"), rule, std::string("--out"), path(out)}) args.push_back(a);
+    return tetcut(args);
+  };
+  ASSERT_EQ(cut("graded", "graded.msh").exit_code, 0);
+  ASSERT_EQ(cut("paper", "paper.msh").exit_code, 0);
+  write("line.scn", "mesh box.msh\ndiameter 0.08\nrefinement graded\nsweep 0.2,0.45,0.5 0.8,0.45,0.5 0.2\n");
+  write("plain.scn", "mesh box.msh\ndiameter 0.08\nsweep 0.2,0.45,0.5 0.8,0.45,0.5 0.2\n");
+  ASSERT_EQ(tetcut({"run", path("line.scn"), "--out", path("line.msh")}).exit_code, 0);
+  ASSERT_EQ(tetcut({"run", path("plain.scn"), "--refinement", "graded", "--out", path("option.msh")}).exit_code, 0);
+  EXPECT_EQ(read_text(path("line.msh")), read_text(path("graded.msh")));
+  EXPECT_EQ(read_text(path("option.msh")), read_text(path("graded.msh")));
+  EXPECT_NE(read_text(path("paper.msh")), read_text(path("graded.msh")));
+  EXPECT_TRUE(usage_error(cut("coarse", "x.msh"), "cut", "--refinement"));
+  write("bad.scn", "mesh box.msh\nrefinement coarse\n");
+  const ProcessResult bad = tetcut({"run", path("bad.scn")});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("refinement must be paper or graded"), std::string::npos) << bad.err;
 }
 
 TEST_F(Cli, RemoveAtAPointRemovesTheTetTheScenarioRemoves) {

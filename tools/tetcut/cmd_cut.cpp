@@ -31,6 +31,7 @@ struct CutArgs {
   std::optional<RemovalStrategy> strategy;
   std::optional<RemovalOrder> order;
   std::optional<SplitMethod> split;
+  std::optional<RefinementRule> refinement;
   std::optional<scenario::CheckMode> check;
   std::vector<std::uint32_t> uncuttable_labels;
   RunOutputs outputs;
@@ -44,7 +45,10 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::number(app, "--step", a.step, "the distance between two cuts (> 0)", "S")->required();
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
   opt::order(app, "--order", a.order, "which selected tet a cut requests next (default direct-first)");
-  opt::split_method(app, "--split", a.split, "refinement (default templates)");
+  opt::split_method(app, "--split", a.split, "how the paper's refinement splits edges (default templates)");
+  opt::refinement(app, a.refinement,
+                  "which tets the refinement splits: the paper's loop (3.2; the default) or longest-edge "
+                  "bisection graded to the tool");
   opt::number(app, "--dref-factor", a.dref_factor, "D_ref = F x diameter (paper 3.2; default 1.5)", "F");
   opt::number(app, "--p", a.p, "shell edge ratio of the refinement loop (paper 3.2; default 1.5)", "P");
   opt::count(app, "--depth", a.depth, "neighbour search depth (paper 3.5; default 10, at most 64)");
@@ -67,6 +71,7 @@ std::optional<std::string> cut_params(const CutArgs& a, CutParams& params) {
   if (a.strategy) params.strategy = *a.strategy;
   if (a.order) params.order = *a.order;
   if (a.split) params.split_method = *a.split;
+  if (a.refinement) params.refinement = *a.refinement;
   if (a.dref_factor) params.d_ref_factor = *a.dref_factor;
   if (a.p) params.p = *a.p;
   opt::improvement_params(a.improvement, params);
@@ -86,7 +91,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CommandParser parser(
       "cut",
       "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--order O] [--split M] "
-      "[--no-improve] [--quality-floor F] [--keep-label L ...] "
+      "[--refinement paper|graded] [--no-improve] [--quality-floor F] [--keep-label L ...] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
       "each cut refined then removed without breaking the manifold (paper 3.1-3.7). The sweep is\n"

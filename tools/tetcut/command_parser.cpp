@@ -157,6 +157,11 @@ CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<
                 "must be templates or bisection");
 }
 
+CLI::Option* refinement(CLI::App& app, std::optional<RefinementRule>& target, const std::string& help) {
+  return parsed(app, "--refinement", target, help, "paper|graded",
+                [](const std::string& s) { return parse_refinement_rule(s); }, "must be paper or graded");
+}
+
 CLI::Option* check_mode(CLI::App& app, std::optional<scenario::CheckMode>& target, const std::string& help) {
   return parsed(app, "--check", target, help, "every|end|none",
                 [](const std::string& s) { return scenario::parse_check_mode(s); }, "must be every, end or none");

@@ -63,6 +63,12 @@ struct CutParams {
   std::uint32_t max_tets_created = 20000;  // net tets a cut may create; more is refused early
   RemovalStrategy strategy = RemovalStrategy::kCombined;   // cut_strategies.hpp
   SplitMethod split_method = SplitMethod::kTemplates;
+  // Which refinement serves the tool (cut_strategies.hpp): the paper's loop, or longest-edge
+  // bisection graded to the tool (its tets grow away from the tool instead of splitting coarse
+  // neighbours at the tool's scale). The paper's stops after max_refine_iterations rounds, the
+  // graded one only at the budget (max_tets_created) or when every tet meeting the tool has its
+  // edges within D_ref.
+  RefinementRule refinement = RefinementRule::kPaper;
   RemovalOrder order = RemovalOrder::kDirectFirst;        // cut_strategies.hpp
   // The improvement pass that ends a cut or a removal request (flips, smoothing of the cut's own
   // vertices): it lifts every tet the cut made to min(quality_floor, the worst tet it replaced),

@@ -1,5 +1,6 @@
-// The two choices a cut offers besides its sizes (CutParams, cut.hpp): how a tet that cannot go
-// alone is removed (paper 3.4-3.7), and how the refinement splits edges (paper 3.2).
+// The choices a cut offers besides its sizes (CutParams, cut.hpp): how a tet that cannot go
+// alone is removed (paper 3.4-3.7), which tets the refinement splits and how it splits edges
+// (paper 3.2).
 #pragma once
 
 #include <cstdint>
@@ -45,5 +46,19 @@ enum class SplitMethod : std::uint8_t { kTemplates, kBisection };
 const char* to_string(SplitMethod method);
 // "templates", "bisection".
 std::optional<SplitMethod> parse_split_method(std::string_view text);
+
+// Which refinement makes the tets the tool meets short enough to select (edges <= D_ref):
+//   kPaper   paper 3.2: the edges of the tets in reach longer than D_ref, plus the shell edges
+//            longer than p x |e|, split by the templates, round after round. Its tables and
+//            pinned hashes are this rule's. The default.
+//   kGraded  Rivara's longest-edge bisection, restricted to the tets meeting the tool: each is
+//            refined by bisecting the terminal edge of its longest-edge propagation path, so the
+//            tets made grade outward from the tool instead of splitting coarse neighbours across
+//            their long edges (refine/longest_edge_bisection.hpp).
+enum class RefinementRule : std::uint8_t { kPaper, kGraded };
+
+const char* to_string(RefinementRule rule);
+// "paper", "graded".
+std::optional<RefinementRule> parse_refinement_rule(std::string_view text);
 
 }  // namespace tetcut

@@ -249,6 +249,7 @@ void Cutter::Pipeline::locate(const Ball& tool) { index_.query(mesh_, tool, hit_
 // Refine (paper 3.2), following the new tets that meet the tool.
 bool Cutter::Pipeline::refine(const Ball& tool, CutReport& report) {
   RefineParams refine;
+  refine.rule = params_.refinement;
   refine.d_ref = params_.d_ref();
   refine.p = params_.p;
   refine.max_iterations = params_.max_refine_iterations;

@@ -19,6 +19,8 @@ constexpr Spellings<RemovalOrder> kOrderNames[] = {{"direct-first", RemovalOrder
                                                    {"paper", RemovalOrder::kPaper}};
 constexpr Spellings<SplitMethod> kSplitMethodNames[] = {{"templates", SplitMethod::kTemplates},
                                                         {"bisection", SplitMethod::kBisection}};
+constexpr Spellings<RefinementRule> kRefinementNames[] = {{"paper", RefinementRule::kPaper},
+                                                          {"graded", RefinementRule::kGraded}};
 
 template <class Enum, std::size_t N>
 const char* name_of(const Spellings<Enum> (&names)[N], Enum value) {
@@ -49,5 +51,9 @@ std::optional<RemovalOrder> parse_removal_order(std::string_view text) { return 
 const char* to_string(SplitMethod method) { return name_of(kSplitMethodNames, method); }
 
 std::optional<SplitMethod> parse_split_method(std::string_view text) { return value_of(kSplitMethodNames, text); }
+
+const char* to_string(RefinementRule rule) { return name_of(kRefinementNames, rule); }
+
+std::optional<RefinementRule> parse_refinement_rule(std::string_view text) { return value_of(kRefinementNames, text); }
 
 }  // namespace tetcut

@@ -124,6 +124,7 @@ std::uint32_t Refiner::add_shell_edges(const TetMesh& mesh, double p) {
 
 RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, const RefineParams& params,
                              std::vector<TetId>& region) {
+  if (params.rule == RefinementRule::kGraded) return graded_.refine(mesh, initial, params, region, splitter_);
   RefineReport report;
   region.assign(initial.begin(), initial.end());
   current_.assign(initial.begin(), initial.end());
@@ -138,20 +139,14 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
     }
     const std::uint32_t born_parents = add_shell_edges(mesh, params.p);
     created_.clear();
-    // After the round: net + children - born_parents, which must stay within the budget.
-    const std::uint64_t allowed = params.max_tets_created - std::min<std::uint64_t>(net, params.max_tets_created) + born_parents;
-    const SplitResult split = splitter_.split(mesh, edges_, params.method, &created_, allowed);
+    const SplitResult split = splitter_.split(mesh, edges_, params.method, &created_, children_allowed(params, net, born_parents));
     if (!split.ok()) {
       report.refusal = split.refusal;
       break;
     }
     for (TetId t : created_) born_.insert(t);
     net = net + split.tets_created - born_parents;
-    report.net_tets_created = static_cast<std::uint32_t>(net);
-    ++report.iterations;
-    report.edges_split += split.edges_split;
-    report.tets_created += split.tets_created;
-    report.tets_removed += split.tets_removed;
+    count_split(report, split, net);
     if (params.measure_quality) report.min_radius_ratio = std::min(report.min_radius_ratio, min_radius_ratio(mesh, created_));
     region.insert(region.end(), created_.begin(), created_.end());
     if (params.focus)
@@ -159,15 +154,32 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
                      created_.end());
     current_.swap(created_);
   }
+  finish_region(mesh, region);
+  return report;
+}
+
+std::uint64_t children_allowed(const RefineParams& params, std::uint64_t net, std::uint32_t born_parents) {
+  return params.max_tets_created - std::min<std::uint64_t>(net, params.max_tets_created) + born_parents;
+}
+
+void count_split(RefineReport& report, const SplitResult& split, std::uint64_t net) {
+  report.net_tets_created = static_cast<std::uint32_t>(net);
+  ++report.iterations;
+  report.edges_split += split.edges_split;
+  report.tets_created += split.tets_created;
+  report.tets_removed += split.tets_removed;
+}
+
+void finish_region(const TetMesh& mesh, std::vector<TetId>& region) {
   std::sort(region.begin(), region.end());
   region.erase(std::unique(region.begin(), region.end()), region.end());
   region.erase(std::remove_if(region.begin(), region.end(), [&](TetId t) { return !mesh.is_live(t); }), region.end());
-  return report;
 }
 
 void Refiner::reserve(std::uint32_t tets) {
   using detail::reserve_touched;
   splitter_.reserve(tets);
+  graded_.reserve(tets);
   born_.reserve(tets);
   reserve_touched(current_, 4096);
   reserve_touched(created_, 4096);

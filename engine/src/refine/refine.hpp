@@ -1,5 +1,7 @@
 // The refinement loop of paper 3.2: refine the tets hit by the tool until they are small enough
-// for the cavity to have the tool's size, without elongated children.
+// for the cavity to have the tool's size, without elongated children. RefineParams::rule chooses
+// it (kPaper, below) or the refinement graded to the tool (kGraded: Rivara's longest-edge
+// bisection, longest_edge_bisection.hpp), which the Refiner runs in the same scratch.
 //
 // Given the tets T hit by the tool:
 //   E_split = edges of T longer than D_ref (paper: D_ref = 1.5 x tool diameter);
@@ -28,12 +30,15 @@
 #include "core/edge_key_set.hpp"
 #include "core/tool_ball.hpp"
 #include "refine/edge_split.hpp"
+#include "refine/longest_edge_bisection.hpp"
+#include "tetcut/cut_strategies.hpp"  // RefinementRule
 #include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut {
 
 struct RefineParams {
+  RefinementRule rule = RefinementRule::kPaper;  // kGraded uses d_ref, focus, max_tets_created
   double d_ref = 0.0;               // edges longer than this are split; must be positive
   double p = 1.5;                   // shell edges longer than p x |e| are split too; must be > 1
   std::uint32_t max_iterations = 8;
@@ -72,7 +77,7 @@ std::optional<std::string> check_scale(const MeshScale& scale, double tool_diame
                                        std::uint32_t max_tets_created);
 
 struct RefineReport {
-  std::uint32_t iterations = 0;      // split rounds performed
+  std::uint32_t iterations = 0;      // split rounds performed (kGraded: bisections)
   std::uint32_t edges_split = 0;
   std::uint32_t tets_created = 0;    // children made, including children later split again
   std::uint32_t tets_removed = 0;    // parents replaced
@@ -82,7 +87,19 @@ struct RefineReport {
   // A split refused for degeneracy stops the loop; so does the budget (kOverBudget: the round
   // that would have passed it was planned, not applied).
   SplitRefusal refusal = SplitRefusal::kNone;
+  // kGraded: bisections whose propagation path reached LongestEdgeBisection::kMaxPathSteps and
+  // bisected the longest edge it had reached instead of a terminal one.
+  std::uint32_t paths_cut_short = 0;
 };
+
+// What both rules share (refine.cpp, longest_edge_bisection.cpp):
+// the children a split may plan when `net` tets this call made are live and `born_parents` of the
+// split's parents are among them, so that net + children - born_parents stays within the budget;
+std::uint64_t children_allowed(const RefineParams& params, std::uint64_t net, std::uint32_t born_parents);
+// an applied split in the report, `net` the tets this call made still live after it;
+void count_split(RefineReport& report, const SplitResult& split, std::uint64_t net);
+// the region as Refiner::refine returns it: live, distinct, sorted by id.
+void finish_region(const TetMesh& mesh, std::vector<TetId>& region);
 
 class Refiner {
  public:
@@ -102,6 +119,7 @@ class Refiner {
   std::uint32_t add_shell_edges(const TetMesh& mesh, double p);
 
   EdgeSplitter splitter_;
+  LongestEdgeBisection graded_;  // RefinementRule::kGraded, bisecting with splitter_
   std::vector<TetId> current_, created_, shell_;
   std::vector<Edge> edges_;
   EdgeKeySet seen_;

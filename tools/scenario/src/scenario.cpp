@@ -27,7 +27,7 @@ std::vector<std::string> tokens_of(const std::string& line) {
 
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
-         w == "order" || w == "split" || w == "improve" || w == "quality_floor";
+         w == "order" || w == "split" || w == "refinement" || w == "improve" || w == "quality_floor";
 }
 
 // Applies a parameter line to `params`; a message when the value is not acceptable.
@@ -45,6 +45,10 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
     const auto m = parse_split_method(value);
     if (!m) return "split must be templates or bisection";
     next.split_method = *m;
+  } else if (name == "refinement") {
+    const auto r = parse_refinement_rule(value);
+    if (!r) return std::string("refinement must be paper or graded");
+    next.refinement = *r;
   } else if (name == "improve") {
     if (value != "on" && value != "off") return std::string("improve must be on or off");
     next.improve = value == "on";

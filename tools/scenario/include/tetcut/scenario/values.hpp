@@ -33,6 +33,7 @@ inline std::optional<RemovalStrategy> parse_strategy(std::string_view text) { re
 
 // templates | bisection (paper 3.2: the 10 split configurations, or sequential bisection):
 // the engine's parse_split_method and to_string(SplitMethod), cut_strategies.hpp.
+// paper | graded (the refinement rule): parse_refinement_rule, to_string(RefinementRule), there too.
 
 // When the independent checker runs during a sequence of operations: the local checker after
 // every operation, the full one once at the end, or not at all.
