@@ -53,7 +53,10 @@ def save(path, budgets):
 
 def format_budgets(budgets):
     """One figure a line, as the file has always been written (diffs stay readable)."""
-    lines = ["{", f'  "comment": {json.dumps(budgets["comment"])},', '  "figures": [']
+    lines = ["{", f'  "comment": {json.dumps(budgets["comment"])},']
+    if "reference" in budgets:
+        lines.append(f'  "reference": {json.dumps(budgets["reference"])},')
+    lines.append('  "figures": [')
     figures = [json.dumps(f) for f in budgets["figures"]]
     lines += ["    " + f + ("," if i + 1 < len(figures) else "") for i, f in enumerate(figures)]
     lines += ["  ]", "}"]
@@ -72,7 +75,7 @@ def today():
     return datetime.date.today().isoformat()
 
 
-def calibrate_instructions(budgets, results):
+def calibrate_instructions(budgets, results, commit=None):
     figures = [f for f in budgets["figures"] if f.get("kind") in CALLGRIND_KINDS]
     if not figures:
         sys.exit("calibrate_budgets: no figure of kind 'instructions' or 'cache' in the budgets")
@@ -90,9 +93,15 @@ def calibrate_instructions(budgets, results):
         figure["tolerance_pct"] = tolerance
         figure["max"] = math.ceil(value * (1 + tolerance / 100))
         figure["toolchain"] = toolchain
-        figure["note"] = f"{WHAT[figure['kind']]}, calibrated {today()}; gated at +{tolerance:g} %"
+        figure["note"] = f"{WHAT[figure['kind']]}, calibrated {today()}" + (f" at {commit[:12]}" if commit else "") + \
+            f"; gated at +{tolerance:g} %"
         print(f"{figure['name']}: baseline {old} -> {figure['baseline']}, bound {figure['max']}")
     print(f"  toolchain: {figures[0]['toolchain']}")
+    if commit:
+        budgets["reference"] = {"commit": commit, "date": today(),
+                                "note": "the commit the callgrind baselines were taken at: `ci/bench --paired` builds "
+                                        "its engine and compares wall times with it, pair by pair"}
+        print(f"reference of the paired comparison: {commit}")
 
 
 # What a callgrind figure counts, for its note.
@@ -169,10 +178,13 @@ def main(argv):
     budgets_path = argv[2]
     budgets = load(budgets_path)
     if argv[1] == "instructions":
-        if len(argv) != 4:
+        commit = None
+        if len(argv) == 6 and argv[4] == "--commit":
+            commit = argv[5]
+        elif len(argv) != 4:
             print(__doc__, file=sys.stderr)
             return 2
-        calibrate_instructions(budgets, load(argv[3]))
+        calibrate_instructions(budgets, load(argv[3]), commit)
     else:
         args, redefined, busy = argv[3:], [], False
         while args and args[0] in ("--redefined", "--busy"):
