@@ -26,8 +26,16 @@ fail() { echo "FAIL: $*"; status=1; }
 gate() {
   python3 "$src/bench/budget_gate.py" "$1" "$2" --skip-kinds time,count,paired${3:+,$3}
 }
-# The names of the rows over budget in the gate's output, one a line.
-over_rows() { grep "OVER BUDGET" <<<"$1" | sed -E 's/  +.*//' | sort; }
+# Gates RESULTS against BUDGETS and expects ROW, and no other row, over budget (WHAT names the
+# planted build in the messages).
+expect_only_over() {
+  local results=$1 budgets=$2 row=$3 what=$4 out rc rows
+  out=$(gate "$results" "$budgets" 2>&1); rc=$?
+  echo "$out"
+  ((rc == 1)) || fail "$what passed the gate (exit $rc)"
+  rows=$(grep "OVER BUDGET" <<<"$out" | sed -E 's/  +.*//' | sort)
+  [[ $rows == "$row" ]] || fail "$what should fail '$row' alone; over budget: ${rows:-nothing}"
+}
 # The checked-in budgets' callgrind figures of the given kinds, calibrated on RESULTS.
 calibrated() {
   local results=$1 out=$2 kinds=$3
@@ -59,12 +67,8 @@ case $mode in
     ((rc == 1)) || fail "the uniform slowdown passed the gate (exit $rc)"
     grep -q "^instructions per cut (callgrind) .*OVER BUDGET" <<<"$out" || fail "the uniform slowdown is not over budget on the whole cut"
 
-    out=$(gate "$work/locate.json" "$work/budgets.json" 2>&1); rc=$?
-    echo "$out"
-    ((rc == 1)) || fail "the slowdown in locate passed the gate (exit $rc)"
-    rows=$(over_rows "$out")
-    [[ $rows == "instructions in locate, per cut (callgrind)" ]] ||
-      fail "the slowdown in locate should fail the locate row alone; over budget: ${rows:-nothing}"
+    expect_only_over "$work/locate.json" "$work/budgets.json" "instructions in locate, per cut (callgrind)" \
+      "the slowdown in locate"
 
     # The same count, calibrated with another toolchain: the gate must refuse to compare.
     python3 - "$work/budgets.json" "$work/other-toolchain.json" <<'PY'
@@ -90,12 +94,8 @@ PY
       python3 "$src/bench/merge_results.py" "$work/$build.json" "$work/$build.instructions.json" "$work/$build.cache.json"
     done
     calibrated "$work/clean.json" "$work/budgets.json" instructions,cache
-    out=$(gate "$work/cold.json" "$work/budgets.json" 2>&1); rc=$?
-    echo "$out"
-    ((rc == 1)) || fail "the cold reads passed the gate (exit $rc)"
-    rows=$(over_rows "$out")
-    [[ $rows == "last-level cache misses per cut, shuffled 1M copies (callgrind)" ]] ||
-      fail "the cold reads should fail the cache row alone; over budget: ${rows:-nothing}"
+    expect_only_over "$work/cold.json" "$work/budgets.json" \
+      "last-level cache misses per cut, shuffled 1M copies (callgrind)" "the cold reads"
     ((status == 0)) && echo "the cache gate fails a change that costs cache misses and passes its instructions"
     ;;
   *)
