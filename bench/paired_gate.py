@@ -8,8 +8,9 @@ BIN is bench/paired_sweep built at each side (`ci/bench --paired` builds the ref
 of its own, bench/paired/CMakeLists.txt). Both are started once, pinned to core C (taskset; the
 last core by default), and take turns: pair i runs one round of each, head first in even pairs and
 the reference first in odd ones, so that neither side always runs into the other's caches or a
-burst of load. A round is the gated sweep on the liver and on the 1M-tet refined liver (--small-only:
-the liver alone), every cut timed and every stage (CutTimings).
+burst of load. A round is the gated sweep on the 1M-tet refined liver, then five on the liver
+(pooled, after one untimed; --small-only: the liver alone), every cut timed and every stage
+(CutTimings).
 
 For each figure (the p50 and p99 of the cut and of each stage, per mesh), the pair's ratio is
 head / reference; the estimate is the median of the N ratios, and its 95 % interval comes from a
