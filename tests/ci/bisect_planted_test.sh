@@ -28,6 +28,12 @@ src=$(cd "${2:?}" && pwd)
 work=${3:?}
 status=0
 fail() { echo "FAIL: $*"; status=1; }
+# Every build of the throw-away history compiles the same sources up to the planted file, run after
+# run: with ccache (CMake takes the launcher from the environment) a machine that keeps its cache
+# compiles them once, not in every ci/test. Paths are hashed relative to WORK_DIR.
+if command -v ccache >/dev/null && [[ -z ${CMAKE_CXX_COMPILER_LAUNCHER:-} ]]; then
+  export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=$(realpath -m "$work")
+fi
 
 rm -rf "$work"
 mkdir -p "$work/history"
