@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 
+#include "mesh_orders.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
@@ -50,22 +51,40 @@ inline Bounds bounds(const TetMesh& mesh) {
   return b;
 }
 
-// 64 disjoint copies of the bundled liver side by side (~1M tets), copy 0 the original: a sweep
-// over copy 0 does exactly the work it does on the lone liver, and only the size of the mesh
-// around it differs (cut_bench.cpp BM_CutScalingSameWork, mechanics_bench.cpp BM_UpdateScalingSameWork).
-inline const TetMesh& replicated_corpus_liver() {
-  static const TetMesh mesh = [] {
-    const RawMesh one = corpus_mesh("liver.msh").to_raw();
-    RawMesh all;
-    for (int copy = 0; copy < 64; ++copy) {
-      const Vec3 shift{250.0 * (copy % 8), 250.0 * (copy / 8), 0.0};
-      const auto base = static_cast<std::uint32_t>(all.positions.size());
-      for (const Vec3& p : one.positions) all.positions.push_back(p + shift);
-      for (const auto& t : one.tets) all.tets.push_back({t[0] + base, t[1] + base, t[2] + base, t[3] + base});
-    }
-    return std::move(*build_mesh(all).mesh);
-  }();
-  return mesh;
+// How the ids of the 64 copies below are ordered (mesh_orders.hpp): copy by copy, as they were
+// appended (copy 0 keeps the lone liver's layout); shuffled with a fixed seed (copy 0's tets
+// scattered through the whole mesh, as in a large mesh assembled or edited over time); or sorted
+// along a space-filling curve.
+enum class IdOrder { kCopies, kShuffled, kCurve };
+
+// 64 disjoint copies of the bundled liver side by side (~1M tets), copy 0 the original, as raw
+// arrays in copy order: a sweep over copy 0 does the work it does on the lone liver, and only the
+// size of the mesh around it differs.
+inline RawMesh replicated_corpus_liver_raw() {
+  const RawMesh one = corpus_mesh("liver.msh").to_raw();
+  RawMesh all;
+  for (int copy = 0; copy < 64; ++copy) {
+    const Vec3 shift{250.0 * (copy % 8), 250.0 * (copy / 8), 0.0};
+    const auto base = static_cast<std::uint32_t>(all.positions.size());
+    for (const Vec3& p : one.positions) all.positions.push_back(p + shift);
+    for (const auto& t : one.tets) all.tets.push_back({t[0] + base, t[1] + base, t[2] + base, t[3] + base});
+  }
+  return all;
+}
+
+// The 64 copies built, with their ids in `order` (cut_bench.cpp BM_CutScalingSameWork,
+// mechanics_bench.cpp BM_UpdateScalingSameWork, cut_instructions.cpp's cache sweep). Built once
+// per order and process.
+inline const TetMesh& replicated_corpus_liver(IdOrder order = IdOrder::kCopies) {
+  static std::map<IdOrder, TetMesh> cache;
+  auto it = cache.find(order);
+  if (it != cache.end()) return it->second;
+  RawMesh raw = replicated_corpus_liver_raw();
+  if (order == IdOrder::kShuffled) raw = shuffled(raw);
+  if (order == IdOrder::kCurve) raw = curve_sorted(raw);
+  // Copies of a valid liver are manifold by construction: the shell checks would cost a second
+  // (several under valgrind, bench/instructions_gate.sh --cache) and find nothing.
+  return cache.emplace(order, std::move(*build_mesh(raw, {.require_manifold = false}).mesh)).first->second;
 }
 
 }  // namespace tetcut::bench

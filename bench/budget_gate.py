@@ -23,10 +23,28 @@ instruction figures are exact and read from RESULTS.json only.
 --over-time FILE writes the benchmarks of the wall-time figures over budget, one a
 line, when those are the only figures over budget (else an empty file): what ci/bench
 re-runs before it fails a change on wall time.
+
+--skip-missing BENCH,... and --skip-kinds KIND,... report the figures of those benchmarks,
+or of those kinds, as skipped rather than missing when the results lack them (ci/bench
+without --instructions has no callgrind figures, without --paired no paired ratios).
+
+The kinds of figure: "time" (a wall time, or a ratio of two measured in one process),
+"count" (exact: allocations, bytes), "instructions" and "cache" (callgrind's count and its
+simulated cache misses: exact for the toolchain the figure records, refused with another),
+"paired" (a bound on the lower end of the interval of a paired head / reference ratio,
+bench/paired_gate.py).
 """
 import json
 import os
 import sys
+
+# Figures counted under callgrind: exact for one toolchain, whatever the machine's load.
+CALLGRIND_KINDS = ("instructions", "cache")
+
+
+def is_callgrind(figure):
+    """An instruction count or a simulated cache-miss count (older budget files: by the field)."""
+    return figure.get("kind") in CALLGRIND_KINDS or "instructions" in figure.get("field", "")
 
 
 def load(path, what):
@@ -125,8 +143,9 @@ class Gate:
     figures over budget, how many are missing, and the (figure, toolchain) pairs measured with
     another toolchain than their budget records."""
 
-    def __init__(self, results, budgets, confirmations=(), skip=()):
-        self.rows, self.over_figures, self.missing, self.mismatched = gate_rows(results, budgets, confirmations, skip)
+    def __init__(self, results, budgets, confirmations=(), skip=(), skip_kinds=()):
+        self.rows, self.over_figures, self.missing, self.mismatched = gate_rows(results, budgets, confirmations, skip,
+                                                                                skip_kinds)
         self.failed = len(self.over_figures)
         skipped = sum(1 for r in self.rows if r[4] == "skipped")
         within = len(self.rows) - self.failed - self.missing - skipped - len(self.mismatched)
@@ -134,7 +153,13 @@ class Gate:
                         f"{skipped} skipped, {len(self.mismatched)} on another toolchain")
 
 
-def gate_rows(results, budgets, confirmations, skip):
+def shown_value(value):
+    """4 significant digits, but a large count in full (178,594, not 1.786e+05: a 3 % bound on it
+    must be readable)."""
+    return f"{int(value):,}" if value == int(value) and abs(value) >= 1e4 else f"{value:.4g}"
+
+
+def gate_rows(results, budgets, confirmations, skip, skip_kinds=()):
     rows, missing, mismatched, over_figures = [], 0, [], []
     for figure in budgets.get("figures", []):
         value, runs = best_value(results, confirmations, figure)
@@ -142,7 +167,7 @@ def gate_rows(results, budgets, confirmations, skip):
             bound, ok_cmp, sign = float(figure["max"]), (lambda v, b: v <= b), "<="
         else:
             bound, ok_cmp, sign = float(figure["min"]), (lambda v, b: v >= b), ">="
-        if value is None and figure["benchmark"] in skip:
+        if value is None and (figure["benchmark"] in skip or figure.get("kind") in skip_kinds):
             rows.append((figure["name"], "not run", f"{sign} {bound:g}", "", "skipped"))
             continue
         if value is None:
@@ -154,7 +179,7 @@ def gate_rows(results, budgets, confirmations, skip):
             # Not a pass: the count was taken with another toolchain and says nothing about
             # this change. Recalibrate on the new toolchain instead (docs/ci.md, "Recalibrating").
             mismatched.append((figure["name"], other))
-            rows.append((figure["name"], f"{value:.4g}", f"{sign} {bound:g}", "", "OTHER TOOLCHAIN"))
+            rows.append((figure["name"], shown_value(value), f"{sign} {bound:g}", "", "OTHER TOOLCHAIN"))
             continue
         ok = ok_cmp(value, bound)
         if not ok:
@@ -164,7 +189,7 @@ def gate_rows(results, budgets, confirmations, skip):
         else:
             margin = (bound - value) / bound * 100 if "max" in figure else (value - bound) / bound * 100
             margin_text = f"{margin:+.0f}%"
-        shown = f"{value:.4g}" + (f" (best of {runs})" if runs > 1 else "")
+        shown = shown_value(value) + (f" (best of {runs})" if runs > 1 else "")
         rows.append((figure["name"], shown, f"{sign} {bound:g}", margin_text, "ok" if ok else "OVER BUDGET"))
     return rows, over_figures, missing, mismatched
 
@@ -172,17 +197,20 @@ def gate_rows(results, budgets, confirmations, skip):
 def main(argv):
     argv, skip_arg = take_option(argv, "--skip-missing")
     skip = set(skip_arg.split(",")) if skip_arg else set()
+    argv, kinds_arg = take_option(argv, "--skip-kinds")
+    skip_kinds = set(kinds_arg.split(",")) if kinds_arg else set()
     argv, markdown = take_option(argv, "--markdown")
     argv, over_time_path = take_option(argv, "--over-time")
     argv, confirm_paths = take_repeated_option(argv, "--confirm")
     if len(argv) != 3:
-        print("usage: budget_gate.py RESULTS.json BUDGETS.json [--skip-missing BENCH,...] [--markdown FILE]"
+        print("usage: budget_gate.py RESULTS.json BUDGETS.json [--skip-missing BENCH,...] [--skip-kinds KIND,...]"
+              " [--markdown FILE]"
               " [--confirm MORE.json]... [--over-time FILE]", file=sys.stderr)
         return 2
     results = load(argv[1], "results")
     budgets = load(argv[2], "budgets")
     confirmations = [load(p, "re-run results") for p in confirm_paths]
-    gate = Gate(results, budgets, confirmations, skip)
+    gate = Gate(results, budgets, confirmations, skip, skip_kinds)
     rows, over_figures, missing, mismatched = gate.rows, gate.over_figures, gate.missing, gate.mismatched
 
     header = ("figure", "measured", "budget", "margin", "status")

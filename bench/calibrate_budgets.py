@@ -7,7 +7,7 @@
       records the toolchain the count was taken with; the gate refuses to compare across
       toolchains. The count is deterministic for one toolchain, so one run is enough.
 
-  calibrate_budgets.py times BUDGETS.json [--redefined NAME ...] RESULTS1.json RESULTS2.json ...
+  calibrate_budgets.py times BUDGETS.json [--redefined NAME ...] [--busy] RESULTS1.json RESULTS2.json ...
       Every wall-time figure (kind "time") from N >= 5 runs of `ci/bench --quick` on the CI
       machine, idle: its bound becomes the one-sided 99.9 % prediction bound for one more run,
       under a log-normal model of the run-to-run spread (exp(m + t(0.999, N-1) s sqrt(1 + 1/N))
@@ -19,7 +19,11 @@
       an issue's goal stays a ceiling), except for a figure named with --redefined (the start of
       its name): one whose benchmark now measures something else, so that the bound in the file
       bounds another quantity; its commit says what changed. Figures of kind "count"
-      (exact: allocations, bytes per tet, unresolved) are left alone.
+      (exact: allocations, bytes per tet, unresolved) and "paired" (limits on a ratio, set by
+      hand) are left alone. Refused (exit 2) when a run started with a 1-minute load average
+      above MAX_LOAD per core (Google Benchmark records it): a bound calibrated on a busy day
+      gives every later slowdown that much room; --busy takes such runs anyway, and the figure's
+      calibration note says so.
 
 Writes BUDGETS.json in place (through a temporary file) and prints what changed. Needs scipy
 (Debian's python3-scipy, installed by ci/deps): run it with /usr/bin/python3.
@@ -32,7 +36,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from budget_gate import measured_entry, measured_value  # noqa: E402  (one reading of a result)
+from budget_gate import CALLGRIND_KINDS, measured_entry, measured_value  # noqa: E402  (one reading of a result)
 
 
 def load(path):
@@ -49,7 +53,10 @@ def save(path, budgets):
 
 def format_budgets(budgets):
     """One figure a line, as the file has always been written (diffs stay readable)."""
-    lines = ["{", f'  "comment": {json.dumps(budgets["comment"])},', '  "figures": [']
+    lines = ["{", f'  "comment": {json.dumps(budgets["comment"])},']
+    if "reference" in budgets:
+        lines.append(f'  "reference": {json.dumps(budgets["reference"])},')
+    lines.append('  "figures": [')
     figures = [json.dumps(f) for f in budgets["figures"]]
     lines += ["    " + f + ("," if i + 1 < len(figures) else "") for i, f in enumerate(figures)]
     lines += ["  ]", "}"]
@@ -68,28 +75,56 @@ def today():
     return datetime.date.today().isoformat()
 
 
-def calibrate_instructions(budgets, results):
-    figure = next((f for f in budgets["figures"] if f.get("kind") == "instructions"), None)
-    if figure is None:
-        sys.exit("calibrate_budgets: no figure of kind 'instructions' in the budgets")
-    value = measured_value(results, figure)
-    entry = measured_entry(results, figure) or {}
-    if value is None or "toolchain" not in entry:
-        sys.exit("calibrate_budgets: the results hold no instruction count with its toolchain (ci/bench --instructions)")
-    tolerance = float(figure.get("tolerance_pct", 3))
-    old = figure.get("baseline")
-    figure["baseline"] = int(value)
-    figure["tolerance_pct"] = tolerance
-    figure["max"] = math.ceil(value * (1 + tolerance / 100))
-    figure["toolchain"] = entry["toolchain"]
-    figure["note"] = (f"callgrind count of bench/cut_instructions (every cut of the fixed liver sweep), calibrated {today()}; "
-                      f"gated at +{tolerance:g} %")
-    print(f"{figure['name']}: baseline {old} -> {figure['baseline']}, bound {figure['max']}")
-    print(f"  toolchain: {figure['toolchain']}")
+def calibrate_instructions(budgets, results, commit=None):
+    figures = [f for f in budgets["figures"] if f.get("kind") in CALLGRIND_KINDS]
+    if not figures:
+        sys.exit("calibrate_budgets: no figure of kind 'instructions' or 'cache' in the budgets")
+    absent = [f["name"] for f in figures if measured_value(results, f) is None
+              or "toolchain" not in (measured_entry(results, f) or {})]
+    if absent:
+        sys.exit("calibrate_budgets: the results hold no count with its toolchain for: " + "; ".join(absent)
+                 + " (ci/bench --instructions measures them all)")
+    for figure in figures:
+        value = measured_value(results, figure)
+        toolchain = measured_entry(results, figure)["toolchain"]
+        tolerance = float(figure.get("tolerance_pct", 3))
+        old = figure.get("baseline")
+        figure["baseline"] = int(value)
+        figure["tolerance_pct"] = tolerance
+        figure["max"] = math.ceil(value * (1 + tolerance / 100))
+        figure["toolchain"] = toolchain
+        figure["note"] = f"{WHAT[figure['kind']]}, calibrated {today()}" + (f" at {commit[:12]}" if commit else "") + \
+            f"; gated at +{tolerance:g} %"
+        print(f"{figure['name']}: baseline {old} -> {figure['baseline']}, bound {figure['max']}")
+    print(f"  toolchain: {figures[0]['toolchain']}")
+    if commit:
+        budgets["reference"] = {"commit": commit, "date": today(),
+                                "note": "the commit the callgrind baselines were taken at: `ci/bench --paired` builds "
+                                        "its engine and compares wall times with it, pair by pair"}
+        print(f"reference of the paired comparison: {commit}")
+
+
+# What a callgrind figure counts, for its note.
+WHAT = {"instructions": "callgrind count of bench/cut_instructions (every cut of the fixed liver sweep)",
+        "cache": "callgrind's simulated last-level misses (fixed sizes) of the same sweep through 64 copies of the "
+                 "liver, ids shuffled (bench/cut_instructions --shuffled-copies)"}
 
 
 # The least margin over the slowest calibration run (see calibrate_times).
 DRIFT = 1.5
+# The most 1-minute load average per core a calibration run may start with: an idle machine.
+MAX_LOAD = 0.5
+
+
+def busy_runs(runs):
+    """The runs that started on a busy machine: (index, load average), from Google Benchmark's context."""
+    cores = os.cpu_count() or 1
+    out = []
+    for i, r in enumerate(runs):
+        load_avg = r.get("context", {}).get("load_avg") or [0]
+        if load_avg[0] / cores > MAX_LOAD:
+            out.append((i, load_avg[0]))
+    return out
 
 
 def names(prefixes, figure):
@@ -97,12 +132,16 @@ def names(prefixes, figure):
     return any(figure["name"].startswith(p) for p in prefixes)
 
 
-def calibrate_times(budgets, runs, redefined=()):
+def calibrate_times(budgets, runs, redefined=(), busy=False):
     from scipy import stats  # python3-scipy
 
     n = len(runs)
     if n < 5:
         sys.exit(f"calibrate_budgets: {n} runs; a prediction bound wants at least 5")
+    loaded = busy_runs(runs)
+    if loaded and not busy:
+        sys.exit("calibrate_budgets: runs " + ", ".join(f"{i + 1} (load {a:.1f})" for i, a in loaded)
+                 + f" started above a load of {MAX_LOAD:g} per core: calibrate on the idle machine, or pass --busy")
     t = stats.t.ppf(0.999, n - 1)
     for figure in budgets["figures"]:
         if figure.get("kind") != "time":
@@ -125,7 +164,8 @@ def calibrate_times(budgets, runs, redefined=()):
             print(f"{figure['name']}: {old} kept (the runs give {bound}; median {statistics.median(values):.4g})")
             continue
         figure["max"] = bound
-        figure["calibration"] = (("measurement redefined; " if is_redefined else "") + f"{today()}: {n} runs, median {statistics.median(values):.4g}, "
+        figure["calibration"] = (("measurement redefined; " if is_redefined else "") + ("on a busy machine; " if loaded else "")
+                                 + f"{today()}: {n} runs, median {statistics.median(values):.4g}, "
                                  f"min {min(values):.4g}, max {max(values):.4g}; bound = 99.9 % prediction (log-normal) "
                                  f"{predicted:.4g}, at least {DRIFT:g} x the slowest run")
         print(f"{figure['name']}: {old} -> {bound} (median {statistics.median(values):.4g}, spread {math.exp(s):.3f}x)")
@@ -138,19 +178,27 @@ def main(argv):
     budgets_path = argv[2]
     budgets = load(budgets_path)
     if argv[1] == "instructions":
-        if len(argv) != 4:
+        commit = None
+        if len(argv) == 6 and argv[4] == "--commit":
+            commit = argv[5]
+        elif len(argv) != 4:
             print(__doc__, file=sys.stderr)
             return 2
-        calibrate_instructions(budgets, load(argv[3]))
+        calibrate_instructions(budgets, load(argv[3]), commit)
     else:
-        args, redefined = argv[3:], []
-        while len(args) >= 2 and args[0] == "--redefined":
+        args, redefined, busy = argv[3:], [], False
+        while args and args[0] in ("--redefined", "--busy"):
+            if args[0] == "--busy":
+                busy, args = True, args[1:]
+                continue
+            if len(args) < 2:
+                break
             redefined.append(args[1])
             args = args[2:]
         unknown = [r for r in redefined if not any(names([r], f) for f in budgets["figures"])]
         if unknown:
             sys.exit(f"calibrate_budgets: --redefined names no figure: {', '.join(unknown)}")
-        calibrate_times(budgets, [load(p) for p in args], redefined)
+        calibrate_times(budgets, [load(p) for p in args], redefined, busy)
     save(budgets_path, budgets)
     return 0
 

@@ -25,9 +25,8 @@
 #include "bench_meshes.hpp"
 #include "counting_allocator.hpp"
 #include "gated_sweep.hpp"
-#include "refine/edge_split.hpp"
+#include "refined_liver.hpp"
 #include "tetcut/cut.hpp"
-#include "tetcut/detail/local_tables.hpp"
 #include "tetcut/percentile.hpp"
 
 using tetcut::percentile;
@@ -36,24 +35,8 @@ namespace {
 
 using tetcut::TetId;
 
-// The liver refined `level` times uniformly (cached).
-const tetcut::TetMesh& liver_at(int level) {
-  static std::map<int, tetcut::TetMesh> cache;
-  auto it = cache.find(level);
-  if (it != cache.end()) return it->second;
-  tetcut::TetMesh mesh = tetcut::bench::corpus_mesh("liver.msh");
-  tetcut::EdgeSplitter splitter;
-  for (int i = 0; i < level; ++i) {
-    std::vector<tetcut::Edge> edges;
-    for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
-      if (mesh.is_live(TetId{t}))
-        for (int e = 0; e < 6; ++e)
-          edges.push_back({mesh.vertex(TetId{t}, tetcut::kEdgeVerts[e][0]), mesh.vertex(TetId{t}, tetcut::kEdgeVerts[e][1])});
-    splitter.split(mesh, edges, tetcut::SplitMethod::kTemplates);
-    mesh.compact();
-  }
-  return cache.emplace(level, std::move(mesh)).first->second;
-}
+// The liver refined `level` times uniformly (refined_liver.hpp).
+const tetcut::TetMesh& liver_at(int level) { return tetcut::bench::refined_corpus_liver(level); }
 
 struct SweepResult {
   std::vector<double> samples_us;  // every cut, the first included
@@ -78,18 +61,16 @@ void evict_caches() {
   benchmark::DoNotOptimize(sum);
 }
 
-// One sweep on a fresh copy of the liver at `level`, every cut timed and its heap allocations
-// counted: the Cutter is constructed (and so prepared) before the first cut, and a simulator
-// feels the first cut like any other (issue 18: no warm-up is dropped). The first cut starts
+// One sweep on a fresh copy of `base` with a tool of `tool_diameter`, every cut timed and its
+// heap allocations counted: the Cutter is constructed (and so prepared) before the first cut, and
+// a simulator feels the first cut like any other (no warm-up is dropped). The first cut starts
 // with the caches emptied, as a simulator's does after loading and rendering; without that it
 // depended on what the previous repetition left in them (5-8 us warm against 12-20 us cold in
 // one process, and the gate's median of three repetitions mixed the two).
-void run_sweep(int level, SweepResult& out) {
-  const tetcut::TetMesh& base = level >= 0 ? liver_at(level) : tetcut::bench::replicated_corpus_liver();
-  level = std::max(level, 0);
+void run_sweep(const tetcut::TetMesh& base, double tool_diameter, SweepResult& out) {
   static const std::vector<tetcut::Vec3> centres = tetcut::bench::gated_sweep_centres();
   tetcut::TetMesh mesh = base;
-  tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter / (1 << level)});
+  tetcut::Cutter cutter(mesh, {.tool_diameter = tool_diameter});
   evict_caches();
   for (std::size_t i = 0; i < centres.size(); ++i) {
     const std::uint64_t before = tetcut::bench::allocations();
@@ -114,6 +95,11 @@ void run_sweep(int level, SweepResult& out) {
       out.beyond_share.push_back(r.volume_removed_beyond_tool / ball);
     }
   }
+}
+
+// The gated sweep on the liver refined `level` times, the tool scaled to its edges.
+void run_sweep(int level, SweepResult& out) {
+  run_sweep(liver_at(level), tetcut::bench::kGatedToolDiameter / (1 << level), out);
 }
 
 void BM_CutSweep(benchmark::State& state) {
@@ -167,22 +153,27 @@ void BM_CutScaling(benchmark::State& state) {
 BENCHMARK(BM_CutScaling)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 // The same figure with the local work held identical: the lone liver against 64 copies of it
-// (~1M tets), the sweep on copy 0 in both. This isolates what the mesh's size alone costs.
+// (~1M tets), the sweep on copy 0 in both, interleaved in one process. This isolates what the
+// mesh's size alone costs. The argument orders the copies' ids (bench_meshes.hpp IdOrder): 0 copy
+// by copy (copy 0 keeps the lone liver's memory layout: no scan shows, but neither does a large
+// mesh's scatter), 1 shuffled with a fixed seed (copy 0's tets spread through the whole mesh's
+// memory, as a real large mesh's are), 2 sorted along a space-filling curve.
 void BM_CutScalingSameWork(benchmark::State& state) {
+  const auto order = static_cast<tetcut::bench::IdOrder>(state.range(0));
   liver_at(0);
-  tetcut::bench::replicated_corpus_liver();
+  const tetcut::TetMesh& copies = tetcut::bench::replicated_corpus_liver(order);
   SweepResult small, large;
   for (auto _ : state) {
     run_sweep(0, small);
-    run_sweep(-1, large);
+    run_sweep(copies, tetcut::bench::kGatedToolDiameter, large);
   }
-  state.counters["tets_large"] = static_cast<double>(tetcut::bench::replicated_corpus_liver().num_tets());
+  state.counters["tets_large"] = static_cast<double>(copies.num_tets());
   state.counters["p50_ratio_1M_over_16k"] = percentile(large.samples_us, 0.5) / percentile(small.samples_us, 0.5);
   state.counters["p99_ratio_1M_over_16k"] = percentile(large.samples_us, 0.99) / percentile(small.samples_us, 0.99);
+  state.counters["p50_us_16k"] = percentile(small.samples_us, 0.5);
+  state.counters["p50_us_1M"] = percentile(large.samples_us, 0.5);
 }
-BENCHMARK(BM_CutScalingSameWork)->Iterations(1)->Unit(benchmark::kMillisecond);
-
-
+BENCHMARK(BM_CutScalingSameWork)->DenseRange(0, 2)->ArgName("order")->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -7,8 +7,9 @@ BASE and HEAD are results files of `ci/bench` (Google Benchmark JSON, merged acr
 run on the same machine; COMPARE is what Google Benchmark's compare.py made of them
 (`ci/bench --compare BASE.json` writes it beside HEAD as HEAD.compare.json, through
 bench/compare_results.sh). Columns: figure, base, head, change, significance, budget (the head's
-value against it). Instruction counts (callgrind, `ci/bench --instructions`) come first: they do
-not depend on the runner's load, so any change is real for one toolchain ("exact"). Wall-time
+value against it). The callgrind figures (instruction counts and simulated cache misses, `ci/bench
+--instructions`) come first: they do not depend on the runner's load, so any change is real for
+one toolchain ("exact"). Wall-time
 figures follow with compare.py's two-sided Mann-Whitney U test over the repetitions of their
 benchmark, read from COMPARE and not computed again: "significant" when p < alpha (0.05) and the
 medians are more than 1 % apart. compare.py tests a benchmark's own time (real_time, or
@@ -22,15 +23,11 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from budget_gate import load, measured_value  # noqa: E402
+from budget_gate import is_callgrind, load, measured_value  # noqa: E402
 
 # Marks the comment the workflow updates instead of adding a new one on every push.
 MARKER = "<!-- tetcut-benchmark-delta -->"
 NOISE_FLOOR_PERCENT = 1.0
-
-
-def is_instruction_count(figure):
-    return "instructions" in figure["field"]
 
 
 def u_tests(comparison):
@@ -50,7 +47,7 @@ def number(value):
 def significance(figure, vb, vh, tests, alpha):
     if vb is None or vh is None:
         return ""
-    if is_instruction_count(figure):
+    if is_callgrind(figure):
         return "exact"
     test = tests.get(figure["benchmark"])
     if test is None:
@@ -84,7 +81,7 @@ def change_cell(base_value, head_value):
 def table(base, head, budgets, comparison, alpha):
     tests = u_tests(comparison)
     figures = budgets.get("figures", [])
-    ordered = [f for f in figures if is_instruction_count(f)] + [f for f in figures if not is_instruction_count(f)]
+    ordered = [f for f in figures if is_callgrind(f)] + [f for f in figures if not is_callgrind(f)]
     rows, over, missing = [], 0, 0
     for figure in ordered:
         vb, vh = measured_value(base, figure), measured_value(head, figure)

@@ -24,8 +24,13 @@ from budget_gate import load, measured_value  # noqa: E402
 
 
 def unit_of(figure):
-    """"cut p50, 16k liver (us)" -> "us"; an instruction count -> "instructions"; else the field."""
-    if "instructions" in figure["field"]:
+    """"cut p50, 16k liver (us)" -> "us"; an instruction count -> "instructions"; a simulated cache
+    miss count -> "misses"; a paired ratio -> "ratio"; else the field."""
+    if figure.get("kind") == "cache":
+        return "misses"
+    if figure.get("kind") == "paired":
+        return "ratio"
+    if figure.get("kind") == "instructions" or "instructions" in figure["field"]:
         return "instructions"
     m = re.search(r"\(([^()]*)\)\s*$", figure["name"])
     return m.group(1) if m else figure["field"]

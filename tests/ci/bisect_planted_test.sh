@@ -28,6 +28,12 @@ src=$(cd "${2:?}" && pwd)
 work=${3:?}
 status=0
 fail() { echo "FAIL: $*"; status=1; }
+# Every build of the throw-away history compiles the same sources up to the planted file, run after
+# run: with ccache (CMake takes the launcher from the environment) a machine that keeps its cache
+# compiles them once, not in every ci/test. Paths are hashed relative to WORK_DIR.
+if command -v ccache >/dev/null && [[ -z ${CMAKE_CXX_COMPILER_LAUNCHER:-} ]]; then
+  export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=$(realpath -m "$work")
+fi
 
 rm -rf "$work"
 mkdir -p "$work/history"
@@ -63,7 +69,7 @@ case $kind in
     # costs: 20,000 turns were 120,000 instructions.
     budget=$(python3 -c 'import json, sys; print(int(next(f["max"] for f in json.load(open(sys.argv[1]))["figures"] if f["name"].startswith("instructions per cut"))))' "$repo/bench/budgets.json")
     file=bench/cut_instructions.cpp
-    sed -i "s/removed += cutter.cut(c).tets_removed;/{ removed += cutter.cut(c).tets_removed; volatile int k = 0; while (k < $((budget / 2))) k = k + 1; }/" "$repo/$file" ;;
+    sed -i "s/  return cutter.cut(centre).tets_removed;/  volatile int k = 0; while (k < $((budget / 2))) k = k + 1; return cutter.cut(centre).tets_removed;/" "$repo/$file" ;;
   *) echo "usage: bisect_planted_test.sh crash|slowdown SOURCE_DIR WORK_DIR"; exit 2 ;;
 esac
 g diff --quiet -- "$file" && { echo "FAIL: planting the $kind in $file changed nothing (has the file changed?)"; exit 1; }

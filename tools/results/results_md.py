@@ -8,8 +8,8 @@ commit the page whenever the figures move.
                   [--sweeps SWEEPS.json]
                   [--build-dir DIR] [--how TEXT] [--out FILE]
 
-RESULTS.json is ci/bench's Google Benchmark JSON (merged across suites, the callgrind count
-included with --instructions), RERUN.json the re-runs ci/bench made of wall times over budget
+RESULTS.json is ci/bench's Google Benchmark JSON (merged across suites, the callgrind figures
+included with --instructions, the paired comparison with --paired, the session's memory), RERUN.json the re-runs ci/bench made of wall times over budget
 (the gate keeps the fastest run, and so does the page), BUDGETS.json bench/budgets.json,
 STATS.json `tetcut stats --json`'s output, PEER.json `tetcut_quality_peer --json`'s (with the
 improvement pass, and with --improve off), SWEEPS.json `tetcut_quality_sweeps --json`'s. --build-dir is the build the figures came from (its compiler and flags are
@@ -178,7 +178,7 @@ def benchmark_runs(inputs):
 def budget_gate(inputs):
     if not inputs.bench:
         return None
-    gate = Gate(inputs.bench, inputs.budgets, inputs.confirmations, skip={"instructions_per_cut"})
+    gate = Gate(inputs.bench, inputs.budgets, inputs.confirmations, skip_kinds={"instructions", "cache", "paired"})
     return ["## The budget gate", "",
             "Every figure of `bench/budgets.json`, as `ci/bench` gates it: the median over the repetitions, its "
             "budget, and how far below the budget it is. A wall time over budget is run again, up to twice, and the "
@@ -201,7 +201,8 @@ def cut_sweeps(inputs):
                      fmt(e.get("p50_us")), fmt(e.get("p90_us")), fmt(e.get("p99_us")), fmt(e.get("max_us")),
                      fmt(e.get("first_us")), fmt(e.get("tets_removed_per_cut")), fmt(e.get("tets_created_per_cut")),
                      fmt(e.get("allocations"), 0), fmt(e.get("unresolved"), 0)))
-    same_work = inputs.median("BM_CutScalingSameWork/iterations:1")
+    same_work = {order: inputs.median(f"BM_CutScalingSameWork/order:{i}/iterations:1")
+                 for i, order in enumerate(("copies in order", "ids shuffled", "ids along a space-filling curve"))}
     lines = ["## Per-cut latency", "",
              "Cautery sweeps with every cut timed (`bench/cut_bench.cpp`: the gated sweep through the bundled liver "
              "and the same paths through the refined livers; `bench/stages_bench.cpp`: a sweep along each bundled "
@@ -209,10 +210,16 @@ def cut_sweeps(inputs):
              "the first cut with the caches emptied before it; allocations are counted over the whole sweep.", ""]
     lines += table(("sweep", "cuts", "p50", "p90", "p99", "max", "first", "removed / cut", "created / cut",
                     "allocations", "unresolved"), rows)
-    if same_work and "p50_ratio_1M_over_16k" in same_work:
-        lines += ["", f"The same work on 64 copies of the liver against one: p50 ratio "
-                      f"{same_work['p50_ratio_1M_over_16k']:.2f}, p99 ratio {same_work.get('p99_ratio_1M_over_16k', 0):.2f} "
-                      f"({fmt(same_work.get('tets_large'), 0)} tets against the liver's)."]
+    rows = [(order, fmt(e.get("p50_us_16k")), fmt(e.get("p50_us_1M")), fmt(e["p50_ratio_1M_over_16k"], 2),
+             fmt(e.get("p99_ratio_1M_over_16k"), 2)) for order, e in same_work.items() if e and "p50_ratio_1M_over_16k" in e]
+    if rows:
+        tets = next(e.get("tets_large") for e in same_work.values() if e)
+        lines += ["", f"The same work on 64 copies of the liver ({fmt(tets, 0)} tets) against the lone liver, the sweep on "
+                      "copy 0, both in one process (`BM_CutScalingSameWork`): with the copies' ids in order copy 0 keeps "
+                      "the lone liver's memory layout; shuffled (a fixed seed) its tets lie scattered through the whole "
+                      "mesh's memory, as a large mesh's do; sorted along a Morton curve they are near their neighbours "
+                      "again. Per-cut p50 in microseconds.", ""]
+        lines += table(("ids of the 64 copies", "p50, liver", "p50, 64 copies", "p50 ratio", "p99 ratio"), rows)
     return lines
 
 
@@ -238,17 +245,71 @@ def instructions(inputs):
     e = inputs.median("instructions_per_cut")
     if not e:
         return None
-    figure = next((f for f in inputs.budgets.get("figures", []) if f.get("benchmark") == "instructions_per_cut"), {})
+    figures = {(f["benchmark"], f["field"]): f for f in inputs.budgets.get("figures", [])
+               if f.get("kind") in ("instructions", "cache")}
+
+    def baseline(benchmark, field):
+        f = figures.get((benchmark, field))
+        return fmt(f.get("baseline"), 0) + f" (<= {fmt(f.get('max'), 0)})" if f and f.get("baseline") else "-"
+
     lines = ["## Instructions per cut", "",
              f"callgrind over every cut of the fixed liver sweep (`bench/cut_instructions.cpp`, `ci/bench "
              f"--instructions`): {fmt(e['instructions_per_cut'], 0)} instructions per cut ({fmt(e.get('instructions'), 0)} "
-             f"in {fmt(e.get('cuts'), 0)} cuts). Deterministic for one toolchain, whatever the machine's load."]
-    if figure:
-        lines += ["", f"Baseline in `bench/budgets.json`: {fmt(figure.get('baseline'), 0)}, gated at "
-                      f"+{figure.get('tolerance_pct', 3):g} % ({fmt(figure.get('max'), 0)})."]
+             f"in {fmt(e.get('cuts'), 0)} cuts). Deterministic for one toolchain, whatever the machine's load. One profile "
+             "part per cut gives the percentiles (nearest rank over the cuts); a stage is the inclusive cost of its "
+             "`Cutter::Pipeline` member functions, what its `CutTimings` field times (finish: the tissue audit and the "
+             "commit); `other` is the cut's own work around them. Each gated row's baseline and bound (+3 %) are "
+             "`bench/budgets.json`'s.", ""]
+    rows = [("whole cut", fmt(e["instructions_per_cut"], 0), fmt(e.get("p50_cut"), 0), fmt(e.get("p90_cut"), 0),
+             fmt(e.get("p99_cut"), 0), baseline("instructions_per_cut", "instructions_per_cut") + "; p50 "
+             + baseline("instructions_per_cut", "p50_cut") + "; p90 " + baseline("instructions_per_cut", "p90_cut"))]
+    for stage in ("locate", "refine", "select", "remove", "improve", "finish", "other"):
+        s = inputs.median(f"instructions_per_cut/{stage}")
+        if s:
+            rows.append((stage, fmt(s["per_cut"], 0), fmt(s.get("p50_cut"), 0), fmt(s.get("p90_cut"), 0), "-",
+                         baseline(f"instructions_per_cut/{stage}", "per_cut")))
+    lines += table(("", "mean", "p50 cut", "p90 cut", "p99 cut", "baseline (bound) of the mean"), rows)
+    c = inputs.median("ll_misses_per_cut")
+    if c:
+        lines += ["", f"Last-level cache misses on the same sweep through 64 copies of the liver whose ids are shuffled "
+                      f"({fmt(c.get('cuts'), 0)} cuts, `cut_instructions --shuffled-copies`), in callgrind's simulated "
+                      f"caches (32 KiB L1s, an 8 MiB 16-way last level; empty at the first cut): "
+                      f"{fmt(c['ll_misses_per_cut'], 0)} per cut, {fmt(c.get('d1_misses_per_cut'), 0)} L1 data misses, "
+                      f"{fmt(c.get('instructions_per_cut'), 0)} instructions per cut (the ties the engine breaks by id "
+                      f"differ from the liver's). Baseline {baseline('ll_misses_per_cut', 'll_misses_per_cut')}."]
     if e.get("toolchain"):
-        lines += ["", f"Toolchain of the count: {e['toolchain']}"]
+        lines += ["", f"Toolchain of the counts: {e['toolchain']}"]
     return lines
+
+
+def paired(inputs):
+    entries = [b for b in (inputs.bench or {}).get("benchmarks", []) if b.get("name", "").startswith("paired/")]
+    if not entries:
+        return None
+    limits = {f["benchmark"]: f["max"] for f in inputs.budgets.get("figures", []) if f.get("kind") == "paired"}
+    reference = inputs.budgets.get("reference", {}).get("commit", "?")
+    rows = [(b["name"][len("paired/"):], short(b["head_us"]), short(b["reference_us"]), f"{b['ratio']:.3f}",
+             f"[{b['ratio_low']:.3f}, {b['ratio_high']:.3f}]", f"{limits[b['name']]:g}" if b["name"] in limits else "-")
+            for b in entries]
+    return ["## Paired wall time against the reference", "",
+            f"`ci/bench --paired` (`bench/paired_gate.py`): this build's engine and the reference commit's "
+            f"({reference[:12]}, `bench/budgets.json`) cut the gated sweep on the liver and on the liver refined twice in "
+            f"turns on one core, {entries[0].get('pairs', '?')} pairs; per figure the median of the pairs' ratios head / "
+            "reference and its 95 % bootstrap interval. The gate fails a figure whose interval's lower end is above its "
+            "limit. Medians of the rounds in microseconds.", ""] + table(
+        ("figure", "head", "reference", "ratio", "95 % interval", "limit"), rows)
+
+
+def session_memory(inputs):
+    e = inputs.median("session_memory")
+    if not e:
+        return None
+    return ["## Memory of a cutting session", "",
+            f"`bench/session_memory.cpp`, a process of its own: read 64 copies of the liver ({fmt(e['tets'], 0)} tets) "
+            f"from a binary VTU file, build the mesh, construct a Cutter, run the gated sweep. Peak resident size "
+            f"{fmt(e['peak_rss_bytes'] / 1e6, 0)} MB: {fmt(e['bytes_per_tet'])} bytes per tet (after the load "
+            f"{fmt(e['load_bytes_per_tet'])}, after the Cutter's construction {fmt(e['cutter_bytes_per_tet'])}; at the "
+            f"start {fmt(e['start_bytes_per_tet'])})."]
 
 
 def paper_table1(inputs):
@@ -499,7 +560,8 @@ def mechanics(inputs):
     return body
 
 
-SECTIONS = [machine, budget_gate, cut_sweeps, removal_requests, instructions, paper_table1, paper_table2,
+SECTIONS = [machine, budget_gate, cut_sweeps, paired, removal_requests, instructions, session_memory, paper_table1,
+            paper_table2,
             paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, peers, mechanics, resection]
 
 

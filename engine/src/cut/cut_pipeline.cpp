@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 
-#include "cut/planted_slowdown.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut {
@@ -182,7 +181,6 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
     return report;
   }
   Laps clock(Clock::now());
-  detail::planted_slowdown();
   const Ball tool{centre, params_.tool_diameter / 2};
   locate(tool);
   report.tets_hit = static_cast<std::uint32_t>(hit_.size());
