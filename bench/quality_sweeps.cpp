@@ -1,8 +1,8 @@
 // tetcut_quality_sweeps: random cautery sweeps on meshes tetcut did not write, and the shape of
-// the tets the cuts create, under either refinement rule.
+// the tets the cuts create, under a refinement rule (the engine's default, auto, unless asked).
 //
 //   tetcut_quality_sweeps [--sweeps N] [--seed S] [--only MESH] [--tool TOOL]
-//                         [--refinement paper|graded] [--json FILE]
+//                         [--refinement auto|paper|graded] [--json FILE]
 //
 // The meshes come from other meshers at other densities: TetGen (through tools/generators) fills
 // a box at three densities, one without TetGen's quality bound (its plain Delaunay
@@ -22,10 +22,13 @@
 // that left tissue in the tool (CutReport::left_in_tool), cuts that allocated, the input's worst
 // radius ratio, the goal min(0.1, that), the worst created radius ratio and dihedral angle, the
 // tets one cut created (p99, max: net, ok cuts), and the cut times (p50, p99, max: every cut that
-// met the mesh, the refused ones included, since a refusal costs its attempt).
+// met the mesh, the refused ones included, since a refusal costs its attempt), cuts auto made
+// again with the graded rule, tets removed beyond the cut's reach, and per ok cut the volume left
+// in the tool and removed beyond it as shares of the tool's ball (p50, p99).
 //
 // Deterministic but for the times: the meshers are seeded, and so are the chords (SplitMix64).
-// Exit 0; 1 when the checker objected to a cut or a created tet is below its goal; 2 on bad
+// Exit 0; 1 when the checker objected to a cut, a cut was refused or a created tet is below its
+// goal; 2 on bad
 // arguments or a mesher failure.
 #include <algorithm>
 #include <array>
@@ -34,6 +37,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -96,13 +100,18 @@ struct Row {
   double input_worst = 1, goal = 0.1;
   std::uint64_t cuts = 0, refused = 0, violations = 0, max_created = 0;
   std::uint64_t left = 0;          // ok cuts that left tissue in the tool (CutReport::left_in_tool)
+  std::uint64_t beyond_reach = 0;  // tets removed beyond the cut's reach (CutReport::tets_removed_beyond_reach)
+  std::uint64_t retried = 0;       // ok cuts made again with the graded rule (auto's retry)
+  // Per ok cut: the volume of tissue left in the tool and removed beyond it, as shares of the ball.
+  std::vector<double> left_share, beyond_share;
   std::uint64_t allocating = 0;    // cuts that allocated on the heap
   std::array<std::uint64_t, tetcut::kCutRefusals> refused_by{};  // by CutRefusal
   inv::QualityStats created;
   std::vector<double> cut_us;      // every cut that met the mesh, refused ones included
   std::vector<double> made;        // net tets created, per ok cut
   std::string first_violation, first_refusal;
-  [[nodiscard]] bool goal_met() const { return created.tets == 0 || created.min_radius_ratio >= goal; }
+  // Met: no cut refused, and no created tet below the goal.
+  [[nodiscard]] bool goal_met() const { return refused == 0 && (created.tets == 0 || created.min_radius_ratio >= goal); }
 };
 
 double max_of(const std::vector<double>& values) {
@@ -168,6 +177,11 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
       row.made.push_back(r.tets_created);
       row.max_created = std::max<std::uint64_t>(row.max_created, r.tets_created);
       row.left += r.left_in_tool > 0 ? 1 : 0;
+      row.beyond_reach += r.tets_removed_beyond_reach;
+      row.retried += r.retries;
+      const double ball = std::numbers::pi / 6.0 * tool.diameter * tool.diameter * tool.diameter;
+      row.left_share.push_back(r.volume_left_in_tool / ball);
+      row.beyond_share.push_back(r.volume_removed_beyond_tool / ball);
       inv::pool(row.created, inv::quality_of(mesh.raw_view(), cutter.last_created()));
       const inv::CheckReport report =
           local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(),
@@ -226,6 +240,12 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
                           {"created_tets", r.created.tets},
                           {"max_created_per_cut", r.max_created},
                           {"p99_created_per_cut", tetcut::percentile(r.made, 0.99)},
+                          {"retried_cuts", r.retried},
+                          {"tets_removed_beyond_reach", r.beyond_reach},
+                          {"volume_left_share_p50", tetcut::percentile(r.left_share, 0.5)},
+                          {"volume_left_share_p99", tetcut::percentile(r.left_share, 0.99)},
+                          {"volume_removed_beyond_share_p50", tetcut::percentile(r.beyond_share, 0.5)},
+                          {"volume_removed_beyond_share_p99", tetcut::percentile(r.beyond_share, 0.99)},
                           {"p50_us", tetcut::percentile(r.cut_us, 0.5)},
                           {"p99_us", tetcut::percentile(r.cut_us, 0.99)},
                           {"max_us", max_of(r.cut_us)}};
@@ -260,13 +280,13 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
 int main(int argc, char** argv) {
   int sweeps = 4;
   std::uint64_t seed = 29;
-  std::string only, only_tool, json, refinement = "paper";
+  std::string only, only_tool, json, refinement = "auto";
   CLI::App app{"random cautery sweeps on meshes from TetGen and CGAL: the tets the cuts create"};
   app.add_option("--sweeps", sweeps, "sweeps per mesh and tool")->check(CLI::Range(1, 1000));
   app.add_option("--seed", seed, "the chords' random seed");
   app.add_option("--only", only, "one mesh: box-coarse, box-fine, box-delaunay, cylinder, sphere, liver-6k, liver-16k");
   app.add_option("--tool", only_tool, "one tool: 4%, 8%, 12%, 0.05x, 0.1x, 0.3x, 1x, 3x (x the median edge)");
-  app.add_option("--refinement", refinement, "the refinement rule: paper (3.2, the default) or graded");
+  app.add_option("--refinement", refinement, "the refinement rule: auto (the engine's default), paper (3.2) or graded");
   app.add_option("--json", json, "also write the rows to FILE");
   try {
     app.parse(argc, argv);
@@ -275,7 +295,7 @@ int main(int argc, char** argv) {
   }
   const std::optional<tetcut::RefinementRule> rule = tetcut::parse_refinement_rule(refinement);
   if (!rule) {
-    std::fprintf(stderr, "tetcut_quality_sweeps: --refinement %s: must be paper or graded\n", refinement.c_str());
+    std::fprintf(stderr, "tetcut_quality_sweeps: --refinement %s: must be auto, paper or graded\n", refinement.c_str());
     return 2;
   }
 

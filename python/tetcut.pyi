@@ -191,6 +191,10 @@ class CutReport:
     @property
     def d_ref(self) -> float: ...
     @property
+    def refinement(self) -> str: ...
+    @property
+    def retries(self) -> int: ...
+    @property
     def wall_us(self) -> float:
         """Wall time of the engine's cut alone, timed around the C++ call."""
     @property
@@ -209,6 +213,7 @@ class Cutter:
         strategy: str = "combined",
         split: str = "templates",
         order: str = "direct-first",
+        refinement: str = "auto",
         d_ref_factor: float = 1.5,
         p: float = 1.5,
         search_depth: int = 10,

@@ -231,9 +231,11 @@ Outcome run_tetcut(const Sweep& s, std::size_t cuts) {
     out.removed += r.tets_removed;
     out.created += r.tets_created;
     out.unresolved += r.unresolved;
-    // With the tissue rule (I10) at the cut's tool.
-    options.tool = inv::ToolRule{.centre = s.centres[i], .radius = params.tool_diameter / 2, .d_ref = params.d_ref(),
-                                 .left = cutter.last_left_in_tool()};
+    // With the tissue rule (I10) at the cut's tool; a refused cut changed nothing.
+    options.tool.reset();
+    if (r.ok)
+      options.tool = inv::ToolRule{.centre = s.centres[i], .radius = params.tool_diameter / 2, .d_ref = params.d_ref(),
+                                   .left = cutter.last_left_in_tool()};
     out.count(local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options), i,
               r.tets_removed);
   }

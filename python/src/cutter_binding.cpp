@@ -422,7 +422,7 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   if (!mesh) throw py::type_error(where + ": mesh: expected a tetcut.Mesh, got None");
   const Keywords k(where, kwargs,
                    {"mesh", "tool_diameter", "strategy", "split", "order", "d_ref_factor", "p", "search_depth",
-                    "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "keep_labels"});
+                    "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "refinement", "keep_labels"});
   CutParams params;
   auto set = [&](const char* name, auto CutParams::*field, const char* expected) {
     using T = std::remove_reference_t<decltype(params.*field)>;
@@ -456,6 +456,11 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
     if (!v) throw py::value_error(where + ": split: templates or bisection, not '" + *s + "'");
     params.split_method = *v;
   }
+  if (const auto s = k.get<std::string>("refinement", "a str")) {
+    const auto v = parse_refinement_rule(*s);
+    if (!v) throw py::value_error(where + ": refinement: auto, paper or graded, not '" + *s + "'");
+    params.refinement = *v;
+  }
   if (const auto s = k.get<std::string>("order", "a str")) {
     const auto v = parse_removal_order(*s);
     if (!v) throw py::value_error(where + ": order: direct-first or paper, not '" + *s + "'");
@@ -472,7 +477,7 @@ std::string cutter_init_doc() {
   auto real = [](double x) { return py::repr(py::float_(x)).cast<std::string>(); };
   const std::string parameters =
       "self, /, mesh, *, tool_diameter, strategy='" + std::string(to_string(d.strategy)) + "', split='" +
-      to_string(d.split_method) + "', order='" + to_string(d.order) + "', d_ref_factor=" + real(d.d_ref_factor) +
+      to_string(d.split_method) + "', order='" + to_string(d.order) + "', refinement='" + to_string(d.refinement) + "', d_ref_factor=" + real(d.d_ref_factor) +
       ", p=" + real(d.p) + ", search_depth=" + std::to_string(d.search_depth) +
       ", max_refine_iterations=" + std::to_string(d.max_refine_iterations) +
       ", max_tets_created=" + std::to_string(d.max_tets_created) + ", improve=" + (d.improve ? "True" : "False") +
@@ -481,7 +486,8 @@ std::string cutter_init_doc() {
 
 tool_diameter (required, mesh units) and the other CutParams fields (engine/include/tetcut/cut.hpp)
 by keyword: strategy basic|neighbours|combined|wide, split templates|bisection, order
-direct-first|paper, d_ref_factor (D_ref = d_ref_factor x tool_diameter, paper 3.2), p (shell edge
+direct-first|paper, refinement auto|paper|graded (auto: graded for a tool fine for the mesh, else
+the paper's loop), d_ref_factor (D_ref = d_ref_factor x tool_diameter, paper 3.2), p (shell edge
 ratio, 3.2), search_depth (3.5), max_refine_iterations, max_tets_created, improve (the improvement
 pass), quality_floor (its radius-ratio floor). keep_labels: labels (mesh.labels)
 whose tets no cut takes (Cutter::set_uncuttable, the paper's Fig. 7), each some tet's label.
@@ -606,6 +612,11 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
                "Slivers the improvement pass let go with the tissue (apart from tets_removed).");
   report_field(report, "d_ref", &CutReport::d_ref,
                "The D_ref the cut was refined and judged at: d_ref_factor x tool_diameter (paper 3.2).");
+  report.def_property_readonly("refinement", [](const Report& r) { return std::string(to_string(r.report.refinement)); },
+                               "The refinement rule of the attempt that ended the cut: 'paper' or 'graded'.");
+  report_field(report, "retries", &CutReport::retries,
+               "Attempts rolled back before the one that ended the cut: with refinement='auto', a cut whose tets the "
+               "improvement pass could not lift is made again with the graded rule, at the same D_ref.");
   report.def_readonly("wall_us", &Report::wall_us,
                       "Wall time of the engine's cut alone (microseconds), timed around the C++ call by the binding: "
                       "what a C++ caller would measure; a Python caller's own timing minus this is the binding's cost.")

@@ -184,7 +184,7 @@ TEST_F(Cli, TheGradedRefinementIsTheSameRuleFromCutRunAndAScenarioLine) {
   write("bad.scn", "mesh box.msh\nrefinement coarse\n");
   const ProcessResult bad = tetcut({"run", path("bad.scn")});
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.err.find("refinement must be paper or graded"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("refinement must be auto, paper or graded"), std::string::npos) << bad.err;
 }
 
 TEST_F(Cli, RemoveAtAPointRemovesTheTetTheScenarioRemoves) {

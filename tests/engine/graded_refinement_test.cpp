@@ -231,10 +231,13 @@ TEST(GradedRefinement, TheSameSweepGivesThePinnedHashAndThePaperRuleAnother) {
     return canonical_hash(mesh);
   };
   const std::uint64_t graded = sweep(RefinementRule::kGraded);
-  EXPECT_EQ(graded, 0xf87c1d2b25d6527eull);
+  EXPECT_EQ(graded, 0xfc34b98fa4aa1c1aull);
   EXPECT_EQ(graded, sweep(RefinementRule::kGraded));
   EXPECT_NE(graded, sweep(RefinementRule::kPaper));
-  EXPECT_EQ(CutParams{}.refinement, RefinementRule::kPaper) << "the paper's rule stays the default";
+  // The default, auto, takes the graded rule for a tool this fine for the mesh (D_ref 0.45 of
+  // its median edge).
+  EXPECT_EQ(CutParams{}.refinement, RefinementRule::kAuto);
+  EXPECT_EQ(sweep(RefinementRule::kAuto), graded);
 }
 
 }  // namespace

@@ -481,23 +481,33 @@ def quality_sweeps(inputs):
         worst = "-"
         if "worst_created_radius_ratio" in r:
             worst = f"{short(r['worst_created_radius_ratio'])} / {fmt(r['worst_created_min_dihedral_deg'], 1)}"
-        body.append((r["mesh"], r["tool"], short(r["tool_diameter"]), fmt(r["tets"], 0), fmt(r["cuts"], 0),
-                     fmt(r["refused"], 0), fmt(r["checker_violations"], 0), short(r["input_worst_radius_ratio"]),
-                     worst, fmt(r["max_created_per_cut"], 0), f"{short(r['p50_us'])} / {short(r['p99_us'])}",
-                     "yes" if r["goal_met"] else "**no**"))
+        refused = fmt(r["refused"], 0) + (f" ({fmt(r.get('retried_cuts', 0), 0)} retried)" if r.get("retried_cuts") else "")
+        body.append((r["mesh"], r["tool"], short(r["tool_diameter"]), fmt(r["tets"], 0), fmt(r["cuts"], 0), refused,
+                     fmt(r["checker_violations"], 0), fmt(r.get("cuts_leaving_tissue", 0), 0), worst,
+                     f"{short(r.get('p99_created_per_cut'))} / {fmt(r['max_created_per_cut'], 0)}",
+                     f"{short(r['p50_us'])} / {short(r['p99_us'])} / {short(r['max_us'])}",
+                     f"{fmt(100 * r.get('volume_left_share_p50', 0), 1)} / {fmt(100 * r.get('volume_left_share_p99', 0), 1)}",
+                     f"{fmt(100 * r.get('volume_removed_beyond_share_p50', 0), 1)} / "
+                     f"{fmt(100 * r.get('volume_removed_beyond_share_p99', 0), 1)}",
+                     fmt(r.get("tets_removed_beyond_reach", 0), 0), "yes" if r["goal_met"] else "**no**"))
     made_by = {}
     for r in data["rows"]:
         made_by.setdefault(r["mesh"], r["made_by"])
     lines = ["## Random sweeps on meshes from TetGen and CGAL", "",
              f"`tetcut_quality_sweeps` (bench/quality_sweeps.cpp): {data['sweeps_per_tool']} sweeps per mesh and tool "
              "along random chords of the bounding box, one cut every half tool diameter, default parameters "
-             "(combined, the improvement pass, floor 0.1), the checker after every cut. Tools: 4, 8 and 12 % of the "
-             "bounding box's diagonal, and *fine*, a tenth of the median edge. Worst created: radius ratio / "
-             "smallest dihedral in degrees; goal min(0.1, the input's worst). A refused cut is one the pass could "
-             "not lift to the floor: it leaves the mesh as it was. Meshes: "
+             f"(combined, the improvement pass, floor 0.1, refinement {data.get('refinement', 'paper')}), the checker "
+             "after every cut (I10, the tissue rule, included). Tools: 4, 8 and 12 % of the bounding box's diagonal, "
+             "and 0.05 to 3 times the median edge (`0.05x` ...). Refused: cuts rolled back (the mesh as it was), and "
+             "how many ok cuts auto made again with the graded rule. Left: ok cuts that left tissue the selection "
+             "takes in the tool (`left_in_tool`). Worst created: radius ratio / smallest dihedral in degrees. Tets "
+             "made per ok cut p99 / max. Volume left in the tool and removed beyond it per ok cut, p50 / p99, in % "
+             "of the tool's ball (estimates: `volume_left_in_tool`, docs/usage.md). Goal met: no refused cut and "
+             "every created tet at min(0.1, the input's worst) or better. Meshes: "
              + "; ".join(f"{k}: {v}" for k, v in made_by.items()) + ".", ""]
-    lines += table(("mesh", "tool", "diameter", "tets", "cuts", "refused", "checker", "input worst", "worst created",
-                    "max tets / cut", "p50 / p99 us", "goal met"), body, right_from=2)
+    lines += table(("mesh", "tool", "diameter", "tets", "cuts", "refused", "checker", "left", "worst created",
+                    "tets made p99 / max", "p50 / p99 / max us", "vol. left %", "vol. beyond %", "beyond reach",
+                    "goal met"), body, right_from=2)
     return lines
 
 

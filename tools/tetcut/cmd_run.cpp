@@ -1,4 +1,4 @@
-// `tetcut run SCENARIO [--refinement paper|graded] [--check every|end|none] [--out M]
+// `tetcut run SCENARIO [--refinement auto|paper|graded] [--check every|end|none] [--out M]
 // [--report R.json]`: runs a scenario file (tools/scenario) and says which line failed, if any.
 #include <ostream>
 
@@ -15,7 +15,7 @@ int cmd_run(Args args, std::ostream& out, std::ostream& err) {
   std::optional<RefinementRule> refinement;
   RunOutputs outputs;
   CommandParser parser(
-      "run", "tetcut run SCENARIO [--refinement paper|graded] [--check every|end|none] [--out M] [--report R.json]",
+      "run", "tetcut run SCENARIO [--refinement auto|paper|graded] [--check every|end|none] [--out M] [--report R.json]",
       "Runs a scenario file: one operation a line (mesh, diameter, strategy, cut, sweep, remove,\n"
       "compact, check, expect hash|tets|unresolved|components), tets and tools addressed by points\n"
       "so that scenarios survive changes of internal ids. See corpus/scenarios/ and\n"

@@ -5,12 +5,13 @@
 //
 // The tool moves in the world: each sweep point is mapped to the rest configuration through
 // the deformed tet that holds it (TensorMassModel::rest_point), and the rest mesh is cut there
-// (a point outside the deformed tissue is cut where it is). The time step is fixed: by default
-// --dt-factor (0.5) times the stable-step estimate before the first cut (StableStepEstimator: a
-// few power iterations on M^-1 K, between 2/3 of the critical step 2 / omega_max and the step
-// itself). The report gives per frame the cut time, the update time, the step time, the
-// stable-step estimate after the cut (the slivers a cut leaves can lower it below the step) and
-// the energy, so that a blow-up is visible; one stops the run with exit 1. A blow-up is the
+// (a point outside the deformed tissue is cut where it is). The time step follows the tissue:
+// --dt-factor (0.5) times the stable-step estimate (StableStepEstimator: a few power iterations on
+// M^-1 K, between 2/3 of the critical step 2 / omega_max and the step itself), before the first
+// cut and again after each cut that changed the mesh (the small tets a cut makes lower the
+// critical step), never above the first frame's. --dt S fixes it instead. The report gives per
+// frame the cut time, the update time, the step time, the step and the stable-step estimate after
+// the cut, and the energy, so that a blow-up is visible; one stops the run with exit 1. A blow-up is the
 // total energy (kinetic + elastic + gravity's potential) growing over a frame's steps: damped,
 // it can only fall (to the integrator's O(dt) ripple, allowed up to 1 % of the energies' size),
 // while an unstable step grows it exponentially. Not the displacement: a piece the resection
@@ -80,9 +81,9 @@ void add_simulate_options(CLI::App& app, SimulateArgs& a) {
   opt::number(app, "--density", a.density, "kg/m3 (default 1000)", "RHO");
   opt::number(app, "--unit", a.unit, "metres per mesh unit (default 0.001: millimetres)", "M");
   opt::number(app, "--damping", a.damping, "mass-proportional damping in 1/s (default 20)", "G");
-  opt::number(app, "--dt", a.dt, "the fixed time step in s (default: --dt-factor x the initial stable-step estimate)", "S");
+  opt::number(app, "--dt", a.dt, "a fixed time step in s (default: --dt-factor x the stable-step estimate, after every cut)", "S");
   opt::number(app, "--dt-factor", a.dt_factor,
-              "fraction of the stable-step estimate before the first cut (default 0.5; the estimate lies between 2/3 "
+              "fraction of the stable-step estimate each frame steps at (default 0.5; the estimate lies between 2/3 "
               "of the critical step and the step itself)",
               "F");
   opt::count(app, "--steps", a.steps, "explicit steps per frame (default 10)");
@@ -258,6 +259,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
 
   // ---- the simulation --------------------------------------------------------------------------
   Cutter cutter(mesh, params);
+  invariants::LocalChecker local(mesh.raw_view());
   if (!a.uncuttable_labels.empty()) {
     if (!raw->labelled()) return parser.usage_error("--keep-label: " + mesh_path + " has no labels", err);
     std::vector<TetId> uncuttable;
@@ -265,11 +267,11 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
       if (std::find(a.uncuttable_labels.begin(), a.uncuttable_labels.end(), raw->labels[t]) != a.uncuttable_labels.end())
         uncuttable.push_back(TetId{t});  // the builder keeps the file's tet order
     if (const auto bad = cutter.set_uncuttable(uncuttable)) return parser.usage_error(*bad, err);
+    local.set_uncuttable(uncuttable);  // the checker's own record, which I10 holds the cuts to
   }
   // The file's labels choose the materials (TetId = the file's tet index: the builder keeps the order).
   mechanics::TensorMassModel model(mesh, model_params, raw->labels);
   mechanics::RenderedSurface surface(mesh);
-  invariants::LocalChecker local(mesh.raw_view());
   const std::uint32_t fixed_count = fixed ? model.fix_where(mesh, fixed) : 0;
   mechanics::StableStepEstimator stable_step;
   const mechanics::StableStepEstimator::Estimate initial = stable_step.estimate(model);
@@ -286,7 +288,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   std::string failure;
   mechanics::Energy energy = model.energy();
   double max_u = max_displacement(mesh, model);  // after settling, should no frame follow
-  double stable_dt = initial.dt;
+  double stable_dt = initial.dt, min_dt = dt;
   for (std::size_t k = 0; k < centres.size(); ++k) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto rest = model.rest_point(mesh, centres[k], [&](const Vec3& p) { return cutter.tet_containing(p); });
@@ -298,21 +300,28 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
     surface.apply(mesh, log);
     update_us.push_back(microseconds_since(t1));
     if (!r.ok) ++cuts_refused;
-    const invariants::CheckReport check = local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created());
+    // The tissue rule too (I10), at the tool where the rest mesh was cut.
+    const invariants::CheckReport check =
+        local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(),
+                              r.ok ? scenario::cut_check_options(cutter.params(), rest.value_or(centres[k]),
+                                                                 cutter.last_left_in_tool())
+                                   : scenario::transaction_check_options(cutter.params()));
     if (!check.ok()) {
       failure = "frame " + std::to_string(k) + ": " + invariants::id_string(check.violations.front().id) + " violated: " +
                 check.violations.front().detail;
       break;
     }
-    const mechanics::Energy before_steps = model.energy();
-    const auto t2 = std::chrono::steady_clock::now();
-    for (std::uint64_t s = 0; s < steps; ++s) model.step(dt);
-    step_us.push_back(steps ? microseconds_since(t2) / static_cast<double>(steps) : 0.0);
     // The estimate follows the cut: a few iterations from the last ones (stable_step.hpp); a cut
-    // that changed nothing leaves it where it was.
+    // that changed nothing leaves it where it was. The step follows it, unless fixed by --dt.
     if (!log.removed.empty() || !log.created.empty()) stable_dt = stable_step.update(model).dt;
     min_stable = std::min(min_stable, stable_dt);
-    if (dt > stable_dt) ++unstable_frames;
+    const double frame_dt = a.dt ? dt : std::min(dt, dt_factor * stable_dt);
+    min_dt = std::min(min_dt, frame_dt);
+    if (frame_dt > stable_dt) ++unstable_frames;
+    const mechanics::Energy before_steps = model.energy();
+    const auto t2 = std::chrono::steady_clock::now();
+    for (std::uint64_t s = 0; s < steps; ++s) model.step(frame_dt);
+    step_us.push_back(steps ? microseconds_since(t2) / static_cast<double>(steps) : 0.0);
     energy = model.energy();
     max_u = max_displacement(mesh, model);
     frames.push_back({{"frame", k},
@@ -324,6 +333,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
                       {"cut_us", cut_us.back()},
                       {"update_us", update_us.back()},
                       {"step_us", step_us.back()},
+                      {"dt", frame_dt},
                       {"stable_dt", stable_dt},
                       {"energy", {{"kinetic", energy.kinetic}, {"elastic", energy.elastic}, {"gravity", energy.gravity},
                                   {"total", energy.total()}}},
@@ -341,7 +351,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
                         energy.kinetic + std::abs(energy.elastic) + std::abs(energy.gravity);
     if (!std::isfinite(energy.total()) || energy.total() - before_steps.total() > 1e-2 * size) {
       failure = "blow-up at frame " + std::to_string(k) + ": the energy went from " + si(before_steps.total(), "J") +
-                " to " + si(energy.total(), "J") + " in " + std::to_string(steps) + " steps of " + si(dt, "s") +
+                " to " + si(energy.total(), "J") + " in " + std::to_string(steps) + " steps of " + si(frame_dt, "s") +
                 " (stable step estimate " + si(stable_dt, "s") + ")";
       break;
     }
@@ -353,6 +363,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
                   {"cuts_refused", cuts_refused},
                   {"fixed_vertices", fixed_count},
                   {"dt", dt},
+                  {"dt_min", min_dt},
                   {"dt_factor", a.dt ? Json(nullptr) : Json(dt_factor)},
                   {"stable_dt_initial", initial.dt},
                   {"stable_dt_min", min_stable},

@@ -158,8 +158,8 @@ CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<
 }
 
 CLI::Option* refinement(CLI::App& app, std::optional<RefinementRule>& target, const std::string& help) {
-  return parsed(app, "--refinement", target, help, "paper|graded",
-                [](const std::string& s) { return parse_refinement_rule(s); }, "must be paper or graded");
+  return parsed(app, "--refinement", target, help, "auto|paper|graded",
+                [](const std::string& s) { return parse_refinement_rule(s); }, "must be auto, paper or graded");
 }
 
 CLI::Option* check_mode(CLI::App& app, std::optional<scenario::CheckMode>& target, const std::string& help) {

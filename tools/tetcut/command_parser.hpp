@@ -81,7 +81,7 @@ CLI::Option* order(CLI::App& app, const std::string& name, std::optional<Removal
                    const std::string& help);
 CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<SplitMethod>& target,
                           const std::string& help);
-// --refinement paper|graded (CutParams::refinement).
+// --refinement auto|paper|graded (CutParams::refinement).
 CLI::Option* refinement(CLI::App& app, std::optional<RefinementRule>& target, const std::string& help);
 CLI::Option* check_mode(CLI::App& app, std::optional<scenario::CheckMode>& target, const std::string& help);
 CLI::Option* check_level(CLI::App& app, std::optional<invariants::CheckLevel>& target, const std::string& help);

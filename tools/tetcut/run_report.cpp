@@ -65,7 +65,9 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"improvement_moves", r.improvement_moves},
               {"improvement_insertions", r.improvement_insertions},
               {"tets_removed_by_improvement", r.tets_removed_by_improvement},
-              {"d_ref", r.d_ref}};
+              {"d_ref", r.d_ref},
+              {"refinement", to_string(r.refinement)},
+              {"retries", r.retries}};
   if (!r.ok) {
     record["refusal"] = to_string(r.refusal);
     record["failure"] = r.failure;

@@ -63,12 +63,14 @@ struct CutParams {
   std::uint32_t max_tets_created = 20000;  // net tets a cut may create; more is refused early
   RemovalStrategy strategy = RemovalStrategy::kCombined;   // cut_strategies.hpp
   SplitMethod split_method = SplitMethod::kTemplates;
-  // Which refinement serves the tool (cut_strategies.hpp): the paper's loop, or longest-edge
+  // Which refinement serves the tool (cut_strategies.hpp): the paper's loop, longest-edge
   // bisection graded to the tool (its tets grow away from the tool instead of splitting coarse
-  // neighbours at the tool's scale). The paper's stops after max_refine_iterations rounds, the
-  // graded one only at the budget (max_tets_created) or when every tet meeting the tool has its
-  // edges within D_ref.
-  RefinementRule refinement = RefinementRule::kPaper;
+  // neighbours at the tool's scale), or auto: graded for a tool fine for the mesh, else the
+  // paper's, made again graded when the improvement pass cannot lift what the paper's made
+  // (CutReport::refinement and retries say what ran). The paper's stops after
+  // max_refine_iterations rounds, the graded one only at the budget (max_tets_created) or when
+  // every tet meeting the tool has its edges within D_ref.
+  RefinementRule refinement = RefinementRule::kAuto;
   RemovalOrder order = RemovalOrder::kDirectFirst;        // cut_strategies.hpp
   // The improvement pass that ends a cut or a removal request (flips, smoothing of the cut's own
   // vertices): it lifts every tet the cut made to min(quality_floor, the worst tet it replaced),
@@ -84,8 +86,8 @@ struct CutParams {
 // A message naming the parameter when one is non-finite, non-positive or out of range.
 std::optional<std::string> validate(const CutParams& params);
 
-// Each stage's wall time, and the whole call's (total_us, from the call to its return: a refused
-// cut's rollback included).
+// Each stage's wall time over every attempt of the cut, and the whole call's (total_us, from the
+// call to its return: a refused cut's rollback included).
 struct CutTimings {
   double locate_us = 0, refine_us = 0, select_us = 0, remove_us = 0, improve_us = 0;
   double finish_us = 0;  // the tissue audit, the commit, the index and the change log
@@ -155,6 +157,11 @@ struct CutReport : RequestCounts {
   std::uint32_t improvement_flips = 0, improvement_collapses = 0, improvement_moves = 0, improvement_insertions = 0;
   std::uint32_t tets_removed_by_improvement = 0;
   double d_ref = 0;                  // the D_ref the cut was judged at: CutParams::d_ref()
+  RefinementRule refinement = RefinementRule::kPaper;  // the rule of the attempt that ended it
+  // Attempts rolled back before the one that ended the cut: under RefinementRule::kAuto, a cut
+  // the paper's loop left with tets the pass could not lift is made again with the graded rule
+  // (at the same D_ref). Every attempt's time is in `time`.
+  std::uint32_t retries = 0;
   CutTimings time;
 };
 

@@ -55,10 +55,18 @@ std::optional<SplitMethod> parse_split_method(std::string_view text);
 //            refined by bisecting the terminal edge of its longest-edge propagation path, so the
 //            tets made grade outward from the tool instead of splitting coarse neighbours across
 //            their long edges (refine/longest_edge_bisection.hpp).
-enum class RefinementRule : std::uint8_t { kPaper, kGraded };
+//   kAuto    graded when the tool is fine for the mesh (D_ref below three quarters of its mean
+//            edge: the tets it meets need halving more than once), the paper's loop otherwise.
+//            Decided per Cutter from the mesh's scale (measured when it is indexed), not per cut;
+//            and a cut the paper's loop left with tets the improvement pass cannot lift is made
+//            again with the graded rule (CutReport::retries), at the same D_ref.
+//            The default: the paper's loop where it serves (a tool about the mesh's edge or
+//            coarser, where its tets are fewer and its tables and hashes are), the graded one
+//            where the paper's makes slivers no improvement lifts (bench/quality_sweeps.cpp).
+enum class RefinementRule : std::uint8_t { kPaper, kGraded, kAuto };
 
 const char* to_string(RefinementRule rule);
-// "paper", "graded".
+// "paper", "graded", "auto".
 std::optional<RefinementRule> parse_refinement_rule(std::string_view text);
 
 }  // namespace tetcut

@@ -51,8 +51,11 @@ class Cutter::Pipeline {
  private:
   // The stages of one cut, in order; each fills its part of the report. A stage that returns
   // false has refused the cut (refuse()): the caller rolls the transaction back.
+  class Laps;  // the stages' stopwatch
+  // Refine to commit with one refinement rule: committed, or refused and rolled back.
+  void attempt(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log);
   void locate(const Ball& tool);
-  bool refine(const Ball& tool, CutReport& report);
+  bool refine(const Ball& tool, RefinementRule rule, CutReport& report);
   void select(CutReport& report);
   bool remove_selected(CutReport& report);
   bool improve(CutReport& report);
@@ -68,13 +71,15 @@ class Cutter::Pipeline {
   void roll_back(CutReport& report);
   // Why the index cannot serve the mesh (compacted or replaced since it was built), if so.
   [[nodiscard]] std::optional<std::string> stale() const;
-  // refusal_ from invalid_ and check_scale(): after the parameters or the mesh's scale change.
+  // refusal_ from invalid_ and check_scale(), and the refinement rule: after the parameters or
+  // the mesh's scale change.
   void judge_scale();
 
   TetMesh& mesh_;
   CutParams params_;
   std::uint64_t epoch_ = 0;  // mesh_.id_epoch() when the index was built
   MeshScale scale_;          // what the refinement can serve (check_scale), measured once
+  RefinementRule rule_ = RefinementRule::kPaper;  // params_.refinement, auto resolved by judge_scale()
   // Why every cut would be refused, decided when the parameters or the scale change, not per
   // cut: validate(params_) (invalid_), else check_scale() with scale_ (refusal_ holds either).
   std::optional<std::string> invalid_, refusal_;

@@ -20,7 +20,8 @@ constexpr Spellings<RemovalOrder> kOrderNames[] = {{"direct-first", RemovalOrder
 constexpr Spellings<SplitMethod> kSplitMethodNames[] = {{"templates", SplitMethod::kTemplates},
                                                         {"bisection", SplitMethod::kBisection}};
 constexpr Spellings<RefinementRule> kRefinementNames[] = {{"paper", RefinementRule::kPaper},
-                                                          {"graded", RefinementRule::kGraded}};
+                                                          {"graded", RefinementRule::kGraded},
+                                                          {"auto", RefinementRule::kAuto}};
 
 template <class Enum, std::size_t N>
 const char* name_of(const Spellings<Enum> (&names)[N], Enum value) {

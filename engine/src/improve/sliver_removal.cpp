@@ -10,8 +10,8 @@ Refusal plan_sliver_removal(const TetMesh& mesh, TetId t, const Ball* reach, Tis
   // Inside the organ it would open a cavity: only a tet with a face on the surface goes.
   if (mesh.boundary_face_count(t) == 0) return Refusal::kNotRemovable;
   const TetMesh::TetVerts c = mesh.tet(t);
-  if (reach && !intersects(*reach, mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3])))
-    return Refusal::kOutOfReach;
+  // Within the cut's reach, as every removal is (tissue_removal.hpp).
+  if (reach && !tissue.within_reach(mesh, std::span<const TetId>(&t, 1))) return Refusal::kOutOfReach;
   if (!removability(mesh, t).removable()) return Refusal::kNotRemovable;
   plan.removed.push_back(t);
   plan.tissue = &tissue;

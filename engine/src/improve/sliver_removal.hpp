@@ -1,7 +1,7 @@
 // Sliver removal: a tet at the cut's surface that nothing lifts goes with the tissue, the least
 // tissue there is to remove (the last resort of CGAL Tetrahedral_remeshing's sliver removal is
 // likewise to take the sliver out of the complex). Only where removing it alone keeps the mesh a
-// manifold (paper 3.3: removable on its own) and within the cut's reach: the tool's ball grown by
+// manifold (paper 3.3: removable on its own) and lying within the cut's reach: the tool's ball grown by
 // D_ref, where the cut's surface is.
 //
 // Planned on the const mesh as any operation (Operator::kSliverRemoval): the tet removed,

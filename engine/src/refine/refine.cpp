@@ -27,15 +27,19 @@ std::optional<std::string> validate(const RefineParams& params) {
 
 MeshScale measure_scale(const TetMesh& mesh) {
   MeshScale scale;
-  double shortest2 = std::numeric_limits<double>::infinity();
+  double shortest2 = std::numeric_limits<double>::infinity(), sum = 0.0;
+  std::uint64_t edges = 0;
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
     if (!mesh.is_live(TetId{t})) continue;
     for (int e = 0; e < 6; ++e) {
       const Vec3 d = mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][1])) - mesh.position(mesh.vertex(TetId{t}, kEdgeVerts[e][0]));
       shortest2 = std::min(shortest2, dot(d, d));
+      sum += norm(d);
+      ++edges;
     }
   }
   scale.shortest_edge = std::isfinite(shortest2) ? std::sqrt(shortest2) : 0.0;
+  scale.mean_edge = edges ? sum / static_cast<double>(edges) : 0.0;
   scale.volume = mesh.total_volume();
   return scale;
 }

@@ -38,7 +38,9 @@
 namespace tetcut {
 
 struct RefineParams {
-  RefinementRule rule = RefinementRule::kPaper;  // kGraded uses d_ref, focus, max_tets_created
+  // kGraded uses d_ref, focus, max_tets_created. kAuto is the Cutter's to resolve (it knows the
+  // mesh's scale): here it runs the paper's loop.
+  RefinementRule rule = RefinementRule::kPaper;
   double d_ref = 0.0;               // edges longer than this are split; must be positive
   double p = 1.5;                   // shell edges longer than p x |e| are split too; must be > 1
   std::uint32_t max_iterations = 8;
@@ -58,6 +60,7 @@ std::optional<std::string> validate(const RefineParams& params);
 // Cutter's constructor).
 struct MeshScale {
   double shortest_edge = 0.0;  // over live tets; 0 for an empty mesh
+  double mean_edge = 0.0;      // the mean over the tets' edges (an edge counted once per tet)
   double volume = 0.0;
 };
 MeshScale measure_scale(const TetMesh& mesh);

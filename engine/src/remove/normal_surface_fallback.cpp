@@ -53,14 +53,14 @@ std::uint32_t NormalSurfaceFallback::remove(RemovalContext& ctx, TetId t) {
     if (std::all_of(v.begin(), v.end(), f_at_least_half)) set_.push_back(c.tet);
   }
   // With the selected parents' other children, if that is removable too (removal_context.hpp).
-  if (ctx.with_selected_children(set_, ctx.mesh.tets_made_since(before), larger_) && ctx.may_remove(larger_) &&
+  if (ctx.with_selected_children(set_, ctx.mesh.tets_made_since(before), larger_) && ctx.may_remove_beyond_reach(larger_) &&
       ctx.ws.check(ctx.mesh, larger_).removable()) {
     ctx.remove_set(larger_);
     return static_cast<std::uint32_t>(larger_.size());
   }
   // Removable by the proof; tested all the same, as every set is, so that a bug shows up as an
   // unresolved request in the tests rather than as a broken mesh.
-  if (!ctx.may_remove(set_) || !ctx.ws.check(ctx.mesh, set_).removable()) {
+  if (!ctx.may_remove_beyond_reach(set_) || !ctx.ws.check(ctx.mesh, set_).removable()) {
     ctx.mesh.rollback_to(before);
     return 0;
   }

@@ -34,7 +34,13 @@ struct RemovalContext {
   // (tissue_removal.hpp). Asked with the removability test, before every removal (plan, then
   // apply).
   [[nodiscard]] bool may_remove(std::span<const TetId> set) const {
-    return (!uncuttable || !uncuttable->any_of(mesh, set)) && tissue->within_reach(mesh, set);
+    return may_remove_beyond_reach(set) && tissue->within_reach(mesh, set);
+  }
+  // The fallback's test: no uncuttable tet, wherever the set reaches. Its proof (docs/
+  // removal-proof.md) needs the pieces it builds around T, which only a neighbourhood of coarse
+  // tets puts beyond the reach; such a removal is counted (CutReport::tets_removed_beyond_reach).
+  [[nodiscard]] bool may_remove_beyond_reach(std::span<const TetId> set) const {
+    return !uncuttable || !uncuttable->any_of(mesh, set);
   }
 
   // Splits `edges` (templates). False, the mesh untouched, if the splitter refuses (degenerate

@@ -9,7 +9,9 @@
 //
 // What a cut takes beyond its tool stays within its reach: a set with a tet reaching beyond it is
 // refused like one holding an uncuttable tet (within_reach(), asked by RemovalContext::may_remove
-// and the improvement pass's sliver removal), and the request goes on to its next stage. The
+// and the improvement pass's sliver removal), and the request goes on to its next stage. The one
+// exception is the fallback, proved to succeed with the pieces it builds (removal_context.hpp):
+// what it takes beyond the reach is counted. The
 // caller has decided that the set may go (plan, then apply): removable (set_removal.hpp, or
 // paper 3.3's test for one tet), within reach and holding no uncuttable tet.
 #pragma once

@@ -47,7 +47,7 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
     next.split_method = *m;
   } else if (name == "refinement") {
     const auto r = parse_refinement_rule(value);
-    if (!r) return std::string("refinement must be paper or graded");
+    if (!r) return std::string("refinement must be auto, paper or graded");
     next.refinement = *r;
   } else if (name == "improve") {
     if (value != "on" && value != "off") return std::string("improve must be on or off");

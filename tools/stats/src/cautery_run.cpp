@@ -61,6 +61,7 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   params.split_method = options.split;
   params.order = options.order;
   params.improve = options.improve;
+  params.refinement = options.refinement;
   scenario::RunOptions run_options;
   run_options.check = options.check_every_cut ? scenario::CheckMode::kEvery : scenario::CheckMode::kEnd;
   run_options.initial_params = params;

@@ -218,6 +218,8 @@ StatsResult compute_stats(const StatsOptions& options) {
       for (const auto& [name, strategy] : kQualityStrategies) {
         CauteryOptions o = run_options;
         o.improve = true;  // with the pass, then without
+        // The engine's default refinement (auto): the shape of what a cut makes as users get it.
+        o.refinement = RefinementRule::kAuto;
         // Only basic refines without bound; the others run their scenario to its end, as Table 1.
         o.max_growth = strategy == RemovalStrategy::kBasic ? kComparisonMaxGrowth : 0;
         o.strategy = strategy;
@@ -236,6 +238,7 @@ StatsResult compute_stats(const StatsOptions& options) {
     CauteryOptions o = run_options;
     o.keep_meshes = true;
     o.improve = true;  // the resection's own expectations (min_quality) hold with the pass
+    o.refinement = RefinementRule::kAuto;  // as `tetcut run` runs it
     CauteryResult r = run_scenario("scenarios/liver-resection.scn", o);
     if (!r.run) {
       out.error = r.error;

@@ -6,8 +6,8 @@
 //   mesh PATH                     load a mesh (relative paths: to the scenario's folder)
 //   diameter D                    tool diameter           (also: dref_factor F, p P, depth N,
 //                                                          iterations N, split templates|bisection)
-//   refinement R                  paper|graded: the paper's refinement loop (3.2) or longest-edge
-//                                 bisection graded to the tool (CutParams::refinement)
+//   refinement R                  auto|paper|graded: the paper's refinement loop (3.2), longest-edge
+//                                 bisection graded to the tool, or auto (CutParams::refinement)
 //   strategy S                    basic|neighbours|combined|wide
 //   order O                       paper|direct-first: which selected tet a cut requests next
 //                                 (CutParams::order, cut_strategies.hpp)

@@ -29,6 +29,8 @@ struct CauteryOptions {
   RemovalStrategy strategy = RemovalStrategy::kCombined;
   SplitMethod split = SplitMethod::kTemplates;
   RemovalOrder order = RemovalOrder::kDirectFirst;  // CutParams::order; a scenario's own line wins
+  // The paper's refinement loop for its tables (CutParams::refinement; a scenario's line wins).
+  RefinementRule refinement = RefinementRule::kPaper;
   // Run the local checker after every cut (the scenario runner's default). The statistics do
   // not depend on it; `tetcut stats --check end` skips it for speed and checks the end only.
   bool check_every_cut = true;
