@@ -304,3 +304,27 @@ def test_a_tool_larger_than_the_organ_empties_it_and_every_function_says_so(tmp_
         tetcut.read(str(tmp_path / "none.msh"))
     again = pickle.loads(pickle.dumps(mesh))
     assert again.num_tets == 0 and again.hash() == mesh.hash() and mesh.copy().num_tets == 0
+
+
+def test_the_tissue_rule_in_the_report(box):
+    # What a cut took is what the mesh lost; what it left in its ball is a share of the ball; the
+    # report says which refinement ran, and a refused cut why.
+    cutter = tetcut.Cutter(box, tool_diameter=1.5)
+    before = box.volume()
+    report = cutter.cut((2.0, 2.0, 2.0))
+    assert report.ok and report.refusal == "none"
+    assert report.volume_removed == pytest.approx(before - box.volume(), rel=1e-9)
+    ball = np.pi / 6 * 1.5 ** 3
+    assert 0 <= report.volume_left_in_tool <= ball
+    assert 0 <= report.volume_removed_beyond_tool <= report.volume_removed
+    assert report.tets_removed_beyond_tool <= report.tets_removed + report.tets_removed_by_improvement
+    assert report.left_in_tool == 0 and report.tets_removed_beyond_reach == 0
+    assert report.refinement == "paper" and report.retries == 0  # auto: this tool is not fine for the box
+    assert "finish" in report.time_us
+    # A tool much finer than the box's edges: auto takes the graded rule.
+    fine = tetcut.Cutter(tetcut.Mesh(*box_arrays(4, 4.0)), tool_diameter=0.1)
+    assert fine.cut((2.05, 1.95, 2.1)).refinement == "graded"
+    # A budget no cut can keep: refused, named.
+    tight = tetcut.Cutter(tetcut.Mesh(*box_arrays(4, 4.0)), tool_diameter=0.1, max_tets_created=10)
+    refused = tight.cut((2.05, 1.95, 2.1))
+    assert not refused.ok and refused.refusal == "tet budget" and "budget" in refused.failure
