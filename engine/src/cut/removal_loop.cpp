@@ -82,13 +82,23 @@ bool RemovalLoop::run(const Context& ctx, CutReport& report) {
   report.requested = static_cast<std::uint32_t>(removal.size());
   if (!ctx.selection.tool()) return true;
 
-  work_.clear();
-  for (const TetMesh::TetBirth& birth : ctx.mesh.tets_made_since(ctx.start))
-    if (ctx.selection.piece_in_tool(ctx.mesh, birth.tet, ctx.uncuttable)) work_.push_back(birth.tet);
-  for (TetId t : work_) {
-    if (!ctx.mesh.is_live(t) || tried_.contains(t)) continue;
-    ++report.kept_pieces_requested;
-    if (!request(ctx, t, removability(ctx.mesh, t), false, report)) return false;
+  // The pieces in rounds: a piece's request may split kept tets again, leaving smaller pieces in
+  // the tool, which the next round requests. A few rounds empty the tool in practice; the bound
+  // keeps a pathological cut from cascading (what stays is counted by the audit).
+  TetMesh::Savepoint made_from = ctx.start;
+  for (int round = 0; round < kPieceRounds; ++round) {
+    const TetMesh::Savepoint next = ctx.mesh.savepoint();
+    work_.clear();
+    for (const TetMesh::TetBirth& birth : ctx.mesh.tets_made_since(made_from))
+      if (!tried_.contains(birth.tet) && ctx.selection.piece_in_tool(ctx.mesh, birth.tet, ctx.uncuttable))
+        work_.push_back(birth.tet);
+    if (work_.empty()) break;
+    for (TetId t : work_) {
+      if (!ctx.mesh.is_live(t) || tried_.contains(t)) continue;
+      ++report.kept_pieces_requested;
+      if (!request(ctx, t, removability(ctx.mesh, t), false, report)) return false;
+    }
+    made_from = next;
   }
   return true;
 }

@@ -16,7 +16,9 @@
 // Then the pieces of kept tets inside the tool: a removal-time split (3.4, 3.7, the fallback)
 // cuts unselected neighbours too, and a piece whose centroid falls in the ball is tissue in the
 // tool that the selection does not follow (tissue_selection.hpp). Each is requested once, and
-// what its own request makes is not followed (no cascade); what stays is counted by the audit.
+// what its own request makes is not followed as selected tissue; the pieces it leaves in the tool
+// in turn are requested in the next round, up to kPieceRounds rounds; what stays is counted by
+// the audit.
 #pragma once
 
 #include <cstdint>
@@ -63,6 +65,7 @@ class RemovalLoop {
   // The paper's order: the first pending tet on the surface, else the first pending.
   [[nodiscard]] TetId next_pending(const Context& ctx) const;
 
+  static constexpr int kPieceRounds = 4;
   // Already requested (and left unresolved); waiting in work_.
   StampedSet<TetId> tried_, queued_;
   std::vector<TetId> work_;
