@@ -85,8 +85,11 @@ bool RemovalLoop::run(const Context& ctx, CutReport& report) {
   // The pieces in rounds: a piece's request may split kept tets again, leaving smaller pieces in
   // the tool, which the next round requests. A few rounds empty the tool in practice; the bound
   // keeps a pathological cut from cascading (what stays is counted by the audit).
+  // Basic (3.4) splits every kept neighbour around a piece's singularity again: its later rounds
+  // only cut slivers the improvement pass cannot lift, so it requests its pieces once.
+  const int rounds = ctx.params.strategy == RemovalStrategy::kBasic ? 1 : kPieceRounds;
   TetMesh::Savepoint made_from = ctx.start;
-  for (int round = 0; round < kPieceRounds; ++round) {
+  for (int round = 0; round < rounds; ++round) {
     const TetMesh::Savepoint next = ctx.mesh.savepoint();
     work_.clear();
     for (const TetMesh::TetBirth& birth : ctx.mesh.tets_made_since(made_from))
@@ -96,7 +99,11 @@ bool RemovalLoop::run(const Context& ctx, CutReport& report) {
     for (TetId t : work_) {
       if (!ctx.mesh.is_live(t) || tried_.contains(t)) continue;
       ++report.kept_pieces_requested;
-      if (!request(ctx, t, removability(ctx.mesh, t), false, report)) return false;
+      // A piece whose removal would need more tets than the cut has left stays, and the audit
+      // counts it: the tool's selection is gone, and refusing the whole cut for a piece would
+      // leave more. Only a cut already past its budget is refused.
+      if (!request(ctx, t, removability(ctx.mesh, t), false, report))
+        return ctx.mesh.net_tets_made_since(ctx.start) <= ctx.params.max_tets_created;
     }
     made_from = next;
   }

@@ -17,8 +17,8 @@
 // cuts unselected neighbours too, and a piece whose centroid falls in the ball is tissue in the
 // tool that the selection does not follow (tissue_selection.hpp). Each is requested once, and
 // what its own request makes is not followed as selected tissue; the pieces it leaves in the tool
-// in turn are requested in the next round, up to kPieceRounds rounds; what stays is counted by
-// the audit.
+// in turn are requested in the next round, up to kPieceRounds rounds (one for basic, whose 3.4
+// splits only make slivers of them); what stays is counted by the audit.
 #pragma once
 
 #include <cstdint>
