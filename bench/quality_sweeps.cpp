@@ -2,7 +2,7 @@
 // the tets the cuts create, under a refinement rule (the engine's default, auto, unless asked).
 //
 //   tetcut_quality_sweeps [--sweeps N] [--seed S] [--only MESH] [--tool TOOL]
-//                         [--refinement auto|paper|graded] [--json FILE]
+//                         [--refinement auto|paper|graded] [--min-dihedral DEG] [--json FILE]
 //
 // The meshes come from other meshers at other densities: TetGen (through tools/generators) fills
 // a box at three densities, one without TetGen's quality bound (its plain Delaunay
@@ -12,7 +12,8 @@
 // box's diagonal, and 0.05, 0.1, 0.3, 1 and 3 times the median edge: a fine cautery on a coarse
 // mesh up to a coarse one on a fine mesh), N sweeps along random chords of the bounding box, one
 // cut every half tool diameter, each sweep on a fresh copy of the mesh, with the default
-// CutParams (combined, the improvement pass on, floor 0.1) and the refinement rule asked for.
+// CutParams (combined, the improvement pass on, floors 0.1 and 15 degrees, or the dihedral floor
+// asked for) and the refinement rule asked for.
 //
 // After every cut the independent checker runs on what it changed, with I7's no-degradation rule at
 // the cut's floor and I10, the tissue rule, with its tool (scenario::cut_check_options), and
@@ -98,6 +99,7 @@ struct Row {
   double diameter = 0;
   std::uint32_t tets = 0;
   double input_worst = 1, goal = 0.1;
+  double input_min_dihedral = 180, dihedral_goal = 15;  // the input's and min(theta, that)
   std::uint64_t cuts = 0, refused = 0, violations = 0, max_created = 0;
   std::uint64_t left = 0;          // ok cuts that left tissue in the tool (CutReport::left_in_tool)
   std::uint64_t beyond_reach = 0;  // tets removed beyond the cut's reach (CutReport::tets_removed_beyond_reach)
@@ -110,8 +112,10 @@ struct Row {
   std::vector<double> cut_us;      // every cut that met the mesh, refused ones included
   std::vector<double> made;        // net tets created, per ok cut
   std::string first_violation, first_refusal;
-  // Met: no cut refused, and no created tet below the goal.
-  [[nodiscard]] bool goal_met() const { return refused == 0 && (created.tets == 0 || created.min_radius_ratio >= goal); }
+  // Met: no cut refused, and no created tet below either goal.
+  [[nodiscard]] bool goal_met() const {
+    return refused == 0 && (created.tets == 0 || (created.min_radius_ratio >= goal && created.min_dihedral_deg >= dihedral_goal));
+  }
 };
 
 double max_of(const std::vector<double>& values) {
@@ -142,19 +146,21 @@ double median_edge(const TetMesh& mesh) {
 }
 
 Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int sweeps, std::uint64_t seed,
-          tetcut::RefinementRule rule) {
+          tetcut::RefinementRule rule, double min_dihedral_deg) {
   Row row{.mesh = source.name, .made_by = source.made_by, .tool = tool.name, .refinement = tetcut::to_string(rule),
           .diameter = tool.diameter, .tets = base.num_tets()};
   const inv::QualityStats input = inv::check_mesh(base.raw_view()).quality;
   row.input_worst = input.min_radius_ratio;
   row.goal = std::min(0.1, row.input_worst);
+  row.input_min_dihedral = input.min_dihedral_deg;
+  row.dihedral_goal = std::min(min_dihedral_deg, input.min_dihedral_deg);
   const tetcut::bench::Bounds box = tetcut::bench::bounds(base);
   tetcut::SplitMix64 rng(seed);
   auto point = [&] {
     return Vec3{box.lo.x + rng.unit() * (box.hi.x - box.lo.x), box.lo.y + rng.unit() * (box.hi.y - box.lo.y),
                 box.lo.z + rng.unit() * (box.hi.z - box.lo.z)};
   };
-  const tetcut::CutParams params{.tool_diameter = tool.diameter, .refinement = rule};
+  const tetcut::CutParams params{.tool_diameter = tool.diameter, .refinement = rule, .min_dihedral_deg = min_dihedral_deg};
   for (int s = 0; s < sweeps; ++s) {
     TetMesh mesh = base;
     tetcut::Cutter cutter(mesh, params);
@@ -220,7 +226,7 @@ void print(const std::vector<Row>& rows) {
 }
 
 bool write_json(const std::string& path, const std::vector<Row>& rows, int sweeps, std::uint64_t seed,
-                tetcut::RefinementRule rule) {
+                tetcut::RefinementRule rule, double min_dihedral_deg) {
   nlohmann::json out_rows = nlohmann::json::array();
   for (const Row& r : rows) {
     nlohmann::json row = {{"mesh", r.mesh},
@@ -236,6 +242,8 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
                           {"allocating_cuts", r.allocating},
                           {"input_worst_radius_ratio", r.input_worst},
                           {"goal", r.goal},
+                          {"input_min_dihedral_deg", r.input_min_dihedral},
+                          {"dihedral_goal_deg", r.dihedral_goal},
                           {"goal_met", r.goal_met()},
                           {"created_tets", r.created.tets},
                           {"max_created_per_cut", r.max_created},
@@ -265,7 +273,8 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
     out_rows.push_back(std::move(row));
   }
   const nlohmann::json out = {
-      {"sweeps_per_tool", sweeps}, {"seed", seed}, {"refinement", tetcut::to_string(rule)}, {"rows", std::move(out_rows)}};
+      {"sweeps_per_tool", sweeps}, {"seed", seed}, {"refinement", tetcut::to_string(rule)}, {"min_dihedral_deg", min_dihedral_deg},
+      {"rows", std::move(out_rows)}};
   const std::string tmp = path + ".tmp";
   {
     std::ofstream file(tmp);
@@ -281,12 +290,15 @@ int main(int argc, char** argv) {
   int sweeps = 4;
   std::uint64_t seed = 29;
   std::string only, only_tool, json, refinement = "auto";
+  double min_dihedral = tetcut::CutParams{}.min_dihedral_deg;
   CLI::App app{"random cautery sweeps on meshes from TetGen and CGAL: the tets the cuts create"};
   app.add_option("--sweeps", sweeps, "sweeps per mesh and tool")->check(CLI::Range(1, 1000));
   app.add_option("--seed", seed, "the chords' random seed");
   app.add_option("--only", only, "one mesh: box-coarse, box-fine, box-delaunay, cylinder, sphere, liver-6k, liver-16k");
   app.add_option("--tool", only_tool, "one tool: 4%, 8%, 12%, 0.05x, 0.1x, 0.3x, 1x, 3x (x the median edge)");
   app.add_option("--refinement", refinement, "the refinement rule: auto (the engine's default), paper (3.2) or graded");
+  app.add_option("--min-dihedral", min_dihedral, "the dihedral floor theta, degrees (CutParams::min_dihedral_deg)")
+      ->check(CLI::Range(0.0, 70.0));
   app.add_option("--json", json, "also write the rows to FILE");
   try {
     app.parse(argc, argv);
@@ -328,7 +340,7 @@ int main(int argc, char** argv) {
                                      {"0.05x", 0.05 * median}, {"0.1x", 0.1 * median}, {"0.3x", 0.3 * median},
                                      {"1x", median},           {"3x", 3 * median}};
     for (const Tool& tool : tools)
-      if (only_tool.empty() || tool.name == only_tool) rows.push_back(sweep(source, base, tool, sweeps, seed, *rule));
+      if (only_tool.empty() || tool.name == only_tool) rows.push_back(sweep(source, base, tool, sweeps, seed, *rule, min_dihedral));
   }
   if (!known) {
     std::fprintf(stderr, "tetcut_quality_sweeps: --only %s: no such mesh\n", only.c_str());
@@ -339,7 +351,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   print(rows);
-  if (!json.empty() && !write_json(json, rows, sweeps, seed, *rule)) {
+  if (!json.empty() && !write_json(json, rows, sweeps, seed, *rule, min_dihedral)) {
     std::fprintf(stderr, "tetcut_quality_sweeps: cannot write %s\n", json.c_str());
     return 2;
   }

@@ -200,8 +200,8 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
       list.push_back(t);
       touch(v);
     }
-    const double ratio = geometry.check(t, q, positions);
-    if (judge_quality) no_degradation.add_created(t, q, ratio);
+    const detail::TetGeometryChecker::Shape shape = geometry.check(t, q, positions);
+    if (judge_quality) no_degradation.add_created(t, q, shape.ratio, shape.dihedral_deg);
     known_volume_[t] = detail::tet_volume(q, positions);
     known_rounding_[t] = detail::tet_volume_rounding_bound(q, positions);
     if (grid.built()) grid.insert(t, q, positions);
@@ -264,7 +264,7 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
                          options.volume_rel_tolerance, "the volume change of the operation", report, rounding);
   }
 
-  if (judge_quality) no_degradation.finish(positions, options.quality_floor, report);
+  if (judge_quality) no_degradation.finish(positions, options.quality_floor, options.min_dihedral_deg, report);
 
   // I10: uncuttable tissue neither went nor grew.
   if (!removed_uncuttable.empty() &&

@@ -21,6 +21,11 @@ double volume6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 // the tet's own edge vectors, relative to its volume, for the tets a cut makes.
 constexpr double kInsideTolerance = 1e-9;
 
+// A split child keeps its parent's dihedral angles at the parent's edges: equal angles, each
+// computed from its own tet's normals, may differ by rounding (1e-13 degrees and less). An angle
+// this close to its floor meets it.
+constexpr double kAngleTolerance = 1e-7;
+
 }  // namespace
 
 void NoDegradationCheck::begin() {
@@ -29,11 +34,18 @@ void NoDegradationCheck::begin() {
 }
 
 void NoDegradationCheck::add_removed(std::uint32_t t, const RawTet& q) {
-  removed_.push_back({t, q, std::numeric_limits<double>::quiet_NaN(), {}, {}});
+  removed_.push_back({t, q, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), {}, {}});
 }
 
-void NoDegradationCheck::add_created(std::uint32_t t, const RawTet& q, double radius_ratio) {
-  created_.push_back({t, q, radius_ratio});
+void NoDegradationCheck::add_created(std::uint32_t t, const RawTet& q, double radius_ratio, double min_dihedral_deg) {
+  created_.push_back({t, q, radius_ratio, min_dihedral_deg});
+}
+
+void NoDegradationCheck::measure(Removed& r, std::span<const Vec3> positions) const {
+  if (!std::isnan(r.ratio)) return;
+  const Vec3 &a = positions[r.q[0]], &b = positions[r.q[1]], &c = positions[r.q[2]], &d = positions[r.q[3]];
+  r.ratio = tet_radius_ratio(a, b, c, d);
+  r.dihedral = tet_min_dihedral_deg(a, b, c, d);
 }
 
 bool NoDegradationCheck::hosts(const Removed& r, const Vec3& point, std::span<const Vec3> positions) const {
@@ -69,8 +81,9 @@ void NoDegradationCheck::locate(const Created& c, std::span<const Vec3> position
     if (hosts(removed_[k], centroid, positions)) hosts_.push_back(k);
 }
 
-void NoDegradationCheck::finish(std::span<const Vec3> positions, double floor, ReportBuilder& report) {
-  if (created_.empty() || !(floor > 0.0)) return;
+void NoDegradationCheck::finish(std::span<const Vec3> positions, double floor, double min_dihedral_deg,
+                                ReportBuilder& report) {
+  if (created_.empty() || !(floor > 0.0 || min_dihedral_deg > 0.0)) return;
   by_vertex_.clear();
   for (std::uint32_t k = 0; k < removed_.size(); ++k) {
     Removed& r = removed_[k];
@@ -85,33 +98,41 @@ void NoDegradationCheck::finish(std::span<const Vec3> positions, double floor, R
   std::sort(by_vertex_.begin(), by_vertex_.end());
   hosts_.clear();
   host_begin_.clear();
-  double worst_replaced = std::numeric_limits<double>::infinity();
-  std::uint32_t worst_id = 0;
+  // Only the tets below F or theta need their hosts.
+  auto needs_hosts = [&](const Created& c) { return c.ratio < floor || c.dihedral < min_dihedral_deg; };
+  double worst_ratio = std::numeric_limits<double>::infinity(), worst_dihedral = worst_ratio;
   for (const Created& c : created_) {
     host_begin_.push_back(static_cast<std::uint32_t>(hosts_.size()));
-    locate(c, positions);
+    if (needs_hosts(c)) locate(c, positions);
   }
   host_begin_.push_back(static_cast<std::uint32_t>(hosts_.size()));
   for (std::uint32_t k : hosts_) {
-    Removed& r = removed_[k];
-    if (std::isnan(r.ratio))
-      r.ratio = tet_radius_ratio(positions[r.q[0]], positions[r.q[1]], positions[r.q[2]], positions[r.q[3]]);
-    if (r.ratio < worst_replaced) {
-      worst_replaced = r.ratio;
-      worst_id = r.id;
-    }
+    measure(removed_[k], positions);
+    worst_ratio = std::min(worst_ratio, removed_[k].ratio);
+    worst_dihedral = std::min(worst_dihedral, removed_[k].dihedral);
   }
-  const double bound = std::min(floor, worst_replaced);
   for (std::size_t k = 0; k < created_.size(); ++k) {
     const Created& c = created_[k];
-    if (c.ratio >= bound) continue;
+    if (!needs_hosts(c)) continue;
+    // Its own hosts' worst; the operation's worst host when none holds its centroid.
+    double host_ratio = host_begin_[k] == host_begin_[k + 1] ? worst_ratio : std::numeric_limits<double>::infinity();
+    double host_dihedral = host_begin_[k] == host_begin_[k + 1] ? worst_dihedral : std::numeric_limits<double>::infinity();
+    for (std::uint32_t h = host_begin_[k]; h < host_begin_[k + 1]; ++h) {
+      host_ratio = std::min(host_ratio, removed_[hosts_[h]].ratio);
+      host_dihedral = std::min(host_dihedral, removed_[hosts_[h]].dihedral);
+    }
+    const double ratio_bound = std::min(floor, host_ratio), dihedral_bound = std::min(min_dihedral_deg, host_dihedral);
+    if (c.ratio >= ratio_bound && c.dihedral >= dihedral_bound - kAngleTolerance) continue;
     report.add(Invariant::kI7Quality, {c.id}, {}, [&] {
       std::string hosts_text;
-      for (std::uint32_t h = host_begin_[k]; h < host_begin_[k + 1]; ++h)
-        hosts_text += (hosts_text.empty() ? "" : ", ") + str(removed_[hosts_[h]].id) + " (" + num(removed_[hosts_[h]].ratio) + ")";
-      return "created tet " + str(c.id) + " has radius ratio " + num(c.ratio) + ", below min(" + num(floor) +
-             ", worst replaced " + (std::isfinite(worst_replaced) ? num(worst_replaced) + " (tet " + str(worst_id) + ")" : std::string("none")) +
-             "); it replaces " + (hosts_text.empty() ? std::string("no removed tet") : hosts_text);
+      for (std::uint32_t h = host_begin_[k]; h < host_begin_[k + 1]; ++h) {
+        const Removed& r = removed_[hosts_[h]];
+        hosts_text += (hosts_text.empty() ? "" : ", ") + str(r.id) + " (" + num(r.ratio) + ", " + num(r.dihedral) + " deg)";
+      }
+      return "created tet " + str(c.id) + " has radius ratio " + num(c.ratio) + " (floor " + num(ratio_bound) +
+             " = min(" + num(floor) + ", its hosts')) and smallest dihedral angle " + num(c.dihedral) + " deg (floor " +
+             num(dihedral_bound) + " = min(" + num(min_dihedral_deg) + ", its hosts')); its hosts: " +
+             (hosts_text.empty() ? std::string("none holds its centroid, the operation's worst taken") : hosts_text);
     });
   }
 }

@@ -1,10 +1,13 @@
-// I7's rule for a transaction (QualityRule::kNoDegradation): no tet an operation created is worse
-// than min(F, the worst tet it replaced). A removed tet is replaced when it contains a created
-// tet's centroid, which the checker locates itself among the removed tets (their vertices as the
+// I7's rule for a transaction (QualityRule::kNoDegradation): every tet an operation created has a
+// radius ratio of at least min(F, its worst host's) and a smallest dihedral angle of at least
+// min(theta, its worst host's), each tet its own floors. Its hosts are the removed tets that
+// contain its centroid, which the checker locates itself among the removed tets (their vertices as the
 // mesh still has them: vertices that were there before an operation never move, and the local
 // checker reports one that did). A created tet inside its parent has its centroid strictly inside
 // it; after a flip the centroid may sit on the face between two removed tets, and then both count
-// (the lenient side: the engine, which aims at one host per tet, is never held to more).
+// (the lenient side: the engine, which aims at one host per tet, is never held to more). A created
+// tet whose centroid no removed tet holds (a surface vertex moved within the cut's tolerance) is
+// held to the worst host of the operation. A created tet at or above F and theta is not located.
 #pragma once
 
 #include <cstdint>
@@ -23,24 +26,28 @@ class NoDegradationCheck {
   void begin();
   // Before the local checker forgets them: the removed tets and their vertices.
   void add_removed(std::uint32_t t, const RawTet& q);
-  // Every created tet with valid references, and its radius ratio.
-  void add_created(std::uint32_t t, const RawTet& q, double radius_ratio);
-  // Locates the hosts, computes the floor min(F, worst host) and reports every created tet below
-  // it, naming its quality, its hosts' and the floor.
-  void finish(std::span<const Vec3> positions, double floor, ReportBuilder& report);
+  // Every created tet with valid references, its radius ratio and smallest dihedral angle.
+  void add_created(std::uint32_t t, const RawTet& q, double radius_ratio, double min_dihedral_deg);
+  // Locates the hosts of every created tet below F or theta and reports each below its floors,
+  // naming its quality, its hosts' and the floors.
+  void finish(std::span<const Vec3> positions, double floor, double min_dihedral_deg, ReportBuilder& report);
 
  private:
   struct Removed {
     std::uint32_t id;
     RawTet q;
-    double ratio;  // computed when first found to host something
+    double ratio;     // computed when first found to host something
+    double dihedral;  // its smallest dihedral angle, with the ratio
     Vec3 lo, hi;   // bounding box (set in finish()): most tets are rejected by it
   };
   struct Created {
     std::uint32_t id;
     RawTet q;
     double ratio;
+    double dihedral;
   };
+  // Removed tet k's quality, measured once.
+  void measure(Removed& r, std::span<const Vec3> positions) const;
   // Indices into removed_ of the tets hosting created tet c (appended to hosts_).
   void locate(const Created& c, std::span<const Vec3> positions);
   bool hosts(const Removed& r, const Vec3& point, std::span<const Vec3> positions) const;

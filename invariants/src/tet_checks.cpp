@@ -59,7 +59,7 @@ void VolumeSum::add(double x) {
   sum_ = t;
 }
 
-double TetGeometryChecker::check(std::uint32_t t, const RawTet& q, std::span<const Vec3> positions) {
+TetGeometryChecker::Shape TetGeometryChecker::check(std::uint32_t t, const RawTet& q, std::span<const Vec3> positions) {
   const Vec3& a = positions[q[0]];
   const Vec3& b = positions[q[1]];
   const Vec3& c = positions[q[2]];
@@ -94,7 +94,7 @@ double TetGeometryChecker::check(std::uint32_t t, const RawTet& q, std::span<con
       return "tet " + str(t) + " has radius ratio " + num(ratio) + ", below the floor " + num(floor_);
     });
   }
-  return ratio;
+  return {ratio, dihedral};
 }
 
 void TetGeometryChecker::finish(CheckReport& report) const {

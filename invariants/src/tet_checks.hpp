@@ -41,8 +41,11 @@ class TetGeometryChecker {
   TetGeometryChecker(double radius_ratio_floor, ReportBuilder& report)
       : floor_(radius_ratio_floor), report_(report) {}
 
-  // Returns the tet's radius ratio.
-  double check(std::uint32_t t, const RawTet& q, std::span<const Vec3> positions);
+  // The tet's radius ratio and smallest dihedral angle (degrees).
+  struct Shape {
+    double ratio, dihedral_deg;
+  };
+  Shape check(std::uint32_t t, const RawTet& q, std::span<const Vec3> positions);
   // Quality statistics and volume into the report.
   void finish(CheckReport& report) const;
   [[nodiscard]] double volume() const { return volume_.value(); }

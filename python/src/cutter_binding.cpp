@@ -422,7 +422,7 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   if (!mesh) throw py::type_error(where + ": mesh: expected a tetcut.Mesh, got None");
   const Keywords k(where, kwargs,
                    {"mesh", "tool_diameter", "strategy", "split", "order", "d_ref_factor", "p", "search_depth",
-                    "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "refinement", "keep_labels"});
+                    "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "min_dihedral_deg", "refinement", "keep_labels"});
   CutParams params;
   auto set = [&](const char* name, auto CutParams::*field, const char* expected) {
     using T = std::remove_reference_t<decltype(params.*field)>;
@@ -442,6 +442,7 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   set("d_ref_factor", &CutParams::d_ref_factor, "a real number");
   set("p", &CutParams::p, "a real number");
   set("quality_floor", &CutParams::quality_floor, "a real number");
+  set("min_dihedral_deg", &CutParams::min_dihedral_deg, "a real number");
   set("search_depth", &CutParams::search_depth, "a non-negative integer");
   set("max_refine_iterations", &CutParams::max_refine_iterations, "a non-negative integer");
   set("max_tets_created", &CutParams::max_tets_created, "a non-negative integer");
@@ -481,7 +482,7 @@ std::string cutter_init_doc() {
       ", p=" + real(d.p) + ", search_depth=" + std::to_string(d.search_depth) +
       ", max_refine_iterations=" + std::to_string(d.max_refine_iterations) +
       ", max_tets_created=" + std::to_string(d.max_tets_created) + ", improve=" + (d.improve ? "True" : "False") +
-      ", quality_floor=" + real(d.quality_floor) + ", keep_labels=()";
+      ", quality_floor=" + real(d.quality_floor) + ", min_dihedral_deg=" + real(d.min_dihedral_deg) + ", keep_labels=()";
   return signature_doc("__init__", parameters, R"doc(The cautery tool on `mesh`: indexes it (O(#T)), then cuts in O(tool).
 
 tool_diameter (required, mesh units) and the other CutParams fields (engine/include/tetcut/cut.hpp)
@@ -489,7 +490,8 @@ by keyword: strategy basic|neighbours|combined|wide, split templates|bisection, 
 direct-first|paper, refinement auto|paper|graded (auto: graded for a tool fine for the mesh, else
 the paper's loop), d_ref_factor (D_ref = d_ref_factor x tool_diameter, paper 3.2), p (shell edge
 ratio, 3.2), search_depth (3.5), max_refine_iterations, max_tets_created, improve (the improvement
-pass), quality_floor (its radius-ratio floor). keep_labels: labels (mesh.labels)
+pass), quality_floor (its radius-ratio floor F), min_dihedral_deg (its dihedral-angle floor theta,
+degrees: every created tet reaches min(F, its host's) and min(theta, its host's)). keep_labels: labels (mesh.labels)
 whose tets no cut takes (Cutter::set_uncuttable, the paper's Fig. 7), each some tet's label.
 TypeError naming an unknown keyword or a value of the wrong type; ValueError naming one out of
 range or a label no tet has.)doc");
@@ -600,9 +602,15 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
                "Worst radius ratio of the tets the cut created, after the improvement pass (1 when none).");
   report_field(report, "min_radius_ratio_before_improvement", &CutReport::min_radius_ratio_before_improvement,
                "The same before the improvement pass.");
+  report_field(report, "min_dihedral_deg", &CutReport::min_dihedral_deg,
+               "Smallest dihedral angle (degrees) of the tets the cut created, after the improvement pass (180 when none).");
+  report_field(report, "min_dihedral_deg_before_improvement", &CutReport::min_dihedral_deg_before_improvement,
+               "The same before the improvement pass.");
   report_field(report, "quality_floor", &CutReport::quality_floor,
-               "min(quality_floor, worst tet replaced): what every created tet must reach.");
-  report_field(report, "quality_met", &CutReport::quality_met, "Every created tet reaches quality_floor.");
+               "The lowest radius-ratio floor of a created tet, each min(quality_floor, its host's).");
+  report_field(report, "dihedral_floor_deg", &CutReport::dihedral_floor_deg,
+               "The lowest dihedral floor (degrees) of a created tet, each min(min_dihedral_deg, its host's).");
+  report_field(report, "quality_met", &CutReport::quality_met, "Every created tet reaches its floors.");
   report_field(report, "improvement_flips", &CutReport::improvement_flips, "Flips the improvement pass made.");
   report_field(report, "improvement_collapses", &CutReport::improvement_collapses, "Edge collapses the improvement pass made.");
   report_field(report, "improvement_moves", &CutReport::improvement_moves, "Vertex moves (smoothing) the improvement pass made.");

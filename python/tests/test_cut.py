@@ -328,3 +328,18 @@ def test_the_tissue_rule_in_the_report(box):
     tight = tetcut.Cutter(tetcut.Mesh(*box_arrays(4, 4.0)), tool_diameter=0.1, max_tets_created=10)
     refused = tight.cut((2.05, 1.95, 2.1))
     assert not refused.ok and refused.refusal == "tet budget" and "budget" in refused.failure
+
+
+def test_the_dihedral_floor_is_a_keyword_and_every_report_keeps_it():
+    mesh = tetcut.read(str(CORPUS / "liver.msh"))
+    cutter = tetcut.Cutter(mesh, tool_diameter=README_DIAMETER, min_dihedral_deg=15.0)
+    reports = cutter.sweep(**README_SWEEP)
+    assert all(r.ok for r in reports)
+    made = [r for r in reports if r.tets_created > 0]
+    assert made, "the sweep creates tets"
+    # Each created tet reaches min(15, its host's): the worst over the cut reaches the cut's lowest floor.
+    assert all(r.min_dihedral_deg >= r.dihedral_floor_deg - 1e-7 for r in made)
+    assert all(r.dihedral_floor_deg <= 15.0 for r in made)
+    assert any(r.min_dihedral_deg_before_improvement < r.min_dihedral_deg for r in made)  # the pass lifted angles
+    with pytest.raises(ValueError, match="min_dihedral_deg"):
+        tetcut.Cutter(mesh, tool_diameter=1.0, min_dihedral_deg=80.0)

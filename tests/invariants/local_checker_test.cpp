@@ -44,8 +44,29 @@ TEST(LocalChecker, I7ACreatedTetWorseThanWhatItReplacedIsNamedWithItsHost) {
   const Violation* v = strict.find(Invariant::kI7Quality);
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(v->count, 4u);
-  EXPECT_NE(v->detail.find("replaces 17 ("), std::string::npos) << v->detail;
+  EXPECT_NE(v->detail.find("its hosts: 17 ("), std::string::npos) << v->detail;
   EXPECT_TRUE(check(0.05).ok()) << to_string(check(0.05));
+}
+
+// The dihedral term of I7, per created tet: a centroid split's children have smaller angles than
+// their parent; at theta = 70 degrees (the floor is then the parent's own smallest angle) each
+// child is a violation naming its angle and its host; at theta = 0 and F = 0, none is.
+TEST(LocalChecker, I7ACreatedTetWithASmallerDihedralThanItsHostIsNamed) {
+  auto check = [](double theta) {
+    TetMesh mesh = build_or_fail(make_box_mesh(2, 2, 2));
+    LocalChecker local(mesh.raw_view());
+    const TetId t{17};
+    const std::vector<TetId> created = split_at_centroid(mesh, t);
+    const TetId removed[] = {t};
+    return local.after_operation(mesh.raw_view(), removed, created, {.quality_floor = 0.0, .min_dihedral_deg = theta}, 0.0);
+  };
+  const CheckReport strict = check(70.0);
+  const Violation* v = strict.find(Invariant::kI7Quality);
+  ASSERT_NE(v, nullptr);
+  EXPECT_GT(v->count, 0u);
+  EXPECT_NE(v->detail.find("smallest dihedral angle"), std::string::npos) << v->detail;
+  EXPECT_NE(v->detail.find("its hosts: 17 ("), std::string::npos) << v->detail;
+  EXPECT_TRUE(check(0.0).ok()) << to_string(check(0.0));
 }
 
 // A raw split is reported, not judged by I7's no-degradation rule (a Cutter transaction's).

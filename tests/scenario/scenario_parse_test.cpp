@@ -48,7 +48,8 @@ TEST(ScenarioParse, NamesTheLineAndTheReason) {
                         Case{"sweep 0,0,0 1e9,0,0 1e-3\n", "t.scn:1: sweep of more than"},
                         Case{"expect hash XYZ\n", "t.scn:1: a hash is 16 lowercase hex digits"},
                         Case{"strategy magic\n", "t.scn:1: strategy must be"},
-                        Case{"check everything\n", "t.scn:1: check level must be"}}) {
+                        Case{"check everything\n", "t.scn:1: check level must be"},
+                        Case{"min_dihedral 80\n", "t.scn:1: the dihedral floor min_dihedral_deg must be"}}) {
     const ParseResult r = parse(c.text, "t.scn", ".");
     EXPECT_FALSE(r.scenario) << c.text;
     EXPECT_EQ(r.error.rfind(c.expected, 0), 0u) << "got: " << r.error;
@@ -102,6 +103,23 @@ TEST(ScenarioRun, TheCheckHoldsACutToTheFloorOnlyWhenTheImprovementPassRuns) {
   for (std::uint64_t n : with_pass.created_quality.radius_ratio_histogram) binned += n;
   EXPECT_EQ(binned, with_pass.created_quality.tets);
   EXPECT_EQ(with_pass.created_quality.radius_ratio_histogram[0], 0u) << "nothing created below 0.1";
+  // The dihedral floor too: the cylinder's tets are above 15 degrees, so is every created one
+  // with the pass; without it, the cuts make smaller angles.
+  EXPECT_GE(with_pass.created_quality.min_dihedral_deg, 15.0 - 1e-7);
+  EXPECT_LT(without_pass.created_quality.min_dihedral_deg, 15.0);
+}
+
+// `min_dihedral DEG` sets the pass's dihedral floor: at 10 degrees the same sweeps pass and make
+// no angle below 10; the checker holds the run to that floor.
+TEST(ScenarioRun, TheDihedralFloorLineSetsThePassesAngle) {
+  const ParseResult p = parse("mesh ../meshes/cylinder.msh\ndiameter 0.4\nmin_dihedral 10\n"
+                              "sweep -1.2,-1.10,2 1.2,-1.10,2 0.15\n",
+                              "t.scn", TETCUT_CORPUS_DIR "/scenarios");
+  ASSERT_TRUE(p.scenario) << p.error;
+  const RunResult r = run(*p.scenario);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_GT(r.created_quality.tets, 0u);
+  EXPECT_GE(r.created_quality.min_dihedral_deg, 10.0 - 1e-7);
 }
 
 }  // namespace

@@ -91,7 +91,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CommandParser parser(
       "cut",
       "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--order O] [--split M] "
-      "[--refinement auto|paper|graded] [--no-improve] [--quality-floor F] [--keep-label L ...] "
+      "[--refinement auto|paper|graded] [--no-improve] [--quality-floor F] [--min-dihedral DEG] [--keep-label L ...] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
       "each cut refined then removed without breaking the manifold (paper 3.1-3.7). The sweep is\n"

@@ -176,11 +176,15 @@ void improvement(CLI::App& app, Improvement& target, const std::string& unit) {
   flag(app, "--no-improve", target.off, "no improvement pass after each " + unit + ": the paper's algorithm alone");
   number(app, "--quality-floor", target.floor,
          "the radius ratio the improvement pass lifts created tets to (I7's F; default 0.1)", "F");
+  number(app, "--min-dihedral", target.min_dihedral,
+         "the smallest dihedral angle, in degrees, the improvement pass lifts created tets to (I7's theta; default 15)",
+         "DEG");
 }
 
 void improvement_params(const Improvement& options, CutParams& params) {
   params.improve = !options.off;
   if (options.floor) params.quality_floor = *options.floor;
+  if (options.min_dihedral) params.min_dihedral_deg = *options.min_dihedral;
 }
 
 }  // namespace opt

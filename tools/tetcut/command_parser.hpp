@@ -85,11 +85,12 @@ CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<
 CLI::Option* refinement(CLI::App& app, std::optional<RefinementRule>& target, const std::string& help);
 CLI::Option* check_mode(CLI::App& app, std::optional<scenario::CheckMode>& target, const std::string& help);
 CLI::Option* check_level(CLI::App& app, std::optional<invariants::CheckLevel>& target, const std::string& help);
-// The improvement pass that ends each `unit` ("cut", "request"): --no-improve and --quality-floor,
-// read into CutParams by improvement_params().
+// The improvement pass that ends each `unit` ("cut", "request"): --no-improve, --quality-floor
+// and --min-dihedral, read into CutParams by improvement_params().
 struct Improvement {
   bool off = false;
   std::optional<double> floor;
+  std::optional<double> min_dihedral;
 };
 void improvement(CLI::App& app, Improvement& target, const std::string& unit);
 void improvement_params(const Improvement& options, CutParams& params);

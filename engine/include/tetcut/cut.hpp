@@ -72,12 +72,15 @@ struct CutParams {
   // every tet meeting the tool has its edges within D_ref.
   RefinementRule refinement = RefinementRule::kAuto;
   RemovalOrder order = RemovalOrder::kDirectFirst;        // cut_strategies.hpp
-  // The improvement pass that ends a cut or a removal request (flips, smoothing of the cut's own
-  // vertices): it lifts every tet the cut made to min(quality_floor, the worst tet it replaced),
-  // the floor the invariant checker holds every transaction to (I7). Off: the paper's algorithm
-  // alone, as its tables measure it.
+  // The improvement pass that ends a cut or a removal request (flips, collapses, smoothing of
+  // the cut's own vertices, insertion): it lifts every tet the cut made to its own floors, a
+  // radius ratio of min(quality_floor, its host's) and a smallest dihedral angle of
+  // min(min_dihedral_deg, its host's), its host the tet that held it before the cut: the floors
+  // the invariant checker holds every transaction to (I7). Off: the paper's algorithm alone, as
+  // its tables measure it.
   bool improve = true;
-  double quality_floor = 0.1;  // F, a radius ratio in [0, 1]
+  double quality_floor = 0.1;     // F, a radius ratio in [0, 1]
+  double min_dihedral_deg = 15.0;  // theta, degrees in [0, 70] (a regular tet's is 70.53)
 
   // D_ref, the one length the refinement, the selection and the tissue rule are judged at.
   [[nodiscard]] double d_ref() const { return d_ref_factor * tool_diameter; }
@@ -148,9 +151,13 @@ struct CutReport : RequestCounts {
   std::uint32_t uncuttable_in_tool = 0;
   double min_radius_ratio = 1.0;     // worst tet created (1 when none), after the improvement pass
   double min_radius_ratio_before_improvement = 1.0;
-  double quality_floor = 1.0;        // min(F, worst tet replaced): what every created tet must reach
-                                     // (F when every created tet is above it)
-  bool quality_met = true;           // every created tet reaches it
+  double min_dihedral_deg = 180.0;   // smallest dihedral angle of a tet created (180 when none)
+  double min_dihedral_deg_before_improvement = 180.0;
+  // The lowest floors of the created tets, each min(F or theta, its host's): F and theta when
+  // every created tet is above them.
+  double quality_floor = 1.0;
+  double dihedral_floor_deg = 180.0;
+  bool quality_met = true;           // every created tet reaches its floors
   // The improvement pass's operations: flips, collapses, vertex moves (smoothing), insertions
   // (an edge split at its midpoint, kept), and the slivers it let go with the tissue (in
   // tets_removed_by_improvement, apart from the requests' tets_removed).

@@ -49,6 +49,54 @@ double min_dihedral_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const
   return smallest;
 }
 
+namespace {
+
+// Outward face normals (twice the face areas), kFaceVerts' orientation.
+void face_normals(const Vec3 (&p)[4], Vec3 (&n)[4]) {
+  for (int f = 0; f < 4; ++f) {
+    const Vec3& u = p[kFaceVerts[f][0]];
+    n[f] = cross(p[kFaceVerts[f][1]] - u, p[kFaceVerts[f][2]] - u);
+  }
+}
+
+}  // namespace
+
+double max_dihedral_cosine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 p[4] = {a, b, c, d};
+  Vec3 n[4];
+  face_normals(p, n);
+  double largest = -1.0;
+  for (int e = 0; e < 6; ++e) {
+    const Vec3& n0 = n[kEdgeFaces[e][0]];
+    const Vec3& n1 = n[kEdgeFaces[e][1]];
+    const double len = norm(n0) * norm(n1);
+    if (!(len > 0.0)) return 1.0;
+    // The dihedral angle is pi minus the angle between the outward normals.
+    largest = std::max(largest, -dot(n0, n1) / len);
+  }
+  return std::min(largest, 1.0);
+}
+
+double degrees_of_cosine(double c) { return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / std::numbers::pi; }
+
+double min_dihedral_sine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 p[4] = {a, b, c, d};
+  Vec3 n[4];
+  face_normals(p, n);
+  const double det = dot(b - a, cross(c - a, d - a));  // 6V
+  if (!(det > 0.0)) return 0.0;
+  double len[4];
+  for (int f = 0; f < 4; ++f) len[f] = norm(n[f]);
+  double smallest = 1.0;
+  for (int e = 0; e < 6; ++e) {
+    // 3V|e| / (2 A_i A_j) = det |e| / (|n_i| |n_j|).
+    const double faces = len[kEdgeFaces[e][0]] * len[kEdgeFaces[e][1]];
+    if (!(faces > 0.0)) return 0.0;
+    smallest = std::min(smallest, det * norm(p[kEdgeVerts[e][1]] - p[kEdgeVerts[e][0]]) / faces);
+  }
+  return smallest;
+}
+
 double min_radius_ratio(const TetMesh& mesh, std::span<const TetId> tets) {
   double worst = 1.0;
   for (TetId t : tets) {

@@ -1,6 +1,7 @@
 // Shape quality of a tetrahedron (design invariant I7).
 #pragma once
 
+#include <algorithm>
 #include <span>
 
 #include "tetcut/ids.hpp"
@@ -20,11 +21,33 @@ double min_radius_ratio(const TetMesh& mesh, std::span<const TetId> tets);
 // Smallest of the six dihedral angles, in degrees (70.53 for the regular tet).
 double min_dihedral_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
-// The measure the improvement pass raises and judges every operation by, and the one its floor
-// is set in (I7, with the hosts'): the radius ratio, as Klingner and Shewchuk's Stellar offers it
-// among its objectives. Every operator of improve/ measures through these, so the objective
-// changes here and nowhere else.
-inline double quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return radius_ratio(a, b, c, d); }
+// The largest cosine of the six dihedral angles: the smallest angle is at least theta exactly
+// when this is at most cos(theta). No inverse cosine: the floor test runs on every tet a cut
+// makes. 1 for a flat tet.
+double max_dihedral_cosine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+// The angle, in degrees, whose cosine is c: the smallest dihedral angle of a tet whose
+// max_dihedral_cosine() is c.
+double degrees_of_cosine(double c);
+
+// The smallest sine of the six dihedral angles, 3 V |e| / (2 A_i A_j) at edge e between faces i
+// and j: small for an angle near 0 or near 180 degrees, Stellar's default objective (Klingner and
+// Shewchuk, "Aggressive tetrahedral mesh improvement"). 0 for a flat or inverted tet.
+double min_dihedral_sine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+// The weight that makes a minimum dihedral sine of sin(15 degrees) count as a radius ratio of 0.1:
+// the defaults of the two floors (CutParams::min_dihedral_deg, quality_floor) meet at one value
+// of quality(), so neither term is traded away for the other at the floor.
+inline constexpr double kDihedralSineWeight = 0.1 / 0.25881904510252074;
+
+// The measure the improvement pass raises and judges every operation by: the worse of the radius
+// ratio and the weighted minimum dihedral sine, so an operation lifts the tet's worst angle and
+// its roundness together (a radius ratio alone lets a tet at 0.1 keep a 2-degree dihedral).
+// Every operator of improve/ measures through these, so the objective changes here and nowhere
+// else. The floors themselves are tested per term (improver.hpp, I7).
+inline double quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return std::min(radius_ratio(a, b, c, d), kDihedralSineWeight * min_dihedral_sine(a, b, c, d));
+}
 inline double quality(const TetMesh& mesh, const TetMesh::TetVerts& v) {
   return quality(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
 }

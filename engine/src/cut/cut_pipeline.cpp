@@ -311,23 +311,28 @@ bool Cutter::Pipeline::improve(CutReport& report) {
   const detail::TissueRuleVeto veto(mesh_, selection_, uncuttable_, params_.d_ref());
   const detail::ImproveOutcome outcome =
       improver_.run(mesh_, transaction_.start(),
-                    {.floor = params_.quality_floor, .improve = params_.improve, .reach = reach ? &*reach : nullptr,
+                    {.floor = params_.quality_floor, .min_dihedral_deg = params_.min_dihedral_deg, .improve = params_.improve, .reach = reach ? &*reach : nullptr,
                      .uncuttable = &uncuttable_, .tissue = &tissue_, .veto = veto});
   report.tets_removed_by_improvement = outcome.removed;
   report.min_radius_ratio_before_improvement = outcome.worst_before;
   report.min_radius_ratio = outcome.worst_after;  // the worst net new tet: the made tets still live
+  report.min_dihedral_deg_before_improvement = outcome.min_dihedral_before_deg;
+  report.min_dihedral_deg = outcome.min_dihedral_after_deg;
   report.quality_floor = outcome.floor;
+  report.dihedral_floor_deg = outcome.dihedral_floor_deg;
   report.quality_met = outcome.met;
   report.improvement_flips = outcome.flips;
   report.improvement_collapses = outcome.collapses;
   report.improvement_moves = outcome.moves;
   report.improvement_insertions = outcome.insertions;
   if (report.quality_met || !params_.improve) return true;
-  char text[320];
+  const detail::ImproveOutcome::Shortfall& s = outcome.shortfall;
+  char text[400];
   std::snprintf(text, sizeof text,
-                "the quality floor could not be met: a created tet has radius ratio %.3g, below %.3g = min(quality_floor, "
-                "the worst tet replaced); a lower quality_floor, or improve off, lets such a cut through",
-                report.min_radius_ratio, report.quality_floor);
+                "the quality floor could not be met: a created tet has radius ratio %.3g (its floor %.3g = min(quality_floor, "
+                "its host's)) and smallest dihedral angle %.3g degrees (its floor %.3g = min(min_dihedral_deg, its host's)); "
+                "a lower quality_floor or min_dihedral_deg, or improve off, lets such a cut through",
+                s.radius_ratio, s.ratio_floor, s.min_dihedral_deg, s.dihedral_floor_deg);
   return refuse(report, CutRefusal::kQualityFloor, text);
 }
 

@@ -18,6 +18,8 @@ std::optional<std::string> validate(const CutParams& p) {
   if (p.max_refine_iterations == 0 || p.max_refine_iterations > 64) return "refinement iteration bound must be between 1 and 64";
   if (p.max_tets_created == 0) return "the per-cut tet budget must be positive";
   if (!(p.quality_floor >= 0.0 && p.quality_floor <= 1.0)) return "the quality floor must be a radius ratio between 0 and 1";
+  if (!(p.min_dihedral_deg >= 0.0 && p.min_dihedral_deg <= 70.0))
+    return "the dihedral floor min_dihedral_deg must be an angle between 0 and 70 degrees";
   return std::nullopt;
 }
 

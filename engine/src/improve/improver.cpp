@@ -1,6 +1,8 @@
 #include "improve/improver.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "core/host_location.hpp"
 #include "core/quality.hpp"
@@ -43,44 +45,85 @@ void Improver::reserve(std::uint32_t tets) {
   reserve_touched(neighbours_, 128);
   for (auto* v : {&made_, &created_}) reserve_touched(*v, 4096);
   reserve_touched(bad_, 4096);
+  reserve_touched(made_quality_, 4096);
   reserve_touched(ancestors_, 64);
   host_quality_.reserve(tets);
 }
 
-double Improver::collect_made(TetMesh& mesh, const TetMesh::Savepoint& start) {
+std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::Savepoint& start) {
   made_.clear();
-  double worst = 1.0;
+  double worst = 1.0, cosine = -1.0;
   for (const TetMesh::TetBirth& b : mesh.tets_made_since(start))
     if (mesh.is_live(b.tet)) {
       made_.push_back(b.tet);
-      worst = std::min(worst, quality(mesh, b.tet));
+      const TetMesh::TetVerts v = mesh.tet(b.tet);
+      const Vec3 &p0 = mesh.position(v[0]), &p1 = mesh.position(v[1]), &p2 = mesh.position(v[2]), &p3 = mesh.position(v[3]);
+      worst = std::min(worst, radius_ratio(p0, p1, p2, p3));
+      cosine = std::max(cosine, max_dihedral_cosine(p0, p1, p2, p3));
     }
-  return worst;
+  return {worst, cosine};
 }
 
-double Improver::floor_of(TetMesh& mesh, double floor_f) {
-  double floor = floor_f;
-  for (TetId t : made_) {
-    ancestors_.clear();
-    mesh.ancestors_at_start(t, ancestors_);
-    TetId host = ancestors_.front();
-    if (ancestors_.size() > 1) {
-      // After a flip: the ancestor that holds the tet's centroid.
-      const TetMesh::TetVerts v = mesh.tet(t);
-      const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
-      if (const DeepestTet deepest = deepest_at_start(mesh, ancestors_, centroid); deepest.found()) host = deepest.tet();
-    }
-    double q = 0.0;
-    if (const double* known = host_quality_.find(host)) {
-      q = *known;
-    } else {
-      // The host as it was: its vertices were there before the transaction and never move.
-      q = quality(mesh, mesh.tet_at_start(host));
-      host_quality_.set(host, q);
-    }
-    floor = std::min(floor, q);
+Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
+  ancestors_.clear();
+  mesh.ancestors_at_start(t, ancestors_);
+  TetId host = ancestors_.front();
+  if (ancestors_.size() > 1) {
+    // After a flip: the ancestor that holds the tet's centroid.
+    const TetMesh::TetVerts v = mesh.tet(t);
+    const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
+    if (const DeepestTet deepest = deepest_at_start(mesh, ancestors_, centroid); deepest.found()) host = deepest.tet();
   }
-  return floor;
+  Floors h;
+  if (const Floors* known = host_quality_.find(host)) {
+    h = *known;
+  } else {
+    // The host as it was: its vertices were there before the transaction and never move.
+    const TetMesh::TetVerts v = mesh.tet_at_start(host);
+    const Vec3 &p0 = mesh.position(v[0]), &p1 = mesh.position(v[1]), &p2 = mesh.position(v[2]), &p3 = mesh.position(v[3]);
+    h = {radius_ratio(p0, p1, p2, p3), max_dihedral_cosine(p0, p1, p2, p3)};
+    host_quality_.set(host, h);
+  }
+  return {std::min(floor_f_, h.ratio), std::max(cos_theta_, h.cosine)};
+}
+
+bool Improver::below_floor(TetMesh& mesh, TetId t, Floors* floors) {
+  const TetMesh::TetVerts v = mesh.tet(t);
+  const Vec3 &p0 = mesh.position(v[0]), &p1 = mesh.position(v[1]), &p2 = mesh.position(v[2]), &p3 = mesh.position(v[3]);
+  // The checker compares with its own formulas: aim a rounding above the ratio's floor. An angle
+  // equal to its floor is not below it: a split child keeps its parent's dihedral angles at the
+  // parent's edges exactly, to rounding, which the checker allows for (no_degradation.hpp).
+  const double ratio = radius_ratio(p0, p1, p2, p3), cosine = max_dihedral_cosine(p0, p1, p2, p3);
+  auto below = [&](const Floors& f) { return ratio < f.ratio * (1.0 + 1e-9) || cosine > f.cosine + 1e-12; };
+  const Floors global{floor_f_, cos_theta_};
+  if (!below(global)) {
+    if (floors) *floors = global;
+    return false;
+  }
+  const Floors own = floors_of(mesh, t);
+  if (floors) *floors = own;
+  return below(own);
+}
+
+void Improver::judge(TetMesh& mesh, ImproveOutcome& out) {
+  out.met = true;
+  out.floor = floor_f_;
+  double lowest_cosine = cos_theta_;
+  made_quality_.clear();
+  for (TetId t : made_) made_quality_.push_back({quality(mesh, t), t});
+  std::sort(made_quality_.begin(), made_quality_.end());
+  for (const auto& [q, t] : made_quality_) {
+    Floors f;
+    const bool below = below_floor(mesh, t, &f);
+    out.floor = std::min(out.floor, f.ratio);
+    lowest_cosine = std::max(lowest_cosine, f.cosine);
+    if (!below || !out.met) continue;
+    out.met = false;
+    const TetMesh::TetVerts v = mesh.tet(t);
+    const Vec3 &p0 = mesh.position(v[0]), &p1 = mesh.position(v[1]), &p2 = mesh.position(v[2]), &p3 = mesh.position(v[3]);
+    out.shortfall = {radius_ratio(p0, p1, p2, p3), f.ratio, min_dihedral_angle_deg(p0, p1, p2, p3), degrees_of_cosine(f.cosine)};
+  }
+  out.dihedral_floor_deg = degrees_of_cosine(lowest_cosine);
 }
 
 Refusal Improver::star_rule(TetMesh& mesh, VertId v) {
@@ -207,7 +250,7 @@ bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
 
 void Improver::remove_slivers(TetMesh& mesh, ImproveOutcome& out) {
   for (TetId t : made_) {
-    if (!mesh.is_live(t) || quality(mesh, t) >= goal_) continue;
+    if (!mesh.is_live(t) || !below_floor(mesh, t)) continue;
     if (const Refusal r = plan_sliver_removal(mesh, t, tool_, *tissue_, candidate_); r != Refusal::kNone) {
       count(out, r);
       continue;
@@ -219,19 +262,16 @@ void Improver::remove_slivers(TetMesh& mesh, ImproveOutcome& out) {
 }
 
 void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operations) {
-  // The checker compares with its own formula: aim a rounding above the floor.
-  goal_ = out.floor * (1.0 + 1e-9);
   for (bool progress = true; progress && operations < kMaxOperations;) {
     progress = false;
-    // The made tets below the goal, worst first (ties by id: deterministic).
+    // The made tets below their floors, worst first (ties by id: deterministic).
     bad_.clear();
     for (TetId t : made_)
-      if (mesh.is_live(t))
-        if (const double q = quality(mesh, t); q < goal_) bad_.push_back({q, t});
+      if (mesh.is_live(t) && below_floor(mesh, t)) bad_.push_back({quality(mesh, t), t});
     if (bad_.empty()) break;
     std::sort(bad_.begin(), bad_.end());
     for (const auto& [q, t] : bad_) {
-      if (!mesh.is_live(t) || quality(mesh, t) >= goal_) continue;
+      if (!mesh.is_live(t) || !below_floor(mesh, t)) continue;
       const std::optional<Operator> applied = improve_tet(mesh, t, out);
       if (!applied) continue;
       progress = true;
@@ -254,29 +294,37 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
     own_tissue_.begin(nullptr, 0.0);
     tissue_ = &own_tissue_;
   }
-  out.worst_before = out.worst_after = collect_made(mesh, start);
-  if (made_.empty()) return out;
-  // Every made tet at or above F is above min(F, any host): met, without locating the hosts.
-  if (out.worst_before >= params.floor) {
-    out.floor = params.floor;
+  floor_f_ = params.floor;
+  cos_theta_ = std::cos(params.min_dihedral_deg * std::numbers::pi / 180.0);
+  goal_ = std::min(params.floor, kDihedralSineWeight * std::sin(params.min_dihedral_deg * std::numbers::pi / 180.0));
+  out.floor = params.floor;
+  out.dihedral_floor_deg = params.min_dihedral_deg;
+  auto measure = [&](double& ratio, double& dihedral) {
+    const auto [worst, cosine] = collect_made(mesh, start);
+    ratio = worst;
+    dihedral = made_.empty() ? 180.0 : degrees_of_cosine(cosine);
+    // Every made tet at or above F and theta is above its floors: met, without locating hosts.
+    return worst >= params.floor * (1.0 + 1e-9) && cosine <= cos_theta_ + 1e-12;
+  };
+  if (measure(out.worst_before, out.min_dihedral_before_deg)) {
+    out.worst_after = out.worst_before;
+    out.min_dihedral_after_deg = out.min_dihedral_before_deg;
     return out;
   }
-  out.floor = floor_of(mesh, params.floor);
-  if (params.improve) {
+  judge(mesh, out);
+  if (params.improve && !out.met) {
     created_.clear();
     std::uint32_t operations = 0;
-    // The floor is the hosts' of what the transaction made in the end: an operation that leaves
-    // a poor host with no made tet in it raises it. So: lift to the floor, measure it again, and
-    // lift again while it rose (a few rounds; each only raises the goal).
-    for (int round = 0; round < 3 && out.worst_after < out.floor * (1.0 + 1e-9); ++round) {
+    // Each made tet's floors are its host's: an operation that replaces made tets by others in
+    // other hosts moves them. So: lift, take the made set and its floors again, and lift again
+    // while some made tet is below (a few rounds).
+    for (int round = 0; round < 3 && !out.met; ++round) {
       lift(mesh, out, operations);
-      // The made set again: flips replaced some made tets and some that were there before,
-      // whose hosts now count too.
-      out.worst_after = collect_made(mesh, start);
-      out.floor = floor_of(mesh, params.floor);
+      collect_made(mesh, start);
+      judge(mesh, out);
     }
   }
-  out.met = out.worst_after >= out.floor * (1.0 + 1e-9);
+  measure(out.worst_after, out.min_dihedral_after_deg);
   return out;
 }
 

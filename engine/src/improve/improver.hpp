@@ -1,11 +1,14 @@
 // The improvement pass that ends every Cutter transaction (a cut, a removal request): local mesh
-// improvement of the tets the transaction made, until none is worse than I7's floor
-// (invariants/check.hpp, QualityRule::kNoDegradation): min(F, the worst tet it replaced).
+// improvement of the tets the transaction made, until each reaches its own floor (I7,
+// invariants/check.hpp, QualityRule::kNoDegradation): a radius ratio of at least min(F, its
+// host's) and a smallest dihedral angle of at least min(theta, its host's).
 //
-// The floor is the checker's, computed the engine's way: a made tet's host is the tet that was
+// The floors are the checker's, computed the engine's way: a made tet's host is the tet that was
 // there before the transaction and holds it (its one ancestor in the journal after splits, the
-// ancestor containing its centroid after flips: core/host_location.hpp), and the worst host sets
-// it. Then, worst made tet first, the operations Klingner and Shewchuk's Stellar combines, every
+// ancestor containing its centroid after flips: core/host_location.hpp). Each made tet has its
+// own: one poor host lowers the bar for the tets inside it, not for every tet the cut makes. A
+// made tet at or above F and theta needs no host. Then, worst made tet first (quality(), which
+// weighs both terms), the operations Klingner and Shewchuk's Stellar combines, every
 // one a Plan (operation.hpp) made on the const mesh and offered to the pass, which applies the
 // one whose worst new tet ends best, and only when it beats the worst tet it replaces:
 //   edge removal and the 2-3 flip (flips.hpp), on the tet's edges and faces;
@@ -15,7 +18,7 @@
 //   and when none of those lifts it, insertion (insertion.hpp): the tet's longest edge split at
 //   its midpoint, the new vertex smoothed, kept only when the worst tet of what was split ends
 //   better (else rolled back to a savepoint).
-// A made tet still below the floor after all that, on the surface, within the cut's reach and
+// A made tet still below its floor after all that, on the surface, within the cut's reach and
 // removable on its own, goes with the tissue (sliver_removal.hpp), reported apart
 // (ImproveOutcome::removed).
 // Every plan passes, after its operator's own tests, the run's rules (uncuttable tissue keeps
@@ -51,7 +54,8 @@ namespace tetcut::detail {
 
 // What one run works with.
 struct ImproveParams {
-  double floor = 0.1;  // F: a made tet must reach min(F, the worst of its hosts)
+  double floor = 0.1;  // F: a made tet's radius ratio must reach min(F, its host's)
+  double min_dihedral_deg = 15.0;  // theta: its smallest dihedral angle, min(theta, its host's)
   bool improve = true;  // false: the made tets are only measured against the floor
   // The cut's ball grown by D_ref (none for a removal request), where a sliver may go with the
   // tissue and the cut's surface may move within its tolerance.
@@ -67,17 +71,27 @@ struct ImproveParams {
 };
 
 struct ImproveOutcome {
-  double floor = 1.0;         // min(F, worst host): the quality every made tet must reach (F
-                              // itself when every made tet is above F: the hosts are not looked at)
-  double worst_before = 1.0;  // the worst made tet before the pass (1 when none)
+  // The lowest floors of the made tets, each min(F or theta, its host's): F and theta themselves
+  // when every made tet is above them (the hosts are not looked at).
+  double floor = 1.0;
+  double dihedral_floor_deg = 180.0;
+  double worst_before = 1.0;  // the worst made tet's radius ratio before the pass (1 when none)
   double worst_after = 1.0;   // and after: the worst tet the transaction made
+  double min_dihedral_before_deg = 180.0;  // the smallest dihedral angle of a made tet, before
+  double min_dihedral_after_deg = 180.0;   // and after (180 when none)
+  // The first made tet (worst quality() first) still below its floor after the pass, with its
+  // floors: what a refusal names.
+  struct Shortfall {
+    double radius_ratio = 1.0, ratio_floor = 0.0, min_dihedral_deg = 180.0, dihedral_floor_deg = 0.0;
+  };
+  Shortfall shortfall;
   std::uint32_t flips = 0, collapses = 0, moves = 0, insertions = 0;
   std::uint32_t removed = 0;  // slivers removed with the tissue
   std::uint32_t vetoed = 0;   // plans the caller's hook vetoed
   // Plans refused, by Refusal (the hook's included): a plan that was made but lifted the tet less
   // than another is not refused, only not chosen.
   std::array<std::uint32_t, kRefusalCount> refused{};
-  bool met = true;            // every made tet at or above the floor
+  bool met = true;            // every made tet at or above its floors
 };
 
 class Improver {
@@ -89,11 +103,20 @@ class Improver {
   ImproveOutcome run(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params);
 
  private:
-  // The made tets still live into made_; their worst quality.
-  double collect_made(TetMesh& mesh, const TetMesh::Savepoint& start);
-  // min(F, the worst host of made_).
-  double floor_of(TetMesh& mesh, double floor_f);
-  // Operations on the made tets below out.floor, worst first, until none helps (counted in
+  // A tet's floors: its radius ratio at least `ratio`, its dihedral angles' cosines at most
+  // `cosine` (its smallest angle at least acos(cosine)).
+  struct Floors {
+    double ratio = 0.0, cosine = 1.0;
+  };
+  // The made tets still live into made_; their worst radius ratio and largest dihedral cosine.
+  std::pair<double, double> collect_made(TetMesh& mesh, const TetMesh::Savepoint& start);
+  // Made tet t's floors: F and theta when it reaches them, else min(F or theta, its host's).
+  Floors floors_of(TetMesh& mesh, TetId t);
+  // Whether made tet t is below its floors (`floors`, when given, receives them).
+  bool below_floor(TetMesh& mesh, TetId t, Floors* floors = nullptr);
+  // Every made tet against its floors: `out`'s lowest floors, met and shortfall.
+  void judge(TetMesh& mesh, ImproveOutcome& out);
+  // Operations on the made tets below their floors, worst first, until none helps (counted in
   // `out`, at most kMaxOperations in all), then the slivers that go with the tissue.
   void lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operations);
   // The operation that lifts tet t most, applied: which one, or none when nothing lifts it.
@@ -127,7 +150,11 @@ class Improver {
   bool has_best_ = false;
   std::vector<TetId> star_;
   std::vector<VertId> neighbours_;
-  double goal_ = 0.0;                  // the run's floor, a rounding above
+  double goal_ = 0.0;                  // quality() at the run's F and theta: a plan lifting a tet
+                                       // twice past it is taken without the dearer ones
+  double floor_f_ = 0.0;               // the run's F
+  double cos_theta_ = 1.0;             // cos(theta), theta the run's
+  std::vector<std::pair<double, TetId>> made_quality_;  // judge()'s, worst first
   const Ball* tool_ = nullptr;         // the run's reach, if a cut
   const UncuttableTets* uncuttable_ = nullptr;  // the run's, if any
   TissueRemoval* tissue_ = nullptr;             // the run's removal path
@@ -135,7 +162,7 @@ class Improver {
   PlanVeto veto_;                               // the run's, if any
   std::vector<TetId> made_, ancestors_, created_;
   std::vector<std::pair<double, TetId>> bad_;  // (quality, tet), worst first
-  StampedMap<TetId, double> host_quality_;
+  StampedMap<TetId, Floors> host_quality_;  // a host's radius ratio and largest dihedral cosine
 };
 
 }  // namespace tetcut::detail

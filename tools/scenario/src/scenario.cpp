@@ -27,7 +27,8 @@ std::vector<std::string> tokens_of(const std::string& line) {
 
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
-         w == "order" || w == "split" || w == "refinement" || w == "improve" || w == "quality_floor";
+         w == "order" || w == "split" || w == "refinement" || w == "improve" || w == "quality_floor" ||
+         w == "min_dihedral";
 }
 
 // Applies a parameter line to `params`; a message when the value is not acceptable.
@@ -62,6 +63,7 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
     (name == "diameter"        ? next.tool_diameter
      : name == "dref_factor"   ? next.d_ref_factor
      : name == "quality_floor" ? next.quality_floor
+     : name == "min_dihedral"  ? next.min_dihedral_deg
                                : next.p) = *v;
   }
   if (auto invalid = validate(next)) return invalid;
@@ -185,6 +187,7 @@ invariants::CheckOptions transaction_check_options(const CutParams& params) {
   invariants::CheckOptions o;
   o.quality_rule = params.improve ? invariants::QualityRule::kNoDegradation : invariants::QualityRule::kReportOnly;
   o.quality_floor = params.quality_floor;
+  o.min_dihedral_deg = params.min_dihedral_deg;
   return o;
 }
 

@@ -79,10 +79,12 @@ struct QualityStats {
 // How I7 judges the tets an operation created (LocalChecker::after_operation).
 enum class QualityRule : std::uint8_t {
   // A Cutter transaction (a cut, a removal request: the units that end with the improvement
-  // pass): no created tet has a radius ratio below min(quality_floor, the worst tet it
-  // replaced). The replaced tets are the removed ones that contain a created tet's centroid (the
-  // checker's own point location: it does not take the engine's parents on trust); tissue the
-  // operation removed whole replaces nothing and lowers no floor.
+  // pass): every created tet has a radius ratio of at least min(quality_floor, its hosts') and a
+  // smallest dihedral angle of at least min(min_dihedral_deg, its hosts'), each tet its own
+  // floors. Its hosts are the removed tets that contain its centroid (the checker's own point
+  // location: it does not take the engine's parents on trust); one that no removed tet holds is
+  // held to the operation's worst host; tissue the operation removed whole hosts nothing and
+  // lowers no floor.
   kNoDegradation,
   // A raw operation (one split, a refinement loop, an edit under fuzzing): the quality of what it
   // made is reported, not judged. A midpoint split has no quality bound of its own to keep: the
@@ -116,6 +118,10 @@ struct CheckOptions {
   // tets are worse still sets its own floor through min(F, worst replaced).
   QualityRule quality_rule = QualityRule::kNoDegradation;
   double quality_floor = 0.1;
+  // theta = 15 degrees: below it a tet's stiffness matrix conditioning and an explicit model's
+  // stable step follow the angle, whatever its radius ratio (a tet at radius ratio 0.1 can have a
+  // 2-degree dihedral). Lowered by an input whose tets are worse, through min(theta, its hosts').
+  double min_dihedral_deg = 15.0;
   // I9: when set, the total volume must equal this to a relative tolerance.
   std::optional<double> expected_volume;
   // I10, the local level: when set, the operation was a cut with this tool.

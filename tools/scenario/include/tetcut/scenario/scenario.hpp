@@ -13,6 +13,7 @@
 //                                 (CutParams::order, cut_strategies.hpp)
 //   improve on|off                the improvement pass that ends each cut (CutParams::improve)
 //   quality_floor F               the radius ratio it lifts created tets to (CutParams, I7's F)
+//   min_dihedral DEG              the smallest dihedral angle it lifts them to (I7's theta)
 //   uncuttable LABEL...           tets with these labels (the mesh file's) are tissue no cut or
 //                                 removal takes (Cutter::set_uncuttable(): the paper's Fig. 7);
 //                                 `uncuttable none` lifts it. Needs a labelled mesh.
@@ -129,7 +130,7 @@ struct RunOptions {
 };
 
 // What the local checker holds one Cutter transaction made with `params` to: I7's no-degradation
-// rule at the cut's own floor (CutParams::quality_floor) when the improvement pass runs; with the
+// rule at the cut's own floors (CutParams::quality_floor, min_dihedral_deg) when the improvement pass runs; with the
 // pass off the engine promises no floor (the paper's algorithm alone), so I7 reports quality and
 // judges none.
 invariants::CheckOptions transaction_check_options(const CutParams& params);
