@@ -42,10 +42,12 @@ void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change,
 }
 
 void CheckedMesh::end(std::span<const TetId> removed, std::span<const TetId> created,
-                      std::optional<double> volume_change, inv::QualityRule rule, const inv::ToolRule* tool) {
+                      std::optional<double> volume_change, inv::QualityRule rule, const inv::ToolRule* tool,
+                      std::optional<double> min_dihedral_deg) {
   if (volume_change) expected_volume_ += *volume_change;
   inv::CheckOptions options;
   if (tool) options.tool = *tool;
+  if (min_dihedral_deg) options.min_dihedral_deg = *min_dihedral_deg;
   options.level = inv::CheckLevel::kLocal;
   options.quality_rule = rule;
   options.operation = name_;

@@ -48,10 +48,11 @@ class CheckedMesh {
   // a refinement loop) only reports quality (invariants/check.hpp, QualityRule).
   void end(const ChangeLog& log, std::optional<double> volume_change,
            invariants::QualityRule rule = invariants::QualityRule::kNoDegradation);
-  // `tool`: the operation was a cut with this tool, held to the tissue rule (I10).
+  // `tool`: the operation was a cut with this tool, held to the tissue rule (I10);
+  // `min_dihedral_deg`: the theta a Cutter transaction held (Cutter::last_min_dihedral_held()).
   void end(std::span<const TetId> removed, std::span<const TetId> created, std::optional<double> volume_change,
            invariants::QualityRule rule = invariants::QualityRule::kNoDegradation,
-           const invariants::ToolRule* tool = nullptr);
+           const invariants::ToolRule* tool = nullptr, std::optional<double> min_dihedral_deg = std::nullopt);
   // Ends an operation that renumbered everything (compact()): the local checker starts over and
   // the full check runs.
   void end_renumbered();

@@ -610,6 +610,11 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
                "The lowest radius-ratio floor of a created tet, each min(quality_floor, its host's).");
   report_field(report, "dihedral_floor_deg", &CutReport::dihedral_floor_deg,
                "The lowest dihedral floor (degrees) of a created tet, each min(min_dihedral_deg, its host's).");
+  report_field(report, "min_dihedral_held_deg", &CutReport::min_dihedral_held_deg,
+               "The theta the cut held its created tets to: min_dihedral_deg, or 10 then 0 when the improvement pass "
+               "could not reach it (a refused cut costs more than an angle below theta).");
+  report_field(report, "angle_retries", &CutReport::angle_retries,
+               "Times the improvement pass went on at a lower theta.");
   report_field(report, "quality_met", &CutReport::quality_met, "Every created tet reaches its floors.");
   report_field(report, "improvement_flips", &CutReport::improvement_flips, "Flips the improvement pass made.");
   report_field(report, "improvement_collapses", &CutReport::improvement_collapses, "Edge collapses the improvement pass made.");

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
 #include "tetcut/mesh.hpp"
@@ -29,6 +31,8 @@ inline ::testing::AssertionResult mesh_is_valid(const TetMesh& mesh,
 // I10 with the cut's tool, D_ref and the tets it reports left (a view: use it before the next cut).
 inline invariants::CheckOptions cut_check(const Cutter& cutter, const Vec3& centre) {
   invariants::CheckOptions options;
+  options.min_dihedral_deg = std::min(cutter.params().min_dihedral_deg, cutter.last_min_dihedral_held());
+  options.quality_floor = cutter.params().quality_floor;
   options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
                                       .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
   return options;

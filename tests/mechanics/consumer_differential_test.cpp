@@ -4,6 +4,8 @@
 // that the differential check catches each.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <tuple>
 
 #include "mechanics_test_support.hpp"
@@ -48,6 +50,7 @@ TEST_P(ConsumerSweep, IncrementalConsumersEqualARebuildAfterEveryCut) {
     removed += static_cast<std::uint32_t>(log.removed.size());
     created += static_cast<std::uint32_t>(log.created.size());
     invariants::CheckOptions o;  // a refused cut changed nothing, and is held to no tool
+    o.min_dihedral_deg = std::min(params.min_dihedral_deg, cutter.last_min_dihedral_held());  // the theta it held
     if (r.ok)
       o.tool = invariants::ToolRule{.centre = centre, .radius = params.tool_diameter / 2, .d_ref = params.d_ref(),
                                     .left = cutter.last_left_in_tool()};

@@ -135,6 +135,7 @@ TEST_P(Uncuttable, EveryCutLeavesTheVesselWholeAndTakesTheTissueAroundIt) {
     met_the_vessel += r.uncuttable_in_tool > 0 ? 1 : 0;
     options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
                                         .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
+    options.min_dihedral_deg = std::min(cutter.params().min_dihedral_deg, cutter.last_min_dihedral_held());
     const invariants::CheckReport check =
         checker.after_operation(box.mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options);
     ASSERT_TRUE(check.ok()) << invariants::id_string(check.violations.front().id) << ": " << check.violations.front().detail;
@@ -220,6 +221,7 @@ TEST_P(Uncuttable, ScatteredUncuttableTetsOnTheBundledMeshesSurviveEveryCut) {
       removed += r.tets_removed;
       options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
                                           .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
+      options.min_dihedral_deg = std::min(cutter.params().min_dihedral_deg, cutter.last_min_dihedral_held());
       const invariants::CheckReport check =
           checker.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options);
       ASSERT_TRUE(check.ok()) << invariants::id_string(check.violations.front().id) << ": " << check.violations.front().detail;

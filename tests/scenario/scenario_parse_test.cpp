@@ -113,7 +113,8 @@ TEST(ScenarioRun, TheCheckHoldsACutToTheFloorOnlyWhenTheImprovementPassRuns) {
 // no angle below 10; the checker holds the run to that floor.
 TEST(ScenarioRun, TheDihedralFloorLineSetsThePassesAngle) {
   const ParseResult p = parse("mesh ../meshes/cylinder.msh\ndiameter 0.4\nmin_dihedral 10\n"
-                              "sweep -1.2,-1.10,2 1.2,-1.10,2 0.15\n",
+                              "sweep -1.2,-1.10,2 1.2,-1.10,2 0.15\nsweep -1.2,-0.85,2 1.2,-0.85,2 0.15\n"
+                              "sweep -1.2,-0.60,2 1.2,-0.60,2 0.15\n",
                               "t.scn", TETCUT_CORPUS_DIR "/scenarios");
   ASSERT_TRUE(p.scenario) << p.error;
   const RunResult r = run(*p.scenario);

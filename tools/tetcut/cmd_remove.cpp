@@ -204,9 +204,10 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
   std::optional<invariants::LocalChecker> local;
   if (check_mode == scenario::CheckMode::kEvery) local.emplace(mesh.raw_view());
   std::string first_violation;
-  auto check_request = [&](std::uint64_t index, std::span<const TetId> removed, std::span<const TetId> created) {
+  auto check_request = [&](std::uint64_t index, std::span<const TetId> removed, std::span<const TetId> created,
+                           double min_dihedral_held_deg) {
     if (!local || !first_violation.empty()) return;
-    invariants::CheckOptions co = scenario::transaction_check_options(params);
+    invariants::CheckOptions co = scenario::transaction_check_options(params, min_dihedral_held_deg);
     co.operation = "request " + std::to_string(index);
     const invariants::CheckReport r = local->after_operation(mesh.raw_view(), removed, created, co);
     if (!r.ok()) first_violation = co.operation + ": " + invariants::to_string(r);
@@ -228,7 +229,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
     const CutReport r = cutter.remove(t, log);
     if (r.ok && labelled) labels.apply(mesh, *log);
     if (!r.ok && refused++ == 0) first_refusal = "request " + std::to_string(index) + ": " + r.failure;
-    check_request(index, cutter.last_removed(), cutter.last_created());
+    check_request(index, cutter.last_removed(), cutter.last_created(), cutter.last_min_dihedral_held());
   };
   if (!points.empty()) {
     for (std::size_t i = 0; i < points.size(); ++i) {

@@ -303,9 +303,8 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
     // The tissue rule too (I10), at the tool where the rest mesh was cut.
     const invariants::CheckReport check =
         local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(),
-                              r.ok ? scenario::cut_check_options(cutter.params(), rest.value_or(centres[k]),
-                                                                 cutter.last_left_in_tool())
-                                   : scenario::transaction_check_options(cutter.params()));
+                              r.ok ? scenario::cut_check_options(cutter, rest.value_or(centres[k]))
+                                   : scenario::transaction_check_options(cutter.params(), cutter.last_min_dihedral_held()));
     if (!check.ok()) {
       failure = "frame " + std::to_string(k) + ": " + invariants::id_string(check.violations.front().id) + " violated: " +
                 check.violations.front().detail;

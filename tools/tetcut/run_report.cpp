@@ -63,6 +63,8 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"min_dihedral_deg_before_improvement", r.min_dihedral_deg_before_improvement},
               {"quality_floor", r.quality_floor},
               {"dihedral_floor_deg", r.dihedral_floor_deg},
+              {"min_dihedral_held_deg", r.min_dihedral_held_deg},
+              {"angle_retries", r.angle_retries},
               {"improvement_flips", r.improvement_flips},
               {"improvement_collapses", r.improvement_collapses},
               {"improvement_moves", r.improvement_moves},

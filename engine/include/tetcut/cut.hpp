@@ -158,6 +158,12 @@ struct CutReport : RequestCounts {
   double quality_floor = 1.0;
   double dihedral_floor_deg = 180.0;
   bool quality_met = true;           // every created tet reaches its floors
+  // The theta the cut held its created tets to: CutParams::min_dihedral_deg, or, when the
+  // improvement pass could not lift them to it, 10 degrees, then none (the pass going on from
+  // where it stood, each time counted in angle_retries): a refused cut costs a simulation more than one
+  // angle below theta. Invariant checks of the cut take this theta (scenario::cut_check_options).
+  double min_dihedral_held_deg = 180.0;
+  std::uint32_t angle_retries = 0;
   // The improvement pass's operations: flips, collapses, vertex moves (smoothing), insertions
   // (an edge split at its midpoint, kept), and the slivers it let go with the tissue (in
   // tets_removed_by_improvement, apart from the requests' tets_removed).
@@ -242,6 +248,9 @@ class Cutter {
   // The tets the last cut left in its tool (CutReport::left_in_tool), sorted by id: what the
   // checker's I10 accepts as reported.
   [[nodiscard]] std::span<const TetId> last_left_in_tool() const;
+  // The theta the last cut or removal request held its created tets to
+  // (CutReport::min_dihedral_held_deg): what the checker's I7 takes for it.
+  [[nodiscard]] double last_min_dihedral_held() const;
 
  private:
   // The index, the refiner, the Remover, the marks and the scratch lists (engine/src/cut/

@@ -35,10 +35,14 @@ double degrees_of_cosine(double c);
 // Shewchuk, "Aggressive tetrahedral mesh improvement"). 0 for a flat or inverted tet.
 double min_dihedral_sine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
-// The weight that makes a minimum dihedral sine of sin(15 degrees) count as a radius ratio of 0.1:
-// the defaults of the two floors (CutParams::min_dihedral_deg, quality_floor) meet at one value
-// of quality(), so neither term is traded away for the other at the floor.
+// The weight of the smallest dihedral sine in quality(): F / sin(theta) for the floors the
+// improvement pass holds (CutParams::quality_floor, min_dihedral_deg), so that the two floors meet
+// at one value of quality() and neither term is traded away for the other at the floor; 0 for no
+// angle floor (quality() is then the radius ratio). Per thread, set for one run of the pass by
+// Improver::run (improve/improver.cpp): every operator measures through quality(), and a
+// run of the pass is one thread's. Default: the default floors, 0.1 and 15 degrees.
 inline constexpr double kDihedralSineWeight = 0.1 / 0.25881904510252074;
+inline thread_local double t_dihedral_sine_weight = kDihedralSineWeight;
 
 // The measure the improvement pass raises and judges every operation by: the worse of the radius
 // ratio and the weighted minimum dihedral sine, so an operation lifts the tet's worst angle and
@@ -46,7 +50,9 @@ inline constexpr double kDihedralSineWeight = 0.1 / 0.25881904510252074;
 // Every operator of improve/ measures through these, so the objective changes here and nowhere
 // else. The floors themselves are tested per term (improver.hpp, I7).
 inline double quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return std::min(radius_ratio(a, b, c, d), kDihedralSineWeight * min_dihedral_sine(a, b, c, d));
+  const double ratio = radius_ratio(a, b, c, d);
+  const double w = t_dihedral_sine_weight;
+  return w > 0.0 ? std::min(ratio, w * min_dihedral_sine(a, b, c, d)) : ratio;
 }
 inline double quality(const TetMesh& mesh, const TetMesh::TetVerts& v) {
   return quality(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));

@@ -320,6 +320,8 @@ bool Cutter::Pipeline::improve(CutReport& report) {
   report.min_dihedral_deg = outcome.min_dihedral_after_deg;
   report.quality_floor = outcome.floor;
   report.dihedral_floor_deg = outcome.dihedral_floor_deg;
+  report.min_dihedral_held_deg = last_min_dihedral_held_ = outcome.min_dihedral_held_deg;
+  report.angle_retries += outcome.angle_retries;
   report.quality_met = outcome.met;
   report.improvement_flips = outcome.flips;
   report.improvement_collapses = outcome.collapses;

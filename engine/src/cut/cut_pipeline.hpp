@@ -47,6 +47,7 @@ class Cutter::Pipeline {
   [[nodiscard]] const std::vector<TetId>& last_removed() const { return transaction_.net_removed(); }
   [[nodiscard]] const std::vector<TetId>& last_created() const { return transaction_.net_created(); }
   [[nodiscard]] std::span<const TetId> last_left_in_tool() const { return audit_.left(); }
+  [[nodiscard]] double last_min_dihedral_held() const { return last_min_dihedral_held_; }
 
  private:
   // The stages of one cut, in order; each fills its part of the report. A stage that returns
@@ -93,6 +94,7 @@ class Cutter::Pipeline {
   detail::TissueRemoval tissue_;
   detail::RemovalLoop removal_loop_;
   detail::TissueAudit audit_;
+  double last_min_dihedral_held_ = 180.0;  // the last transaction's (CutReport::min_dihedral_held_deg)
   std::vector<TetId> hit_, region_;  // T_hit, and the refined region
   // Where the removal stage began and ended in the journal: what it made, for the audit.
   TetMesh::Savepoint removal_start_, removal_end_;

@@ -44,5 +44,6 @@ TetMesh& Cutter::mesh() { return pipeline_->mesh(); }
 const std::vector<TetId>& Cutter::last_removed() const { return pipeline_->last_removed(); }
 const std::vector<TetId>& Cutter::last_created() const { return pipeline_->last_created(); }
 std::span<const TetId> Cutter::last_left_in_tool() const { return pipeline_->last_left_in_tool(); }
+double Cutter::last_min_dihedral_held() const { return pipeline_->last_min_dihedral_held(); }
 
 }  // namespace tetcut

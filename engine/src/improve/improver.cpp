@@ -126,6 +126,16 @@ void Improver::judge(TetMesh& mesh, ImproveOutcome& out) {
   out.dihedral_floor_deg = degrees_of_cosine(lowest_cosine);
 }
 
+void Improver::set_theta(double theta_deg, double floor_f) {
+  theta_ = theta_deg;
+  floor_f_ = floor_f;
+  cos_theta_ = std::cos(theta_deg * std::numbers::pi / 180.0);
+  const double sine = std::sin(theta_deg * std::numbers::pi / 180.0);
+  t_dihedral_sine_weight = sine > 0.0 ? floor_f / sine : 0.0;
+  goal_ = floor_f;  // quality() at F and theta
+  host_quality_.clear();
+}
+
 Refusal Improver::star_rule(TetMesh& mesh, VertId v) {
   if (!mesh.made_in_transaction(v)) return Refusal::kNotMadeByCut;
   if (!uncuttable_ || uncuttable_->empty()) return Refusal::kNone;
@@ -294,9 +304,11 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
     own_tissue_.begin(nullptr, 0.0);
     tissue_ = &own_tissue_;
   }
-  floor_f_ = params.floor;
-  cos_theta_ = std::cos(params.min_dihedral_deg * std::numbers::pi / 180.0);
-  goal_ = std::min(params.floor, kDihedralSineWeight * std::sin(params.min_dihedral_deg * std::numbers::pi / 180.0));
+  // quality() weighs the angle for this run's floors, and for the default ones again after it.
+  struct WeightScope {
+    ~WeightScope() { t_dihedral_sine_weight = kDihedralSineWeight; }
+  } weight_scope;
+  set_theta(params.min_dihedral_deg, params.floor);
   out.floor = params.floor;
   out.dihedral_floor_deg = params.min_dihedral_deg;
   auto measure = [&](double& ratio, double& dihedral) {
@@ -304,8 +316,9 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
     ratio = worst;
     dihedral = made_.empty() ? 180.0 : degrees_of_cosine(cosine);
     // Every made tet at or above F and theta is above its floors: met, without locating hosts.
-    return worst >= params.floor * (1.0 + 1e-9) && cosine <= cos_theta_ + 1e-12;
+    return worst >= params.floor * (1.0 + 1e-9) && cosine <= std::cos(params.min_dihedral_deg * std::numbers::pi / 180.0) + 1e-12;
   };
+  out.min_dihedral_held_deg = params.min_dihedral_deg;
   if (measure(out.worst_before, out.min_dihedral_before_deg)) {
     out.worst_after = out.worst_before;
     out.min_dihedral_after_deg = out.min_dihedral_before_deg;
@@ -313,17 +326,32 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
   }
   judge(mesh, out);
   if (params.improve && !out.met) {
-    created_.clear();
     std::uint32_t operations = 0;
-    // Each made tet's floors are its host's: an operation that replaces made tets by others in
-    // other hosts moves them. So: lift, take the made set and its floors again, and lift again
-    // while some made tet is below (a few rounds).
-    for (int round = 0; round < 3 && !out.met; ++round) {
-      lift(mesh, out, operations);
-      collect_made(mesh, start);
-      judge(mesh, out);
+    // theta, then kFallbackDihedralDeg, then none: the cap on refused cuts wins over the angle.
+    // Each lower theta goes on from where the last left the mesh (every operation it applied
+    // was valid and lifted a tet), with an objective weighed for it.
+    const double ladder[] = {params.min_dihedral_deg, std::min(params.min_dihedral_deg, kFallbackDihedralDeg), 0.0};
+    for (std::size_t step = 0; step < std::size(ladder); ++step) {
+      if (step > 0) {
+        if (ladder[step] == ladder[step - 1]) continue;
+        ++out.angle_retries;
+        set_theta(ladder[step], params.floor);
+        judge(mesh, out);
+        if (out.met) break;
+      }
+      created_.clear();
+      // Each made tet's floors are its host's: an operation that replaces made tets by others in
+      // other hosts moves them. So: lift, take the made set and its floors again, and lift again
+      // while some made tet is below (a few rounds).
+      for (int round = 0; round < 3 && !out.met; ++round) {
+        lift(mesh, out, operations);
+        collect_made(mesh, start);
+        judge(mesh, out);
+      }
+      if (out.met) break;
     }
   }
+  out.min_dihedral_held_deg = theta_;
   measure(out.worst_after, out.min_dihedral_after_deg);
   return out;
 }

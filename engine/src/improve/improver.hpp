@@ -70,6 +70,9 @@ struct ImproveParams {
   PlanVeto veto{};
 };
 
+// The first theta a pass falls back to (ImproveOutcome::min_dihedral_held_deg).
+inline constexpr double kFallbackDihedralDeg = 10.0;
+
 struct ImproveOutcome {
   // The lowest floors of the made tets, each min(F or theta, its host's): F and theta themselves
   // when every made tet is above them (the hosts are not looked at).
@@ -85,6 +88,12 @@ struct ImproveOutcome {
     double radius_ratio = 1.0, ratio_floor = 0.0, min_dihedral_deg = 180.0, dihedral_floor_deg = 0.0;
   };
   Shortfall shortfall;
+  // The theta the made tets were held to: ImproveParams::min_dihedral_deg, or lower when the pass
+  // could not lift them to it and went on at kFallbackDihedralDeg, then at none; angle_retries
+  // counts those runs. A refused cut is worse for a simulation than an angle
+  // below theta, and the report says which cut lowered it.
+  double min_dihedral_held_deg = 180.0;
+  std::uint32_t angle_retries = 0;
   std::uint32_t flips = 0, collapses = 0, moves = 0, insertions = 0;
   std::uint32_t removed = 0;  // slivers removed with the tissue
   std::uint32_t vetoed = 0;   // plans the caller's hook vetoed
@@ -114,6 +123,8 @@ class Improver {
   Floors floors_of(TetMesh& mesh, TetId t);
   // Whether made tet t is below its floors (`floors`, when given, receives them).
   bool below_floor(TetMesh& mesh, TetId t, Floors* floors = nullptr);
+  // The run's F and theta, and what follows from them.
+  void set_theta(double theta_deg, double floor_f);
   // Every made tet against its floors: `out`'s lowest floors, met and shortfall.
   void judge(TetMesh& mesh, ImproveOutcome& out);
   // Operations on the made tets below their floors, worst first, until none helps (counted in
@@ -153,7 +164,8 @@ class Improver {
   double goal_ = 0.0;                  // quality() at the run's F and theta: a plan lifting a tet
                                        // twice past it is taken without the dearer ones
   double floor_f_ = 0.0;               // the run's F
-  double cos_theta_ = 1.0;             // cos(theta), theta the run's
+  double theta_ = 0.0;                 // the run's theta, degrees
+  double cos_theta_ = 1.0;             // cos(theta)
   std::vector<std::pair<double, TetId>> made_quality_;  // judge()'s, worst first
   const Ball* tool_ = nullptr;         // the run's reach, if a cut
   const UncuttableTets* uncuttable_ = nullptr;  // the run's, if any

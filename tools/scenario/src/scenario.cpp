@@ -183,16 +183,18 @@ std::string mesh_path_from(const std::string& mesh, const std::string& dir) {
   return (relative.empty() || top(m) != top(base) ? m : relative).generic_string();
 }
 
-invariants::CheckOptions transaction_check_options(const CutParams& params) {
+invariants::CheckOptions transaction_check_options(const CutParams& params, double min_dihedral_held_deg) {
   invariants::CheckOptions o;
   o.quality_rule = params.improve ? invariants::QualityRule::kNoDegradation : invariants::QualityRule::kReportOnly;
   o.quality_floor = params.quality_floor;
-  o.min_dihedral_deg = params.min_dihedral_deg;
+  o.min_dihedral_deg = std::min(params.min_dihedral_deg, min_dihedral_held_deg);
   return o;
 }
 
-invariants::CheckOptions cut_check_options(const CutParams& params, const Vec3& centre, std::span<const TetId> left) {
-  invariants::CheckOptions o = transaction_check_options(params);
+invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& centre) {
+  const CutParams& params = cutter.params();
+  invariants::CheckOptions o = transaction_check_options(params, cutter.last_min_dihedral_held());
+  const std::span<const TetId> left = cutter.last_left_in_tool();
   o.tool = invariants::ToolRule{.centre = centre, .radius = params.tool_diameter / 2, .d_ref = params.d_ref(), .left = left};
   return o;
 }
@@ -280,8 +282,8 @@ RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh
     }
     if (options.check == CheckMode::kNone || !cutter) return true;
     if (options.check == CheckMode::kEvery) {
-      const invariants::CheckOptions o = cut_centre ? cut_check_options(params, *cut_centre, cutter->last_left_in_tool())
-                                                    : transaction_check_options(params);
+      const invariants::CheckOptions o = cut_centre ? cut_check_options(*cutter, *cut_centre)
+                                                    : transaction_check_options(params, cutter->last_min_dihedral_held());
       const invariants::CheckReport r =
           local->after_operation(mesh.raw_view(), cutter->last_removed(), cutter->last_created(), o);
       if (!r.ok()) {

@@ -130,15 +130,17 @@ struct RunOptions {
 };
 
 // What the local checker holds one Cutter transaction made with `params` to: I7's no-degradation
-// rule at the cut's own floors (CutParams::quality_floor, min_dihedral_deg) when the improvement pass runs; with the
-// pass off the engine promises no floor (the paper's algorithm alone), so I7 reports quality and
-// judges none.
-invariants::CheckOptions transaction_check_options(const CutParams& params);
+// rule at the transaction's own floors when the improvement pass runs: quality_floor, and the
+// theta it held (min_dihedral_deg, or lower when the pass fell back: Cutter::
+// last_min_dihedral_held(), CutReport::min_dihedral_held_deg). With the pass off the engine
+// promises no floor (the paper's algorithm alone), so I7 reports quality and judges none.
+invariants::CheckOptions transaction_check_options(const CutParams& params, double min_dihedral_held_deg);
 
-// What the local checker holds a cut to: transaction_check_options() and I10, the tissue rule,
-// with the cut's tool (centred at `centre`, the params' diameter and D_ref) and the tets the cut
-// reports it left there (Cutter::last_left_in_tool(), which the options view: keep it alive).
-invariants::CheckOptions cut_check_options(const CutParams& params, const Vec3& centre, std::span<const TetId> left);
+// What the local checker holds the cut `cutter` just made at `centre` to: transaction_check_options()
+// with its params and held theta, and I10, the tissue rule, with the cut's tool (centred at
+// `centre`, the params' diameter and D_ref) and the tets the cut reports it left there
+// (Cutter::last_left_in_tool(), which the options view: use them before the next cut).
+invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& centre);
 
 // Runs the scenario; the final mesh is left in `mesh_out` when given (when the run stops early,
 // the mesh as it was then: after a refused cut, as before that cut).
