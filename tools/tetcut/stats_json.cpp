@@ -2,9 +2,11 @@
 
 #include <array>
 #include <span>
+#include <tuple>
 
 #include "tetcut/percentile.hpp"
 #include "tetcut/scenario/values.hpp"
+#include "tetcut/stats/fisher_exact.hpp"
 
 namespace tetcut::cli {
 
@@ -70,6 +72,20 @@ void intervals(Json& row, std::span<const std::pair<const char*, const stats::Ce
   row["count"] = std::move(count);
 }
 
+// Fisher's exact test of each rate cell against the paper's (fisher_exact.hpp): "fisher_p" (the
+// two-sided p, the largest over the counts the paper's figures admit; null without trials) and
+// "paper_count" ([[k_lo, k_hi], [n_lo, n_hi]]: the paper's events and trials, rebuilt from its
+// percentages), keyed like the cells.
+void fisher(Json& row, std::span<const std::tuple<const char*, const stats::CellEstimate*, const stats::PaperCount*>> cells) {
+  Json p = Json::object(), count = Json::object();
+  for (const auto& [key, e, c] : cells) {
+    p[key] = stats::fisher_vs_paper(*e, *c);
+    count[key] = Json::array({Json::array({c->k_lo, c->k_hi}), Json::array({c->n_lo, c->n_hi})});
+  }
+  row["fisher_p"] = std::move(p);
+  row["paper_count"] = std::move(count);
+}
+
 // How the row's sweeps were run: their number and offsets (paper_stats.hpp, sweep_offset).
 void sweeps(Json& row, const stats::MeshStats& m) {
   row["sweeps"] = m.sweeps.size();
@@ -121,6 +137,12 @@ Json table1_row(const stats::MeshStats& m) {
   const std::pair<const char*, const stats::CellEstimate*> cells[] = {
       {"removable_pct", &m.table1_ci.removable}, {"vertex_pct", &m.table1_ci.vertex}, {"edge_pct", &m.table1_ci.edge}};
   intervals(row, cells);
+  const stats::PaperTable1Counts& k = stats::kPaperTable1Counts[static_cast<std::size_t>(m.mesh.number - 1)];
+  const std::tuple<const char*, const stats::CellEstimate*, const stats::PaperCount*> rates[] = {
+      {"removable_pct", &m.table1_ci.removable, &k.removable},
+      {"vertex_pct", &m.table1_ci.vertex, &k.vertex},
+      {"edge_pct", &m.table1_ci.edge, &k.edge}};
+  fisher(row, rates);
   sweeps(row, m);
   row["all_operations"] = m.table1.all_operations;  // interior tets included
   row["ok"] = m.ok;
@@ -155,6 +177,12 @@ void table2_intervals(Json& row, const stats::MeshStats& m, const char* unresolv
       {"global_cardinality_per_selected", &t.global_cardinality_per_selected},
       {unresolved_key, &t.combined_unresolved}};
   intervals(row, cells);
+  const stats::PaperTable2Counts& k = stats::kPaperTable2Counts[static_cast<std::size_t>(m.mesh.number - 1)];
+  const std::tuple<const char*, const stats::CellEstimate*, const stats::PaperCount*> rates[] = {
+      {"vertex_unresolved_pct", &t.vertex_unresolved, &k.vertex_unresolved},
+      {"edge_unresolved_pct", &t.edge_unresolved, &k.edge_unresolved},
+      {"global_unresolved_pct", &t.global_unresolved, &k.global_unresolved}};
+  fisher(row, rates);
   sweeps(row, m);
 }
 

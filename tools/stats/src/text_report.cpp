@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tetcut/percentile.hpp"
+#include "tetcut/stats/fisher_exact.hpp"
 
 namespace tetcut::stats {
 
@@ -46,11 +47,9 @@ std::string count_text(const CellEstimate& e) {
   return buf;
 }
 
-std::string paper_beside(const CellEstimate& ours, double paper, int decimals) {
-  const bool outside = !std::isnan(ours.ci.lo) && (paper < ours.ci.lo || paper > ours.ci.hi);
-  std::string s = fixed(paper, decimals);
-  if (outside) s += '*';
-  return s;
+std::string fisher_text(const CellEstimate& ours, const PaperCount& paper) {
+  const double p = fisher_vs_paper(ours, paper);
+  return std::isnan(p) ? "-" : significant(p, 2) + (p < 0.05 ? "*" : "");
 }
 
 std::string created_worst(const invariants::QualityStats& q) {
@@ -101,47 +100,52 @@ std::string tables_1_and_2(const std::vector<MeshStats>& meshes, const std::stri
   out += "Table 1. Removing a tet on the surface (requested with a face on the surface, as the paper's\n"
          "title says): how often it is removable directly, or would make a vertex or an edge singular\n"
          "(paper 3.6, combined strategy, " + order + " order), pooled over the seeded sweeps. ours, its 95 %\n"
-         "interval, events/operations, the paper's (* outside our interval); all ops: every distinct request,\n"
+         "interval, events/operations, the paper's, and p: Fisher's exact test (two-sided) of our counts\n"
+         "against the paper's, rebuilt from its percentages (* p < 0.05); all ops: every distinct request,\n"
          "interior tets included\n\n";
   TextTable t1;
   t1.row({"mesh", "tets", "sweeps", "cuts", "operations", "paper", "all ops", "% removable", "95 %", "events", "paper",
-          "% vertex", "95 %", "events", "paper", "% edge", "95 %", "events", "paper"});
+          "p", "% vertex", "95 %", "events", "paper", "p", "% edge", "95 %", "events", "paper", "p"});
   for (const MeshStats& m : meshes) {
     const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table1Intervals& c = m.table1_ci;
+    const PaperTable1Counts& k = kPaperTable1Counts[static_cast<std::size_t>(m.mesh.number - 1)];
     t1.row({mesh_label(m.mesh), std::to_string(m.tets_before), std::to_string(m.sweeps.size()), std::to_string(m.cuts),
             std::to_string(m.table1.operations), std::to_string(p.operations), std::to_string(m.table1.all_operations),
             fixed(c.removable.value, 1), interval_text(c.removable, 1), count_text(c.removable),
-            paper_beside(c.removable, p.removable_pct, 1), fixed(c.vertex.value, 1), interval_text(c.vertex, 1),
-            count_text(c.vertex), paper_beside(c.vertex, p.vertex_pct, 1), fixed(c.edge.value, 1),
-            interval_text(c.edge, 1), count_text(c.edge), paper_beside(c.edge, p.edge_pct, 1)});
+            fixed(p.removable_pct, 1), fisher_text(c.removable, k.removable), fixed(c.vertex.value, 1),
+            interval_text(c.vertex, 1), count_text(c.vertex), fixed(p.vertex_pct, 1), fisher_text(c.vertex, k.vertex),
+            fixed(c.edge.value, 1), interval_text(c.edge, 1), count_text(c.edge), fixed(p.edge_pct, 1),
+            fisher_text(c.edge, k.edge)});
   }
   out += t1.str();
 
   out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one (" + order + " order): % of\n"
          "singularities it did not resolve and the mean size of the sets it removed, pooled over the sweeps:\n"
-         "ours, its 95 % interval, the counts (unresolved/singularities, tets/sets), the paper's (* outside\n"
-         "our interval). The global cardinality is per operation resolved directly or by neighbours\n"
+         "ours, its 95 % interval, the counts (unresolved/singularities, tets/sets), the paper's and, for a\n"
+         "rate, Fisher's p against the paper's rebuilt counts (* p < 0.05; a mean size has no test: the paper\n"
+         "gives no spread). The global cardinality is per operation resolved directly or by neighbours\n"
          "(card./op., the paper's column: its figures reconstruct so) and, beside it, per selected tet the\n"
          "sets took (card./sel.); the last column is what the combined strategy left in place (must be 0)\n\n";
   TextTable t2;
-  t2.row({"mesh", "vertex % unres.", "95 %", "count", "paper", "card.", "95 %", "count", "paper", "edge % unres.", "95 %",
-          "count", "paper", "card.", "95 %", "count", "paper", "global % unres.", "95 %", "paper", "card./op.", "95 %",
-          "paper", "card./sel.", "95 %", "combined % unres."});
+  t2.row({"mesh", "vertex % unres.", "95 %", "count", "paper", "p", "card.", "95 %", "count", "paper", "edge % unres.",
+          "95 %", "count", "paper", "p", "card.", "95 %", "count", "paper", "global % unres.", "95 %", "paper", "p",
+          "card./op.", "95 %", "paper", "card./sel.", "95 %", "combined % unres."});
   for (const MeshStats& m : meshes) {
     const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table2Intervals& c = m.table2_ci;
+    const PaperTable2Counts& k = kPaperTable2Counts[static_cast<std::size_t>(m.mesh.number - 1)];
     t2.row({mesh_label(m.mesh), fixed(c.vertex_unresolved.value, 1), interval_text(c.vertex_unresolved, 1),
-            count_text(c.vertex_unresolved), paper_beside(c.vertex_unresolved, p.vertex_unresolved_pct, 1),
-            fixed(c.vertex_cardinality.value, 1), interval_text(c.vertex_cardinality, 2), count_text(c.vertex_cardinality),
-            paper_beside(c.vertex_cardinality, p.vertex_cardinality, 1), fixed(c.edge_unresolved.value, 1),
-            interval_text(c.edge_unresolved, 1), count_text(c.edge_unresolved),
-            paper_beside(c.edge_unresolved, p.edge_unresolved_pct, 1), fixed(c.edge_cardinality.value, 1),
-            interval_text(c.edge_cardinality, 2), count_text(c.edge_cardinality),
-            paper_beside(c.edge_cardinality, p.edge_cardinality, 1), fixed(c.global_unresolved.value, 1),
-            interval_text(c.global_unresolved, 1), paper_beside(c.global_unresolved, p.global_unresolved_pct, 1),
-            fixed(c.global_cardinality.value, 2), interval_text(c.global_cardinality, 2),
-            paper_beside(c.global_cardinality, p.global_cardinality, 1), fixed(c.global_cardinality_per_selected.value, 2),
+            count_text(c.vertex_unresolved), fixed(p.vertex_unresolved_pct, 1),
+            fisher_text(c.vertex_unresolved, k.vertex_unresolved), fixed(c.vertex_cardinality.value, 1),
+            interval_text(c.vertex_cardinality, 2), count_text(c.vertex_cardinality), fixed(p.vertex_cardinality, 1),
+            fixed(c.edge_unresolved.value, 1), interval_text(c.edge_unresolved, 1), count_text(c.edge_unresolved),
+            fixed(p.edge_unresolved_pct, 1), fisher_text(c.edge_unresolved, k.edge_unresolved),
+            fixed(c.edge_cardinality.value, 1), interval_text(c.edge_cardinality, 2), count_text(c.edge_cardinality),
+            fixed(p.edge_cardinality, 1), fixed(c.global_unresolved.value, 1), interval_text(c.global_unresolved, 1),
+            fixed(p.global_unresolved_pct, 1), fisher_text(c.global_unresolved, k.global_unresolved),
+            fixed(c.global_cardinality.value, 2), interval_text(c.global_cardinality, 2), fixed(p.global_cardinality, 1),
+            fixed(c.global_cardinality_per_selected.value, 2),
             interval_text(c.global_cardinality_per_selected, 2),
             fixed(c.combined_unresolved.value, 1) + " (" + std::to_string(c.combined_unresolved.count) + ")"});
   }
