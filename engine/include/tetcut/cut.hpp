@@ -72,6 +72,7 @@ struct CutParams {
   // every tet meeting the tool has its edges within D_ref.
   RefinementRule refinement = RefinementRule::kAuto;
   RemovalOrder order = RemovalOrder::kDirectFirst;        // cut_strategies.hpp
+  NeighbourSetChoice neighbour_set = NeighbourSetChoice::kSmallest;  // paper 3.5's two readings
   // The improvement pass that ends a cut or a removal request (flips, smoothing of the cut's own
   // vertices): it lifts every tet the cut made to min(quality_floor, the worst tet it replaced),
   // the floor the invariant checker holds every transaction to (I7). Off: the paper's algorithm
