@@ -138,7 +138,9 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err) {
   };
   must_complete(report.meshes, "combined");
   must_complete(report.wide_meshes, "wide");
-  must_complete(report.paper_order_meshes, "combined (paper order)");
+  must_complete(report.paper_order_meshes, "combined (surface-first-by-id order)");
+  must_complete(report.revisit_meshes, "combined (revisit order)");
+  must_complete(report.first_set_meshes, "combined (3.5's first set)");
   if (report.resection && !report.resection->run.result.ok) {
     err << "tetcut: " << report.resection->run.result.error << "\n";
     code = kExitViolated;

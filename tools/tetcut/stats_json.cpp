@@ -287,6 +287,17 @@ Json stats_json(const stats::StatsReport& report) {
     table1_paper_order.push_back(table1_row(m));
     table2_paper_order.push_back(table2_row(m));
   }
+  // The paper's other readings: the revisit order, and 3.5 stopping at its first removable set.
+  Json table1_revisit = Json::array(), table2_revisit = Json::array(), table1_first_set = Json::array(),
+       table2_first_set = Json::array();
+  for (const stats::MeshStats& m : report.revisit_meshes) {
+    table1_revisit.push_back(table1_row(m));
+    table2_revisit.push_back(table2_row(m));
+  }
+  for (const stats::MeshStats& m : report.first_set_meshes) {
+    table1_first_set.push_back(table1_row(m));
+    table2_first_set.push_back(table2_row(m));
+  }
   for (const stats::StrategyRow& r : report.strategies) strategies.push_back(strategy_row(r, report.comparison_mesh));
   Json quality_rows = Json::array();
   for (const stats::QualityRow& r : report.quality) quality_rows.push_back(quality_row(r));
@@ -295,6 +306,10 @@ Json stats_json(const stats::StatsReport& report) {
               {"table2_wide", std::move(table2_wide)},
               {"table1_paper_order", std::move(table1_paper_order)},
               {"table2_paper_order", std::move(table2_paper_order)},
+              {"table1_revisit", std::move(table1_revisit)},
+              {"table2_revisit", std::move(table2_revisit)},
+              {"table1_first_set", std::move(table1_first_set)},
+              {"table2_first_set", std::move(table2_first_set)},
               {"improve", report.improve},
               {"sweeps", report.sweeps},
               {"strategies", std::move(strategies)},

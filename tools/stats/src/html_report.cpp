@@ -277,6 +277,20 @@ std::string html_report(const StatsReport& report, const std::string& command) {
          "of ours (every directly removable tet first).</p>\n<div class=\"wide\">" + table1_html(report.paper_order_meshes, "table1-paper-order") + "</div>\n";
     h += std::string("<h2>Table 2 in the paper's order</h2>\n<div class=\"wide\">") + table2_html(report.paper_order_meshes, "table2-paper-order") + "</div>\n";
   }
+  if (!report.revisit_meshes.empty()) {
+    h += "<h2>Tables 1 and 2 in the revisit order</h2>\n"
+         "<p>Another reading of the paper's order: surface first by id, but a tet neither removable nor "
+         "taken by the neighbour search is put off and met again after the next removal, counted once by "
+         "its first verdict.</p>\n<div class=\"wide\">" + table1_html(report.revisit_meshes, "table1-revisit") +
+         table2_html(report.revisit_meshes, "table2-revisit") + "</div>\n";
+  }
+  if (!report.first_set_meshes.empty()) {
+    h += "<h2>Tables 1 and 2 with 3.5's first removable set</h2>\n"
+         "<p>The other reading of the neighbour search: it stops at the first removable candidate instead of "
+         "going on for a smaller one (our order).</p>\n<div class=\"wide\">" +
+         table1_html(report.first_set_meshes, "table1-first-set") + table2_html(report.first_set_meshes, "table2-first-set") +
+         "</div>\n";
+  }
   h += "<h2>Table 2, our wider search</h2>\n"
        "<p>The same scenarios with the strategy <code>wide</code> (not the paper's: whole vertex shells and "
        "rounds of repairs, smallest set first) in place of the paper's search; the paper's search (3.5, "

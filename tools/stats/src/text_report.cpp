@@ -99,7 +99,7 @@ std::string tables_1_and_2(const std::vector<MeshStats>& meshes, const std::stri
   std::string out;
   out += "Table 1. Removing a tet on the surface (requested with a face on the surface, as the paper's\n"
          "title says): how often it is removable directly, or would make a vertex or an edge singular\n"
-         "(paper 3.6, combined strategy, " + order + " order), pooled over the seeded sweeps. ours, its 95 %\n"
+         "(paper 3.6, combined strategy, " + order + "), pooled over the seeded sweeps. ours, its 95 %\n"
          "interval, events/operations, the paper's, and p: Fisher's exact test (two-sided) of our counts\n"
          "against the paper's, rebuilt from its percentages (* p < 0.05); all ops: every distinct request,\n"
          "interior tets included\n\n";
@@ -120,7 +120,7 @@ std::string tables_1_and_2(const std::vector<MeshStats>& meshes, const std::stri
   }
   out += t1.str();
 
-  out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one (" + order + " order): % of\n"
+  out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one (" + order + "): % of\n"
          "singularities it did not resolve and the mean size of the sets it removed, pooled over the sweeps:\n"
          "ours, its 95 % interval, the counts (unresolved/singularities, tets/sets), the paper's and, for a\n"
          "rate, Fisher's p against the paper's rebuilt counts (* p < 0.05; a mean size has no test: the paper\n"
@@ -192,7 +192,7 @@ std::string edge_configurations(const std::vector<MeshStats>& meshes, const std:
 std::string text_report(const StatsReport& report) {
   std::string out;
   out += std::string("Improvement pass: ") + (report.improve ? "on" : "off (--no-improve)") + "\n\n";
-  out += tables_1_and_2(report.meshes, "direct-first");
+  out += tables_1_and_2(report.meshes, "direct-first order");
   out += "\nTable 2, our wider search (strategy wide, not the paper's: whole vertex shells and rounds of\n"
          "repairs, smallest set first) in place of 3.5 on the same scenarios: each figure of the wide\n"
          "search with its 95 % interval (and counts), then the paper's search's (3.5) from Table 2; the last\n"
@@ -217,13 +217,25 @@ std::string text_report(const StatsReport& report) {
     if (!m.ok) out += "  " + mesh_label(m.mesh) + ": the wide run stopped early: " + m.error + "\n";
 
   if (!report.paper_order_meshes.empty()) {
-    out += "\nThe same scenarios in the paper's order (3.3: \"removing one-by-one all tetrahedra in\n"
-           "T_removal\": the first pending selected tet with a face on the surface, removable or not), in\n"
-           "place of ours (every directly removable tet first):\n\n";
-    out += tables_1_and_2(report.paper_order_meshes, "paper");
+    out += "\nThe same scenarios in the surface-first-by-id order (one reading of 3.3's \"removing one-by-one\n"
+           "all tetrahedra in T_removal\", which gives no order: the first pending selected tet with a face on\n"
+           "the surface, by id, removable or not), in place of ours (every directly removable tet first):\n\n";
+    out += tables_1_and_2(report.paper_order_meshes, "surface-first-by-id order");
+  }
+  if (!report.revisit_meshes.empty()) {
+    out += "\nThe same scenarios in the revisit order (another reading: surface first by id, but a tet neither\n"
+           "removable nor taken by 3.5 is put off and met again after the next removal, counted once by its\n"
+           "first verdict; only when every pending tet is put off does the first go to 3.7):\n\n";
+    out += tables_1_and_2(report.revisit_meshes, "revisit order");
+  }
+  if (!report.first_set_meshes.empty()) {
+    out += "\nThe same scenarios with 3.5 read the other way (neighbour_set first: it stops at the first\n"
+           "removable candidate, shortest path first, instead of going on through further paths for a\n"
+           "smaller one), in our order:\n\n";
+    out += tables_1_and_2(report.first_set_meshes, "direct-first order, 3.5 stopping at its first removable set");
   }
   out += edge_configurations(report.meshes, "direct-first");
-  if (!report.paper_order_meshes.empty()) out += edge_configurations(report.paper_order_meshes, "paper");
+  if (!report.paper_order_meshes.empty()) out += edge_configurations(report.paper_order_meshes, "surface-first-by-id");
 
   out += "\nStrategies on the " + report.comparison_mesh +
          " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";
