@@ -31,6 +31,7 @@ struct Remover::Workspace {
   // Of those, the ones a search-only request left (RequestLimits::search_only): put off, not
   // given up, so that their going later in any set takes them off the unresolved count.
   StampedSet<TetId> put_off;
+  std::uint32_t put_off_count = 0;  // its size: 0 outside RemovalOrder::kRevisit, where nothing is looked up
   detail::TissueRemoval tissue;      // the removal path of a request made without a caller's
   // The wide search's bounds (as the strategy wide and as 3.4/3.7's repair), from the options
   // when they are set.
@@ -165,6 +166,7 @@ void Remover::reset() {
   report_ = {};
   ws_->met_unresolved.clear();
   ws_->put_off.clear();
+  ws_->put_off_count = 0;
 }
 
 std::span<const TetId> Remover::last_removed() const { return ws_->net_removed; }
@@ -269,21 +271,25 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
   if (own_transaction) mesh.commit();
 
   count_request(report_, limits.counts, result, limits.search_only);
+  // Whether x was put off (and is no longer).
+  auto take_off = [&w](TetId x) {
+    if (w.put_off_count == 0 || !w.put_off.contains(x)) return false;
+    w.put_off.erase(x);
+    --w.put_off_count;
+    return true;
+  };
   if (result.outcome == RemovalOutcome::kUnresolved) {
     w.met_unresolved.insert(t);
-    if (limits.search_only) {
-      w.put_off.insert(t);
-    } else {
-      w.put_off.erase(t);
+    if (!limits.search_only) {
+      take_off(t);  // given up: it stays counted unresolved
+    } else if (w.put_off.insert(t)) {
+      ++w.put_off_count;
     }
   } else {
-    w.put_off.erase(t);  // its own repeat was counted above
+    take_off(t);  // its own repeat was counted above
     for (TetId r : w.net_removed) {
       // A put-off tet that went with this set (or was split by it) is no longer unresolved.
-      if (w.put_off.contains(r)) {
-        --report_.unresolved;
-        w.put_off.erase(r);
-      }
+      if (take_off(r)) --report_.unresolved;
       w.met_unresolved.erase(r);
     }
   }
