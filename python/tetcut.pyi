@@ -223,6 +223,7 @@ class Cutter:
         strategy: str = "combined",
         split: str = "templates",
         order: str = "direct-first",
+        neighbour_set: str = "smallest",
         refinement: str = "auto",
         d_ref_factor: float = 1.5,
         p: float = 1.5,

@@ -46,7 +46,8 @@ void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
   // Version 3: the ranges a user reaches by mistake (a tool in micrometres, a factor off by a
   // hundred, p a hair above 1); up to 10^4 mean edges is a thousand times a fuzz mesh's size.
   const bool wide_ranges = ctx.version >= kSequenceVersionWideParams;
-  switch (input.ConsumeIntegralInRange<int>(0, 6)) {
+  // Version 5: the paper's readings too (order, 3.5's set); before, 6 was the last (split).
+  switch (input.ConsumeIntegralInRange<int>(0, ctx.version >= kSequenceVersionReadings ? 8 : 6)) {
     case 0:
       p.tool_diameter = round_significant(ctx.bundled.mean_edge * (wide_ranges ? consume_log_uniform(input, -2.0, 4.0)
                                                                          : consume_in(input, 0.5, 2.0)));
@@ -72,9 +73,18 @@ void param(SequenceSession& session, Context& ctx, FuzzedDataProvider& input) {
       p.strategy = consume_strategy(ctx.version, input);
       name = "strategy", value = to_string(p.strategy);
       break;
-    default:
+    case 6:
       p.split_method = input.ConsumeBool() ? SplitMethod::kBisection : SplitMethod::kTemplates;
       name = "split", value = to_string(p.split_method);
+      break;
+    case 7:
+      p.order = static_cast<RemovalOrder>(
+          input.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(RemovalOrder::kRevisit)));
+      name = "order", value = to_string(p.order);
+      break;
+    default:
+      p.neighbour_set = input.ConsumeBool() ? NeighbourSetChoice::kFirst : NeighbourSetChoice::kSmallest;
+      name = "neighbour_set", value = to_string(p.neighbour_set);
       break;
   }
   session.set_param(name, value, p);

@@ -68,6 +68,10 @@ void body(std::uint8_t version, FuzzedDataProvider& input, ScenarioRecorder& rec
       case Op::kStrategy:
         params.strategy = consume_strategy(version, input);
         session.set_param("strategy", to_string(params.strategy), params);
+        if (version >= kSequenceVersionReadings) {  // paper 3.5's two readings
+          params.neighbour_set = input.ConsumeBool() ? NeighbourSetChoice::kFirst : NeighbourSetChoice::kSmallest;
+          session.set_param("neighbour_set", to_string(params.neighbour_set), params);
+        }
         break;
       case Op::kRemoveBoundary:
       case Op::kRemoveAny: {

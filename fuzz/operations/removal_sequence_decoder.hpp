@@ -1,10 +1,11 @@
 // The removal_sequence target's decoder and runner (fuzz/targets/removal_sequence.cpp is its
 // libFuzzer entry point; `tetcut replay --target removal_sequence` calls the same run()).
 //
-// Input: version byte (1 to 4, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
-// 1: the bundled cylinder, sheet, liver-coarse; versions 2 to 4: their small fuzz versions; 3
+// Input: version byte (1 to 5, sequence_target.hpp), then (FuzzedDataProvider) the mesh (version
+// 1: the bundled cylinder, sheet, liver-coarse; versions 2 to 5: their small fuzz versions; 3
 // reads as 2), then up to max_operations operations, each an opcode and its arguments:
-//   strategy S          basic | neighbours | combined, and from version 4 wide (the initial
+//   strategy S          basic | neighbours | combined, and from version 4 wide, then from
+//                       version 5 paper 3.5's set, smallest | first (the initial
 //                       strategy is combined)
 //   remove boundary     the first live tet with a boundary face at or after a chosen id
 //   remove any          the first live tet at or after a chosen id (interior ones included)

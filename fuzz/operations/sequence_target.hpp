@@ -34,12 +34,17 @@ namespace tetcut::fuzz {
 //      which sets none of them, reads 3 as 2.
 //   4  as 3, but both targets draw the removal strategy among all four: `wide` too (the
 //      extension of paper 3.5 in remove/wide_search.cpp), which versions 1-3 never drew.
-// The fuzzers run versions 2 to 4 (is_current_sequence_version); 1 only replays.
+//   5  as 4, but the paper's readings are drawn too (cut_strategies.hpp): cut_sequence's
+//      parameters include the removal order (direct-first, surface-first-by-id, revisit) and
+//      3.5's set (smallest, first); removal_sequence's strategy operation draws 3.5's set after
+//      the strategy. Versions 1-4 never drew them.
+// The fuzzers run versions 2 to 5 (is_current_sequence_version); 1 only replays.
 inline constexpr std::uint8_t kSequenceVersionBundled = 1;
 inline constexpr std::uint8_t kSequenceVersionSmall = 2;
 inline constexpr std::uint8_t kSequenceVersionWideParams = 3;
 inline constexpr std::uint8_t kSequenceVersionAllStrategies = 4;
-inline constexpr std::uint8_t kSequenceVersion = kSequenceVersionAllStrategies;  // the newest
+inline constexpr std::uint8_t kSequenceVersionReadings = 5;
+inline constexpr std::uint8_t kSequenceVersion = kSequenceVersionReadings;  // the newest
 inline bool is_sequence_version(std::uint8_t v) { return v >= kSequenceVersionBundled && v <= kSequenceVersion; }
 inline bool is_current_sequence_version(std::uint8_t v) { return v >= kSequenceVersionSmall && v <= kSequenceVersion; }
 

@@ -421,7 +421,7 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   }
   if (!mesh) throw py::type_error(where + ": mesh: expected a tetcut.Mesh, got None");
   const Keywords k(where, kwargs,
-                   {"mesh", "tool_diameter", "strategy", "split", "order", "d_ref_factor", "p", "search_depth",
+                   {"mesh", "tool_diameter", "strategy", "split", "order", "neighbour_set", "d_ref_factor", "p", "search_depth",
                     "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "min_dihedral_deg", "refinement", "keep_labels"});
   CutParams params;
   auto set = [&](const char* name, auto CutParams::*field, const char* expected) {
@@ -464,8 +464,15 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   }
   if (const auto s = k.get<std::string>("order", "a str")) {
     const auto v = parse_removal_order(*s);
-    if (!v) throw py::value_error(where + ": order: direct-first or paper, not '" + *s + "'");
+    if (!v)
+      throw py::value_error(where + ": order: direct-first, surface-first-by-id (or paper, its old name) or revisit, not '" +
+                            *s + "'");
     params.order = *v;
+  }
+  if (const auto s = k.get<std::string>("neighbour_set", "a str")) {
+    const auto v = parse_neighbour_set_choice(*s);
+    if (!v) throw py::value_error(where + ": neighbour_set: smallest or first, not '" + *s + "'");
+    params.neighbour_set = *v;
   }
   std::vector<std::uint32_t> keep_labels =
       k.get<std::vector<std::uint32_t>>("keep_labels", "a sequence of labels (integers in 0..2^32-1)").value_or(std::vector<std::uint32_t>{});
@@ -478,7 +485,8 @@ std::string cutter_init_doc() {
   auto real = [](double x) { return py::repr(py::float_(x)).cast<std::string>(); };
   const std::string parameters =
       "self, /, mesh, *, tool_diameter, strategy='" + std::string(to_string(d.strategy)) + "', split='" +
-      to_string(d.split_method) + "', order='" + to_string(d.order) + "', refinement='" + to_string(d.refinement) + "', d_ref_factor=" + real(d.d_ref_factor) +
+      to_string(d.split_method) + "', order='" + to_string(d.order) + "', neighbour_set='" + to_string(d.neighbour_set) +
+      "', refinement='" + to_string(d.refinement) + "', d_ref_factor=" + real(d.d_ref_factor) +
       ", p=" + real(d.p) + ", search_depth=" + std::to_string(d.search_depth) +
       ", max_refine_iterations=" + std::to_string(d.max_refine_iterations) +
       ", max_tets_created=" + std::to_string(d.max_tets_created) + ", improve=" + (d.improve ? "True" : "False") +

@@ -77,7 +77,8 @@ def test_bad_parameters_raise_naming_the_keyword(box):
     for kwargs, words in [({"tool_diameter": -1}, "tool_diameter=-1: tool diameter must be a positive"),
                           ({"tool_diameter": float("nan")}, "tool_diameter=nan: tool diameter"),
                           ({"strategy": "greedy"}, "strategy: basic, neighbours, combined or wide, not 'greedy'"),
-                          ({"split": "halves"}, "split: templates or bisection"), ({"order": "random"}, "order: "),
+                          ({"split": "halves"}, "split: templates or bisection"), ({"order": "random"}, "order: direct-first, surface-first-by-id (or paper, its old name) or revisit, not 'random'"),
+                          ({"neighbour_set": "largest"}, "neighbour_set: smallest or first, not 'largest'"),
                           ({"quality_floor": 2.0}, "quality_floor=2.0: the quality floor"),
                           ({"d_ref_factor": 0}, "d_ref_factor=0: D_ref factor"), ({"p": 1.0}, "p=1.0: p must"),
                           ({"search_depth": 65}, "search_depth=65: search depth must be between 1 and 64"),
@@ -94,6 +95,17 @@ def test_bad_parameters_raise_naming_the_keyword(box):
             tetcut.Cutter(box, **{"tool_diameter": 1.0, **kwargs})
         assert words in str(e.value)
     assert tetcut.Cutter(box, tool_diameter=1.0, order="paper", improve=False, search_depth=3).cut((2, 2, 4)).ok
+    # The paper's readings (docs/usage.md): each order and 3.5 set choice cuts, and "paper" is the
+    # old name of surface-first-by-id: the same mesh after the same cut.
+    hashes = {}
+    for order in ("direct-first", "surface-first-by-id", "paper", "revisit"):
+        for neighbour_set in ("smallest", "first"):
+            m = box.copy()
+            assert tetcut.Cutter(m, tool_diameter=1.0, order=order, neighbour_set=neighbour_set,
+                                 improve=False).cut((2, 2, 4)).ok
+            hashes[order, neighbour_set] = m.hash()
+    assert hashes["paper", "smallest"] == hashes["surface-first-by-id", "smallest"]
+    assert hashes["paper", "first"] == hashes["surface-first-by-id", "first"]
     cutter = tetcut.Cutter(box, tool_diameter=1.0)
     with pytest.raises(ValueError, match="finite"):
         cutter.cut((np.nan, 0, 0))

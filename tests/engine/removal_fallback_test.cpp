@@ -11,6 +11,7 @@
 #include "checked.hpp"
 #include "core/random.hpp"
 #include "removal_test_support.hpp"
+#include "remove/neighbour_search.hpp"
 #include "remove/normal_surface_fallback.hpp"
 #include "remove/refinement_strategies.hpp"
 #include "tetcut/canonical_hash.hpp"
@@ -157,6 +158,77 @@ TEST(NormalSurfaceFallback, TakesOverWherePaper34sSetIsNotRemovable) {
   EXPECT_GT(tried, 50);
   EXPECT_GT(refused, 0) << "3.4's set was removable on all " << tried << " singular tets";
   std::printf("[fallback] paper 3.4's set not removable for %d of %d singular tets\n", refused, tried);
+}
+
+// docs/removal-proof.md's counter-example to 3.4, as 3.4 now runs (it also takes the corners at a
+// of the tets around av): T has exactly one boundary face F, the vertex v opposite F is on the
+// surface, a vertex a of F has av on the surface, and on both sides of T around av some tet has
+// its face opposite v inside the mesh (the tissue is more than one tet deep at a). There the
+// set's part of a's link is the whole fan around v, which touches the border at v and along T's
+// edge bc, so what stays at a falls in two: 3.4's set is never removable.
+TEST(NormalSurfaceFallback, Paper34sSetFailsWhereTheTissueIsDeepOnBothSidesOfTAroundAv) {
+  // The fuzz meshes, each hollowed part-way by random boundary requests (a cut's cavity is where
+  // a tet gets exactly one boundary face with its fourth vertex on the surface).
+  std::vector<TetMesh> meshes;
+  for (const char* name : {"cylinder-small.msh", "sheet-small.msh", "liver-small.msh"}) {
+    ReadResult read = read_mesh(std::string(TETCUT_CORPUS_DIR) + "/fuzz/meshes/" + name);
+    ASSERT_TRUE(read.mesh.has_value());
+    for (std::uint64_t seed : {4ull, 5ull, 6ull}) {
+      TetMesh mesh = build_or_fail(*read.mesh);
+      Remover remover;
+      BoundaryTetPicker picker(mesh, seed);
+      for (int k = 0; k < 60; ++k) {
+        const TetId t = picker.pick(mesh);
+        if (!t.valid()) break;
+        remover.remove(mesh, t);
+        picker.add(remover.last_exposed());
+      }
+      meshes.push_back(std::move(mesh));
+    }
+  }
+  int configurations = 0;
+  for (std::size_t mesh_index = 0; mesh_index < meshes.size(); ++mesh_index) {
+    const TetMesh& original = meshes[mesh_index];
+    const std::string name = "mesh " + std::to_string(mesh_index);
+    SetRemovalWorkspace ws;
+    std::vector<TetId> sides;
+    std::vector<std::uint32_t> sizes;
+    for (std::uint32_t i = 0; i < original.tet_capacity(); ++i) {
+      const TetId t{i};
+      if (!original.is_live(t) || original.boundary_face_count(t) != 1) continue;
+      int f = 0;
+      while (!original.is_boundary_face(t, f)) ++f;
+      const VertId v = original.tet(t)[static_cast<std::size_t>(f)];
+      if (!original.is_boundary_vertex(v)) continue;
+      bool deep_at_some_a = false;
+      for (int la = 0; la < 4 && !deep_at_some_a; ++la) {
+        if (la == f) continue;
+        const VertId a = original.tet(t)[static_cast<std::size_t>(la)];
+        if (!original.is_boundary_edge(t, original.local_edge(t, a, v))) continue;
+        detail::sides_of_edge(original, ws, t, a, v, sides, sizes);
+        if (sizes.size() != 2) continue;
+        bool deep[2] = {false, false};
+        std::size_t k = 0;
+        for (int side = 0; side < 2; ++side)
+          for (std::uint32_t j = 0; j < sizes[static_cast<std::size_t>(side)]; ++j, ++k) {
+            const TetId u = sides[k];
+            deep[side] = deep[side] || !original.is_boundary_face(u, original.local_index(u, v));
+          }
+        deep_at_some_a = deep[0] && deep[1];
+      }
+      if (!deep_at_some_a) continue;
+      ++configurations;
+      TetMesh mesh = original;
+      Request request;
+      detail::RefinementStrategies paper;
+      mesh.begin_transaction();
+      detail::RemovalContext ctx = request.context(mesh);
+      EXPECT_EQ(paper.basic(ctx, t), 0u) << name << " tet " << i << ": 3.4's set passed where a's link falls in two";
+      mesh.commit();
+    }
+  }
+  EXPECT_GT(configurations, 0) << "no tet of the fuzz meshes is in the counter-example's configuration";
+  std::printf("[3.4] %d tets in the counter-example's configuration, 3.4's set refused for each\n", configurations);
 }
 
 // The proof does not need midpoints (docs/removal-proof.md, "Any split point"). T with a sliver U

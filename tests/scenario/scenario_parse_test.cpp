@@ -48,11 +48,22 @@ TEST(ScenarioParse, NamesTheLineAndTheReason) {
                         Case{"sweep 0,0,0 1e9,0,0 1e-3\n", "t.scn:1: sweep of more than"},
                         Case{"expect hash XYZ\n", "t.scn:1: a hash is 16 lowercase hex digits"},
                         Case{"strategy magic\n", "t.scn:1: strategy must be"},
+                        Case{"order random\n", "t.scn:1: order must be direct-first, surface-first-by-id (or paper"},
+                        Case{"neighbour_set largest\n", "t.scn:1: neighbour_set must be smallest or first"},
                         Case{"check everything\n", "t.scn:1: check level must be"},
                         Case{"min_dihedral 80\n", "t.scn:1: the dihedral floor min_dihedral_deg must be"}}) {
     const ParseResult r = parse(c.text, "t.scn", ".");
     EXPECT_FALSE(r.scenario) << c.text;
     EXPECT_EQ(r.error.rfind(c.expected, 0), 0u) << "got: " << r.error;
+  }
+}
+
+// The paper's readings (docs/usage.md): every spelling, "paper" the old name of surface-first-by-id.
+TEST(ScenarioParse, ReadsThePapersReadings) {
+  for (const char* line : {"order direct-first\n", "order surface-first-by-id\n", "order paper\n", "order revisit\n",
+                           "neighbour_set smallest\n", "neighbour_set first\n"}) {
+    const ParseResult r = parse(line, "t.scn", ".");
+    EXPECT_TRUE(r.scenario) << line << r.error;
   }
 }
 

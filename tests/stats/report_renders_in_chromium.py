@@ -159,7 +159,8 @@ def main():
     # every mean size's bootstrap interval lies between the smallest and largest ratio of one sweep
     # (a pooled ratio of resampled sweeps cannot leave that range), and its counts are the sweeps'.
     from scipy.stats import binomtest
-    for table in ("table1", "table2", "table1_paper_order", "table2_paper_order", "table2_wide"):
+    for table in ("table1", "table2", "table1_paper_order", "table2_paper_order", "table2_wide", "table1_revisit",
+                  "table2_revisit", "table1_first_set", "table2_first_set"):
         for row in stats.get(table, []):
             where = "%s %s" % (table, row["mesh"])
             check(row.get("sweeps") == SWEEPS and row["offsets"][0] == [0, 0, 0] and len(row["offsets"]) == SWEEPS,
@@ -182,6 +183,23 @@ def main():
                     ratios = [a / b for a, b in per_sweep if b > 0]
                     check(min(ratios) - 1e-12 <= lo <= hi <= max(ratios) + 1e-12,
                           "%s %s: bootstrap [%r, %r] within the sweeps' ratios %r" % (where, key, lo, hi, ratios))
+    # Every rate's Fisher p is scipy's on our counts against the paper's rebuilt ones (the largest
+    # over the counts the paper's figures admit); none without trials.
+    from scipy.stats import fisher_exact
+    for table in ("table1", "table2", "table1_paper_order", "table2_paper_order", "table1_revisit", "table2_revisit",
+                  "table1_first_set", "table2_first_set"):
+        for row in stats.get(table, []):
+            check(len(row.get("fisher_p", {})) == 3, "%s %s: three rates tested" % (table, row["mesh"]))
+            for key, p in row.get("fisher_p", {}).items():
+                k, n = row["count"][key]
+                (klo, khi), (nlo, nhi) = row["paper_count"][key]
+                if n == 0:
+                    check(p is None, "%s %s %s: no p without trials" % (table, row["mesh"], key))
+                    continue
+                expected = max(fisher_exact([[k, n - k], [pk, pn - pk]])[1]
+                               for pk in range(klo, khi + 1) for pn in range(nlo, nhi + 1))
+                check(p is not None and abs(p - expected) <= 1e-9 * expected + 1e-300,
+                      "%s %s %s: Fisher p %r, scipy %r" % (table, row["mesh"], key, p, expected))
     # Issue 32 item 7: one logged configuration per edge singularity 3.5 searched.
     for table in ("table2", "table2_paper_order"):
         for row in stats.get(table, []):
@@ -216,7 +234,8 @@ def main():
     for pid in PICTURE_IDS:
         check(('id="%s"' % pid) in dom.stdout, "the loaded page has the picture %s" % pid)
     for tid in ("table1", "table2", "table1-paper-order", "table2-paper-order", "edge-search", "table2-wide", "strategies",
-                "created-histogram", "quality"):
+                "created-histogram", "quality", "table1-revisit", "table2-revisit", "table1-first-set",
+                "table2-first-set"):
         check(('id="%s"' % tid) in dom.stdout, "the loaded page has the table %s" % tid)
     check(dom.stdout.count("<polygon") > 2000, "the surface pictures have their triangles")
 

@@ -30,6 +30,7 @@ struct CutArgs {
   std::optional<std::uint64_t> depth;
   std::optional<RemovalStrategy> strategy;
   std::optional<RemovalOrder> order;
+  std::optional<NeighbourSetChoice> neighbour_set;
   std::optional<SplitMethod> split;
   std::optional<RefinementRule> refinement;
   std::optional<scenario::CheckMode> check;
@@ -44,7 +45,12 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::point(app, "--to", a.to, "where it ends (included when a whole number of steps away)")->required();
   opt::number(app, "--step", a.step, "the distance between two cuts (> 0)", "S")->required();
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
-  opt::order(app, "--order", a.order, "which selected tet a cut requests next (default direct-first)");
+  opt::order(app, "--order", a.order,
+             "which selected tet a cut requests next (default direct-first; docs/paper.md: the paper's three "
+             "readings)");
+  opt::neighbour_set(app, "--neighbour-set", a.neighbour_set,
+                     "which removable set the neighbour search (paper 3.5) keeps: the smallest (default) or the first "
+                     "it finds");
   opt::split_method(app, "--split", a.split, "how the paper's refinement splits edges (default templates)");
   opt::refinement(app, a.refinement,
                   "which tets the refinement splits: the paper's loop (3.2; the default) or longest-edge "
@@ -70,6 +76,7 @@ std::optional<std::string> cut_params(const CutArgs& a, CutParams& params) {
   params.tool_diameter = *a.diameter;
   if (a.strategy) params.strategy = *a.strategy;
   if (a.order) params.order = *a.order;
+  if (a.neighbour_set) params.neighbour_set = *a.neighbour_set;
   if (a.split) params.split_method = *a.split;
   if (a.refinement) params.refinement = *a.refinement;
   if (a.dref_factor) params.d_ref_factor = *a.dref_factor;
@@ -90,7 +97,8 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CutArgs a;
   CommandParser parser(
       "cut",
-      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--order O] [--split M] "
+      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--order O] "
+      "[--neighbour-set smallest|first] [--split M] "
       "[--refinement auto|paper|graded] [--no-improve] [--quality-floor F] [--min-dihedral DEG] [--keep-label L ...] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"

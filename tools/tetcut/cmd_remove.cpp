@@ -62,6 +62,7 @@ struct RemoveArgs {
   std::vector<std::string> more_points;
   std::optional<std::uint64_t> seed;
   std::optional<RemovalStrategy> strategy;
+  std::optional<NeighbourSetChoice> neighbour_set;
   std::optional<scenario::CheckMode> check;
   opt::Improvement improvement;
 };
@@ -74,6 +75,9 @@ void add_options(CLI::App& app, RemoveArgs& a) {
   opt::text(app, "--random", a.random, "request N tets (or all) on the current boundary, one at a time", "N|all");
   opt::count(app, "--seed", a.seed, "the seed of --random", "S");
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
+  opt::neighbour_set(app, "--neighbour-set", a.neighbour_set,
+                     "which removable set the neighbour search (paper 3.5) keeps: the smallest (default) or the first "
+                     "it finds");
   opt::improvement(app, a.improvement, "request");
   opt::check_mode(app, a.check, "local check after every request and full check at the end; end (default): full "
                                 "check at the end; none");
@@ -157,7 +161,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
   CommandParser parser(
       "remove",
       "tetcut remove MESH (--at X,Y,Z ... | --random N|all --seed S) [--strategy basic|neighbours|combined|wide] "
-      "[--check every|end|none] -o OUT [--report R.json]",
+      "[--neighbour-set smallest|first] [--check every|end|none] -o OUT [--report R.json]",
       "Removes tetrahedra without breaking the manifold (paper 3.3-3.7) and prints the paper's\n"
       "statistics (Tables 1 and 2). --at removes the tet containing each point in turn; --random\n"
       "requests tets on the current boundary one at a time, as a cautery meets them.\n",
@@ -195,6 +199,7 @@ int cmd_remove(Args args, std::ostream& out, std::ostream& err) {
 
   CutParams params;
   params.strategy = strategy;
+  if (a.neighbour_set) params.neighbour_set = *a.neighbour_set;
   opt::improvement_params(a.improvement, params);
   if (auto invalid = validate(params)) {
     err << "tetcut: " << *invalid << "\n";

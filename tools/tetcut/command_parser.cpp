@@ -146,8 +146,15 @@ CLI::Option* strategy(CLI::App& app, const std::string& name, std::optional<Remo
 
 CLI::Option* order(CLI::App& app, const std::string& name, std::optional<RemovalOrder>& target,
                    const std::string& help) {
-  return parsed(app, name, target, help, "paper|direct-first",
-                [](const std::string& s) { return parse_removal_order(s); }, "must be paper or direct-first");
+  return parsed(app, name, target, help, "direct-first|surface-first-by-id|revisit",
+                [](const std::string& s) { return parse_removal_order(s); },
+                "must be direct-first, surface-first-by-id (or paper, its old name) or revisit");
+}
+
+CLI::Option* neighbour_set(CLI::App& app, const std::string& name, std::optional<NeighbourSetChoice>& target,
+                           const std::string& help) {
+  return parsed(app, name, target, help, "smallest|first",
+                [](const std::string& s) { return parse_neighbour_set_choice(s); }, "must be smallest or first");
 }
 
 CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<SplitMethod>& target,

@@ -76,9 +76,13 @@ CLI::Option* flag(CLI::App& app, const std::string& name, bool& target, const st
 // The shared vocabulary of values.hpp, each read by its one parser.
 CLI::Option* strategy(CLI::App& app, const std::string& name, std::optional<RemovalStrategy>& target,
                       const std::string& help);
-// --order paper|direct-first (CutParams::order).
+// --order direct-first|surface-first-by-id|revisit, "paper" accepted for surface-first-by-id
+// (CutParams::order).
 CLI::Option* order(CLI::App& app, const std::string& name, std::optional<RemovalOrder>& target,
                    const std::string& help);
+// --neighbour-set smallest|first (CutParams::neighbour_set: paper 3.5's two readings).
+CLI::Option* neighbour_set(CLI::App& app, const std::string& name, std::optional<NeighbourSetChoice>& target,
+                           const std::string& help);
 CLI::Option* split_method(CLI::App& app, const std::string& name, std::optional<SplitMethod>& target,
                           const std::string& help);
 // --refinement auto|paper|graded (CutParams::refinement).

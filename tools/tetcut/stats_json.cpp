@@ -2,9 +2,11 @@
 
 #include <array>
 #include <span>
+#include <tuple>
 
 #include "tetcut/percentile.hpp"
 #include "tetcut/scenario/values.hpp"
+#include "tetcut/stats/fisher_exact.hpp"
 
 namespace tetcut::cli {
 
@@ -70,6 +72,20 @@ void intervals(Json& row, std::span<const std::pair<const char*, const stats::Ce
   row["count"] = std::move(count);
 }
 
+// Fisher's exact test of each rate cell against the paper's (fisher_exact.hpp): "fisher_p" (the
+// two-sided p, the largest over the counts the paper's figures admit; null without trials) and
+// "paper_count" ([[k_lo, k_hi], [n_lo, n_hi]]: the paper's events and trials, rebuilt from its
+// percentages), keyed like the cells.
+void fisher(Json& row, std::span<const std::tuple<const char*, const stats::CellEstimate*, const stats::PaperCount*>> cells) {
+  Json p = Json::object(), count = Json::object();
+  for (const auto& [key, e, c] : cells) {
+    p[key] = stats::fisher_vs_paper(*e, *c);
+    count[key] = Json::array({Json::array({c->k_lo, c->k_hi}), Json::array({c->n_lo, c->n_hi})});
+  }
+  row["fisher_p"] = std::move(p);
+  row["paper_count"] = std::move(count);
+}
+
 // How the row's sweeps were run: their number and offsets (paper_stats.hpp, sweep_offset).
 void sweeps(Json& row, const stats::MeshStats& m) {
   row["sweeps"] = m.sweeps.size();
@@ -121,6 +137,12 @@ Json table1_row(const stats::MeshStats& m) {
   const std::pair<const char*, const stats::CellEstimate*> cells[] = {
       {"removable_pct", &m.table1_ci.removable}, {"vertex_pct", &m.table1_ci.vertex}, {"edge_pct", &m.table1_ci.edge}};
   intervals(row, cells);
+  const stats::PaperTable1Counts& k = stats::kPaperTable1Counts[static_cast<std::size_t>(m.mesh.number - 1)];
+  const std::tuple<const char*, const stats::CellEstimate*, const stats::PaperCount*> rates[] = {
+      {"removable_pct", &m.table1_ci.removable, &k.removable},
+      {"vertex_pct", &m.table1_ci.vertex, &k.vertex},
+      {"edge_pct", &m.table1_ci.edge, &k.edge}};
+  fisher(row, rates);
   sweeps(row, m);
   row["all_operations"] = m.table1.all_operations;  // interior tets included
   row["ok"] = m.ok;
@@ -155,6 +177,12 @@ void table2_intervals(Json& row, const stats::MeshStats& m, const char* unresolv
       {"global_cardinality_per_selected", &t.global_cardinality_per_selected},
       {unresolved_key, &t.combined_unresolved}};
   intervals(row, cells);
+  const stats::PaperTable2Counts& k = stats::kPaperTable2Counts[static_cast<std::size_t>(m.mesh.number - 1)];
+  const std::tuple<const char*, const stats::CellEstimate*, const stats::PaperCount*> rates[] = {
+      {"vertex_unresolved_pct", &t.vertex_unresolved, &k.vertex_unresolved},
+      {"edge_unresolved_pct", &t.edge_unresolved, &k.edge_unresolved},
+      {"global_unresolved_pct", &t.global_unresolved, &k.global_unresolved}};
+  fisher(row, rates);
   sweeps(row, m);
 }
 
@@ -259,6 +287,17 @@ Json stats_json(const stats::StatsReport& report) {
     table1_paper_order.push_back(table1_row(m));
     table2_paper_order.push_back(table2_row(m));
   }
+  // The paper's other readings: the revisit order, and 3.5 stopping at its first removable set.
+  Json table1_revisit = Json::array(), table2_revisit = Json::array(), table1_first_set = Json::array(),
+       table2_first_set = Json::array();
+  for (const stats::MeshStats& m : report.revisit_meshes) {
+    table1_revisit.push_back(table1_row(m));
+    table2_revisit.push_back(table2_row(m));
+  }
+  for (const stats::MeshStats& m : report.first_set_meshes) {
+    table1_first_set.push_back(table1_row(m));
+    table2_first_set.push_back(table2_row(m));
+  }
   for (const stats::StrategyRow& r : report.strategies) strategies.push_back(strategy_row(r, report.comparison_mesh));
   Json quality_rows = Json::array();
   for (const stats::QualityRow& r : report.quality) quality_rows.push_back(quality_row(r));
@@ -267,6 +306,10 @@ Json stats_json(const stats::StatsReport& report) {
               {"table2_wide", std::move(table2_wide)},
               {"table1_paper_order", std::move(table1_paper_order)},
               {"table2_paper_order", std::move(table2_paper_order)},
+              {"table1_revisit", std::move(table1_revisit)},
+              {"table2_revisit", std::move(table2_revisit)},
+              {"table1_first_set", std::move(table1_first_set)},
+              {"table2_first_set", std::move(table2_first_set)},
               {"improve", report.improve},
               {"sweeps", report.sweeps},
               {"strategies", std::move(strategies)},

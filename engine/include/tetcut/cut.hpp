@@ -72,6 +72,7 @@ struct CutParams {
   // every tet meeting the tool has its edges within D_ref.
   RefinementRule refinement = RefinementRule::kAuto;
   RemovalOrder order = RemovalOrder::kDirectFirst;        // cut_strategies.hpp
+  NeighbourSetChoice neighbour_set = NeighbourSetChoice::kSmallest;  // paper 3.5's two readings
   // The improvement pass that ends a cut or a removal request (flips, collapses, smoothing of
   // the cut's own vertices, insertion): it lifts every tet the cut made to its own floors, a
   // radius ratio of min(quality_floor, its host's) and a smallest dihedral angle of

@@ -33,6 +33,7 @@ RemovalOptions removal_options(const CutParams& p) {
   RemovalOptions o;
   o.strategy = p.strategy;
   o.max_path_depth = static_cast<int>(p.search_depth);
+  o.neighbour_set = p.neighbour_set;
   return o;
 }
 
@@ -111,7 +112,8 @@ Renumbering Cutter::Pipeline::compact() {
 
 std::optional<std::string> Cutter::Pipeline::set_params(const CutParams& params) {
   if (auto invalid = validate(params)) return invalid;
-  const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth;
+  const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth ||
+                               params.neighbour_set != params_.neighbour_set;
   params_ = params;
   invalid_.reset();
   judge_scale();

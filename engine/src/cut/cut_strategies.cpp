@@ -16,7 +16,11 @@ constexpr Spellings<RemovalStrategy> kStrategyNames[] = {{"basic", RemovalStrate
                                                          {"combined", RemovalStrategy::kCombined},
                                                          {"wide", RemovalStrategy::kWide}};
 constexpr Spellings<RemovalOrder> kOrderNames[] = {{"direct-first", RemovalOrder::kDirectFirst},
-                                                   {"paper", RemovalOrder::kPaper}};
+                                                   {"surface-first-by-id", RemovalOrder::kSurfaceFirstById},
+                                                   {"paper", RemovalOrder::kSurfaceFirstById},
+                                                   {"revisit", RemovalOrder::kRevisit}};
+constexpr Spellings<NeighbourSetChoice> kNeighbourSetNames[] = {{"smallest", NeighbourSetChoice::kSmallest},
+                                                                {"first", NeighbourSetChoice::kFirst}};
 constexpr Spellings<SplitMethod> kSplitMethodNames[] = {{"templates", SplitMethod::kTemplates},
                                                         {"bisection", SplitMethod::kBisection}};
 constexpr Spellings<RefinementRule> kRefinementNames[] = {{"paper", RefinementRule::kPaper},
@@ -48,6 +52,12 @@ std::optional<RemovalStrategy> parse_removal_strategy(std::string_view text) {
 const char* to_string(RemovalOrder order) { return name_of(kOrderNames, order); }
 
 std::optional<RemovalOrder> parse_removal_order(std::string_view text) { return value_of(kOrderNames, text); }
+
+const char* to_string(NeighbourSetChoice choice) { return name_of(kNeighbourSetNames, choice); }
+
+std::optional<NeighbourSetChoice> parse_neighbour_set_choice(std::string_view text) {
+  return value_of(kNeighbourSetNames, text);
+}
 
 const char* to_string(SplitMethod method) { return name_of(kSplitMethodNames, method); }
 

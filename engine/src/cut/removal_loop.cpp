@@ -7,6 +7,8 @@ namespace tetcut::detail {
 void RemovalLoop::reserve(std::uint32_t tets) {
   tried_.reserve(tets);
   queued_.reserve(tets);
+  put_off_.reserve(tets);
+  given_up_.reserve(tets);
   reserve_touched(work_, 16384);
 }
 
@@ -27,7 +29,39 @@ TetId RemovalLoop::next_pending(const Context& ctx) const {
   return kNoTet;
 }
 
-bool RemovalLoop::request(const Context& ctx, TetId t, const Removability& first, bool pieces, CutReport& report) {
+TetId RemovalLoop::next_to_revisit(const Context& ctx, bool put_off_too) const {
+  auto waiting = [&](TetId t) {
+    return ctx.mesh.is_live(t) && ctx.selection.selected().contains(t) && !given_up_.contains(t) &&
+           (put_off_too || !put_off_.contains(t));
+  };
+  for (TetId t : ctx.selection.removal())
+    if (waiting(t) && ctx.mesh.boundary_face_count(t) > 0) return t;
+  for (TetId t : ctx.selection.removal())
+    if (waiting(t)) return t;
+  return kNoTet;
+}
+
+bool RemovalLoop::revisit(const Context& ctx, CutReport& report) {
+  put_off_.clear();
+  given_up_.clear();
+  for (;;) {
+    TetId t = next_to_revisit(ctx, false);
+    const bool whole = !t.valid();  // every waiting tet is put off: the first goes to the strategy
+    if (whole) t = next_to_revisit(ctx, true);
+    if (!t.valid()) return true;
+    if (whole) given_up_.insert(t);
+    if (!request(ctx, t, removability(ctx.mesh, t), true, report, !whole)) return false;
+    // Removal exposes tets and only ever makes others removable: after one, every put-off tet is
+    // met again. A search-only request that left t (a refused set, a failed search) puts it off.
+    if (!whole && ctx.mesh.is_live(t) && ctx.selection.selected().contains(t))
+      put_off_.insert(t);
+    else
+      put_off_.clear();
+  }
+}
+
+bool RemovalLoop::request(const Context& ctx, TetId t, const Removability& first, bool pieces, CutReport& report,
+                          bool search_only) {
   tried_.insert(t);
   const std::uint32_t made = ctx.mesh.net_tets_made_since(ctx.start);
   RequestLimits limits;
@@ -36,6 +70,7 @@ bool RemovalLoop::request(const Context& ctx, TetId t, const Removability& first
   limits.uncuttable = &ctx.uncuttable;
   limits.tissue = &ctx.tissue;
   limits.counts = &report;
+  limits.search_only = search_only;
   const std::size_t selected_before = ctx.selection.removal().size();
   const TetMesh::Savepoint before_request = ctx.mesh.savepoint();
   const RemovalResult r = ctx.remover.remove(ctx.mesh, t, first, limits);
@@ -61,9 +96,12 @@ bool RemovalLoop::run(const Context& ctx, CutReport& report) {
   work_.clear();
   std::size_t head = 0;
   for (TetId t : removal) enqueue(ctx, t);
-  if (ctx.params.order == RemovalOrder::kPaper) {
+  if (ctx.params.order == RemovalOrder::kSurfaceFirstById) {
     for (TetId t = next_pending(ctx); t.valid(); t = next_pending(ctx))
       if (!request(ctx, t, removability(ctx.mesh, t), true, report)) return false;
+    work_.clear();
+  } else if (ctx.params.order == RemovalOrder::kRevisit) {
+    if (!revisit(ctx, report)) return false;
     work_.clear();
   }
   for (;;) {

@@ -5,8 +5,10 @@
 // then meets fewer singularities); then one stuck tet, outside in (on the surface first: the
 // paper's statistics are about "removing a tetrahedron on the mesh surface", 3.3, else any, for a
 // tool inside the mesh), handed to the strategy (remove/removal.hpp), and again. Or, with
-// RemovalOrder::kPaper, the first pending tet on the surface (else the first pending), requested
-// as it comes, one by one.
+// RemovalOrder::kSurfaceFirstById, the first pending tet on the surface (else the first pending),
+// requested as it comes, one by one; with kRevisit the same, but a tet neither removable nor
+// taken by the neighbour search is put off until the next removal, and only when every pending
+// tet is put off does the first go to the whole strategy.
 //
 // Removal only turns faces, edges and vertices into boundary ones, so a tet that is not
 // removable becomes removable only when it gains a boundary face, i.e. when a face neighbour goes
@@ -58,16 +60,25 @@ class RemovalLoop {
  private:
   // One request for t (`first`: removability(mesh, t), just computed). `pieces`: follow what it
   // made (the selection's loop); off for the kept pieces.
-  bool request(const Context& ctx, TetId t, const Removability& first, bool pieces, CutReport& report);
+  // `search_only`: no refinement (RequestLimits::search_only).
+  bool request(const Context& ctx, TetId t, const Removability& first, bool pieces, CutReport& report,
+               bool search_only = false);
+  // RemovalOrder::kRevisit's requests (cut_strategies.hpp); false as run().
+  bool revisit(const Context& ctx, CutReport& report);
   void enqueue(const Context& ctx, TetId t);
   // Selected, live and not requested yet.
   [[nodiscard]] bool pending(const Context& ctx, TetId t) const;
   // The paper's order: the first pending tet on the surface, else the first pending.
   [[nodiscard]] TetId next_pending(const Context& ctx) const;
+  // kRevisit's: the same over the tets not yet handed to the whole strategy (`given_up_`), put
+  // off ones skipped unless `put_off_too`.
+  [[nodiscard]] TetId next_to_revisit(const Context& ctx, bool put_off_too) const;
 
   static constexpr int kPieceRounds = 4;
   // Already requested (and left unresolved); waiting in work_.
   StampedSet<TetId> tried_, queued_;
+  // kRevisit: put off since the last removal; handed to the whole strategy.
+  StampedSet<TetId> put_off_, given_up_;
   std::vector<TetId> work_;
 };
 

@@ -53,7 +53,7 @@ EdgeCandidateVerdict NeighbourSearch::consider(const TetMesh& mesh, SetRemovalWo
 }
 
 bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first,
-                           int max_depth, std::uint32_t max_set_size, std::vector<TetId>& out) {
+                           int max_depth, std::uint32_t max_set_size, std::vector<TetId>& out, bool first_found) {
   out.clear();
   path_found_ = false;
   shortest_.clear();
@@ -67,6 +67,7 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
                                         EdgeCandidateVerdict::kSkipped};
     std::size_t offset = 0;
     for (std::size_t k = 0; k < sizes_.size(); ++k) {  // the left set, the right set: the smaller removable one
+      if (first_found && !out.empty()) break;  // or the first
       const EdgeCandidateVerdict v = consider(mesh, ws, one, std::span<const TetId>(parts_.data() + offset, sizes_[k]),
                                               max_set_size, out, {}, first.edge);
       if (k < 2) verdicts[k] = v;
@@ -112,7 +113,9 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
       consider(mesh, ws, base_, std::span<const TetId>(parts_.data() + offset, n), max_set_size, out,
                {static_cast<std::uint32_t>(base_.size()), check.vertices_passed});
       offset += n;
+      if (first_found && !out.empty()) break;
     }
+    if (first_found && !out.empty()) break;
   }
   return !out.empty();
 }

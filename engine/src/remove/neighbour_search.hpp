@@ -34,8 +34,10 @@ class NeighbourSearch {
  public:
   // A removable set containing t into `out`; false (out unspecified) when the paper's
   // candidates all fail. `first` is the O(1) test's verdict on t (not removable).
+  // `first_found`: the first removable candidate in the search's order, not the smallest
+  // (NeighbourSetChoice, cut_strategies.hpp).
   bool find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t, const Removability& first, int max_depth,
-            std::uint32_t max_set_size, std::vector<TetId>& out);
+            std::uint32_t max_set_size, std::vector<TetId>& out, bool first_found = false);
   // After find() on a vertex singularity: T followed by the shortest path it tested, which
   // 3.7 refines along ("we also store the shortest path ... eventually used for the optimized
   // local refinement"); empty when find() found none or met an edge singularity.

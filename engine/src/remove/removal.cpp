@@ -28,6 +28,10 @@ struct Remover::Workspace {
   std::vector<TetId> set;
   std::vector<TetId> net_removed, net_created, exposed;
   StampedSet<TetId> met_unresolved;  // already counted as unresolved (cleared by reset() only)
+  // Of those, the ones a search-only request left (RequestLimits::search_only): put off, not
+  // given up, so that their going later in any set takes them off the unresolved count.
+  StampedSet<TetId> put_off;
+  std::uint32_t put_off_count = 0;  // its size: 0 outside RemovalOrder::kRevisit, where nothing is looked up
   detail::TissueRemoval tissue;      // the removal path of a request made without a caller's
   // The wide search's bounds (as the strategy wide and as 3.4/3.7's repair), from the options
   // when they are set.
@@ -36,8 +40,10 @@ struct Remover::Workspace {
 
 namespace {
 
-// One request in the caller's request-by-request counts, when it keeps them.
-void count_request(RequestCounts& counts, const RemovalResult& result) {
+// One request in the caller's request-by-request counts, when it keeps them. `put_off`: a
+// search-only request (RequestLimits::search_only) left the tet for a later one, which counts
+// what becomes of it.
+void count_request(RequestCounts& counts, const RemovalResult& result, bool put_off) {
   ++counts.requests;
   if (!result.repeat) {
     counts.vertex_singularities += result.first.kind == SingularityKind::kVertex ? 1 : 0;
@@ -49,14 +55,14 @@ void count_request(RequestCounts& counts, const RemovalResult& result) {
     case RemovalOutcome::kNeighbours: ++counts.resolved_by_neighbours; break;
     case RemovalOutcome::kRefinement: ++counts.resolved_by_refinement; break;
     case RemovalOutcome::kFallback: ++counts.resolved_by_fallback; break;
-    case RemovalOutcome::kUnresolved: ++counts.unresolved; break;
+    case RemovalOutcome::kUnresolved: counts.unresolved += put_off ? 0 : 1; break;
   }
 }
 
 // One request in the Remover's statistics, per distinct tet (removal_report.hpp), and in the
 // caller's counts: the one tally of a request.
-void count_request(RemovalReport& report, RequestCounts* counts, const RemovalResult& result) {
-  if (counts) count_request(*counts, result);
+void count_request(RemovalReport& report, RequestCounts* counts, const RemovalResult& result, bool put_off) {
+  if (counts) count_request(*counts, result, put_off);
   const SingularityKind kind = result.first.kind;
   const bool repeat = result.repeat;
   if (repeat) {
@@ -147,6 +153,7 @@ void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
   ws_->refinement.reserve();
   ws_->fallback.reserve();
   ws_->met_unresolved.reserve(tets);
+  ws_->put_off.reserve(tets);
 }
 
 void Remover::set_options(const RemovalOptions& options) {
@@ -158,6 +165,8 @@ void Remover::set_options(const RemovalOptions& options) {
 void Remover::reset() {
   report_ = {};
   ws_->met_unresolved.clear();
+  ws_->put_off.clear();
+  ws_->put_off_count = 0;
 }
 
 std::span<const TetId> Remover::last_removed() const { return ws_->net_removed; }
@@ -214,7 +223,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
       const TetId one[1] = {t};
       found = w.wide.find(mesh, w.set_test, one, first, w.limits, w.set);
     } else {
-      found = w.neighbours.find(mesh, w.set_test, t, first, options_.max_path_depth, options_.max_set_size, w.set);
+      found = w.neighbours.find(mesh, w.set_test, t, first, options_.max_path_depth, options_.max_set_size, w.set,
+                                options_.neighbour_set == NeighbourSetChoice::kFirst);
       searched_path = w.neighbours.path();
       result.edge_search = w.neighbours.edge_configuration();
     }
@@ -227,7 +237,8 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
   }
 
   // 3.7 (combined, wide) or 3.4 (basic): refine, then remove the paper's set if it is removable.
-  if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kNeighbours) {
+  if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kNeighbours &&
+      !limits.search_only) {
     const bool optimized = options_.strategy != RemovalStrategy::kBasic;
     const std::uint32_t n = optimized ? w.refinement.optimized(ctx, t, first, w.limits, searched_path)
                                       : w.refinement.basic(ctx, t);
@@ -242,7 +253,7 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
 
   // The construction with a proof (docs/removal-proof.md).
   if (result.outcome == RemovalOutcome::kUnresolved && options_.strategy != RemovalStrategy::kNeighbours &&
-      !ctx.over_budget) {
+      !limits.search_only && !ctx.over_budget) {
     if (const std::uint32_t n = w.fallback.remove(ctx, t)) {
       result.outcome = RemovalOutcome::kFallback;
       result.tets_removed = n;
@@ -259,11 +270,28 @@ RemovalResult Remover::remove(TetMesh& mesh, TetId t, const Removability& first,
     if (mesh.boundary_face_count(c) > 0) w.exposed.push_back(c);
   if (own_transaction) mesh.commit();
 
-  count_request(report_, limits.counts, result);
+  count_request(report_, limits.counts, result, limits.search_only);
+  // Whether x was put off (and is no longer).
+  auto take_off = [&w](TetId x) {
+    if (w.put_off_count == 0 || !w.put_off.contains(x)) return false;
+    w.put_off.erase(x);
+    --w.put_off_count;
+    return true;
+  };
   if (result.outcome == RemovalOutcome::kUnresolved) {
     w.met_unresolved.insert(t);
+    if (!limits.search_only) {
+      take_off(t);  // given up: it stays counted unresolved
+    } else if (w.put_off.insert(t)) {
+      ++w.put_off_count;
+    }
   } else {
-    for (TetId r : w.net_removed) w.met_unresolved.erase(r);
+    take_off(t);  // its own repeat was counted above
+    for (TetId r : w.net_removed) {
+      // A put-off tet that went with this set (or was split by it) is no longer unresolved.
+      if (take_off(r)) --report_.unresolved;
+      w.met_unresolved.erase(r);
+    }
   }
   for (TetId c : w.net_created) w.met_unresolved.erase(c);
   return result;

@@ -42,7 +42,7 @@
 #include "remove/removability.hpp"
 #include "remove/selection.hpp"
 #include "remove/tissue_removal.hpp"
-#include "tetcut/cut_strategies.hpp"  // RemovalStrategy
+#include "tetcut/cut_strategies.hpp"  // RemovalStrategy, NeighbourSetChoice
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 #include "tetcut/removal_report.hpp"
@@ -52,6 +52,8 @@ namespace tetcut {
 struct RemovalOptions {
   RemovalStrategy strategy = RemovalStrategy::kCombined;
   int max_path_depth = 10;            // paper 3.5: breadth-first search limited to depth 10
+  // 3.5's two readings (cut_strategies.hpp): keep the smallest removable set, or the first.
+  NeighbourSetChoice neighbour_set = NeighbourSetChoice::kSmallest;
   std::uint32_t max_set_size = 64;    // tets in a candidate set of a search
   // The wide search only: repairs of a failing candidate, and set_removable() calls.
   int wide_rounds = 3;
@@ -101,6 +103,9 @@ struct RequestLimits {
   // for each request); and its request-by-request counts, if the caller keeps them (a cut does).
   detail::TissueRemoval* tissue = nullptr;
   RequestCounts* counts = nullptr;
+  // Stop after the neighbour search (3.5): no refinement, no fallback. RemovalOrder::kRevisit
+  // puts a tet off this way and meets it again later.
+  bool search_only = false;
 };
 
 // Removes requested tets with one strategy and keeps the statistics. Holds all scratch memory:

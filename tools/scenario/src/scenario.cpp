@@ -27,7 +27,7 @@ std::vector<std::string> tokens_of(const std::string& line) {
 
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
-         w == "order" || w == "split" || w == "refinement" || w == "improve" || w == "quality_floor" ||
+         w == "order" || w == "neighbour_set" || w == "split" || w == "refinement" || w == "improve" || w == "quality_floor" ||
          w == "min_dihedral";
 }
 
@@ -40,8 +40,12 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
     next.strategy = *s;
   } else if (name == "order") {
     const auto o = parse_removal_order(value);
-    if (!o) return std::string("order must be paper or direct-first");
+    if (!o) return std::string("order must be direct-first, surface-first-by-id (or paper, its old name) or revisit");
     next.order = *o;
+  } else if (name == "neighbour_set") {
+    const auto c = parse_neighbour_set_choice(value);
+    if (!c) return std::string("neighbour_set must be smallest or first");
+    next.neighbour_set = *c;
   } else if (name == "split") {
     const auto m = parse_split_method(value);
     if (!m) return "split must be templates or bisection";

@@ -60,6 +60,7 @@ CauteryResult run_cautery(const std::string& scenario_path, const CauteryOptions
   params.strategy = options.strategy;
   params.split_method = options.split;
   params.order = options.order;
+  params.neighbour_set = options.neighbour_set;
   params.improve = options.improve;
   params.refinement = options.refinement;
   scenario::RunOptions run_options;

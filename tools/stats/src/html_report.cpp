@@ -1,5 +1,7 @@
 #include "tetcut/stats/html_report.hpp"
 
+#include "tetcut/stats/fisher_exact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -7,6 +9,7 @@
 #include "tetcut/percentile.hpp"
 #include "tetcut/render/svg_writer.hpp"
 #include "tetcut/scenario/cut_totals.hpp"
+#include "tetcut/stats/fisher_exact.hpp"
 #include "tetcut/stats/report_pictures.hpp"
 #include "tetcut/stats/text_report.hpp"
 
@@ -22,7 +25,7 @@ th, td { border: 1px solid #ccc; padding: 0.25em 0.5em; text-align: right; }
 th { background: #f0f0f0; } td:first-child, th:first-child { text-align: left; }
 td.paper { color: #666; } td.diff { color: #666; font-style: italic; }
 td.ci, td.count { color: #444; font-size: 0.9em; white-space: nowrap; }
-td.outside { font-weight: bold; background: #fde; }
+td.differs { font-weight: bold; background: #fde; }
 .wide { overflow-x: auto; max-width: 100%; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; }
 .figures figure { margin: 0; } figcaption { font-size: 0.85em; color: #444; max-width: 480px; }
@@ -35,32 +38,38 @@ std::string cell(const std::string& text, const char* cls = nullptr) {
              : "<td>" + render::xml_escape(text) + "</td>";
 }
 
-// Ours, its 95 % interval and raw counts, the paper's (class "outside" too when it lies outside
-// our interval), the difference: five cells.
-std::string figure_cells(const CellEstimate& ours, double paper, int decimals) {
-  const bool outside = !std::isnan(ours.ci.lo) && (paper < ours.ci.lo || paper > ours.ci.hi);
-  return cell(fixed(ours.value, decimals)) + cell(interval_text(ours, decimals + 1), "ci") + cell(count_text(ours), "count") +
-         cell(fixed(paper, decimals), outside ? "paper outside" : "paper") +
-         cell(difference(ours.value, paper, decimals), "diff");
+// Ours, its 95 % interval and raw counts, the paper's, the difference: five cells; for a rate,
+// a sixth: Fisher's exact p of ours against the paper's rebuilt count (fisher_exact.hpp), the
+// paper's figure in class "differs" too when p < 0.05.
+std::string figure_cells(const CellEstimate& ours, double paper, int decimals, const PaperCount* counts = nullptr) {
+  const double p = counts ? fisher_vs_paper(ours, *counts) : std::nan("");
+  const bool differs = !std::isnan(p) && p < 0.05;
+  std::string h = cell(fixed(ours.value, decimals)) + cell(interval_text(ours, decimals + 1), "ci") +
+                  cell(count_text(ours), "count") + cell(fixed(paper, decimals), differs ? "paper differs" : "paper") +
+                  cell(difference(ours.value, paper, decimals), "diff");
+  if (counts) h += cell(significant(p, 2), "p");
+  return h;
 }
 
 constexpr const char* kFigureHeads = "<th>ours</th><th>95 %</th><th>count</th><th>paper</th><th>diff</th>";
+constexpr const char* kRateHeads = "<th>ours</th><th>95 %</th><th>count</th><th>paper</th><th>diff</th><th>p</th>";
 
 std::string table1_html(const std::vector<MeshStats>& meshes, const char* id) {
   std::string h = "<table id=\"" + std::string(id) +
                   "\"><tr><th rowspan=\"2\">mesh</th><th rowspan=\"2\">tets</th>"
                   "<th rowspan=\"2\">sweeps</th><th rowspan=\"2\">cuts</th><th colspan=\"2\">operations</th>"
-                  "<th colspan=\"5\">% removable</th><th colspan=\"5\">% due to vertices</th>"
-                  "<th colspan=\"5\">% due to edges</th></tr><tr><th>ours</th><th>paper</th>";
-  for (int i = 0; i < 3; ++i) h += kFigureHeads;
+                  "<th colspan=\"6\">% removable</th><th colspan=\"6\">% due to vertices</th>"
+                  "<th colspan=\"6\">% due to edges</th></tr><tr><th>ours</th><th>paper</th>";
+  for (int i = 0; i < 3; ++i) h += kRateHeads;
   h += "</tr>\n";
   for (const MeshStats& m : meshes) {
     const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table1Intervals& c = m.table1_ci;
+    const PaperTable1Counts& k = kPaperTable1Counts[static_cast<std::size_t>(m.mesh.number - 1)];
     h += "<tr>" + cell(mesh_label(m.mesh)) + cell(std::to_string(m.tets_before)) + cell(std::to_string(m.sweeps.size())) +
          cell(std::to_string(m.cuts)) + cell(std::to_string(m.table1.operations)) +
-         cell(std::to_string(p.operations), "paper") + figure_cells(c.removable, p.removable_pct, 1) +
-         figure_cells(c.vertex, p.vertex_pct, 1) + figure_cells(c.edge, p.edge_pct, 1) + "</tr>\n";
+         cell(std::to_string(p.operations), "paper") + figure_cells(c.removable, p.removable_pct, 1, &k.removable) +
+         figure_cells(c.vertex, p.vertex_pct, 1, &k.vertex) + figure_cells(c.edge, p.edge_pct, 1, &k.edge) + "</tr>\n";
   }
   return h + "</table>\n";
 }
@@ -68,19 +77,20 @@ std::string table1_html(const std::vector<MeshStats>& meshes, const char* id) {
 std::string table2_html(const std::vector<MeshStats>& meshes, const char* id) {
   std::string h = "<table id=\"" + std::string(id) +
                   "\"><tr><th rowspan=\"2\">mesh</th>"
-                  "<th colspan=\"10\">vertex singularities</th><th colspan=\"10\">edge singularities</th>"
-                  "<th colspan=\"10\">global (card. per operation, the paper's column)</th>"
+                  "<th colspan=\"11\">vertex singularities</th><th colspan=\"11\">edge singularities</th>"
+                  "<th colspan=\"11\">global (card. per operation, the paper's column)</th>"
                   "<th colspan=\"2\">card. per selected tet</th><th rowspan=\"2\">combined:<br>% unresolved</th></tr><tr>";
-  for (int i = 0; i < 6; ++i) h += kFigureHeads;
+  for (int i = 0; i < 3; ++i) h += std::string(kRateHeads) + kFigureHeads;
   h += "<th>ours</th><th>95 %</th></tr>\n";
   for (const MeshStats& m : meshes) {
     const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table2Intervals& c = m.table2_ci;
+    const PaperTable2Counts& k = kPaperTable2Counts[static_cast<std::size_t>(m.mesh.number - 1)];
     const CellEstimate& sel = c.global_cardinality_per_selected;
-    h += "<tr>" + cell(mesh_label(m.mesh)) + figure_cells(c.vertex_unresolved, p.vertex_unresolved_pct, 1) +
+    h += "<tr>" + cell(mesh_label(m.mesh)) + figure_cells(c.vertex_unresolved, p.vertex_unresolved_pct, 1, &k.vertex_unresolved) +
          figure_cells(c.vertex_cardinality, p.vertex_cardinality, 1) +
-         figure_cells(c.edge_unresolved, p.edge_unresolved_pct, 1) + figure_cells(c.edge_cardinality, p.edge_cardinality, 1) +
-         figure_cells(c.global_unresolved, p.global_unresolved_pct, 1) +
+         figure_cells(c.edge_unresolved, p.edge_unresolved_pct, 1, &k.edge_unresolved) + figure_cells(c.edge_cardinality, p.edge_cardinality, 1) +
+         figure_cells(c.global_unresolved, p.global_unresolved_pct, 1, &k.global_unresolved) +
          figure_cells(c.global_cardinality, p.global_cardinality, 2) + cell(fixed(sel.value, 2)) +
          cell(interval_text(sel, 2), "ci") +
          cell(fixed(c.combined_unresolved.value, 1)) + "</tr>\n";
@@ -248,7 +258,11 @@ std::string html_report(const StatsReport& report, const std::string& command) {
        " runs of its mesh's scenario, the tool path shifted by a seeded offset each time (the first as "
        "written), and gives our estimate, its 95 % interval and the raw counts it rests on: the Wilson score "
        "interval of the pooled events for a rate, the percentile bootstrap of the pooled ratio over the runs "
-       "(2000 resamples, seeded) for a mean set size. A paper figure outside our interval is in bold on pink.</p>\n";
+       "(2000 resamples, seeded) for a mean set size. Beside a rate, p is Fisher's exact test (two-sided) of "
+       "our pooled counts against the paper's, rebuilt from its percentages: it counts the paper's few "
+       "events as well as ours; a paper figure with p &lt; 0.05 is in bold on pink (the sweeps cut one mesh "
+       "along nearby paths, so our events are not independent and p is too small where they cluster). "
+       "A mean set size has no test: the paper gives no spread.</p>\n";
   h += "<h2>Table 1. Singularities met when removing a surface tet (our order: direct first)</h2>\n<div class=\"wide\">" + table1_html(report.meshes, "table1") + "</div>\n";
   h += "<h2>Table 2. The neighbour strategy (our order: direct first)</h2>\n"
        "<p>% of singularities the neighbour search (paper 3.5) did not resolve, and the mean number of "
@@ -257,11 +271,11 @@ std::string html_report(const StatsReport& report, const std::string& command) {
        "selected tet taken (ours). Our runs use the combined strategy (3.7), whose optimized refinement "
        "and fallback resolved the rest: its own unresolved share is the last column.</p>\n<div class=\"wide\">" + table2_html(report.meshes, "table2") + "</div>\n";
   if (!report.paper_order_meshes.empty()) {
-    h += "<h2>Table 1 in the paper's order</h2>\n"
-         "<p>The same scenarios with the paper's removal order (3.3: \"removing one-by-one all tetrahedra in "
-         "T_removal\": the first pending selected tet with a face on the surface, removable or not) in place "
-         "of ours (every directly removable tet first).</p>\n<div class=\"wide\">" + table1_html(report.paper_order_meshes, "table1-paper-order") + "</div>\n";
-    h += std::string("<h2>Table 2 in the paper's order</h2>\n<div class=\"wide\">") + table2_html(report.paper_order_meshes, "table2-paper-order") + "</div>\n";
+    h += "<h2>Table 1 in the surface-first-by-id order</h2>\n"
+         "<p>The same scenarios with one reading of the paper's removal order (3.3: \"removing one-by-one all "
+         "tetrahedra in T_removal\", which gives no order: the first pending selected tet with a face on the "
+         "surface, by id, removable or not) in place of ours (every directly removable tet first).</p>\n<div class=\"wide\">" + table1_html(report.paper_order_meshes, "table1-paper-order") + "</div>\n";
+    h += std::string("<h2>Table 2 in the surface-first-by-id order</h2>\n<div class=\"wide\">") + table2_html(report.paper_order_meshes, "table2-paper-order") + "</div>\n";
   }
   h += "<h2>Table 2, our wider search</h2>\n"
        "<p>The same scenarios with the strategy <code>wide</code> (not the paper's: whole vertex shells and "
@@ -293,6 +307,22 @@ std::string html_report(const StatsReport& report, const std::string& command) {
        edge_configurations_html(report.meshes, "edge-search");
   if (!report.paper_order_meshes.empty())
     h += edge_configurations_html(report.paper_order_meshes, "edge-search-paper-order");
+  // The paper's other readings last, below the pictures (which the report's Chromium test finds
+  // by their place on the page).
+  if (!report.revisit_meshes.empty()) {
+    h += "<h2>Tables 1 and 2 in the revisit order</h2>\n"
+         "<p>Another reading of the paper's order: surface first by id, but a tet neither removable nor "
+         "taken by the neighbour search is put off and met again after the next removal, counted once by "
+         "its first verdict.</p>\n<div class=\"wide\">" + table1_html(report.revisit_meshes, "table1-revisit") +
+         table2_html(report.revisit_meshes, "table2-revisit") + "</div>\n";
+  }
+  if (!report.first_set_meshes.empty()) {
+    h += "<h2>Tables 1 and 2 with 3.5's first removable set</h2>\n"
+         "<p>The other reading of the neighbour search: it stops at the first removable candidate instead of "
+         "going on for a smaller one (our order).</p>\n<div class=\"wide\">" +
+         table1_html(report.first_set_meshes, "table1-first-set") + table2_html(report.first_set_meshes, "table2-first-set") +
+         "</div>\n";
+  }
   h += "</body></html>\n";
   return h;
 }

@@ -151,13 +151,20 @@ StatsResult compute_stats(const StatsOptions& options) {
   CauteryOptions wide_options = run_options;
   wide_options.strategy = RemovalStrategy::kWide;
   CauteryOptions paper_order_options = run_options;
-  paper_order_options.order = RemovalOrder::kPaper;
+  paper_order_options.order = RemovalOrder::kSurfaceFirstById;
+  CauteryOptions revisit_options = run_options;
+  revisit_options.order = RemovalOrder::kRevisit;
+  CauteryOptions first_set_options = run_options;
+  first_set_options.neighbour_set = NeighbourSetChoice::kFirst;
   // Each scenario with combined (Tables 1 and 2), then with the wide search (its Table 2 rows),
-  // then with combined in the paper's order (Tables 1 and 2 again).
+  // then with combined in the surface-first-by-id and the revisit orders, then with 3.5 stopping
+  // at its first removable set (Tables 1 and 2 again, each).
   const std::pair<const CauteryOptions*, std::vector<MeshStats>*> runs[] = {
       {&run_options, &report.meshes},
       {&wide_options, &report.wide_meshes},
-      {&paper_order_options, &report.paper_order_meshes}};
+      {&paper_order_options, &report.paper_order_meshes},
+      {&revisit_options, &report.revisit_meshes},
+      {&first_set_options, &report.first_set_meshes}};
   for (const PaperMesh& m : paper_meshes())
     for (const auto& [o, into] : runs) {
       std::vector<CauteryRun> sweeps;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tetcut/percentile.hpp"
+#include "tetcut/stats/fisher_exact.hpp"
 
 namespace tetcut::stats {
 
@@ -46,11 +47,9 @@ std::string count_text(const CellEstimate& e) {
   return buf;
 }
 
-std::string paper_beside(const CellEstimate& ours, double paper, int decimals) {
-  const bool outside = !std::isnan(ours.ci.lo) && (paper < ours.ci.lo || paper > ours.ci.hi);
-  std::string s = fixed(paper, decimals);
-  if (outside) s += '*';
-  return s;
+std::string fisher_text(const CellEstimate& ours, const PaperCount& paper) {
+  const double p = fisher_vs_paper(ours, paper);
+  return std::isnan(p) ? "-" : significant(p, 2) + (p < 0.05 ? "*" : "");
 }
 
 std::string created_worst(const invariants::QualityStats& q) {
@@ -100,48 +99,53 @@ std::string tables_1_and_2(const std::vector<MeshStats>& meshes, const std::stri
   std::string out;
   out += "Table 1. Removing a tet on the surface (requested with a face on the surface, as the paper's\n"
          "title says): how often it is removable directly, or would make a vertex or an edge singular\n"
-         "(paper 3.6, combined strategy, " + order + " order), pooled over the seeded sweeps. ours, its 95 %\n"
-         "interval, events/operations, the paper's (* outside our interval); all ops: every distinct request,\n"
+         "(paper 3.6, combined strategy, " + order + "), pooled over the seeded sweeps. ours, its 95 %\n"
+         "interval, events/operations, the paper's, and p: Fisher's exact test (two-sided) of our counts\n"
+         "against the paper's, rebuilt from its percentages (* p < 0.05); all ops: every distinct request,\n"
          "interior tets included\n\n";
   TextTable t1;
   t1.row({"mesh", "tets", "sweeps", "cuts", "operations", "paper", "all ops", "% removable", "95 %", "events", "paper",
-          "% vertex", "95 %", "events", "paper", "% edge", "95 %", "events", "paper"});
+          "p", "% vertex", "95 %", "events", "paper", "p", "% edge", "95 %", "events", "paper", "p"});
   for (const MeshStats& m : meshes) {
     const PaperTable1Row& p = kPaperTable1[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table1Intervals& c = m.table1_ci;
+    const PaperTable1Counts& k = kPaperTable1Counts[static_cast<std::size_t>(m.mesh.number - 1)];
     t1.row({mesh_label(m.mesh), std::to_string(m.tets_before), std::to_string(m.sweeps.size()), std::to_string(m.cuts),
             std::to_string(m.table1.operations), std::to_string(p.operations), std::to_string(m.table1.all_operations),
             fixed(c.removable.value, 1), interval_text(c.removable, 1), count_text(c.removable),
-            paper_beside(c.removable, p.removable_pct, 1), fixed(c.vertex.value, 1), interval_text(c.vertex, 1),
-            count_text(c.vertex), paper_beside(c.vertex, p.vertex_pct, 1), fixed(c.edge.value, 1),
-            interval_text(c.edge, 1), count_text(c.edge), paper_beside(c.edge, p.edge_pct, 1)});
+            fixed(p.removable_pct, 1), fisher_text(c.removable, k.removable), fixed(c.vertex.value, 1),
+            interval_text(c.vertex, 1), count_text(c.vertex), fixed(p.vertex_pct, 1), fisher_text(c.vertex, k.vertex),
+            fixed(c.edge.value, 1), interval_text(c.edge, 1), count_text(c.edge), fixed(p.edge_pct, 1),
+            fisher_text(c.edge, k.edge)});
   }
   out += t1.str();
 
-  out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one (" + order + " order): % of\n"
+  out += "\nTable 2. The neighbour strategy (paper 3.5) inside the combined one (" + order + "): % of\n"
          "singularities it did not resolve and the mean size of the sets it removed, pooled over the sweeps:\n"
-         "ours, its 95 % interval, the counts (unresolved/singularities, tets/sets), the paper's (* outside\n"
-         "our interval). The global cardinality is per operation resolved directly or by neighbours\n"
+         "ours, its 95 % interval, the counts (unresolved/singularities, tets/sets), the paper's and, for a\n"
+         "rate, Fisher's p against the paper's rebuilt counts (* p < 0.05; a mean size has no test: the paper\n"
+         "gives no spread). The global cardinality is per operation resolved directly or by neighbours\n"
          "(card./op., the paper's column: its figures reconstruct so) and, beside it, per selected tet the\n"
          "sets took (card./sel.); the last column is what the combined strategy left in place (must be 0)\n\n";
   TextTable t2;
-  t2.row({"mesh", "vertex % unres.", "95 %", "count", "paper", "card.", "95 %", "count", "paper", "edge % unres.", "95 %",
-          "count", "paper", "card.", "95 %", "count", "paper", "global % unres.", "95 %", "paper", "card./op.", "95 %",
-          "paper", "card./sel.", "95 %", "combined % unres."});
+  t2.row({"mesh", "vertex % unres.", "95 %", "count", "paper", "p", "card.", "95 %", "count", "paper", "edge % unres.",
+          "95 %", "count", "paper", "p", "card.", "95 %", "count", "paper", "global % unres.", "95 %", "paper", "p",
+          "card./op.", "95 %", "paper", "card./sel.", "95 %", "combined % unres."});
   for (const MeshStats& m : meshes) {
     const PaperTable2Row& p = kPaperTable2[static_cast<std::size_t>(m.mesh.number - 1)];
     const Table2Intervals& c = m.table2_ci;
+    const PaperTable2Counts& k = kPaperTable2Counts[static_cast<std::size_t>(m.mesh.number - 1)];
     t2.row({mesh_label(m.mesh), fixed(c.vertex_unresolved.value, 1), interval_text(c.vertex_unresolved, 1),
-            count_text(c.vertex_unresolved), paper_beside(c.vertex_unresolved, p.vertex_unresolved_pct, 1),
-            fixed(c.vertex_cardinality.value, 1), interval_text(c.vertex_cardinality, 2), count_text(c.vertex_cardinality),
-            paper_beside(c.vertex_cardinality, p.vertex_cardinality, 1), fixed(c.edge_unresolved.value, 1),
-            interval_text(c.edge_unresolved, 1), count_text(c.edge_unresolved),
-            paper_beside(c.edge_unresolved, p.edge_unresolved_pct, 1), fixed(c.edge_cardinality.value, 1),
-            interval_text(c.edge_cardinality, 2), count_text(c.edge_cardinality),
-            paper_beside(c.edge_cardinality, p.edge_cardinality, 1), fixed(c.global_unresolved.value, 1),
-            interval_text(c.global_unresolved, 1), paper_beside(c.global_unresolved, p.global_unresolved_pct, 1),
-            fixed(c.global_cardinality.value, 2), interval_text(c.global_cardinality, 2),
-            paper_beside(c.global_cardinality, p.global_cardinality, 1), fixed(c.global_cardinality_per_selected.value, 2),
+            count_text(c.vertex_unresolved), fixed(p.vertex_unresolved_pct, 1),
+            fisher_text(c.vertex_unresolved, k.vertex_unresolved), fixed(c.vertex_cardinality.value, 1),
+            interval_text(c.vertex_cardinality, 2), count_text(c.vertex_cardinality), fixed(p.vertex_cardinality, 1),
+            fixed(c.edge_unresolved.value, 1), interval_text(c.edge_unresolved, 1), count_text(c.edge_unresolved),
+            fixed(p.edge_unresolved_pct, 1), fisher_text(c.edge_unresolved, k.edge_unresolved),
+            fixed(c.edge_cardinality.value, 1), interval_text(c.edge_cardinality, 2), count_text(c.edge_cardinality),
+            fixed(p.edge_cardinality, 1), fixed(c.global_unresolved.value, 1), interval_text(c.global_unresolved, 1),
+            fixed(p.global_unresolved_pct, 1), fisher_text(c.global_unresolved, k.global_unresolved),
+            fixed(c.global_cardinality.value, 2), interval_text(c.global_cardinality, 2), fixed(p.global_cardinality, 1),
+            fixed(c.global_cardinality_per_selected.value, 2),
             interval_text(c.global_cardinality_per_selected, 2),
             fixed(c.combined_unresolved.value, 1) + " (" + std::to_string(c.combined_unresolved.count) + ")"});
   }
@@ -188,7 +192,7 @@ std::string edge_configurations(const std::vector<MeshStats>& meshes, const std:
 std::string text_report(const StatsReport& report) {
   std::string out;
   out += std::string("Improvement pass: ") + (report.improve ? "on" : "off (--no-improve)") + "\n\n";
-  out += tables_1_and_2(report.meshes, "direct-first");
+  out += tables_1_and_2(report.meshes, "direct-first order");
   out += "\nTable 2, our wider search (strategy wide, not the paper's: whole vertex shells and rounds of\n"
          "repairs, smallest set first) in place of 3.5 on the same scenarios: each figure of the wide\n"
          "search with its 95 % interval (and counts), then the paper's search's (3.5) from Table 2; the last\n"
@@ -213,13 +217,25 @@ std::string text_report(const StatsReport& report) {
     if (!m.ok) out += "  " + mesh_label(m.mesh) + ": the wide run stopped early: " + m.error + "\n";
 
   if (!report.paper_order_meshes.empty()) {
-    out += "\nThe same scenarios in the paper's order (3.3: \"removing one-by-one all tetrahedra in\n"
-           "T_removal\": the first pending selected tet with a face on the surface, removable or not), in\n"
-           "place of ours (every directly removable tet first):\n\n";
-    out += tables_1_and_2(report.paper_order_meshes, "paper");
+    out += "\nThe same scenarios in the surface-first-by-id order (one reading of 3.3's \"removing one-by-one\n"
+           "all tetrahedra in T_removal\", which gives no order: the first pending selected tet with a face on\n"
+           "the surface, by id, removable or not), in place of ours (every directly removable tet first):\n\n";
+    out += tables_1_and_2(report.paper_order_meshes, "surface-first-by-id order");
+  }
+  if (!report.revisit_meshes.empty()) {
+    out += "\nThe same scenarios in the revisit order (another reading: surface first by id, but a tet neither\n"
+           "removable nor taken by 3.5 is put off and met again after the next removal, counted once by its\n"
+           "first verdict; only when every pending tet is put off does the first go to 3.7):\n\n";
+    out += tables_1_and_2(report.revisit_meshes, "revisit order");
+  }
+  if (!report.first_set_meshes.empty()) {
+    out += "\nThe same scenarios with 3.5 read the other way (neighbour_set first: it stops at the first\n"
+           "removable candidate, shortest path first, instead of going on through further paths for a\n"
+           "smaller one), in our order:\n\n";
+    out += tables_1_and_2(report.first_set_meshes, "direct-first order, 3.5 stopping at its first removable set");
   }
   out += edge_configurations(report.meshes, "direct-first");
-  if (!report.paper_order_meshes.empty()) out += edge_configurations(report.paper_order_meshes, "paper");
+  if (!report.paper_order_meshes.empty()) out += edge_configurations(report.paper_order_meshes, "surface-first-by-id");
 
   out += "\nStrategies on the " + report.comparison_mesh +
          " scenario (split: the refinement loop's method, paper 3.2; quality: radius ratio of the mesh after)\n\n";

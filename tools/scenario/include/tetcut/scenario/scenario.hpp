@@ -9,8 +9,11 @@
 //   refinement R                  auto|paper|graded: the paper's refinement loop (3.2), longest-edge
 //                                 bisection graded to the tool, or auto (CutParams::refinement)
 //   strategy S                    basic|neighbours|combined|wide
-//   order O                       paper|direct-first: which selected tet a cut requests next
+//   order O                       direct-first|surface-first-by-id|revisit ("paper": the second's
+//                                 old name): which selected tet a cut requests next
 //                                 (CutParams::order, cut_strategies.hpp)
+//   neighbour_set C               smallest|first: which removable set paper 3.5 keeps
+//                                 (CutParams::neighbour_set)
 //   improve on|off                the improvement pass that ends each cut (CutParams::improve)
 //   quality_floor F               the radius ratio it lifts created tets to (CutParams, I7's F)
 //   min_dihedral DEG              the smallest dihedral angle it lifts them to (I7's theta)

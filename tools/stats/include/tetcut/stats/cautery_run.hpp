@@ -29,6 +29,7 @@ struct CauteryOptions {
   RemovalStrategy strategy = RemovalStrategy::kCombined;
   SplitMethod split = SplitMethod::kTemplates;
   RemovalOrder order = RemovalOrder::kDirectFirst;  // CutParams::order; a scenario's own line wins
+  NeighbourSetChoice neighbour_set = NeighbourSetChoice::kSmallest;  // CutParams::neighbour_set
   // The paper's refinement loop for its tables (CutParams::refinement; a scenario's line wins).
   RefinementRule refinement = RefinementRule::kPaper;
   // Run the local checker after every cut (the scenario runner's default). The statistics do

@@ -135,9 +135,15 @@ struct StatsReport {
   // The same scenarios with the wide search in place of 3.5 (3.7 and the fallback behind it, as
   // in combined), one per entry of `meshes`: its own Table 2 rows (the paper has no such search).
   std::vector<MeshStats> wide_meshes;
-  // The same scenarios with combined and the paper's order (CutParams::order: one by one, outside
-  // in) in place of direct-first: Tables 1 and 2 again, the ablation of the order.
+  // The same scenarios with combined and the surface-first-by-id order (CutParams::order: one by
+  // one, outside in; "the paper's order" in the JSON keys, one reading of it) in place of
+  // direct-first: Tables 1 and 2 again, the ablation of the order.
   std::vector<MeshStats> paper_order_meshes;
+  // The paper's other readings, Tables 1 and 2 again: the order that puts a non-removable tet
+  // off and meets it again (RemovalOrder::kRevisit), and 3.5 stopping at the first removable
+  // set (NeighbourSetChoice::kFirst) in our order.
+  std::vector<MeshStats> revisit_meshes;
+  std::vector<MeshStats> first_set_meshes;
   bool improve = true;                  // the runs' improvement pass (StatsOptions::improve)
   int sweeps = 1;                       // StatsOptions::sweeps
   std::string comparison_mesh;

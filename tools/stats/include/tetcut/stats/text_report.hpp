@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "tetcut/stats/paper_figures.hpp"
 #include "tetcut/stats/paper_stats.hpp"
 
 namespace tetcut::stats {
@@ -20,8 +21,9 @@ std::string difference(double ours, double paper, int decimals);
 // nothing to estimate from; its raw counts, "4127/4466".
 std::string interval_text(const CellEstimate& e, int decimals);
 std::string count_text(const CellEstimate& e);
-// The paper's figure, with "*" when it lies outside our 95 % interval.
-std::string paper_beside(const CellEstimate& ours, double paper, int decimals);
+// Fisher's exact p of our rate cell against the paper's rebuilt count (fisher_exact.hpp), two
+// significant digits, "*" when below 0.05; "-" when we have no trials.
+std::string fisher_text(const CellEstimate& ours, const PaperCount& paper);
 // Of created tets: the worst radius ratio ("0.101") and the smallest dihedral angle in degrees
 // ("7.6"), each "-" when none were created.
 std::string created_worst(const invariants::QualityStats& q);
