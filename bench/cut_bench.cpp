@@ -47,6 +47,10 @@ struct SweepResult {
   // share of the tool's ball.
   std::uint64_t refused = 0, left_in_tool = 0, beyond_reach = 0;
   std::vector<double> left_share, beyond_share;
+  // The angle floor's: the smallest dihedral angle of a tet an ok cut created, and the cuts whose
+  // improvement pass held a theta below the params' (CutReport::min_dihedral_held_deg).
+  double worst_created_dihedral_deg = 180.0;
+  std::uint64_t theta_lowered = 0;
 };
 
 // Writes and reads back 64 MiB, more than any cache of the CI machine holds, so that nothing of
@@ -88,6 +92,8 @@ void run_sweep(const tetcut::TetMesh& base, double tool_diameter, SweepResult& o
     out.refused += r.ok ? 0 : 1;
     out.left_in_tool += r.left_in_tool;
     out.beyond_reach += r.tets_removed_beyond_reach;
+    if (r.ok) out.worst_created_dihedral_deg = std::min(out.worst_created_dihedral_deg, r.min_dihedral_deg);
+    out.theta_lowered += r.ok && r.min_dihedral_held_deg < cutter.params().min_dihedral_deg;
     if (r.ok && r.tets_hit > 0) {
       const double radius = cutter.params().tool_diameter / 2;
       const double ball = 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius;
@@ -126,6 +132,8 @@ void BM_CutSweep(benchmark::State& state) {
   state.counters["refused"] = static_cast<double>(sweep.refused);
   state.counters["left_in_tool"] = static_cast<double>(sweep.left_in_tool);
   state.counters["tets_removed_beyond_reach"] = static_cast<double>(sweep.beyond_reach);
+  state.counters["worst_created_min_dihedral_deg"] = sweep.worst_created_dihedral_deg;
+  state.counters["cuts_lowering_theta"] = static_cast<double>(sweep.theta_lowered);
   state.counters["volume_left_share_p50"] = percentile(sweep.left_share, 0.5);
   state.counters["volume_left_share_p99"] = percentile(sweep.left_share, 0.99);
   state.counters["volume_removed_beyond_share_p50"] = percentile(sweep.beyond_share, 0.5);
