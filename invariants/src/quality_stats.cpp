@@ -36,6 +36,7 @@ void pool(QualityStats& into, const QualityStats& more) {
   into.min_radius_ratio = std::min(into.min_radius_ratio, more.min_radius_ratio);
   into.min_dihedral_deg = std::min(into.min_dihedral_deg, more.min_dihedral_deg);
   for (std::size_t i = 0; i < kHistogramBins; ++i) into.radius_ratio_histogram[i] += more.radius_ratio_histogram[i];
+  for (std::size_t i = 0; i < kDihedralBins; ++i) into.min_dihedral_histogram[i] += more.min_dihedral_histogram[i];
   into.tets += more.tets;
 }
 

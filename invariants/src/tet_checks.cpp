@@ -89,6 +89,10 @@ TetGeometryChecker::Shape TetGeometryChecker::check(std::uint32_t t, const RawTe
   if (ratio >= 1.0) bin = kHistogramBins - 1;
   else if (ratio > 0.0) bin = std::min(kHistogramBins - 1, static_cast<std::size_t>(ratio * kHistogramBins));
   ++stats_.radius_ratio_histogram[bin];
+  std::size_t angle_bin = kDihedralBins - 1;
+  if (dihedral >= 0.0 && dihedral < 5.0 * static_cast<double>(kDihedralBins - 1)) angle_bin = static_cast<std::size_t>(dihedral / 5.0);
+  else if (!(dihedral >= 0.0)) angle_bin = 0;
+  ++stats_.min_dihedral_histogram[angle_bin];
   if (floor_ > 0.0 && !(ratio >= floor_)) {
     report_.add(Invariant::kI7Quality, {t}, {}, [&] {
       return "tet " + str(t) + " has radius ratio " + num(ratio) + ", below the floor " + num(floor_);

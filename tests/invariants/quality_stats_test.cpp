@@ -45,6 +45,10 @@ TEST(QualityStats, QualityOfEveryTetIsTheFullChecksQuality) {
   EXPECT_EQ(q.min_radius_ratio, full.min_radius_ratio);
   EXPECT_EQ(q.min_dihedral_deg, full.min_dihedral_deg);
   EXPECT_EQ(q.radius_ratio_histogram, full.radius_ratio_histogram);
+  EXPECT_EQ(q.min_dihedral_histogram, full.min_dihedral_histogram);
+  std::uint64_t binned = 0;
+  for (std::uint64_t n : q.min_dihedral_histogram) binned += n;
+  EXPECT_EQ(binned, q.tets);
   EXPECT_DOUBLE_EQ(q.mean_radius_ratio, full.mean_radius_ratio);
 }
 
@@ -64,6 +68,7 @@ TEST(QualityStats, PoolingTheHalvesGivesTheWholeAndBadIdsAreSkipped) {
   EXPECT_EQ(pooled.min_radius_ratio, whole.min_radius_ratio);
   EXPECT_EQ(pooled.min_dihedral_deg, whole.min_dihedral_deg);
   EXPECT_EQ(pooled.radius_ratio_histogram, whole.radius_ratio_histogram);
+  EXPECT_EQ(pooled.min_dihedral_histogram, whole.min_dihedral_histogram);
   EXPECT_NEAR(pooled.mean_radius_ratio, whole.mean_radius_ratio, 1e-12);
   EXPECT_NEAR(pooled.mean_min_dihedral_deg, whole.mean_min_dihedral_deg, 1e-9);
 

@@ -440,6 +440,11 @@ def quality(inputs):
         lines += ["", f"Radius ratios of the tets the cuts created on the {strategies_rows[0].get('mesh', '')} scenario, "
                       "with the pass: how many in each tenth.", ""]
         lines += table(["strategy"] + bins, hist)
+        if "min_dihedral_histogram" in strategies_rows[0]["created"]:
+            angle_bins = [f"{5 * b}-" for b in range(len(strategies_rows[0]["created"]["min_dihedral_histogram"]))]
+            angles = [(r["name"],) + tuple(fmt(n, 0) for n in r["created"]["min_dihedral_histogram"]) for r in strategies_rows]
+            lines += ["", "Smallest dihedral angles of the same tets, degrees: how many in each 5 degrees.", ""]
+            lines += table(["strategy"] + angle_bins, angles)
     return lines
 
 

@@ -119,7 +119,8 @@ Json quality(const invariants::QualityStats& q) {
               {"mean_radius_ratio", q.mean_radius_ratio},
               {"min_dihedral_deg", q.min_dihedral_deg},
               {"mean_min_dihedral_deg", q.mean_min_dihedral_deg},
-              {"radius_ratio_histogram", q.radius_ratio_histogram}};
+              {"radius_ratio_histogram", q.radius_ratio_histogram},
+              {"min_dihedral_histogram", q.min_dihedral_histogram}};
 }
 
 Json table1_row(const stats::MeshStats& m) {

@@ -269,6 +269,17 @@ std::string text_report(const StatsReport& report) {
     h.row(cells);
   }
   out += h.str();
+  out += "\nSmallest dihedral angle of the same tets, degrees: how many in each 5 degrees\n\n";
+  TextTable d;
+  std::vector<std::string> angles{"strategy"};
+  for (std::size_t b = 0; b < invariants::kDihedralBins; ++b) angles.push_back(std::to_string(5 * b) + "-");
+  d.row(angles);
+  for (const StrategyRow& r : report.strategies) {
+    std::vector<std::string> cells{r.name};
+    for (std::uint64_t n : r.created.min_dihedral_histogram) cells.push_back(std::to_string(n));
+    d.row(cells);
+  }
+  out += d.str();
 
   if (!report.quality.empty()) {
     out += "\nQuality of the tets the cuts created, per paper scenario and strategy, with the improvement\n"

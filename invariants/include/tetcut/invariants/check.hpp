@@ -57,6 +57,7 @@ enum class CheckLevel : std::uint8_t { kLocal, kFull, kExact };
 
 inline constexpr std::size_t kMaxListed = 8;
 inline constexpr std::size_t kHistogramBins = 10;
+inline constexpr std::size_t kDihedralBins = 15;  // 5 degrees each
 
 struct Violation {
   Invariant id;
@@ -74,6 +75,9 @@ struct QualityStats {
   double mean_min_dihedral_deg = 0.0;
   // Radius ratio histogram, bin i covers [i / 10, (i + 1) / 10); 1.0 goes in the last bin.
   std::array<std::uint64_t, kHistogramBins> radius_ratio_histogram{};
+  // Smallest dihedral angle histogram, bin i covers [5 i, 5 (i + 1)) degrees; 70 and above (a
+  // regular tet's 70.53) go in the last bin.
+  std::array<std::uint64_t, kDihedralBins> min_dihedral_histogram{};
 };
 
 // How I7 judges the tets an operation created (LocalChecker::after_operation).
