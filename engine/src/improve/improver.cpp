@@ -93,8 +93,14 @@ bool Improver::below_floor(TetMesh& mesh, TetId t, Floors* floors) {
   // The checker compares with its own formulas: aim a rounding above the ratio's floor. An angle
   // equal to its floor is not below it: a split child keeps its parent's dihedral angles at the
   // parent's edges exactly, to rounding, which the checker allows for (no_degradation.hpp).
-  const double ratio = radius_ratio(p0, p1, p2, p3), cosine = max_dihedral_cosine(p0, p1, p2, p3);
-  auto below = [&](const Floors& f) { return ratio < f.ratio * (1.0 + 1e-9) || cosine > f.cosine + 1e-12; };
+  // The angle's cosine only when the ratio does not already say (the cheaper test first).
+  const double ratio = radius_ratio(p0, p1, p2, p3);
+  double cosine = 2.0;
+  auto below = [&](const Floors& f) {
+    if (ratio < f.ratio * (1.0 + 1e-9)) return true;
+    if (cosine > 1.0) cosine = max_dihedral_cosine(p0, p1, p2, p3);
+    return cosine > f.cosine + 1e-12;
+  };
   const Floors global{floor_f_, cos_theta_};
   if (!below(global)) {
     if (floors) *floors = global;
@@ -109,16 +115,19 @@ void Improver::judge(TetMesh& mesh, ImproveOutcome& out) {
   out.met = true;
   out.floor = floor_f_;
   double lowest_cosine = cos_theta_;
+  // The tets below their floors, worst quality() first: the first is the shortfall.
   made_quality_.clear();
-  for (TetId t : made_) made_quality_.push_back({quality(mesh, t), t});
-  std::sort(made_quality_.begin(), made_quality_.end());
-  for (const auto& [q, t] : made_quality_) {
+  for (TetId t : made_) {
     Floors f;
     const bool below = below_floor(mesh, t, &f);
     out.floor = std::min(out.floor, f.ratio);
     lowest_cosine = std::max(lowest_cosine, f.cosine);
-    if (!below || !out.met) continue;
-    out.met = false;
+    if (below) made_quality_.push_back({quality(mesh, t), t});
+  }
+  out.met = made_quality_.empty();
+  if (!out.met) {
+    const auto [q, t] = *std::min_element(made_quality_.begin(), made_quality_.end());
+    const Floors f = floors_of(mesh, t);
     const TetMesh::TetVerts v = mesh.tet(t);
     const Vec3 &p0 = mesh.position(v[0]), &p1 = mesh.position(v[1]), &p2 = mesh.position(v[2]), &p3 = mesh.position(v[3]);
     out.shortfall = {radius_ratio(p0, p1, p2, p3), f.ratio, min_dihedral_angle_deg(p0, p1, p2, p3), degrees_of_cosine(f.cosine)};
@@ -325,6 +334,8 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
     return out;
   }
   judge(mesh, out);
+  bool changed = false;  // whether the made set was taken again since the measure before
+  std::pair<double, double> after{};
   if (params.improve && !out.met) {
     std::uint32_t operations = 0;
     // theta, then kFallbackDihedralDeg, then none: the cap on refused cuts wins over the angle.
@@ -345,14 +356,21 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
       // while some made tet is below (a few rounds).
       for (int round = 0; round < 3 && !out.met; ++round) {
         lift(mesh, out, operations);
-        collect_made(mesh, start);
+        after = collect_made(mesh, start);
+        changed = true;
         judge(mesh, out);
       }
       if (out.met) break;
     }
   }
   out.min_dihedral_held_deg = theta_;
-  measure(out.worst_after, out.min_dihedral_after_deg);
+  if (!changed) {
+    out.worst_after = out.worst_before;
+    out.min_dihedral_after_deg = out.min_dihedral_before_deg;
+  } else {
+    out.worst_after = after.first;
+    out.min_dihedral_after_deg = made_.empty() ? 180.0 : degrees_of_cosine(after.second);
+  }
   return out;
 }
 
