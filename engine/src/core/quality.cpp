@@ -77,6 +77,53 @@ double max_dihedral_cosine(const Vec3& a, const Vec3& b, const Vec3& c, const Ve
   return std::min(largest, 1.0);
 }
 
+TetShape tet_shape(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  // radius_ratio()'s terms, in its order; the outward normals of kFaceVerts are n0 and the
+  // negated cd, db, bc (a cross product's operands swapped negate it exactly).
+  const Vec3 pb = b - a, pc = c - a, pd = d - a;
+  const Vec3 cd = cross(pc, pd), db = cross(pd, pb), bc = cross(pb, pc), n0 = cross(c - b, d - b);
+  const double fa = norm(n0), fb = norm(cd), fc = norm(db), fd = norm(bc);
+  TetShape out{0.0, 1.0};
+  const double det = dot(pb, cd);
+  if (det != 0.0) {
+    const Vec3 twice_d_o = dot(pb, pb) * cd + dot(pc, pc) * db + dot(pd, pd) * bc;
+    const double denominator = 0.5 * (fb + fc + fd + fa) * norm(twice_d_o);
+    if (denominator > 0.0) out.ratio = std::clamp(3.0 * det * det / denominator, 0.0, 1.0);
+  }
+  const Vec3 n[4] = {n0, -1.0 * cd, -1.0 * db, -1.0 * bc};
+  const double len[4] = {fa, fb, fc, fd};
+  double largest = -1.0;
+  for (int e = 0; e < 6; ++e) {
+    const int i = kEdgeFaces[e][0], j = kEdgeFaces[e][1];
+    const double l = len[i] * len[j];
+    if (!(l > 0.0)) return out;
+    largest = std::max(largest, -dot(n[i], n[j]) / l);
+  }
+  out.max_cosine = std::min(largest, 1.0);
+  return out;
+}
+
+double weighted_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double w) {
+  // radius_ratio()'s terms: the face normals cd, db, bc (the faces at a) and n0 (opposite a).
+  const Vec3 pb = b - a, pc = c - a, pd = d - a;
+  const Vec3 cd = cross(pc, pd), db = cross(pd, pb), bc = cross(pb, pc), n0 = cross(c - b, d - b);
+  const double det = dot(pb, cd);
+  if (!(det > 0.0)) return 0.0;
+  const Vec3 twice_d_o = dot(pb, pb) * cd + dot(pc, pc) * db + dot(pd, pd) * bc;
+  // |n| of the face opposite each vertex: a's is n0, b's |cd|, c's |db|, d's |bc|.
+  const double fa = norm(n0), fb = norm(cd), fc = norm(db), fd = norm(bc);
+  const double denominator = 0.5 * (fb + fc + fd + fa) * norm(twice_d_o);
+  if (!(denominator > 0.0)) return 0.0;
+  const double ratio = std::clamp(3.0 * det * det / denominator, 0.0, 1.0);
+  // The sine at each edge: det |e| / (|n_i| |n_j|), n_i and n_j the faces not opposite its ends.
+  const double faces_ab = fc * fd, faces_ac = fb * fd, faces_ad = fb * fc, faces_bc = fa * fd, faces_bd = fa * fc,
+               faces_cd = fa * fb;
+  if (!(faces_ab > 0.0 && faces_ac > 0.0 && faces_ad > 0.0 && faces_bc > 0.0 && faces_bd > 0.0 && faces_cd > 0.0)) return 0.0;
+  const double per_det = std::min({norm(pb) / faces_ab, norm(pc) / faces_ac, norm(pd) / faces_ad, norm(c - b) / faces_bc,
+                                   norm(d - b) / faces_bd, norm(d - c) / faces_cd});
+  return std::min(ratio, w * std::min(1.0, det * per_det));
+}
+
 double degrees_of_cosine(double c) { return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / std::numbers::pi; }
 
 double min_dihedral_sine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

@@ -26,6 +26,13 @@ double min_dihedral_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const
 // makes. 1 for a flat tet.
 double max_dihedral_cosine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+// radius_ratio() and max_dihedral_cosine() of one tet in one pass (they share the face normals),
+// each equal to what its own function returns: what the improvement pass tests floors with.
+struct TetShape {
+  double ratio, max_cosine;
+};
+TetShape tet_shape(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
 // The angle, in degrees, whose cosine is c: the smallest dihedral angle of a tet whose
 // max_dihedral_cosine() is c.
 double degrees_of_cosine(double c);
@@ -49,10 +56,13 @@ inline thread_local double t_dihedral_sine_weight = kDihedralSineWeight;
 // its roundness together (a radius ratio alone lets a tet at 0.1 keep a 2-degree dihedral).
 // Every operator of improve/ measures through these, so the objective changes here and nowhere
 // else. The floors themselves are tested per term (improver.hpp, I7).
+// min(radius_ratio, w x min_dihedral_sine) in one pass over the tet: the two share the face
+// normals and their lengths (11 square roots where the two apart take 15). 0 for a flat or
+// inverted tet.
+double weighted_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double w);
 inline double quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double ratio = radius_ratio(a, b, c, d);
   const double w = t_dihedral_sine_weight;
-  return w > 0.0 ? std::min(ratio, w * min_dihedral_sine(a, b, c, d)) : ratio;
+  return w > 0.0 ? weighted_quality(a, b, c, d, w) : radius_ratio(a, b, c, d);
 }
 inline double quality(const TetMesh& mesh, const TetMesh::TetVerts& v) {
   return quality(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));

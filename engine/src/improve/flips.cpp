@@ -98,10 +98,16 @@ Refusal Flipper::plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge,
     out[1] = ccw_from_a ? TetMesh::TetVerts{ring[i], ring[k], ring[j], b} : TetMesh::TetVerts{ring[i], ring[j], ring[k], b};
     return out;
   };
-  auto triangle_quality = [&](int i, int j, int k) {
+  // The worse of the triangle's two tets, or `at_most` as soon as one is no better than it (the
+  // caller then has no use for the figure): the quality before the orientation, the cheaper one.
+  auto triangle_quality = [&](int i, int j, int k, double at_most) {
     const auto tets = triangle_tets(i, j, k);
+    const double first = quality(mesh, tets[0]);
+    if (!(first > at_most)) return at_most;
+    const double q = std::min(first, quality(mesh, tets[1]));
+    if (!(q > at_most)) return at_most;
     if (!positive(mesh, tets[0]) || !positive(mesh, tets[1])) return -1.0;
-    return std::min(quality(mesh, tets[0]), quality(mesh, tets[1]));
+    return q;
   };
   // best[i][j]: the best worst quality of a triangulation of the polygon ring[i..j] closed by the
   // chord (i, j); split[i][j] the apex it uses (Klincsek).
@@ -114,7 +120,11 @@ Refusal Flipper::plan_edge_removal(const TetMesh& mesh, TetId t, int local_edge,
       best[i][j] = gap == 1 ? std::numeric_limits<double>::infinity() : kNone;
       split[i][j] = -1;
       for (int k = i + 1; k < j; ++k) {
-        const double q = std::min({best[i][k], best[k][j], triangle_quality(i, k, j)});
+        // Only a triangulation better than the best so far matters: its triangle is measured
+        // only then (the same choice, fewer measures).
+        const double bound = std::min(best[i][k], best[k][j]);
+        if (!(bound > best[i][j])) continue;
+        const double q = std::min(bound, triangle_quality(i, k, j, best[i][j]));
         if (q > best[i][j]) {
           best[i][j] = q;
           split[i][j] = static_cast<std::int8_t>(k);

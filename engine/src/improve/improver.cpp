@@ -57,9 +57,9 @@ std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::S
     if (mesh.is_live(b.tet)) {
       made_.push_back(b.tet);
       const TetMesh::TetVerts v = mesh.tet(b.tet);
-      const Vec3 &p0 = mesh.position(v[0]), &p1 = mesh.position(v[1]), &p2 = mesh.position(v[2]), &p3 = mesh.position(v[3]);
-      worst = std::min(worst, radius_ratio(p0, p1, p2, p3));
-      cosine = std::max(cosine, max_dihedral_cosine(p0, p1, p2, p3));
+      const TetShape s = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+      worst = std::min(worst, s.ratio);
+      cosine = std::max(cosine, s.max_cosine);
     }
   return {worst, cosine};
 }
@@ -80,8 +80,8 @@ Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
   } else {
     // The host as it was: its vertices were there before the transaction and never move.
     const TetMesh::TetVerts v = mesh.tet_at_start(host);
-    const Vec3 &p0 = mesh.position(v[0]), &p1 = mesh.position(v[1]), &p2 = mesh.position(v[2]), &p3 = mesh.position(v[3]);
-    h = {radius_ratio(p0, p1, p2, p3), max_dihedral_cosine(p0, p1, p2, p3)};
+    const TetShape s = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+    h = {s.ratio, s.max_cosine};
     host_quality_.set(host, h);
   }
   return {std::min(floor_f_, h.ratio), std::max(cos_theta_, h.cosine)};
@@ -93,14 +93,8 @@ bool Improver::below_floor(TetMesh& mesh, TetId t, Floors* floors) {
   // The checker compares with its own formulas: aim a rounding above the ratio's floor. An angle
   // equal to its floor is not below it: a split child keeps its parent's dihedral angles at the
   // parent's edges exactly, to rounding, which the checker allows for (no_degradation.hpp).
-  // The angle's cosine only when the ratio does not already say (the cheaper test first).
-  const double ratio = radius_ratio(p0, p1, p2, p3);
-  double cosine = 2.0;
-  auto below = [&](const Floors& f) {
-    if (ratio < f.ratio * (1.0 + 1e-9)) return true;
-    if (cosine > 1.0) cosine = max_dihedral_cosine(p0, p1, p2, p3);
-    return cosine > f.cosine + 1e-12;
-  };
+  const TetShape shape = tet_shape(p0, p1, p2, p3);
+  auto below = [&](const Floors& f) { return shape.ratio < f.ratio * (1.0 + 1e-9) || shape.max_cosine > f.cosine + 1e-12; };
   const Floors global{floor_f_, cos_theta_};
   if (!below(global)) {
     if (floors) *floors = global;
