@@ -1,10 +1,10 @@
-// The worst single cut (issue 16): no parameter may make a cut hang. Over extreme but valid
+// The worst single cut: no parameter may make a cut hang. Over extreme but valid
 // parameter sets on the bundled liver (tool from 0.1 to 100 times the mesh's size, D_ref factor
 // from 0.25 to 4, the tool centred inside the liver and on its surface), every set gets a fresh
 // copy of the liver and a fresh Cutter (not timed) and one timed cut. Reported, as counters:
 //   worst_cut_us      the slowest of those cuts, finished or refused: the gated figure;
 //   refused           how many were refused (the budget, or up front);
-//   row_*_us          each row of the issue's table (95,100,100), also printed one by one.
+//   row_*_us          each extreme parameter set (95,100,100), also printed one by one.
 // One iteration: each cut changes its mesh, and the figure is a maximum, not a mean.
 #include <benchmark/benchmark.h>
 
@@ -88,7 +88,7 @@ void BM_WorstCaseCut(benchmark::State& state) {
     state.counters["worst_cut_us"] = worst;
     state.counters["refused"] = refused;
     state.counters["cuts"] = cuts;
-    // The issue's table, row by row (also part of the worst case).
+    // The extreme parameter sets, one by one (also part of the worst case).
     int row = 0;
     for (double d : rows) {
       const Timed t = time_one_cut({.tool_diameter = d}, inside);

@@ -1,4 +1,4 @@
-// Per-stage micro benchmarks (issue 7) and the per-cut sweep on every bundled mesh.
+// Per-stage micro benchmarks and the per-cut sweep on every bundled mesh.
 //
 //   BM_CutSweepCorpus/<mesh>   a sweep along the longest axis of each bundled mesh, tool
 //                              diameter 1/25 of the bounding box diagonal: per-cut p50/p99/max

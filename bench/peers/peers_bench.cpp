@@ -1,4 +1,4 @@
-// Peers side by side (issue 31): the same cuts through what the field does instead, on the same
+// Peers side by side: the same cuts through what the field does instead, on the same
 // machine in the same process, and what the independent checker says of the mesh after each cut.
 //
 //   BM_Peers/0   the gated 16k liver sweep (bench/gated_sweep.hpp, the cuts the gate times)

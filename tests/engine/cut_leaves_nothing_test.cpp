@@ -187,7 +187,7 @@ TEST_P(CutLeavesNothing, EverySelectedTetIsRemovedOrCounted) {
     EXPECT_EQ(unresolved, 0);
   }
   // Below the budget, a strategy with the fallback leaves a tet only when the splitter refused
-  // the fallback's split; each such refusal is counted (issue 32 item 8).
+  // the fallback's split; each such refusal is counted.
   if (s != RemovalStrategy::kNeighbours) {
     EXPECT_GE(cutter.removal_report().fallback_refused, cutter.removal_report().unresolved);
   }
@@ -206,9 +206,8 @@ INSTANTIATE_TEST_SUITE_P(BundledMeshes, CutLeavesNothing, ::testing::ValuesIn(ca
   return test_name_of_mesh(info.param.mesh) + "_" + to_string(info.param.strategy);
 });
 
-// Issue 32 item 9: on a TetGen cylinder, random sweeps met cuts whose 3.7 split unselected
-// neighbours and left pieces of them in the tool while reporting nothing unresolved. Now each
-// such piece is requested once and what stays is counted: nothing is left in the tool beyond
+// On a TetGen cylinder, random sweeps meet cuts whose 3.7 split cuts unselected neighbours and
+// leaves pieces of them in the tool. Each such piece is requested and what stays is counted: nothing is left in the tool beyond
 // what the report counts, and such pieces did occur (the case is exercised, not assumed).
 TEST(CutLeavesNothing, PiecesOfKeptTetsInTheToolAreRemovedOrCounted) {
   generators::CylinderOptions shape;

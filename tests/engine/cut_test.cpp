@@ -106,7 +106,7 @@ INSTANTIATE_TEST_SUITE_P(Bundled, CorpusSweep,
 // Every strategy, tools of 0.6 and 1.5 mean edges in turn (the small one refines and its new
 // vertices are then smoothed, the large one removes whole tets): each created vertex's origin in
 // the log reproduces its position and its attributes, as a consumer interpolating its own arrays
-// needs (a vertex moved after the origin was recorded was found this way, issue 30).
+// needs (a vertex moved after the origin was recorded was found this way).
 class StrategySweep : public ::testing::TestWithParam<std::tuple<std::string, RemovalStrategy>> {};
 
 TEST_P(StrategySweep, TheLogsVertexOriginsReproduceTheirPositions) {

@@ -1,4 +1,4 @@
-// The consumers against a rebuild after every cut (issue 30, differential.hpp): every bundled
+// The consumers against a rebuild after every cut (differential.hpp): every bundled
 // mesh and every removal strategy, a lancet sweep, the invariant checker after each cut too;
 // then the planted bugs a consumer could be fed (a corrupted copy of a cut's log) and the proof
 // that the differential check catches each.
