@@ -23,20 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Box {
-  tetcut::Vec3 lo, hi;
-};
-Box bounds(const tetcut::TetMesh& mesh) {
-  Box b{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (!mesh.is_live(tetcut::VertId{v})) continue;
-    const tetcut::Vec3 p = mesh.position(tetcut::VertId{v});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
-}
-
 struct Timed {
   double us;
   bool ok;
@@ -56,8 +42,8 @@ Timed time_one_cut(const tetcut::CutParams& params, const tetcut::Vec3& centre) 
 
 void BM_WorstCaseCut(benchmark::State& state) {
   const tetcut::TetMesh& liver = tetcut::bench::corpus_mesh("liver.msh");
-  const Box box = bounds(liver);
-  const double size = tetcut::norm(box.hi - box.lo);  // the mesh's size: its box's diagonal
+  const tetcut::BoundingBox box = tetcut::bounding_box(liver);
+  const double size = box.diagonal();  // the mesh's size
   // Inside: the point. On the surface: the middle of the box's top face, pulled down to
   // the liver by the first tet hit along the vertical (cheap: a few queries).
   const tetcut::Vec3 inside{95, 100, 100};

@@ -148,7 +148,7 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
   const inv::QualityStats input = inv::check_mesh(base.raw_view()).quality;
   row.input_worst = input.min_radius_ratio;
   row.goal = std::min(0.1, row.input_worst);
-  const tetcut::bench::Bounds box = tetcut::bench::bounds(base);
+  const tetcut::BoundingBox box = tetcut::bounding_box(base);
   tetcut::SplitMix64 rng(seed);
   auto point = [&] {
     return Vec3{box.lo.x + rng.unit() * (box.hi.x - box.lo.x), box.lo.y + rng.unit() * (box.hi.y - box.lo.y),
@@ -321,7 +321,7 @@ int main(int argc, char** argv) {
     } else {
       base = tetcut::bench::corpus_mesh("liver.msh");
     }
-    const tetcut::bench::Bounds box = tetcut::bench::bounds(base);
+    const tetcut::BoundingBox box = tetcut::bounding_box(base);
     const double diagonal = norm(box.hi - box.lo);
     const double median = median_edge(base);
     const std::vector<Tool> tools = {{"4%", 0.04 * diagonal},    {"8%", 0.08 * diagonal},   {"12%", 0.12 * diagonal},

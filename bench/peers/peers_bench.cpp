@@ -94,7 +94,7 @@ Sweep make_sweep(int k) {
   const char* file = kCorpus[k - 1];
   const TetMesh& mesh = tetcut::bench::corpus_mesh(file);
   const tetcut::RawMesh raw = mesh.to_raw();
-  const tetcut::bench::Bounds box = tetcut::bench::bounds(mesh);
+  const tetcut::BoundingBox box = tetcut::bounding_box(mesh);
   const double diagonal = norm(box.hi - box.lo);
   tetcut::SplitMix64 rng(kHeldBackSeed + static_cast<std::uint64_t>(k));
   const auto n = static_cast<std::uint32_t>(raw.tets.size());

@@ -24,6 +24,7 @@
 #include "core/tool_ball.hpp"
 #include "refine/refine.hpp"
 #include "test_meshes.hpp"
+#include "tetcut/bounding_box.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/generators/shapes.hpp"
 #include "tetcut/detail/local_tables.hpp"
@@ -112,21 +113,6 @@ std::uint32_t any_left(const TetMesh& mesh, const Ball& tool, double d_ref) {
   return n;
 }
 
-struct Box {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-};
-
-Box bounds(const TetMesh& mesh) {
-  Box b;
-  for (std::uint32_t i = 0; i < mesh.vertex_capacity(); ++i) {
-    if (!mesh.is_live(VertId{i})) continue;
-    const Vec3& p = mesh.position(VertId{i});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
-}
-
 // Basic (3.4) splits around every singularity into slivers the improvement pass cannot always
 // lift to the floor; such a cut is refused (the mesh as it was), which only basic may be.
 bool refused_for_the_floor(const CutReport& report, RemovalStrategy strategy) {
@@ -147,7 +133,7 @@ TEST_P(CutLeavesNothing, EverySelectedTetIsRemovedOrCounted) {
   ReadResult read = read_mesh(path);
   ASSERT_TRUE(read.mesh.has_value()) << path;
   TetMesh mesh = build_or_fail(*read.mesh);
-  const Box box = bounds(mesh);
+  const BoundingBox box = bounding_box(mesh);
   const Vec3 size = box.hi - box.lo;
   // A tool a twelfth of the mesh's width, sweeping along x through the middle, into the surface
   // from above: cuts that start at the surface and go deeper on the second pass.
@@ -216,7 +202,7 @@ TEST(CutLeavesNothing, PiecesOfKeptTetsInTheToolAreRemovedOrCounted) {
   int pieces = 0, cuts = 0, left = 0;
   for (RemovalStrategy strategy : {RemovalStrategy::kCombined, RemovalStrategy::kBasic}) {
     TetMesh mesh = build_or_fail(*gen.mesh);
-    const Box box = bounds(mesh);
+    const BoundingBox box = bounding_box(mesh);
     const Vec3 size = box.hi - box.lo;
     CutParams params;
     params.strategy = strategy;
