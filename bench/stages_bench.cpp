@@ -14,7 +14,7 @@
 #include <cmath>
 
 #include "bench_meshes.hpp"
-#include "core/boundary_tet_picker.hpp"
+#include "tetcut/boundary_tet_picker.hpp"
 #include "cut/spatial_index.hpp"
 #include "remove/removal.hpp"
 #include "tetcut/cut.hpp"
