@@ -10,6 +10,7 @@
 #include <string>
 
 #include "mesh_orders.hpp"
+#include "tetcut/bounding_box.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
@@ -34,21 +35,6 @@ inline const TetMesh& corpus_mesh(const std::string& name) {
     std::abort();
   }
   return cache.emplace(name, std::move(*built.mesh)).first->second;
-}
-
-// The axis-aligned box around a mesh's live vertices: where the sweeps draw their chords.
-struct Bounds {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-};
-inline Bounds bounds(const TetMesh& mesh) {
-  Bounds b;
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (!mesh.is_live(VertId{v})) continue;
-    const Vec3 p = mesh.position(VertId{v});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
 }
 
 // How the ids of the 64 copies below are ordered (mesh_orders.hpp): copy by copy, as they were

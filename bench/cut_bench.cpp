@@ -1,4 +1,4 @@
-// Per-cut benchmarks (issues 6 and 7): what a simulator feels.
+// Per-cut benchmarks: what a simulator feels.
 //
 // BM_CutSweep/<level> runs a deterministic cautery sweep across the bundled liver (the paths of
 // corpus/scenarios/liver-resection.scn, thinned) and times every cut, reporting per-cut p50,

@@ -1,10 +1,10 @@
-// The worst single cut (issue 16): no parameter may make a cut hang. Over extreme but valid
+// The worst single cut: no parameter may make a cut hang. Over extreme but valid
 // parameter sets on the bundled liver (tool from 0.1 to 100 times the mesh's size, D_ref factor
 // from 0.25 to 4, the tool centred inside the liver and on its surface), every set gets a fresh
 // copy of the liver and a fresh Cutter (not timed) and one timed cut. Reported, as counters:
 //   worst_cut_us      the slowest of those cuts, finished or refused: the gated figure;
 //   refused           how many were refused (the budget, or up front);
-//   row_*_us          each row of the issue's table (95,100,100), also printed one by one.
+//   row_*_us          each extreme parameter set (95,100,100), also printed one by one.
 // One iteration: each cut changes its mesh, and the figure is a maximum, not a mean.
 #include <benchmark/benchmark.h>
 
@@ -22,20 +22,6 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-struct Box {
-  tetcut::Vec3 lo, hi;
-};
-Box bounds(const tetcut::TetMesh& mesh) {
-  Box b{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (!mesh.is_live(tetcut::VertId{v})) continue;
-    const tetcut::Vec3 p = mesh.position(tetcut::VertId{v});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
-}
 
 struct Timed {
   double us;
@@ -56,8 +42,8 @@ Timed time_one_cut(const tetcut::CutParams& params, const tetcut::Vec3& centre) 
 
 void BM_WorstCaseCut(benchmark::State& state) {
   const tetcut::TetMesh& liver = tetcut::bench::corpus_mesh("liver.msh");
-  const Box box = bounds(liver);
-  const double size = tetcut::norm(box.hi - box.lo);  // the mesh's size: its box's diagonal
+  const tetcut::BoundingBox box = tetcut::bounding_box(liver);
+  const double size = box.diagonal();  // the mesh's size
   // Inside: the issue's point. On the surface: the middle of the box's top face, pulled down to
   // the liver by the first tet hit along the vertical (cheap: a few queries).
   const tetcut::Vec3 inside{95, 100, 100};
@@ -88,7 +74,7 @@ void BM_WorstCaseCut(benchmark::State& state) {
     state.counters["worst_cut_us"] = worst;
     state.counters["refused"] = refused;
     state.counters["cuts"] = cuts;
-    // The issue's table, row by row (also part of the worst case).
+    // The extreme parameter sets, one by one (also part of the worst case).
     int row = 0;
     for (double d : rows) {
       const Timed t = time_one_cut({.tool_diameter = d}, inside);

@@ -1,4 +1,4 @@
-// The change log's consumers (tetcut::mechanics, issue 30), measured on the bundled liver:
+// The change log's consumers (tetcut::mechanics), measured on the bundled liver:
 //
 //   BM_HapticFrame          a haptic frame on the ~16k liver: one cut of the gated sweep + the
 //                           model's and the rendered surface's update from its ChangeLog + one

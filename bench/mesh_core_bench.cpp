@@ -1,6 +1,6 @@
 // Mesh core benchmarks: building a mesh with its adjacency and validation, and the independent
 // full check, on structured boxes of about 16k and 1M tets; plus the mesh's bytes per tet.
-// Targets (issue 2, 2-core machine): build of 1M tets under 1 s, full check of 1M under 2 s,
+// Targets (2-core machine): build of 1M tets under 1 s, full check of 1M under 2 s,
 // at most 64 bytes per tet without attributes. The budgets live in bench/budgets.json.
 #include <benchmark/benchmark.h>
 

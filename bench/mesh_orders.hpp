@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "tetcut/bounding_box.hpp"
 #include "tetcut/raw_mesh.hpp"
 
 namespace tetcut::bench {
@@ -56,11 +57,9 @@ inline RawMesh shuffled(const RawMesh& mesh, std::uint64_t seed = kShuffleSeed) 
 // Tets (by centroid) and vertices sorted along the Morton curve (Z-order) of the mesh's box:
 // 21 bits a coordinate, interleaved; ties keep the input's order.
 inline RawMesh curve_sorted(const RawMesh& mesh) {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Vec3& p : mesh.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  BoundingBox box;
+  for (const Vec3& p : mesh.positions) box.add(p);
+  const Vec3 lo = box.lo, hi = box.hi;
   const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-300});
   const auto spread = [](std::uint64_t x) {  // the 21 low bits of x, two zero bits between each
     x &= 0x1fffff;

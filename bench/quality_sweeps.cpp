@@ -158,7 +158,7 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
   row.goal = std::min(0.1, row.input_worst);
   row.input_min_dihedral = input.min_dihedral_deg;
   row.dihedral_goal = std::min(min_dihedral_deg, input.min_dihedral_deg);
-  const tetcut::bench::Bounds box = tetcut::bench::bounds(base);
+  const tetcut::BoundingBox box = tetcut::bounding_box(base);
   tetcut::SplitMix64 rng(seed);
   auto point = [&] {
     return Vec3{box.lo.x + rng.unit() * (box.hi.x - box.lo.x), box.lo.y + rng.unit() * (box.hi.y - box.lo.y),
@@ -339,7 +339,7 @@ int main(int argc, char** argv) {
     } else {
       base = tetcut::bench::corpus_mesh("liver.msh");
     }
-    const tetcut::bench::Bounds box = tetcut::bench::bounds(base);
+    const tetcut::BoundingBox box = tetcut::bounding_box(base);
     const double diagonal = norm(box.hi - box.lo);
     const double median = median_edge(base);
     const std::vector<Tool> tools = {{"4%", 0.04 * diagonal},    {"8%", 0.08 * diagonal},   {"12%", 0.12 * diagonal},

@@ -1,4 +1,4 @@
-// Refinement benchmarks (issue 4): tets created per second by the split templates, the paper's
+// Refinement benchmarks: tets created per second by the split templates, the paper's
 // refinement loop around a tool on the bundled liver (time per loop, iterations), and templates
 // against sequential bisection in tets created and worst quality.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Per-stage micro benchmarks (issue 7) and the per-cut sweep on every bundled mesh.
+// Per-stage micro benchmarks and the per-cut sweep on every bundled mesh.
 //
 //   BM_CutSweepCorpus/<mesh>   a sweep along the longest axis of each bundled mesh, tool
 //                              diameter 1/25 of the bounding box diagonal: per-cut p50/p99/max
@@ -14,7 +14,7 @@
 #include <cmath>
 
 #include "bench_meshes.hpp"
-#include "core/boundary_tet_picker.hpp"
+#include "tetcut/boundary_tet_picker.hpp"
 #include "cut/spatial_index.hpp"
 #include "remove/removal.hpp"
 #include "tetcut/cut.hpp"
@@ -30,11 +30,11 @@ using Clock = std::chrono::steady_clock;
 
 constexpr const char* kCorpus[] = {"cylinder.msh", "sheet.msh", "liver-coarse.msh", "liver-refined.msh", "liver.msh"};
 
-using tetcut::bench::Bounds;
-using tetcut::bench::bounds;
+using tetcut::BoundingBox;
+using tetcut::bounding_box;
 
 // Three passes along the longest axis through the middle third of the other two.
-std::vector<Vec3> corpus_sweep(const Bounds& b, double step) {
+std::vector<Vec3> corpus_sweep(const BoundingBox& b, double step) {
   const Vec3 size = b.hi - b.lo;
   const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
   auto at = [](const Vec3& v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; };
@@ -53,7 +53,7 @@ std::vector<Vec3> corpus_sweep(const Bounds& b, double step) {
 
 void BM_CutSweepCorpus(benchmark::State& state) {
   const tetcut::TetMesh& base = tetcut::bench::corpus_mesh(kCorpus[state.range(0)]);
-  const Bounds b = bounds(base);
+  const BoundingBox b = bounding_box(base);
   const double diameter = norm(b.hi - b.lo) / 25;
   const std::vector<Vec3> centres = corpus_sweep(b, diameter / 2);
   std::vector<double> samples;
@@ -87,7 +87,7 @@ BENCHMARK(BM_CutSweepCorpus)->DenseRange(0, 4)->Iterations(1)->Unit(benchmark::k
 
 void BM_Locate(benchmark::State& state) {
   tetcut::TetMesh mesh = tetcut::bench::corpus_mesh("liver.msh");
-  const Bounds b = bounds(mesh);
+  const BoundingBox b = bounding_box(mesh);
   tetcut::SpatialIndex index(8.0);
   index.build(mesh);
   std::vector<TetId> hit;
@@ -153,7 +153,7 @@ BENCHMARK(BM_RemovalByStrategy)
 
 void BM_LocalCheck(benchmark::State& state) {
   tetcut::TetMesh mesh = tetcut::bench::corpus_mesh("liver.msh");
-  const Bounds b = bounds(mesh);
+  const BoundingBox b = bounding_box(mesh);
   tetcut::Cutter cutter(mesh, {.tool_diameter = 8.0});
   tetcut::invariants::LocalChecker local(mesh.raw_view());
   double y = b.lo.y + 20;

@@ -1,4 +1,4 @@
-// Where the same-work update ratio (mechanics_bench BM_UpdateScalingSameWork, issue 30 item 5)
+// Where the same-work update ratio (mechanics_bench BM_UpdateScalingSameWork)
 // comes from: the model's and the rendered surface's update per cut over the gated sweep on the
 // liver and on 64 copies of it (copy 0 the liver), each split into model and surface.
 //

@@ -1,4 +1,4 @@
-// CGAL 5.5 as tetcut's peer (issue 29 item 3, and issue 31's "CGAL, remove then classify"): a
+// CGAL 5.5 as tetcut's peer ("CGAL, remove then classify"): a
 // tet mesh given as plain arrays is loaded into a CGAL Mesh_complex_3_in_triangulation_3 over a
 // Tetrahedral_remeshing::Remeshing_triangulation_3, and CGAL's own operations run on it.
 //
@@ -6,7 +6,7 @@
 // of the benchmarks that includes CGAL (it compiles in about a minute; nothing else should pay
 // for that, or for CGAL's usage requirements).
 //
-// The complex, as CGAL's mesh generators leave it and as issue 31's classification needs it:
+// The complex, as CGAL's mesh generators leave it and as the classification needs it:
 // every tet a cell of subdomain 1, every boundary face a facet of the complex (surface patch 1).
 // CGAL::build_triangulation (Mesh_3/tet_soup_to_c3t3.h) takes the mesh as it is, non-convex
 // included: each boundary face gets an infinite cell behind it, so the triangulation is not
@@ -93,7 +93,7 @@ class CgalTetMesh {
   // remesh(). Fails (the mesh untouched) when nothing is loaded or an index is out of range.
   RemeshResult remesh(std::span<const std::uint32_t> selected, const RemeshOptions& options = {});
 
-  // Issue 31, "remove then classify", as CGAL's meshers keep their output manifold: each of the
+  // "remove then classify", as CGAL's meshers keep their output manifold: each of the
   // cells `cells` (indices into the tets last loaded) still in the complex is taken out of it,
   // its four facets updated (a facet that was on the boundary leaves the complex, one shared
   // with a cell still in it joins it: removing a cell changes no facet by itself), and its four

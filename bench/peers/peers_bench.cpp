@@ -1,4 +1,4 @@
-// Peers side by side (issue 31): the same cuts through what the field does instead, on the same
+// Peers side by side: the same cuts through what the field does instead, on the same
 // machine in the same process, and what the independent checker says of the mesh after each cut.
 //
 //   BM_Peers/0   the gated 16k liver sweep (bench/gated_sweep.hpp, the cuts the gate times)
@@ -94,7 +94,7 @@ Sweep make_sweep(int k) {
   const char* file = kCorpus[k - 1];
   const TetMesh& mesh = tetcut::bench::corpus_mesh(file);
   const tetcut::RawMesh raw = mesh.to_raw();
-  const tetcut::bench::Bounds box = tetcut::bench::bounds(mesh);
+  const tetcut::BoundingBox box = tetcut::bounding_box(mesh);
   const double diagonal = norm(box.hi - box.lo);
   tetcut::SplitMix64 rng(kHeldBackSeed + static_cast<std::uint64_t>(k));
   const auto n = static_cast<std::uint32_t>(raw.tets.size());

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The peers table (issue 31): reads the Google Benchmark JSON of bench/peers/peers_bench (alone or
+"""The peers table: reads the Google Benchmark JSON of bench/peers/peers_bench (alone or
 merged into ci/bench's results) and prints, per sweep, each approach's per-cut figures, what the
 checker said after its cuts, and tetcut's ratio to each peer.
 

@@ -1,5 +1,5 @@
 // tetcut_quality_peer: the shape of the tets tetcut's cuts create, beside what CGAL's
-// tetrahedral_isotropic_remeshing makes of the same cells after the same cut (issue 29 item 3).
+// tetrahedral_isotropic_remeshing makes of the same cells after the same cut.
 //
 //   tetcut_quality_peer [--cuts N] [--every K] [--rings R] [--iterations N] [--improve on|off]
 //                       [--json FILE]
@@ -365,7 +365,7 @@ bool write_json(const std::string& path, const std::vector<CutRow>& rows, const 
 
 int main(int argc, char** argv) {
   Options options;
-  CLI::App app{"tetcut's cuts beside CGAL's remeshing of the same cells (issue 29)"};
+  CLI::App app{"tetcut's cuts beside CGAL's remeshing of the same cells"};
   app.add_option("--cuts", options.cuts, "only the first N cuts of the gated sweep (0: all 252)");
   app.add_option("--every", options.every, "hand every K-th cut that created tets to CGAL")->check(CLI::PositiveNumber);
   app.add_option("--iterations", options.iterations, "CGAL's number_of_iterations")->check(CLI::PositiveNumber);

@@ -39,7 +39,7 @@ void SequenceSession::restart(const BundledMesh& bundled, ScenarioRecorder& reco
   // without depending on a bug of the engine.
   fail_at_ = 0;
   if (const char* env = std::getenv("TETCUT_FUZZ_FAIL_AT")) fail_at_ = std::strtoull(env, nullptr, 10);
-  // The same for slowness (issue 16): operation N sleeps 30 s, so that ci/fuzz-nightly's
+  // The same for slowness: operation N sleeps 30 s, so that ci/fuzz-nightly's
   // timeout handling can be tried without a slow engine.
   slow_at_ = 0;
   if (const char* env = std::getenv("TETCUT_FUZZ_SLOW_AT")) slow_at_ = std::strtoull(env, nullptr, 10);

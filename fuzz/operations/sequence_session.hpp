@@ -12,7 +12,7 @@
 // reports failures, independent of any bug. TETCUT_FUZZ_SLOW_AT=N makes operation N take 30 s:
 // the same for what reports slowness (ci/fuzz-nightly's timeouts).
 //
-// One session per bundled mesh lives as long as the process (issue 18, fuzzer throughput):
+// One session per bundled mesh lives as long as the process (fuzzer throughput):
 // start() copies the mesh back into the same buffers and resets the checker and the Cutter
 // (Cutter::reset) instead of building them again, which was a third of an input's cost. An
 // input's outcome does not depend on the inputs before it: tests/fuzz replays the corpus in two

@@ -29,7 +29,7 @@ namespace tetcut::fuzz {
 //      fewer operations. On a bundled mesh the O(#T) parts of an input (copying the mesh, the
 //      Cutter's index, the full check) were nine tenths of its time.
 //   3  as 2, but cut_sequence draws the tool diameter, the D_ref factor and p from wide
-//      log-uniform ranges, as users mistype them (issue 16: a 1e6 tool or a D_ref factor of 0.01
+//      log-uniform ranges, as users mistype them (a 1e6 tool or a D_ref factor of 0.01
 //      hung a cut, and the narrow ranges of version 2 never tried them). removal_sequence,
 //      which sets none of them, reads 3 as 2.
 //   4  as 3, but both targets draw the removal strategy among all four: `wide` too (the

@@ -1,5 +1,5 @@
 // Quality statistics of a chosen set of tets, and pooling them over many operations: what
-// `tetcut stats` reports of the tets the cuts created (issue 29), measured by the checker's own
+// `tetcut stats` reports of the tets the cuts created, measured by the checker's own
 // geometry so that the figures owe the engine nothing.
 #include "tetcut/invariants/check.hpp"
 

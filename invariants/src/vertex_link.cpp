@@ -33,8 +33,19 @@ std::uint32_t VertexLinkChecker::find(std::vector<std::uint32_t>& parent, std::u
 
 std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
                                        std::span<const std::uint32_t> shell) {
-  ReportBuilder& report = *ctx.report;
+  report_duplicates(ctx, v, shell);
+  const std::uint32_t k = build_link(ctx, v, shell);
+  if (k == 0) return 0;
+  const FaceCounts faces = check_faces(ctx, v);
+  const bool link_is_surface = check_edge_shells(ctx, v, k);
+  check_vertex_shell(ctx, v, k, faces, link_is_surface);
+  // I8: the engine's O(1) classification and its shell seed.
+  if (ctx.engine != nullptr) compare_vertex(*ctx.engine, ctx.tets, v, faces.boundary, *ctx.report);
+  return faces.boundary;
+}
 
+void VertexLinkChecker::report_duplicates(const LinkContext& ctx, std::uint32_t v, std::span<const std::uint32_t> shell) {
+  ReportBuilder& report = *ctx.report;
   // I1, duplicates: two tets with the same four vertices have the same link triangle at every
   // vertex; compare them once, at their smallest vertex, and leave the later copy out of
   // everything else (it would otherwise make every face look shared twice).
@@ -67,7 +78,9 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
       keys_[i].tet = first;  // a third copy is compared with the first
     }
   }
+}
 
+std::uint32_t VertexLinkChecker::build_link(const LinkContext& ctx, std::uint32_t v, std::span<const std::uint32_t> shell) {
   // The link triangles and link edges.
   shell_.clear();
   triangle_.clear();
@@ -119,9 +132,14 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
   boundary_faces_.assign(link_vertex_count, 0);
   bad_.assign(link_vertex_count, 0);
   first_root_.assign(link_vertex_count, kNone);
+  return k;
+}
 
-  std::uint32_t face_count = 0;      // faces through v: link edges
-  std::uint32_t boundary_count = 0;  // those with one tet
+VertexLinkChecker::FaceCounts VertexLinkChecker::check_faces(const LinkContext& ctx, std::uint32_t v) {
+  ReportBuilder& report = *ctx.report;
+  FaceCounts counts;
+  std::uint32_t& face_count = counts.faces;
+  std::uint32_t& boundary_count = counts.boundary;
   for (std::size_t j = 0; j < edges_.size();) {
     std::size_t j2 = j + 1;
     while (j2 < edges_.size() && edges_[j2].key == edges_[j].key) ++j2;
@@ -173,7 +191,12 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
     }
     j = j2;
   }
+  return counts;
+}
 
+bool VertexLinkChecker::check_edge_shells(const LinkContext& ctx, std::uint32_t v, std::uint32_t k) {
+  ReportBuilder& report = *ctx.report;
+  const auto link_vertex_count = static_cast<std::uint32_t>(link_verts_.size());
   // I6. The tets around edge (v, w) are face-adjacent exactly when they share a face through
   // both v and w, which is a link edge at w shared by two link triangles: the wedges (i, slot of
   // w) were united along those. One root per link vertex means one face-connected edge shell.
@@ -201,7 +224,14 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
       return "edge (" + str(std::min(v, w)) + ", " + str(std::max(v, w)) + "): " + what;
     });
   }
+  return link_is_surface;
+}
 
+void VertexLinkChecker::check_vertex_shell(const LinkContext& ctx, std::uint32_t v, std::uint32_t k,
+                                           const FaceCounts& faces, bool link_is_surface) {
+  ReportBuilder& report = *ctx.report;
+  const auto link_vertex_count = static_cast<std::uint32_t>(link_verts_.size());
+  const std::uint32_t face_count = faces.faces, boundary_count = faces.boundary;
   // I5. The shell is face-connected iff the link is connected. Then, when every link vertex is
   // a single fan and every link edge has at most two triangles (the I6 and I3 checks above), the
   // link is a connected compact surface, and its Euler characteristic decides which one:
@@ -233,10 +263,6 @@ std::uint32_t VertexLinkChecker::check(const LinkContext& ctx, std::uint32_t v,
       });
     }
   }
-
-  // I8: the engine's O(1) classification and its shell seed.
-  if (ctx.engine != nullptr) compare_vertex(*ctx.engine, ctx.tets, v, boundary_count, report);
-  return boundary_count;
 }
 
 }  // namespace tetcut::invariants::detail

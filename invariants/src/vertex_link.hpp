@@ -63,7 +63,24 @@ class VertexLinkChecker {
     std::uint32_t tet;
   };
 
+  struct FaceCounts {
+    std::uint32_t faces = 0;     // faces through v: link edges
+    std::uint32_t boundary = 0;  // those with one tet
+  };
+
   std::uint32_t find(std::vector<std::uint32_t>& parent, std::uint32_t x);
+  // The steps of check(), in order. I1: duplicate tets reported and excluded.
+  void report_duplicates(const LinkContext& ctx, std::uint32_t v, std::span<const std::uint32_t> shell);
+  // The link of v (triangles, edges, vertices) and the union-find state; the number of its tets.
+  std::uint32_t build_link(const LinkContext& ctx, std::uint32_t v, std::span<const std::uint32_t> shell);
+  // Every face through v once: I3 (at most two tets), I2 against the engine, the boundary faces;
+  // the tets and wedges across each interior face united.
+  FaceCounts check_faces(const LinkContext& ctx, std::uint32_t v);
+  // I6 at every edge through v; whether the link is a surface (every link vertex one fan).
+  bool check_edge_shells(const LinkContext& ctx, std::uint32_t v, std::uint32_t k);
+  // I5: one face-connected shell, and a link that is a disk or a sphere.
+  void check_vertex_shell(const LinkContext& ctx, std::uint32_t v, std::uint32_t k, const FaceCounts& faces,
+                          bool link_is_surface);
 
   // Scratch, reused across vertices: no allocation once warmed up.
   std::vector<std::uint32_t> shell_;

@@ -98,21 +98,27 @@ bool GmshElementSink::add(ErrorSink& sink, std::uint64_t line, std::int64_t type
                                std::to_string(num_nodes));
   }
   std::array<std::uint32_t, 4> tet{};
-  // Both orders put the 4 corners first (Gmsh node ordering), so a 10-node tet keeps them.
   for (std::size_t k = 0; k < expected; ++k) {
     std::int64_t id = 0;
-    if (!parse_id(sink, line, node_tokens[k], id)) return false;
-    const std::uint32_t index = nodes->find(id);
-    if (index == NodeIdMap::kNone) {
-      return sink.fail(line, "node id " + std::to_string(id) + " not defined");
-    }
-    if (k < 4) tet[k] = index;
+    if (!parse_id(sink, line, node_tokens[k], id) || !add_node(sink, line, id, k, tet)) return false;
   }
+  push_tet(type, tet);
+  return true;
+}
+
+bool GmshElementSink::add_node(ErrorSink& sink, std::uint64_t line, std::int64_t id, std::size_t k,
+                               std::array<std::uint32_t, 4>& tet) const {
+  const std::uint32_t index = nodes->find(id);
+  if (index == NodeIdMap::kNone) return sink.fail(line, "node id " + std::to_string(id) + " not defined");
+  if (k < 4) tet[k] = index;
+  return true;
+}
+
+void GmshElementSink::push_tet(std::int64_t type, const std::array<std::uint32_t, 4>& tet) {
   if (type == kGmshTet10) ++second_order_tets;
   tets->push_back(tet);
   labels->push_back(label.value_or(0));
   labelled = labelled || label.has_value();
-  return true;
 }
 
 void GmshElementSink::ignore(std::int64_t type, std::uint64_t n) {
@@ -128,15 +134,9 @@ bool GmshElementSink::add_ids(ErrorSink& sink, std::uint64_t line, std::int64_t 
     return true;
   }
   std::array<std::uint32_t, 4> tet{};
-  for (std::size_t k = 0; k < num_nodes; ++k) {
-    const std::uint32_t index = nodes->find(ids[k]);
-    if (index == NodeIdMap::kNone) return sink.fail(line, "node id " + std::to_string(ids[k]) + " not defined");
-    if (k < 4) tet[k] = index;
-  }
-  if (type == kGmshTet10) ++second_order_tets;
-  tets->push_back(tet);
-  labels->push_back(label.value_or(0));
-  labelled = labelled || label.has_value();
+  for (std::size_t k = 0; k < num_nodes; ++k)
+    if (!add_node(sink, line, ids[k], k, tet)) return false;
+  push_tet(type, tet);
   return true;
 }
 

@@ -53,6 +53,13 @@ struct GmshElementSink {
   // Appends the tet of an element of `type` whose node ids are `ids` (binary: already numbers).
   bool add_ids(ErrorSink& sink, std::uint64_t line, std::int64_t type, const std::int64_t* ids,
                std::size_t num_nodes);
+
+ private:
+  // Node `k` of a tet: its index by `id`, kept when a corner (both orders put the 4 corners first,
+  // Gmsh node ordering, so a 10-node tet keeps them); an error naming an undefined id.
+  bool add_node(ErrorSink& sink, std::uint64_t line, std::int64_t id, std::size_t k, std::array<std::uint32_t, 4>& tet) const;
+  // Appends a tet whose nodes were all found, with the current label.
+  void push_tet(std::int64_t type, const std::array<std::uint32_t, 4>& tet);
 };
 
 // Parses "id x y z" tokens (exactly 4) into the map and positions.

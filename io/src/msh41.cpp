@@ -90,6 +90,25 @@ class Msh41Reader : public GmshSectionReader {
            parse_count(sink_, at, tokens_[1], lines_.remaining_bytes(), total);
   }
 
+  // An entity block's header line of `section` ("$Nodes", "$Elements"): 4 tokens, `fields` naming
+  // them in the error.
+  bool next_block_header(std::string_view section, std::string_view fields) {
+    return next_record(std::string(section) + " block header") && expect_tokens(4, fields);
+  }
+
+  // The block's size, its header's last token: `n` more `kind`s after `done` of the section's
+  // `total`, each within what the file can still hold.
+  bool block_size(std::string_view kind, std::uint64_t done, std::uint64_t total, std::uint64_t& n) {
+    return parse_count(sink_, lines_.line_number(), tokens_[3], lines_.remaining_bytes(), n) &&
+           check_block_fits(sink_, lines_.line_number(), kind, done, n, total);
+  }
+
+  // The section's blocks held `count` of its `total` `kind`s, then its end marker.
+  void end_blocks(std::string_view kind, std::uint64_t count, std::uint64_t total, std::string_view marker) {
+    if (check_blocks_add_up(sink_, lines_.line_number(), kind, count, total))
+      expect_gmsh_marker(lines_, sink_, marker, "the last " + std::string(kind) + " block");
+  }
+
   // The `n` tokens of the current line from `at` on must be ints (Gmsh's 32-bit tags); an error
   // naming `what` otherwise.
   bool expect_int_tokens(std::size_t at, std::uint64_t n, std::string_view what) {
@@ -188,18 +207,14 @@ class Msh41Reader : public GmshSectionReader {
     if (!read_header("$Nodes", blocks, total)) return;
     mesh_.positions.reserve(total);
     for (std::uint64_t b = 0; b < blocks; ++b) {
-      if (!next_record("$Nodes block header") ||
-          !expect_tokens(4, "'entityDim entityTag parametric numNodesInBlock'")) {
-        return;
-      }
+      if (!next_block_header("$Nodes", "'entityDim entityTag parametric numNodesInBlock'")) return;
       std::uint64_t n = 0;
       std::int64_t parametric = 0;
       if (!parse_i64(tokens_[2], parametric) || (parametric != 0 && parametric != 1)) {
         sink_.fail(lines_.line_number(), "parametric must be 0 or 1, got " + quote(tokens_[2]));
         return;
       }
-      if (!parse_count(sink_, lines_.line_number(), tokens_[3], lines_.remaining_bytes(), n)) return;
-      if (!check_block_fits(sink_, lines_.line_number(), "node", mesh_.positions.size(), n, total)) return;
+      if (!block_size("node", mesh_.positions.size(), total, n)) return;
       for (std::uint64_t i = 0; i < n; ++i) {
         if (!next_record("$Nodes (node tags)") || !expect_tokens(1, "one node tag")) return;
         std::int64_t id = 0;
@@ -221,9 +236,7 @@ class Msh41Reader : public GmshSectionReader {
         mesh_.positions.push_back(p);
       }
     }
-    if (check_blocks_add_up(sink_, lines_.line_number(), "node", mesh_.positions.size(), total)) {
-      expect_gmsh_marker(lines_, sink_, "$EndNodes", "the last node block");
-    }
+    end_blocks("node", mesh_.positions.size(), total, "$EndNodes");
   }
 
   void read_elements() override {
@@ -240,10 +253,7 @@ class Msh41Reader : public GmshSectionReader {
     mesh_.tets.reserve(total);
     std::uint64_t seen = 0;
     for (std::uint64_t b = 0; b < blocks; ++b) {
-      if (!next_record("$Elements block header") ||
-          !expect_tokens(4, "'entityDim entityTag elementType numElementsInBlock'")) {
-        return;
-      }
+      if (!next_block_header("$Elements", "'entityDim entityTag elementType numElementsInBlock'")) return;
       std::int64_t dim = 0;
       std::int64_t entity = 0;
       std::int64_t type = 0;
@@ -258,8 +268,7 @@ class Msh41Reader : public GmshSectionReader {
           !volumes_.label_block(sink_, lines_.line_number(), dim, entity, elements_)) {
         return;
       }
-      if (!parse_count(sink_, lines_.line_number(), tokens_[3], lines_.remaining_bytes(), n)) return;
-      if (!check_block_fits(sink_, lines_.line_number(), "element", seen, n, total)) return;
+      if (!block_size("element", seen, total, n)) return;
       for (std::uint64_t i = 0; i < n; ++i) {
         if (!next_record("$Elements")) return;
         std::int64_t id = 0;
@@ -268,9 +277,7 @@ class Msh41Reader : public GmshSectionReader {
       }
       seen += n;
     }
-    if (check_blocks_add_up(sink_, lines_.line_number(), "element", seen, total)) {
-      expect_gmsh_marker(lines_, sink_, "$EndElements", "the last element block");
-    }
+    end_blocks("element", seen, total, "$EndElements");
   }
 
   GmshVolumeLabels volumes_;

@@ -23,14 +23,30 @@ namespace {
 
 using namespace io_detail;
 
-bool read_header(LineReader& lines, ErrorSink& sink, std::vector<std::string_view>& tokens,
-                 std::size_t min_values, std::size_t max_values, std::string_view what) {
+bool small_count(ErrorSink& sink, std::uint64_t line, std::string_view token, std::uint64_t max,
+                 std::string_view what, std::uint64_t& value) {
+  if (!parse_u64(token, value) || value > max) {
+    return sink.fail(line, "bad " + std::string(what) + " " + quote(token));
+  }
+  return true;
+}
+
+// Both files open with "COUNT [field...]" (`what` names them, at most `max_values`): the number of
+// records that follow, bounded by what the file can hold, and fields that header_field() reads.
+bool read_header(LineReader& lines, ErrorSink& sink, std::vector<std::string_view>& tokens, std::size_t max_values,
+                 std::string_view what, std::uint64_t& count) {
   if (!next_tokens(lines, tokens, '#')) return sink.fail(lines.line_number(), "empty file: missing " + std::string(what));
-  if (tokens.size() < min_values || tokens.size() > max_values) {
+  if (tokens.empty() || tokens.size() > max_values) {
     return sink.fail(lines.line_number(), "expected " + std::string(what) + ", got " +
                                               std::to_string(tokens.size()) + " values");
   }
-  return true;
+  return parse_count(sink, lines.line_number(), tokens[0], lines.remaining_bytes(), count);
+}
+
+// The header's field `i`, at most `max`, if the header has it; else `value` keeps its default.
+bool header_field(ErrorSink& sink, std::uint64_t line, const std::vector<std::string_view>& tokens, std::size_t i,
+                  std::uint64_t max, std::string_view what, std::uint64_t& value) {
+  return tokens.size() <= i || small_count(sink, line, tokens[i], max, what, value);
 }
 
 // Record `i` of the `count` records (`noun`) the header declared, split into `tokens`.
@@ -49,28 +65,21 @@ bool expect_no_more_records(LineReader& lines, ErrorSink& sink, std::vector<std:
                    "unexpected data after the " + std::to_string(count) + " declared " + std::string(noun));
 }
 
-bool small_count(ErrorSink& sink, std::uint64_t line, std::string_view token, std::uint64_t max,
-                 std::string_view what, std::uint64_t& value) {
-  if (!parse_u64(token, value) || value > max) {
-    return sink.fail(line, "bad " + std::string(what) + " " + quote(token));
-  }
-  return true;
-}
-
 bool read_node_file(std::string_view text, ErrorSink& sink, NodeIdMap& ids, RawMesh& mesh) {
   LineReader lines(text);
   std::vector<std::string_view> tokens;
-  if (!read_header(lines, sink, tokens, 1, 4, "'numPoints dimension numAttributes numMarkers'")) return false;
-  const std::uint64_t at = lines.line_number();
   std::uint64_t count = 0;
+  if (!read_header(lines, sink, tokens, 4, "'numPoints dimension numAttributes numMarkers'", count)) return false;
+  const std::uint64_t at = lines.line_number();
   std::uint64_t dim = 3;
   std::uint64_t attributes = 0;
   std::uint64_t markers = 0;
-  if (!parse_count(sink, at, tokens[0], lines.remaining_bytes(), count)) return false;
-  if (tokens.size() > 1 && !small_count(sink, at, tokens[1], 3, "dimension", dim)) return false;
+  if (!header_field(sink, at, tokens, 1, 3, "dimension", dim)) return false;
   if (dim != 3) return sink.fail(at, "only 3D points are supported, got dimension " + std::to_string(dim));
-  if (tokens.size() > 2 && !small_count(sink, at, tokens[2], 1000, "number of attributes", attributes)) return false;
-  if (tokens.size() > 3 && !small_count(sink, at, tokens[3], 1, "number of boundary markers", markers)) return false;
+  if (!header_field(sink, at, tokens, 2, 1000, "number of attributes", attributes) ||
+      !header_field(sink, at, tokens, 3, 1, "number of boundary markers", markers)) {
+    return false;
+  }
   const std::size_t expected = 4 + attributes + markers;
   mesh.positions.reserve(count);
   for (std::uint64_t i = 0; i < count; ++i) {
@@ -112,17 +121,16 @@ bool read_ele_file(std::string_view text, ErrorSink& sink, const NodeIdMap& ids,
                    std::vector<std::string>& notices) {
   LineReader lines(text);
   std::vector<std::string_view> tokens;
-  if (!read_header(lines, sink, tokens, 1, 3, "'numTetrahedra nodesPerTet numAttributes'")) return false;
-  const std::uint64_t at = lines.line_number();
   std::uint64_t count = 0;
+  if (!read_header(lines, sink, tokens, 3, "'numTetrahedra nodesPerTet numAttributes'", count)) return false;
+  const std::uint64_t at = lines.line_number();
   std::uint64_t per_tet = 4;
   std::uint64_t attributes = 0;
-  if (!parse_count(sink, at, tokens[0], lines.remaining_bytes(), count)) return false;
-  if (tokens.size() > 1 && !small_count(sink, at, tokens[1], 10, "nodes per tetrahedron", per_tet)) return false;
+  if (!header_field(sink, at, tokens, 1, 10, "nodes per tetrahedron", per_tet)) return false;
   if (per_tet != 4 && per_tet != 10) {
     return sink.fail(at, "nodes per tetrahedron must be 4 or 10, got " + std::to_string(per_tet));
   }
-  if (tokens.size() > 2 && !small_count(sink, at, tokens[2], 1000, "number of attributes", attributes)) return false;
+  if (!header_field(sink, at, tokens, 2, 1000, "number of attributes", attributes)) return false;
   const std::size_t expected = 1 + per_tet + attributes;
   mesh.tets.reserve(count);
   if (attributes > 0) mesh.labels.reserve(count);

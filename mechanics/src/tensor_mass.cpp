@@ -44,7 +44,7 @@ Tensor3 block(const Vec3& mi, const Vec3& mj, double volume, const Lame& l) {
 // of the vertices a cut touches share cache lines and pages: the slots a cut reads lie where the
 // same cut on a smaller mesh reads them, however large the mesh around it. A hash of the whole
 // pair scattered them over the index (32 MB at 1M tets, one page each), and the same update took
-// 1.3 times as long on 64 livers as on one (mechanics_bench BM_UpdateScalingSameWork, issue 30).
+// 1.3 times as long on 64 livers as on one (mechanics_bench BM_UpdateScalingSameWork).
 // 32 slots for the ~6 edges a vertex is lower of (up to ~20 on the low ids Gmsh gives boundary
 // vertices) keep the probes as short as the hash's; reserve() sizes the index to every window.
 constexpr unsigned kEdgeWindowShift = 5;

@@ -1,4 +1,4 @@
-"""What a cut costs through Python beyond the same cut in C++ (issue 33: at most 2 us, without
+"""What a cut costs through Python beyond the same cut in C++ (at most 2 us, without
 building report.changes; the cost of building it beside). pytest-benchmark, on the README sweep
 (the liver, 8 mm tool, 36 cuts); not part of ctest (a measurement, not a test):
 

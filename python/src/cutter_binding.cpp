@@ -519,10 +519,8 @@ std::string changes_repr(const Changes& c) {
          std::to_string(c.removed_vertices.size()) + " removed vertices>";
 }
 
-}  // namespace
-
-
-void bind_cutter(py::module_& m) {
+// tetcut.Changes: a cut's net change as numpy arrays.
+void bind_changes(py::module_& m) {
   py::class_<Changes> changes(m, "Changes", R"doc(A cut's net change (the engine's ChangeLog) as numpy arrays of engine ids.
 
 mesh.tet_ids and mesh.vertex_ids name them; apply the removals first, then the creations. Net: a
@@ -546,7 +544,10 @@ report.changes, and the same arrays on every access.)doc");
       .def_readonly("new_vertex_weights", &Changes::new_vertex_weights, "#N by 4 float64: their weights (sum 1).")
       .def_readonly("removed_vertices", &Changes::removed_vertices, "int64: vertices no tet uses any more.")
       .def("__repr__", &changes_repr);
+}
 
+// tetcut.CutReport: the engine's CutReport field by field, the times, the changes.
+void bind_report(py::module_& m) {
   py::class_<Report> report(m, "CutReport", R"doc(What one cut did: the engine's CutReport, field by field, and its change log.
 
 The counts are the engine's (and `tetcut cut --report`'s): tets_removed and tets_created count
@@ -665,6 +666,13 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
                (r.report.ok ? "ok" : "refused: " + r.report.failure) + ", " + std::to_string(r.report.tets_removed) +
                " removed, " + std::to_string(r.report.tets_created) + " created>";
       });
+}
+
+}  // namespace
+
+void bind_cutter(py::module_& m) {
+  bind_changes(m);
+  bind_report(m);
 
   py::class_<PyCutter, CutterPtr> cutter(m, "Cutter", R"doc(The cautery tool on a mesh (the engine's Cutter).
 

@@ -279,29 +279,12 @@ py::object to_meshio(const MeshPtr& h);
 
 }  // namespace
 
-void bind_mesh(py::module_& m) {
-  made_by_the_module_only(py::class_<SlotViewLock>(
-      m, "_SlotViewLock", "Keeps a mesh alive and unchanged while a slot view of it exists (internal)."));
+namespace {
 
-  py::class_<MeshHandle, MeshPtr> mesh(m, "Mesh", R"doc(A manifold tetrahedral mesh (the engine's TetMesh), validated when made.
+using MeshClass = py::class_<MeshHandle, MeshPtr>;
 
-Mesh(points, tets, labels=None, *, drop_unused_points=False); tetcut.read(path) and
-tetcut.from_meshio(m) make one too. Index arrays are int64 everywhere but in the zero-copy slot
-views (slot_tets: uint32, 0xFFFFFFFF for a removed tet). copy.copy, copy.deepcopy, mesh.copy()
-and pickle work (a pickled mesh comes back with its ids renumbered densely, as compact() would).
-repr: "<tetcut.Mesh V vertices, T tets>".)doc");
-  mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"), py::arg("labels") = py::none(), py::kw_only(),
-           py::arg("drop_unused_points") = false,
-           signature_doc("__init__", "self, /, points, tets, labels=None, *, drop_unused_points=False", R"doc(A mesh from arrays, copied and validated.
-
-points: #V by 3 (any real array-like); tets: #T by 4 integer vertex indices (rows of points,
-0-based, positively oriented); labels: #T integers in 0..2^31-1 (a region, a material per tet)
-or None. Every point must be some tet's corner: ValueError naming the unused rows, unless
-drop_unused_points=True drops them (mesh.vertex_ids then gives each row of mesh.points its row
-in `points`). ValueError with the message `tetcut` prints for what the builder refuses (NaN,
-dangling or repeated indices, inverted tets, a non-manifold input); ValueError / TypeError naming
-the argument for a wrong shape or dtype.)doc").c_str());
-
+// Counts and the live mesh as arrays: copies, the zero-copy slot views, the masks.
+void bind_mesh_arrays(MeshClass& mesh) {
   mesh.def_property_readonly("num_tets", [](const MeshPtr& held) {
         MeshHandle& h = *held; return h.mesh.num_tets(); },
                              "Live tets (0 once a cut removed them all).");
@@ -430,6 +413,10 @@ a view never dangles. Delete it before cutting again.)doc");
       },
       "Vertex slots bool (a copy): which rows of slot_points are live vertices.");
 
+}
+
+// What a mesh measures: its surface, its volume, its canonical hash.
+void bind_mesh_measures(MeshClass& mesh) {
   mesh.def(
       "surface",
       [](const MeshPtr& held) {
@@ -462,6 +449,10 @@ a view never dangles. Delete it before cutting again.)doc");
                     "The canonical hash (16 hex digits) `tetcut` prints: independent of id numbering. O(#T log #T).")
           .c_str());
 
+}
+
+// Per-vertex attributes, which the cuts interpolate.
+void bind_mesh_attributes(MeshClass& mesh) {
   mesh.def_property_readonly(
       "attribute_names",
       [](const MeshPtr& held) {
@@ -534,6 +525,10 @@ a view never dangles. Delete it before cutting again.)doc");
                     "vertex_attribute() gives it back in the shape given.")
           .c_str());
 
+}
+
+// Writing, compaction, meshio, copies, pickling, repr.
+void bind_mesh_files_and_copies(MeshClass& mesh) {
   mesh.def(
       "write",
       [](const MeshPtr& held, const std::string& path, bool binary, const std::string& compression) {
@@ -622,6 +617,10 @@ a view never dangles. Delete it before cutting again.)doc");
            " tets>";
   });
 
+}
+
+// The module-level ways to a mesh: tetcut.read, tetcut.from_meshio.
+void bind_mesh_readers(py::module_& m) {
   m.def("read", &read, py::arg("path"), signature_doc("read", "path", R"doc(Reads a mesh file (Gmsh, VTK legacy and XML, medit, TetGen; format by content, else by
 extension) and builds it. Raises ValueError with the line `tetcut` prints ("tetcut: FILE:LINE:
 reason"); the reader's notes come as UserWarning, and so do points no tet uses, which are not
@@ -682,6 +681,38 @@ vertices of the mesh (as `tetcut` reads the file).)doc").c_str());
                     "drop_unused_points=...) is: points no tetra uses (a file's other cells') are refused unless "
                     "dropped.")
           .c_str());
+}
+
+}  // namespace
+
+void bind_mesh(py::module_& m) {
+  made_by_the_module_only(py::class_<SlotViewLock>(
+      m, "_SlotViewLock", "Keeps a mesh alive and unchanged while a slot view of it exists (internal)."));
+
+  py::class_<MeshHandle, MeshPtr> mesh(m, "Mesh", R"doc(A manifold tetrahedral mesh (the engine's TetMesh), validated when made.
+
+Mesh(points, tets, labels=None, *, drop_unused_points=False); tetcut.read(path) and
+tetcut.from_meshio(m) make one too. Index arrays are int64 everywhere but in the zero-copy slot
+views (slot_tets: uint32, 0xFFFFFFFF for a removed tet). copy.copy, copy.deepcopy, mesh.copy()
+and pickle work (a pickled mesh comes back with its ids renumbered densely, as compact() would).
+repr: "<tetcut.Mesh V vertices, T tets>".)doc");
+  mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"), py::arg("labels") = py::none(), py::kw_only(),
+           py::arg("drop_unused_points") = false,
+           signature_doc("__init__", "self, /, points, tets, labels=None, *, drop_unused_points=False", R"doc(A mesh from arrays, copied and validated.
+
+points: #V by 3 (any real array-like); tets: #T by 4 integer vertex indices (rows of points,
+0-based, positively oriented); labels: #T integers in 0..2^31-1 (a region, a material per tet)
+or None. Every point must be some tet's corner: ValueError naming the unused rows, unless
+drop_unused_points=True drops them (mesh.vertex_ids then gives each row of mesh.points its row
+in `points`). ValueError with the message `tetcut` prints for what the builder refuses (NaN,
+dangling or repeated indices, inverted tets, a non-manifold input); ValueError / TypeError naming
+the argument for a wrong shape or dtype.)doc").c_str());
+
+  bind_mesh_arrays(mesh);
+  bind_mesh_measures(mesh);
+  bind_mesh_attributes(mesh);
+  bind_mesh_files_and_copies(mesh);
+  bind_mesh_readers(m);
 }
 
 namespace {

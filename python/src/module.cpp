@@ -1,5 +1,5 @@
-// The `tetcut` Python module: the engine, the checker and the change log, numpy in and out
-// (issue 33). Each part is bound in its own file; python/tetcut.pyi is the hand-written stub
+// The `tetcut` Python module: the engine, the checker and the change log, numpy in and out.
+// Each part is bound in its own file; python/tetcut.pyi is the hand-written stub
 // (Debian has no stub generator that keeps docstrings), held to this module by mypy's stubtest.
 #include <pybind11/pybind11.h>
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""ctest ci.peers_gate: the gate bounds tetcut's time over each peer's (issue 31), and it can fail.
+"""ctest ci.peers_gate: the gate bounds tetcut's time over each peer's, and it can fail.
 
 Every figure of bench/budgets.json on a BM_Peers run names a counter that
 bench/peers/peers_bench.cpp reports; ci/bench runs peers_bench and prints the peers table. Then

@@ -1,4 +1,4 @@
-// The command line on the files users bring (issue 15): binary and compressed output that reads
+// The command line on the files users bring: binary and compressed output that reads
 // back, a file without tets refused saying what it held, a mesh in the opposite orientation named
 // with the command that turns it, formats told by content, VTK surfaces tetrahedralized, and bad
 // binary input refused on one line.

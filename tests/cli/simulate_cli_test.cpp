@@ -1,4 +1,4 @@
-// `tetcut simulate` as a user runs it, for what a first use tripped on (issue 42): a second
+// `tetcut simulate` as a user runs it, for what a first use tripped on: a second
 // --sweep, a run that only settles, its summary, its messages' numbers, and the sweep's end,
 // which `tetcut cut`, a scenario and `simulate` place the same way (scenario::sweep_centres).
 #include <cmath>

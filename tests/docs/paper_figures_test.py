@@ -1,4 +1,4 @@
-"""docs/paper.md's figures, read from `tetcut stats --json` (issue 41: every figure the page quotes).
+"""docs/paper.md's figures, read from `tetcut stats --json`: every figure the page quotes.
 
     paper_figures_test.py TETCUT SOURCE WORK [STATS_JSON]
 

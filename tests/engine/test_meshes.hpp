@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
+#include "tetcut/bounding_box.hpp"
 #include "tetcut/box_mesh.hpp"
 #include "tetcut/mesh_builder.hpp"
 
@@ -29,6 +31,22 @@ inline std::string test_name_of_mesh(std::string file) {
   for (char& c : file)
     if (c == '-') c = '_';
   return file;
+}
+
+// `cuts` tool centres along the longest axis of the box, through its middle (the paper's lancet).
+inline std::vector<Vec3> lancet_sweep(const BoundingBox& b, int cuts) {
+  std::vector<Vec3> out;
+  const Vec3 size = b.hi - b.lo, mid = 0.5 * (b.lo + b.hi);
+  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+  for (int i = 0; i < cuts; ++i) {
+    Vec3 p = mid;
+    const double s = cuts == 1 ? 0.5 : 0.1 + 0.8 * i / (cuts - 1);
+    if (axis == 0) p.x = b.lo.x + s * size.x;
+    if (axis == 1) p.y = b.lo.y + s * size.y;
+    if (axis == 2) p.z = b.lo.z + s * size.z;
+    out.push_back(p);
+  }
+  return out;
 }
 
 // A live tet drawn from `rng` (a SplitMix64): ids are drawn until one is live.

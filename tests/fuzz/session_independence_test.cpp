@@ -1,5 +1,5 @@
 // The sequence targets keep one session per bundled mesh for the whole process and reset it for
-// each input (issue 18: fuzzer throughput). libFuzzer, `tetcut replay` and ctest's corpus replay
+// each input (fuzzer throughput). libFuzzer, `tetcut replay` and ctest's corpus replay
 // all run many inputs in one process, so a state left behind by one input would make another
 // behave differently than it does alone: a crash that does not reproduce. These tests run the
 // stored inputs in two orders and require every input to end the same way: same scenario, same

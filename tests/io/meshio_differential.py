@@ -5,8 +5,8 @@
 
 One way: each bundled mesh named (corpus/meshes; by default the paper's three kinds, cylinder,
 sheet and coarse liver, which keep the test to seconds; the larger livers change nothing but
-the time) is written by meshio in each format and setting of
-issue 15's table, read by `tetcut info --json`, and its canonical hash compared with the
+the time) is written by meshio in each format and setting
+tetcut reads, read by `tetcut info --json`, and its canonical hash compared with the
 original's. The other way: `tetcut convert` writes each format and setting it writes, meshio
 reads the file, and the points (bit for bit) and the tets (same order) must be the original's.
 
@@ -29,7 +29,7 @@ except ImportError as e:  # ctest: SKIP_RETURN_CODE 77
     print(f"skipped: {e} (ci/deps installs python3-meshio; run with /usr/bin/python3)")
     sys.exit(77)
 
-# (row of the issue's table, file extension, meshio.write keywords)
+# (format and setting, file extension, meshio.write keywords)
 ROWS = [
     (".vtu, default (binary, zlib)", "vtu", {}),
     (".vtu, lzma", "vtu", {"compression": "lzma"}),

@@ -1,4 +1,4 @@
-// The consumers against a rebuild after every cut (issue 30, differential.hpp): every bundled
+// The consumers against a rebuild after every cut (differential.hpp): every bundled
 // mesh and every removal strategy, a lancet sweep, the invariant checker after each cut too;
 // then the planted bugs a consumer could be fed (a corrupted copy of a cut's log) and the proof
 // that the differential check catches each.
@@ -28,7 +28,7 @@ class ConsumerSweep : public ::testing::TestWithParam<std::tuple<std::string, Re
 TEST_P(ConsumerSweep, IncrementalConsumersEqualARebuildAfterEveryCut) {
   const auto& [file, strategy] = GetParam();
   TetMesh mesh = testing::load_bundled(file);
-  const testing::Bounds box = testing::bounds_of(mesh);
+  const BoundingBox box = bounding_box(mesh);
   // Tools of 0.6 and 1.5 mean edges in turn: the small one refines (D_ref = 0.9 mean edges),
   // the large one removes whole tets.
   const double edge = mesh.mean_edge_length();
@@ -77,13 +77,7 @@ INSTANTIATE_TEST_SUITE_P(
                                          "liver-refined.msh", "liver.msh"),
                        ::testing::Values(RemovalStrategy::kBasic, RemovalStrategy::kNeighbours,
                                          RemovalStrategy::kCombined, RemovalStrategy::kWide)),
-    [](const auto& info) {
-      std::string n = std::get<0>(info.param);
-      n = n.substr(0, n.find('.'));
-      for (char& c : n)
-        if (c == '-') c = '_';
-      return n + "_" + to_string(std::get<1>(info.param));
-    });
+    [](const auto& info) { return testing::test_name_of_mesh(std::get<0>(info.param)) + "_" + to_string(std::get<1>(info.param)); });
 
 // ---- planted bugs: a corrupted copy of the log, applied to one check; the honest log to a twin.
 
@@ -97,7 +91,7 @@ struct PlantedRun {
 template <class Corrupt>
 PlantedRun run_planted(Corrupt corrupt) {
   TetMesh mesh = testing::load_bundled("liver-coarse.msh");
-  const testing::Bounds box = testing::bounds_of(mesh);
+  const BoundingBox box = bounding_box(mesh);
   Cutter cutter(mesh, {.tool_diameter = box.diagonal() / 25});
   DifferentialCheck honest(mesh, testing::four_materials(), testing::hashed_labels(mesh));
   DifferentialCheck planted(mesh, testing::four_materials(), testing::hashed_labels(mesh));

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../engine/test_meshes.hpp"  // test_name_of_mesh, lancet_sweep
 #include "tetcut/io.hpp"
 #include "tetcut/mechanics/tensor_mass.hpp"
 #include "tetcut/mesh_builder.hpp"
@@ -26,37 +27,6 @@ inline TetMesh load_bundled(const std::string& name) {
     return {};
   }
   return std::move(*built.mesh);
-}
-
-struct Bounds {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  [[nodiscard]] double diagonal() const { return norm(hi - lo); }
-};
-inline Bounds bounds_of(const TetMesh& mesh) {
-  Bounds b;
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (!mesh.is_live(VertId{v})) continue;
-    const Vec3 p = mesh.position(VertId{v});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
-}
-
-// `cuts` tool centres along the longest axis of the box, through its middle (the paper's lancet).
-inline std::vector<Vec3> lancet_sweep(const Bounds& b, int cuts) {
-  std::vector<Vec3> out;
-  const Vec3 size = b.hi - b.lo, mid = 0.5 * (b.lo + b.hi);
-  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
-  for (int i = 0; i < cuts; ++i) {
-    Vec3 p = mid;
-    const double s = cuts == 1 ? 0.5 : 0.1 + 0.8 * i / (cuts - 1);
-    if (axis == 0) p.x = b.lo.x + s * size.x;
-    if (axis == 1) p.y = b.lo.y + s * size.y;
-    if (axis == 2) p.z = b.lo.z + s * size.z;
-    out.push_back(p);
-  }
-  return out;
 }
 
 // Labels 0..3 by a hash of the tet id, each with its own Young's modulus: a tet that inherits

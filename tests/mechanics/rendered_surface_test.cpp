@@ -40,7 +40,7 @@ TEST(RenderedSurface, ABoxHasItsSixFacesOutwardWithOneNormalPerVertex) {
 
 TEST(RenderedSurface, ACutOpensACavityWhoseRimKeepsOneFanPerVertex) {
   TetMesh mesh = testing::load_bundled("cylinder.msh");
-  const testing::Bounds box = testing::bounds_of(mesh);
+  const BoundingBox box = bounding_box(mesh);
   Cutter cutter(mesh, {.tool_diameter = box.diagonal() / 12});
   RenderedSurface surface(mesh);
   const std::uint32_t before = surface.triangle_count();

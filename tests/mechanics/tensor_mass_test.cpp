@@ -213,7 +213,7 @@ TEST(TensorMass, TheToolMeetsTheDeformedTissueAndCutsItsRestShape) {
   // rest mesh. rest_point() maps the tool's centre through the deformed tet that holds it.
   TetMesh mesh = testing::load_bundled("liver-coarse.msh");
   TensorMassModel model(mesh, ModelParams{});
-  const testing::Bounds box = testing::bounds_of(mesh);
+  const BoundingBox box = bounding_box(mesh);
   const Vec3 mid = 0.5 * (box.lo + box.hi);
   const double shift = box.diagonal() / 10;  // mm: a deformation larger than the tool
   // An affine deformation: the shift along x and a 2 % stretch.

@@ -17,7 +17,7 @@ TEST(TetLabels, LabelsFollowTheirTetsThroughCutsAndCompaction) {
   const std::vector<std::uint32_t> initial = testing::hashed_labels(mesh);
   mechanics::TetLabels labels(mesh, initial);
   Cutter cutter(mesh, {.tool_diameter = 0.8 * mesh.mean_edge_length()});
-  const testing::Bounds box = testing::bounds_of(mesh);
+  const BoundingBox box = bounding_box(mesh);
   for (const Vec3& centre : testing::lancet_sweep(box, 4)) {
     ChangeLog log;
     ASSERT_TRUE(cutter.cut(centre, &log).ok);

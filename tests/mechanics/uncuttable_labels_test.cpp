@@ -200,7 +200,7 @@ TEST_P(Uncuttable, ScatteredUncuttableTetsOnTheBundledMeshesSurviveEveryCut) {
     invariants::CheckOptions options;
     options.quality_rule = invariants::QualityRule::kNoDegradation;
     options.quality_floor = cutter.params().quality_floor;
-    const testing::Bounds box = testing::bounds_of(mesh);
+    const BoundingBox box = bounding_box(mesh);
     std::vector<Vec3> centres = testing::lancet_sweep(box, 12);
     std::uint64_t state = 0x9e3779b97f4a7c15ull;
     auto uniform = [&] {

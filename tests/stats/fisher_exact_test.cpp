@@ -17,8 +17,8 @@ struct Known {
   double p;
 };
 constexpr Known kScipy[] = {
-    {113, 220, 5, 14, 0.28366354883582945},      // liver-local edge unresolved (issue 41)
-    {120, 210, 9, 26, 0.036664304852825305},     // liver-refined edge unresolved (issue 41)
+    {113, 220, 5, 14, 0.28366354883582945},      // liver-local edge unresolved
+    {120, 210, 9, 26, 0.036664304852825305},     // liver-refined edge unresolved
     {1, 2, 1, 2, 1.0},
     {3, 4, 1, 4, 0.48571428571428565},
     {0, 7, 16, 265, 1.0},

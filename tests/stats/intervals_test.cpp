@@ -1,4 +1,4 @@
-// The intervals of Tables 1 and 2 (issue 32 item 6): the Wilson score interval's properties
+// The intervals of Tables 1 and 2: the Wilson score interval's properties
 // (its values are compared with scipy's on every cell by stats.report_renders_in_chromium), and
 // the seeded bootstrap's determinism and range.
 #include <gtest/gtest.h>

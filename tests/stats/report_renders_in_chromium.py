@@ -125,7 +125,7 @@ def main():
         check(row["global_cardinality_per_operation"] >= row["global_cardinality_per_selected"],
               "%s: per operation >= per selected" % row["mesh"])
         check("resolved_by_flood" not in row["counts"], "%s: no flood any more" % row["mesh"])
-    # Our wider search has rows of its own beside the paper's (issue 13), and leaves nothing either.
+    # Our wider search has rows of its own beside the paper's, and leaves nothing either.
     check([r["mesh"] for r in stats.get("table2_wide", [])] == MESHES, "table2_wide rows are the five meshes in order")
     for row in stats.get("table2_wide", []):
         check(row["ok"] and row["wide_unresolved_pct"] == 0, "%s: wide ran to the end, 0 unresolved" % row["mesh"])
@@ -137,7 +137,7 @@ def main():
     combined = [r for r in stats.get("strategies", []) if r["name"] == "combined"]
     check(combined and combined[0]["ok"] and combined[0]["unresolved"] == 0, "combined: ran to the end, 0 unresolved")
 
-    # Issue 29: every strategy row has the created tets' worst dihedral angle and their histogram,
+    # Every strategy row has the created tets' worst dihedral angle and their histogram,
     # with and without the improvement pass; per paper scenario, combined, neighbours and wide
     # create nothing below min(0.1, the input's worst), and the pass lifts what the runs without
     # it create.
@@ -162,7 +162,7 @@ def main():
                                                  without["min_radius_ratio"], with_pass["min_dihedral_deg"],
                                                  without["min_dihedral_deg"]))
 
-    # Issue 32 item 6: every rate cell's interval is scipy's Wilson score interval of its counts;
+    # Every rate cell's interval is scipy's Wilson score interval of its counts;
     # every mean size's bootstrap interval lies between the smallest and largest ratio of one sweep
     # (a pooled ratio of resampled sweeps cannot leave that range), and its counts are the sweeps'.
     from scipy.stats import binomtest
@@ -207,7 +207,7 @@ def main():
                                for pk in range(klo, khi + 1) for pn in range(nlo, nhi + 1))
                 check(p is not None and abs(p - expected) <= 1e-9 * expected + 1e-300,
                       "%s %s %s: Fisher p %r, scipy %r" % (table, row["mesh"], key, p, expected))
-    # Issue 32 item 7: one logged configuration per edge singularity 3.5 searched.
+    # One logged configuration per edge singularity 3.5 searched.
     for table in ("table2", "table2_paper_order"):
         for row in stats.get(table, []):
             logged = sum(c["count"] for c in row.get("edge_search", []))

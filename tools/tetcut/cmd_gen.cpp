@@ -1,4 +1,4 @@
-// `tetcut gen KIND [OPTIONS] -o OUT` (design: the command line; issue 3: generators). KIND is
+// `tetcut gen KIND [OPTIONS] -o OUT` (design: the command line). KIND is
 // cylinder, sheet, box, sphere (TetGen on surfaces we build), surface FILE (TetGen on a closed .off, .stl,
 // .obj or VTK POLYDATA .vtk/.vtp surface) or liver (CGAL Mesh_3 on Debian's segmented liver image, then repair). The mesh
 // is validated with the mesh builder before it is written, and its canonical hash printed.

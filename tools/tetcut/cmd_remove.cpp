@@ -23,7 +23,7 @@
 
 #include "command.hpp"
 #include "command_parser.hpp"
-#include "core/boundary_tet_picker.hpp"
+#include "tetcut/boundary_tet_picker.hpp"
 #include "json_output.hpp"
 #include "mesh_input.hpp"
 #include "remove/removal.hpp"

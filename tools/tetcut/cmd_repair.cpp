@@ -1,4 +1,4 @@
-// `tetcut repair IN -o OUT [--verbose]` (issue 3: repair). Makes a mesh manifold and positively
+// `tetcut repair IN -o OUT [--verbose]`. Makes a mesh manifold and positively
 // oriented with tetcut::generators::repair_mesh, says what changed (counts, then the elements:
 // the first ones, or all with --verbose), validates the result with the mesh builder, writes it
 // and prints its canonical hash.

@@ -150,28 +150,20 @@ double microseconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 }
 
-}  // namespace
-
-int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
-  SimulateArgs a;
-  CommandParser parser(
-      "simulate",
-      "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--diameter D] [--strategy S] [--fix RULE] "
-      "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--material LABEL:E,NU,RHO]... [--keep-label L]... [--unit M] [--damping G] [--dt S] "
-      "[--steps N] [--settle N] [--frames DIR] [--frame-every N] [--report R.json]",
-      "Linear-elastic tissue (tensor-mass, Cotin, Delingette and Ayache 2000) stepped at a fixed\n"
-      "time step (semi-implicit Euler) while the cautery cuts it: per frame one cut, the model and\n"
-      "the rendered surface updated from the cut's change log, then --steps steps. The sweep points\n"
-      "are in the world: each is mapped to the rest shape through the deformed tissue before the\n"
-      "cut. A blow-up (the total energy growing over a frame's steps, or not finite) fails the run.\n",
-      "exit: 0, 1 a blow-up or an invariant broke, 2 bad input or usage");
-  add_simulate_options(parser.app(), a);
-  if (const auto code = parser.parse(args, out, err)) return *code;
-
-  // ---- what to cut: a scenario's mesh, parameters and sweeps, or the command line's ------------
+// What to cut: a scenario's mesh, parameters and sweeps, or the command line's.
+struct CutPlan {
   CutParams params;
-  std::string mesh_path = *a.input;
+  std::string mesh_path;
   std::vector<Vec3> centres;
+};
+
+// Fills `plan` (and the scenario's uncuttable labels into `a`); an exit code when the options
+// are unusable.
+std::optional<int> plan_cuts(SimulateArgs& a, const CommandParser& parser, std::ostream& err, CutPlan& plan) {
+  CutParams& params = plan.params;
+  std::string& mesh_path = plan.mesh_path;
+  std::vector<Vec3>& centres = plan.centres;
+  mesh_path = *a.input;
   if (mesh_path.ends_with(".scn")) {
     const scenario::ParseResult parsed = scenario::parse_file(mesh_path);
     if (!parsed.scenario) {
@@ -220,8 +212,19 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
     return parser.usage_error("--diameter is required to cut a mesh (--sweep)", err);
   }
   if (const auto bad = validate(params)) return parser.usage_error(*bad, err);
+  return std::nullopt;
+}
 
-  mechanics::ModelParams model_params;
+// The model's materials, damping and gravity, the vertices held in place, the time stepping.
+struct ModelPlan {
+  mechanics::ModelParams params;
+  std::function<bool(const Vec3&)> fixed;
+  double dt_factor = 0.5;
+  std::uint64_t steps = 10, frame_every = 1;
+};
+
+std::optional<int> plan_model(const SimulateArgs& a, const CommandParser& parser, std::ostream& err, ModelPlan& plan) {
+  mechanics::ModelParams& model_params = plan.params;
   mechanics::Material& material = model_params.materials.front();
   if (a.young) material.young = *a.young;
   if (a.poisson) material.poisson = *a.poisson;
@@ -237,158 +240,234 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   model_params.damping = a.damping.value_or(20.0);
   model_params.gravity = a.gravity.value_or(Vec3{});
   if (const auto bad = mechanics::validate(model_params)) return parser.usage_error(*bad, err);
-  std::function<bool(const Vec3&)> fixed;
   if (a.fix) {
     auto rule = parse_fix(*a.fix);
     if (!rule) return parser.usage_error("--fix: expects AXIS OP VALUE (x, y or z; <, <=, > or >=), not '" + *a.fix + "'", err);
-    fixed = *rule;
+    plan.fixed = *rule;
   }
-  const double dt_factor = a.dt_factor.value_or(0.5);
-  if (!(dt_factor > 0)) return parser.usage_error("--dt-factor: must be positive", err);
+  plan.dt_factor = a.dt_factor.value_or(0.5);
+  if (!(plan.dt_factor > 0)) return parser.usage_error("--dt-factor: must be positive", err);
   if (a.dt && !(*a.dt > 0)) return parser.usage_error("--dt: must be positive", err);
-  const std::uint64_t steps = a.steps.value_or(10), frame_every = std::max<std::uint64_t>(1, a.frame_every.value_or(1));
+  plan.steps = a.steps.value_or(10);
+  plan.frame_every = std::max<std::uint64_t>(1, a.frame_every.value_or(1));
+  return std::nullopt;
+}
 
-  const std::optional<RawMesh> raw = load_mesh(mesh_path, err);
+// --keep-label: the tets with those labels in the file are set uncuttable on the cutter and the
+// checker. An exit code when the mesh has no labels or the cutter refuses them.
+std::optional<int> keep_labels(const SimulateArgs& a, const RawMesh& raw, const std::string& mesh_path, Cutter& cutter,
+                               invariants::LocalChecker& local, const CommandParser& parser, std::ostream& err) {
+  if (a.uncuttable_labels.empty()) return std::nullopt;
+  if (!raw.labelled()) return parser.usage_error("--keep-label: " + mesh_path + " has no labels", err);
+  std::vector<TetId> uncuttable;
+  for (std::uint32_t t = 0; t < raw.labels.size(); ++t)
+    if (std::find(a.uncuttable_labels.begin(), a.uncuttable_labels.end(), raw.labels[t]) != a.uncuttable_labels.end())
+      uncuttable.push_back(TetId{t});  // the builder keeps the file's tet order
+  if (const auto bad = cutter.set_uncuttable(uncuttable)) return parser.usage_error(*bad, err);
+  local.set_uncuttable(uncuttable);  // the checker's own record, which I10 holds the cuts to
+  return std::nullopt;
+}
+
+// The frames: one cut each, the consumers updated, the checker, the steps; and their figures.
+class Simulation {
+ public:
+  Simulation(const SimulateArgs& a, const ModelPlan& plan, TetMesh& mesh, Cutter& cutter,
+             invariants::LocalChecker& local, mechanics::TensorMassModel& model, mechanics::RenderedSurface& surface,
+             mechanics::StableStepEstimator& stable_step, double initial_stable_dt, double dt)
+      : a_(a), plan_(plan), mesh_(mesh), cutter_(cutter), local_(local), model_(model), surface_(surface),
+        stable_step_(stable_step), dt_(dt), min_stable_(initial_stable_dt), stable_dt_(initial_stable_dt), min_dt_(dt) {
+    log_.reserve(1u << 14);
+    energy_ = model_.energy();
+    max_u_ = max_displacement(mesh_, model_);  // after settling, should no frame follow
+  }
+
+  enum class Frame { kDone, kStopped, kWriteFailed };
+
+  // Frame k, the tool at `centre` in the world.
+  Frame frame(std::size_t k, const Vec3& centre, std::ostream& err) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto rest = model_.rest_point(mesh_, centre, [&](const Vec3& p) { return cutter_.tet_containing(p); });
+    log_.clear();
+    const CutReport r = cutter_.cut(rest.value_or(centre), &log_);
+    cut_us_.push_back(microseconds_since(t0));
+    const auto t1 = std::chrono::steady_clock::now();
+    model_.apply(mesh_, log_);
+    surface_.apply(mesh_, log_);
+    update_us_.push_back(microseconds_since(t1));
+    if (!r.ok) ++cuts_refused_;
+    // The tissue rule too (I10), at the tool where the rest mesh was cut.
+    const invariants::CheckReport check =
+        local_.after_operation(mesh_.raw_view(), cutter_.last_removed(), cutter_.last_created(),
+                               r.ok ? scenario::cut_check_options(cutter_, rest.value_or(centre))
+                                    : scenario::transaction_check_options(cutter_.params(),
+                                                                          cutter_.last_min_dihedral_held()));
+    if (!check.ok()) {
+      failure_ = "frame " + std::to_string(k) + ": " + invariants::id_string(check.violations.front().id) + " violated: " +
+                 check.violations.front().detail;
+      return Frame::kStopped;
+    }
+    // The estimate follows the cut: a few iterations from the last ones (stable_step.hpp); a cut
+    // that changed nothing leaves it where it was. The step follows it, unless fixed by --dt.
+    if (!log_.removed.empty() || !log_.created.empty()) stable_dt_ = stable_step_.update(model_).dt;
+    min_stable_ = std::min(min_stable_, stable_dt_);
+    const double frame_dt = a_.dt ? dt_ : std::min(dt_, plan_.dt_factor * stable_dt_);
+    min_dt_ = std::min(min_dt_, frame_dt);
+    if (frame_dt > stable_dt_) ++unstable_frames_;
+    const mechanics::Energy before_steps = model_.energy();
+    const auto t2 = std::chrono::steady_clock::now();
+    for (std::uint64_t s = 0; s < plan_.steps; ++s) model_.step(frame_dt);
+    step_us_.push_back(plan_.steps ? microseconds_since(t2) / static_cast<double>(plan_.steps) : 0.0);
+    energy_ = model_.energy();
+    max_u_ = max_displacement(mesh_, model_);
+    frames_.push_back({{"frame", k},
+                       {"centre", {centre.x, centre.y, centre.z}},
+                       {"cut_ok", r.ok},
+                       {"tets", mesh_.num_tets()},
+                       {"removed", log_.removed.size()},
+                       {"created", log_.created.size()},
+                       {"cut_us", cut_us_.back()},
+                       {"update_us", update_us_.back()},
+                       {"step_us", step_us_.back()},
+                       {"dt", frame_dt},
+                       {"stable_dt", stable_dt_},
+                       {"energy", {{"kinetic", energy_.kinetic}, {"elastic", energy_.elastic}, {"gravity", energy_.gravity},
+                                   {"total", energy_.total()}}},
+                       {"max_displacement_m", max_u_}});
+    if (a_.frames && k % plan_.frame_every == 0) {
+      char name[32];
+      std::snprintf(name, sizeof name, "/frame_%05zu.vtu", k);
+      if (const auto bad = write_simulation_frame(*a_.frames + name, mesh_, model_)) {
+        err << "tetcut: " << *bad << "\n";
+        return Frame::kWriteFailed;
+      }
+      ++written_;
+    }
+    if (blew_up(k, before_steps, frame_dt)) return Frame::kStopped;
+    return Frame::kDone;
+  }
+
+  // The summary, printed and in the report; the command's exit code.
+  int finish(const std::string& mesh_path, std::uint32_t fixed_count, double initial_stable_dt, std::ostream& out,
+             std::ostream& err) const {
+    auto p = [](const std::vector<double>& v, double q) { return v.empty() ? 0.0 : percentile(v, q); };
+    Json summary = {{"mesh", mesh_path},
+                    {"frames", frames_.size()},
+                    {"cuts_refused", cuts_refused_},
+                    {"fixed_vertices", fixed_count},
+                    {"dt", dt_},
+                    {"dt_min", min_dt_},
+                    {"dt_factor", a_.dt ? Json(nullptr) : Json(plan_.dt_factor)},
+                    {"stable_dt_initial", initial_stable_dt},
+                    {"stable_dt_min", min_stable_},
+                    {"frames_above_stable_dt", unstable_frames_},
+                    {"cut_us_p50", p(cut_us_, 0.5)},
+                    {"cut_us_p99", p(cut_us_, 0.99)},
+                    {"update_us_p50", p(update_us_, 0.5)},
+                    {"update_us_p99", p(update_us_, 0.99)},
+                    {"step_us_p50", p(step_us_, 0.5)},
+                    {"energy_final", energy_.total()},
+                    {"max_displacement_m", max_u_},
+                    {"frames_written", written_},
+                    {"ok", failure_.empty()},
+                    {"failure", failure_}};
+    out << "simulate: " << frames_.size() << " frames of " << plan_.steps << " steps at dt " << si(dt_, "s")
+        << " (stable step estimate " << si(initial_stable_dt, "s") << " before the cuts, " << si(min_stable_, "s")
+        << " at worst after), " << fixed_count << " fixed vertices, " << cuts_refused_ << " cuts refused\n"
+        << "  per frame: cut p50 " << p(cut_us_, 0.5) << " us, update p50 " << p(update_us_, 0.5) << " us, step p50 "
+        << p(step_us_, 0.5) << " us; final energy " << si(energy_.total(), "J") << ", largest displacement "
+        << si(max_u_, "m") << "\n";
+    if (a_.report && !write_json_file(*a_.report, Json{{"summary", summary}, {"frames", frames_}}, err)) return kExitBadInput;
+    if (!failure_.empty()) {
+      err << "tetcut simulate: " << failure_ << "\n";
+      return kExitViolated;
+    }
+    return kExitOk;
+  }
+
+ private:
+  // A blow-up: the total energy growing over the frame's steps. Damped, it can only fall (to the
+  // integrator's O(dt) ripple, allowed up to 1 % of the energies' size).
+  bool blew_up(std::size_t k, const mechanics::Energy& before_steps, double frame_dt) {
+    const double size = before_steps.kinetic + std::abs(before_steps.elastic) + std::abs(before_steps.gravity) +
+                        energy_.kinetic + std::abs(energy_.elastic) + std::abs(energy_.gravity);
+    if (std::isfinite(energy_.total()) && !(energy_.total() - before_steps.total() > 1e-2 * size)) return false;
+    failure_ = "blow-up at frame " + std::to_string(k) + ": the energy went from " + si(before_steps.total(), "J") +
+               " to " + si(energy_.total(), "J") + " in " + std::to_string(plan_.steps) + " steps of " +
+               si(frame_dt, "s") + " (stable step estimate " + si(stable_dt_, "s") + ")";
+    return true;
+  }
+
+  const SimulateArgs& a_;
+  const ModelPlan& plan_;
+  TetMesh& mesh_;
+  Cutter& cutter_;
+  invariants::LocalChecker& local_;
+  mechanics::TensorMassModel& model_;
+  mechanics::RenderedSurface& surface_;
+  mechanics::StableStepEstimator& stable_step_;
+  const double dt_;
+  Json frames_ = Json::array();
+  std::vector<double> cut_us_, update_us_, step_us_;
+  double min_stable_;
+  std::uint64_t unstable_frames_ = 0, cuts_refused_ = 0, written_ = 0;
+  ChangeLog log_;
+  std::string failure_;
+  mechanics::Energy energy_;
+  double max_u_ = 0;
+  double stable_dt_, min_dt_;
+};
+
+}  // namespace
+
+int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
+  SimulateArgs a;
+  CommandParser parser(
+      "simulate",
+      "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--diameter D] [--strategy S] [--fix RULE] "
+      "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--material LABEL:E,NU,RHO]... [--keep-label L]... [--unit M] [--damping G] [--dt S] "
+      "[--steps N] [--settle N] [--frames DIR] [--frame-every N] [--report R.json]",
+      "Linear-elastic tissue (tensor-mass, Cotin, Delingette and Ayache 2000) stepped at a fixed\n"
+      "time step (semi-implicit Euler) while the cautery cuts it: per frame one cut, the model and\n"
+      "the rendered surface updated from the cut's change log, then --steps steps. The sweep points\n"
+      "are in the world: each is mapped to the rest shape through the deformed tissue before the\n"
+      "cut. A blow-up (the total energy growing over a frame's steps, or not finite) fails the run.\n",
+      "exit: 0, 1 a blow-up or an invariant broke, 2 bad input or usage");
+  add_simulate_options(parser.app(), a);
+  if (const auto code = parser.parse(args, out, err)) return *code;
+  CutPlan cuts;
+  if (const auto code = plan_cuts(a, parser, err, cuts)) return *code;
+  ModelPlan plan;
+  if (const auto code = plan_model(a, parser, err, plan)) return *code;
+
+  const std::optional<RawMesh> raw = load_mesh(cuts.mesh_path, err);
   if (!raw) return kExitBadInput;
   BuildResult built = build_mesh(*raw);
   if (!built.ok()) {
-    err << "tetcut: " << mesh_path << ": " << built.problems.front().message << "\n";
+    err << "tetcut: " << cuts.mesh_path << ": " << built.problems.front().message << "\n";
     return kExitBadInput;
   }
   TetMesh mesh = std::move(*built.mesh);
 
-  // ---- the simulation --------------------------------------------------------------------------
-  Cutter cutter(mesh, params);
+  Cutter cutter(mesh, cuts.params);
   invariants::LocalChecker local(mesh.raw_view());
-  if (!a.uncuttable_labels.empty()) {
-    if (!raw->labelled()) return parser.usage_error("--keep-label: " + mesh_path + " has no labels", err);
-    std::vector<TetId> uncuttable;
-    for (std::uint32_t t = 0; t < raw->labels.size(); ++t)
-      if (std::find(a.uncuttable_labels.begin(), a.uncuttable_labels.end(), raw->labels[t]) != a.uncuttable_labels.end())
-        uncuttable.push_back(TetId{t});  // the builder keeps the file's tet order
-    if (const auto bad = cutter.set_uncuttable(uncuttable)) return parser.usage_error(*bad, err);
-    local.set_uncuttable(uncuttable);  // the checker's own record, which I10 holds the cuts to
-  }
+  if (const auto code = keep_labels(a, *raw, cuts.mesh_path, cutter, local, parser, err)) return *code;
   // The file's labels choose the materials (TetId = the file's tet index: the builder keeps the order).
-  mechanics::TensorMassModel model(mesh, model_params, raw->labels);
+  mechanics::TensorMassModel model(mesh, plan.params, raw->labels);
   mechanics::RenderedSurface surface(mesh);
-  const std::uint32_t fixed_count = fixed ? model.fix_where(mesh, fixed) : 0;
+  const std::uint32_t fixed_count = plan.fixed ? model.fix_where(mesh, plan.fixed) : 0;
   mechanics::StableStepEstimator stable_step;
   const mechanics::StableStepEstimator::Estimate initial = stable_step.estimate(model);
   if (!std::isfinite(initial.dt) && !a.dt) return parser.usage_error("--fix: every vertex is fixed: nothing moves", err);
-  const double dt = a.dt.value_or(dt_factor * initial.dt);
+  const double dt = a.dt.value_or(plan.dt_factor * initial.dt);
   for (std::uint64_t s = 0; s < a.settle.value_or(0); ++s) model.step(dt);
 
-  Json frames = Json::array();
-  std::vector<double> cut_us, update_us, step_us;
-  double min_stable = initial.dt;
-  std::uint64_t unstable_frames = 0, cuts_refused = 0, written = 0;
-  ChangeLog log;
-  log.reserve(1u << 14);
-  std::string failure;
-  mechanics::Energy energy = model.energy();
-  double max_u = max_displacement(mesh, model);  // after settling, should no frame follow
-  double stable_dt = initial.dt, min_dt = dt;
-  for (std::size_t k = 0; k < centres.size(); ++k) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto rest = model.rest_point(mesh, centres[k], [&](const Vec3& p) { return cutter.tet_containing(p); });
-    log.clear();
-    const CutReport r = cutter.cut(rest.value_or(centres[k]), &log);
-    cut_us.push_back(microseconds_since(t0));
-    const auto t1 = std::chrono::steady_clock::now();
-    model.apply(mesh, log);
-    surface.apply(mesh, log);
-    update_us.push_back(microseconds_since(t1));
-    if (!r.ok) ++cuts_refused;
-    // The tissue rule too (I10), at the tool where the rest mesh was cut.
-    const invariants::CheckReport check =
-        local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(),
-                              r.ok ? scenario::cut_check_options(cutter, rest.value_or(centres[k]))
-                                   : scenario::transaction_check_options(cutter.params(), cutter.last_min_dihedral_held()));
-    if (!check.ok()) {
-      failure = "frame " + std::to_string(k) + ": " + invariants::id_string(check.violations.front().id) + " violated: " +
-                check.violations.front().detail;
-      break;
-    }
-    // The estimate follows the cut: a few iterations from the last ones (stable_step.hpp); a cut
-    // that changed nothing leaves it where it was. The step follows it, unless fixed by --dt.
-    if (!log.removed.empty() || !log.created.empty()) stable_dt = stable_step.update(model).dt;
-    min_stable = std::min(min_stable, stable_dt);
-    const double frame_dt = a.dt ? dt : std::min(dt, dt_factor * stable_dt);
-    min_dt = std::min(min_dt, frame_dt);
-    if (frame_dt > stable_dt) ++unstable_frames;
-    const mechanics::Energy before_steps = model.energy();
-    const auto t2 = std::chrono::steady_clock::now();
-    for (std::uint64_t s = 0; s < steps; ++s) model.step(frame_dt);
-    step_us.push_back(steps ? microseconds_since(t2) / static_cast<double>(steps) : 0.0);
-    energy = model.energy();
-    max_u = max_displacement(mesh, model);
-    frames.push_back({{"frame", k},
-                      {"centre", {centres[k].x, centres[k].y, centres[k].z}},
-                      {"cut_ok", r.ok},
-                      {"tets", mesh.num_tets()},
-                      {"removed", log.removed.size()},
-                      {"created", log.created.size()},
-                      {"cut_us", cut_us.back()},
-                      {"update_us", update_us.back()},
-                      {"step_us", step_us.back()},
-                      {"dt", frame_dt},
-                      {"stable_dt", stable_dt},
-                      {"energy", {{"kinetic", energy.kinetic}, {"elastic", energy.elastic}, {"gravity", energy.gravity},
-                                  {"total", energy.total()}}},
-                      {"max_displacement_m", max_u}});
-    if (a.frames && k % frame_every == 0) {
-      char name[32];
-      std::snprintf(name, sizeof name, "/frame_%05zu.vtu", k);
-      if (const auto bad = write_simulation_frame(*a.frames + name, mesh, model)) {
-        err << "tetcut: " << *bad << "\n";
-        return kExitBadInput;
-      }
-      ++written;
-    }
-    const double size = before_steps.kinetic + std::abs(before_steps.elastic) + std::abs(before_steps.gravity) +
-                        energy.kinetic + std::abs(energy.elastic) + std::abs(energy.gravity);
-    if (!std::isfinite(energy.total()) || energy.total() - before_steps.total() > 1e-2 * size) {
-      failure = "blow-up at frame " + std::to_string(k) + ": the energy went from " + si(before_steps.total(), "J") +
-                " to " + si(energy.total(), "J") + " in " + std::to_string(steps) + " steps of " + si(frame_dt, "s") +
-                " (stable step estimate " + si(stable_dt, "s") + ")";
-      break;
-    }
+  Simulation simulation(a, plan, mesh, cutter, local, model, surface, stable_step, initial.dt, dt);
+  for (std::size_t k = 0; k < cuts.centres.size(); ++k) {
+    const Simulation::Frame frame = simulation.frame(k, cuts.centres[k], err);
+    if (frame == Simulation::Frame::kWriteFailed) return kExitBadInput;
+    if (frame == Simulation::Frame::kStopped) break;
   }
-
-  auto p = [](const std::vector<double>& v, double q) { return v.empty() ? 0.0 : percentile(v, q); };
-  Json summary = {{"mesh", mesh_path},
-                  {"frames", frames.size()},
-                  {"cuts_refused", cuts_refused},
-                  {"fixed_vertices", fixed_count},
-                  {"dt", dt},
-                  {"dt_min", min_dt},
-                  {"dt_factor", a.dt ? Json(nullptr) : Json(dt_factor)},
-                  {"stable_dt_initial", initial.dt},
-                  {"stable_dt_min", min_stable},
-                  {"frames_above_stable_dt", unstable_frames},
-                  {"cut_us_p50", p(cut_us, 0.5)},
-                  {"cut_us_p99", p(cut_us, 0.99)},
-                  {"update_us_p50", p(update_us, 0.5)},
-                  {"update_us_p99", p(update_us, 0.99)},
-                  {"step_us_p50", p(step_us, 0.5)},
-                  {"energy_final", energy.total()},
-                  {"max_displacement_m", max_u},
-                  {"frames_written", written},
-                  {"ok", failure.empty()},
-                  {"failure", failure}};
-  out << "simulate: " << frames.size() << " frames of " << steps << " steps at dt " << si(dt, "s")
-      << " (stable step estimate " << si(initial.dt, "s") << " before the cuts, " << si(min_stable, "s")
-      << " at worst after), " << fixed_count << " fixed vertices, " << cuts_refused << " cuts refused\n"
-      << "  per frame: cut p50 " << p(cut_us, 0.5) << " us, update p50 " << p(update_us, 0.5) << " us, step p50 "
-      << p(step_us, 0.5) << " us; final energy " << si(energy.total(), "J") << ", largest displacement "
-      << si(max_u, "m") << "\n";
-  if (a.report && !write_json_file(*a.report, Json{{"summary", summary}, {"frames", frames}}, err)) return kExitBadInput;
-  if (!failure.empty()) {
-    err << "tetcut simulate: " << failure << "\n";
-    return kExitViolated;
-  }
-  return kExitOk;
+  return simulation.finish(cuts.mesh_path, fixed_count, initial.dt, out, err);
 }
 
 }  // namespace tetcut::cli

@@ -59,7 +59,7 @@ void ours_paper_diff(Json& row, std::span<const Figure> figures) {
   row["diff"] = std::move(diff);
 }
 
-// A cell's 95 % interval and raw counts (issue 32 item 6): "ci95" [lo, hi] in the cell's unit
+// A cell's 95 % interval and raw counts: "ci95" [lo, hi] in the cell's unit
 // (null bounds when it has nothing to estimate from), "count" [events, trials] for a rate or
 // [tets, sets] for a mean size.
 void intervals(Json& row, std::span<const std::pair<const char*, const stats::CellEstimate*>> cells) {
@@ -97,7 +97,7 @@ void sweeps(Json& row, const stats::MeshStats& m) {
   row["sweep_counts"] = std::move(counts);  // each sweep's, in order; "counts" (Table 2) sums them
 }
 
-// Issue 32 item 7: every configuration of verdicts (left, right, whole) 3.5's edge search met,
+// Every configuration of verdicts (left, right, whole) 3.5's edge search met,
 // with its count; only those met.
 Json edge_search(const EdgeSearchTally& tally) {
   Json out = Json::array();

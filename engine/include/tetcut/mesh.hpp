@@ -409,6 +409,13 @@ class TetMesh {
   StampedSet<TetId> removing_;      // replace_tets(): the tets this call removes
   StampedSet<VertId> vertex_noted_;  // replace_tets(): vertex journaled in this call
   void touch_vertex(std::uint32_t v);
+  // replace_tets() in its steps (mesh_mutation.cpp): the cavity opened, the new tets added
+  // unglued, their faces glued, the vertices that lost their seed reseeded.
+  void open_cavity(std::span<const TetId> removed);
+  void add_unglued(std::span<const TetId> removed, std::span<const TetVerts> added, std::vector<TetId>* created,
+                   std::span<const TetId> parent_of);
+  void glue_faces();
+  void reseed_vertices();
 };
 
 }  // namespace tetcut

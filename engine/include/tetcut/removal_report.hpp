@@ -18,7 +18,7 @@ namespace tetcut {
 // tets around e): T with the tets on one side of it around e ("left", the first run in the
 // ring's rotation order), with those on the other side ("right"), then, when neither is
 // removable, with all of them ("whole"). What the set test said about each candidate, and where
-// it failed (issue 32 item 7: why 3.5 leaves so many edge singularities to 3.7). "At an end":
+// it failed (to show why 3.5 leaves so many edge singularities to 3.7). "At an end":
 // the offending vertex is an end of e, or the offending edge has one; T's vertices off e are
 // its two ring neighbours.
 enum class EdgeCandidateVerdict : std::uint8_t {

@@ -137,8 +137,15 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
 
   scratch_faces_.clear();
   scratch_verts_.clear();
+  open_cavity(removed);
+  add_unglued(removed, added, created, parent_of);
+  glue_faces();
+  reseed_vertices();
+  live_tets_ = live_tets_ - static_cast<std::uint32_t>(removed.size()) + static_cast<std::uint32_t>(added.size());
+}
 
-  // 1. The cavity's outer faces; boundary faces that disappear; vertices losing their seed.
+// 1. The cavity's outer faces; boundary faces that disappear; vertices losing their seed.
+void TetMesh::open_cavity(std::span<const TetId> removed) {
   for (TetId r : removed) {
     const auto verts = tet_verts_[r.value];
     for (int f = 0; f < 4; ++f) {
@@ -162,8 +169,11 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     }
   }
   for (TetId r : removed) free_tet(r);
+}
 
-  // 2. The new tets, unglued for now, and their births.
+// 2. The new tets, unglued for now, and their births.
+void TetMesh::add_unglued(std::span<const TetId> removed, std::span<const TetVerts> added, std::vector<TetId>* created,
+                          std::span<const TetId> parent_of) {
   for (std::size_t k = 0; k < added.size(); ++k) {
     const TetVerts& tv = added[k];
     const TetId t = allocate_tet();
@@ -195,11 +205,13 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
     }
     if (created) created->push_back(t);
   }
+}
 
-  // 3. Glue faces with equal vertex triples, matched through a small open-addressing table of
-  // slot indices (reused scratch: no allocation once grown). The pairs do not depend on the
-  // table's order, and everything below walks the slots in the order they were made, so the
-  // result is deterministic. (A sort did the same in O(n log n) and was a quarter of a split.)
+// 3. Glue faces with equal vertex triples, matched through a small open-addressing table of
+// slot indices (reused scratch: no allocation once grown). The pairs do not depend on the
+// table's order, and everything below walks the slots in the order they were made, so the
+// result is deterministic (a sort would do the same in O(n log n), about a quarter of a split).
+void TetMesh::glue_faces() {
   const std::size_t n = scratch_faces_.size();
   std::size_t size = 16;
   while (size < 2 * n) size *= 2;
@@ -249,10 +261,12 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
       }
     }
   }
+}
 
-  // 4. Vertices that lost their seed and got none from a new tet: any outer tet that contains
-  // them will do (in a manifold shell the remaining tets touch the removed ones through a face
-  // containing the vertex); none means the vertex has no tets left and goes too.
+// 4. Vertices that lost their seed and got none from a new tet: any outer tet that contains
+// them will do (in a manifold shell the remaining tets touch the removed ones through a face
+// containing the vertex); none means the vertex has no tets left and goes too.
+void TetMesh::reseed_vertices() {
   for (VertId v : scratch_verts_) {
     if (vert_tet_[v.value] != kReseed) continue;
     TetId seed = kNoTet;
@@ -270,8 +284,6 @@ void TetMesh::replace_tets(std::span<const TetId> removed, std::span<const TetVe
       --live_vertices_;
     }
   }
-
-  live_tets_ = live_tets_ - static_cast<std::uint32_t>(removed.size()) + static_cast<std::uint32_t>(added.size());
 }
 
 void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {

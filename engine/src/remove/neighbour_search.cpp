@@ -61,7 +61,7 @@ bool NeighbourSearch::find(const TetMesh& mesh, SetRemovalWorkspace& ws, TetId t
   if (first.kind == SingularityKind::kEdge) {
     sides_of_edge(mesh, ws, t, first.edge.a, first.edge.b, parts_, sizes_);
     const TetId one[1] = {t};
-    // Each candidate's verdict, for the report (issue 32 item 7); a third run, which an open
+    // Each candidate's verdict, for the report; a third run, which an open
     // ring split by T cannot have, would be tested and not recorded.
     EdgeCandidateVerdict verdicts[3] = {EdgeCandidateVerdict::kSkipped, EdgeCandidateVerdict::kSkipped,
                                         EdgeCandidateVerdict::kSkipped};

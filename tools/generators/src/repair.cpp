@@ -166,48 +166,52 @@ std::uint64_t RepairReport::removed_tets() const {
   return changes.size() - count(RepairAction::kReoriented);
 }
 
-RepairResult repair_mesh(const RawMesh& input) {
-  RepairResult result;
-  RepairReport& report = result.report;
-  const auto nv = input.positions.size();
-  const auto nt = input.tets.size();
-  const auto& P = input.positions;
-  std::vector<Tet> tets = input.tets;
-  std::vector<char> alive(nt, 1);
-  const auto remove = [&](std::uint32_t t, RepairAction why, std::uint32_t a = kNoIndex,
-                          std::uint32_t b = kNoIndex) {
-    alive[t] = 0;
-    report.changes.push_back({why, t, a, b});
-  };
+namespace {
+
+// One repair, its steps in the order repair_mesh() takes them. `tets` are the input's (oriented
+// in place), `alive` says which are kept; every removal is reported with its reason.
+class Repair {
+ public:
+  Repair(const RawMesh& input, RepairReport& report)
+      : input_(input), report_(report), nv_(input.positions.size()), nt_(input.tets.size()), tets_(input.tets),
+        alive_(nt_, 1) {}
 
   // 1. Tets that are not tets at all.
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    const auto& q = tets[t];
-    bool bad = false;
-    for (int i = 0; i < 4 && !bad; ++i) {
-      bad = q[i] >= nv || !is_finite(P[q[i]]);
-      for (int j = i + 1; j < 4 && !bad; ++j) bad = q[i] == q[j];
+  void remove_invalid() {
+    const auto& P = input_.positions;
+    for (std::uint32_t t = 0; t < nt_; ++t) {
+      const auto& q = tets_[t];
+      bool bad = false;
+      for (int i = 0; i < 4 && !bad; ++i) {
+        bad = q[i] >= nv_ || !is_finite(P[q[i]]);
+        for (int j = i + 1; j < 4 && !bad; ++j) bad = q[i] == q[j];
+      }
+      if (bad) remove(t, RepairAction::kRemovedInvalid);
     }
-    if (bad) remove(t, RepairAction::kRemovedInvalid);
   }
+
   // 2. Orientation, by the exact predicate: reorient rather than remove.
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    if (!alive[t]) continue;
-    auto& q = tets[t];
-    const int o = orientation(P[q[0]], P[q[1]], P[q[2]], P[q[3]]);
-    if (o == 0) {
-      remove(t, RepairAction::kRemovedFlat);
-    } else if (o < 0) {
-      std::swap(q[2], q[3]);
-      report.changes.push_back({RepairAction::kReoriented, t, kNoIndex, kNoIndex});
+  void orient() {
+    const auto& P = input_.positions;
+    for (std::uint32_t t = 0; t < nt_; ++t) {
+      if (!alive_[t]) continue;
+      auto& q = tets_[t];
+      const int o = orientation(P[q[0]], P[q[1]], P[q[2]], P[q[3]]);
+      if (o == 0) {
+        remove(t, RepairAction::kRemovedFlat);
+      } else if (o < 0) {
+        std::swap(q[2], q[3]);
+        report_.changes.push_back({RepairAction::kReoriented, t, kNoIndex, kNoIndex});
+      }
     }
   }
+
   // 3. Duplicates: the first of equal vertex sets stays.
-  {
+  void remove_duplicates() {
     std::vector<std::pair<Tet, std::uint32_t>> keys;
-    for (std::uint32_t t = 0; t < nt; ++t) {
-      if (!alive[t]) continue;
-      Tet k = tets[t];
+    for (std::uint32_t t = 0; t < nt_; ++t) {
+      if (!alive_[t]) continue;
+      Tet k = tets_[t];
       std::sort(k.begin(), k.end());
       keys.emplace_back(k, t);
     }
@@ -215,8 +219,10 @@ RepairResult repair_mesh(const RawMesh& input) {
     for (std::size_t i = 1; i < keys.size(); ++i)
       if (keys[i].first == keys[i - 1].first) remove(keys[i].second, RepairAction::kRemovedDuplicate);
   }
+
   // 4. Faces with more than two tets: overlapping tets; on each side of the face the first stays.
-  {
+  void remove_over_shared_faces() {
+    const auto& P = input_.positions;
     struct FaceKey {
       std::array<std::uint32_t, 3> f;
       std::uint32_t tet;
@@ -224,15 +230,15 @@ RepairResult repair_mesh(const RawMesh& input) {
       bool operator<(const FaceKey& o) const { return f != o.f ? f < o.f : tet < o.tet; }
     };
     std::vector<FaceKey> faces;
-    for (std::uint32_t t = 0; t < nt; ++t) {
-      if (!alive[t]) continue;
+    for (std::uint32_t t = 0; t < nt_; ++t) {
+      if (!alive_[t]) continue;
       for (int i = 0; i < 4; ++i) {
         std::array<std::uint32_t, 3> f{};
         int n = 0;
         for (int j = 0; j < 4; ++j)
-          if (j != i) f[n++] = tets[t][j];
+          if (j != i) f[n++] = tets_[t][j];
         std::sort(f.begin(), f.end());
-        faces.push_back({f, t, tets[t][i]});
+        faces.push_back({f, t, tets_[t][i]});
       }
     }
     std::sort(faces.begin(), faces.end());
@@ -242,7 +248,7 @@ RepairResult repair_mesh(const RawMesh& input) {
       if (j - i > 2) {
         bool side_taken[2] = {false, false};
         for (std::size_t k = i; k < j; ++k) {
-          if (!alive[faces[k].tet]) continue;
+          if (!alive_[faces[k].tet]) continue;
           const auto& f = faces[k].f;
           const int side = orientation(P[f[0]], P[f[1]], P[f[2]], P[faces[k].apex]) > 0 ? 1 : 0;
           if (side_taken[side])
@@ -258,19 +264,58 @@ RepairResult repair_mesh(const RawMesh& input) {
   // 5. Singularities, until none is left. Each sweep fixes every singularity whose shell no
   //    earlier fix of the sweep touched (the others are re-examined on fresh data next sweep);
   //    edges first, because a singular edge makes both its ends singular too.
-  for (;;) {
-    ++report.rounds;
+  void remove_singularities() {
+    while (singularity_sweep()) {
+    }
+  }
+
+  // 6. Output: kept tets and the vertices they use, both in input order.
+  void output(RepairResult& result) {
+    std::vector<std::uint32_t> new_index(nv_, kNoIndex);
+    for (std::uint32_t t = 0; t < nt_; ++t)
+      if (alive_[t])
+        for (auto v : tets_[t]) new_index[v] = 0;
+    RawMesh out;
+    for (std::uint32_t v = 0; v < nv_; ++v) {
+      if (new_index[v] == kNoIndex) {
+        report_.dropped_vertices.push_back(v);
+      } else {
+        new_index[v] = static_cast<std::uint32_t>(out.positions.size());
+        out.positions.push_back(input_.positions[v]);
+      }
+    }
+    for (std::uint32_t t = 0; t < nt_; ++t)
+      if (alive_[t]) out.tets.push_back({new_index[tets_[t][0]], new_index[tets_[t][1]],
+                                         new_index[tets_[t][2]], new_index[tets_[t][3]]});
+    if (out.tets.empty()) {
+      result.error = nt_ == 0 ? "the mesh has no tetrahedra"
+                              : "cannot be repaired: all " + std::to_string(nt_) +
+                                    " tetrahedra would have to be removed";
+      return;
+    }
+    result.mesh = std::move(out);
+  }
+
+ private:
+  void remove(std::uint32_t t, RepairAction why, std::uint32_t a = kNoIndex, std::uint32_t b = kNoIndex) {
+    alive_[t] = 0;
+    report_.changes.push_back({why, t, a, b});
+  }
+
+  // One sweep of step 5; false when no singularity is left (or no tet).
+  bool singularity_sweep() {
+    ++report_.rounds;
     RawMesh current;
-    current.positions = input.positions;
+    current.positions = input_.positions;
     std::vector<std::uint32_t> input_index;
-    for (std::uint32_t t = 0; t < nt; ++t)
-      if (alive[t]) {
-        current.tets.push_back(tets[t]);
+    for (std::uint32_t t = 0; t < nt_; ++t)
+      if (alive_[t]) {
+        current.tets.push_back(tets_[t]);
         input_index.push_back(t);
       }
-    if (current.tets.empty()) break;
+    if (current.tets.empty()) return false;
     const Singularities s = find_singularities(current);
-    if (s.empty()) break;
+    if (s.empty()) return false;
 
     std::vector<char> touched(current.tets.size(), 0);
     const auto untouched = [&](const std::vector<std::vector<std::uint32_t>>& comps) {
@@ -298,7 +343,7 @@ RepairResult repair_mesh(const RawMesh& input) {
             ++removed_this_round;
           }
         }
-        ++report.singular_edges_fixed;
+        ++report_.singular_edges_fixed;
       }
     } else {
       for (const auto& v : s.vertices) {
@@ -312,7 +357,7 @@ RepairResult repair_mesh(const RawMesh& input) {
               remove(input_index[t], RepairAction::kRemovedSingularVertex, v.vertex);
               ++removed_this_round;
             }
-        ++report.singular_vertices_fixed;
+        ++report_.singular_vertices_fixed;
       }
     }
     if (removed_this_round == 0) {
@@ -322,32 +367,27 @@ RepairResult repair_mesh(const RawMesh& input) {
       for (const auto& c : comps)
         for (auto t : c) remove(input_index[t], RepairAction::kRemovedSingularVertex);
     }
+    return true;
   }
 
-  // 6. Output: kept tets and the vertices they use, both in input order.
-  std::vector<std::uint32_t> new_index(nv, kNoIndex);
-  for (std::uint32_t t = 0; t < nt; ++t)
-    if (alive[t])
-      for (auto v : tets[t]) new_index[v] = 0;
-  RawMesh out;
-  for (std::uint32_t v = 0; v < nv; ++v) {
-    if (new_index[v] == kNoIndex) {
-      report.dropped_vertices.push_back(v);
-    } else {
-      new_index[v] = static_cast<std::uint32_t>(out.positions.size());
-      out.positions.push_back(P[v]);
-    }
-  }
-  for (std::uint32_t t = 0; t < nt; ++t)
-    if (alive[t]) out.tets.push_back({new_index[tets[t][0]], new_index[tets[t][1]],
-                                      new_index[tets[t][2]], new_index[tets[t][3]]});
-  if (out.tets.empty()) {
-    result.error = nt == 0 ? "the mesh has no tetrahedra"
-                           : "cannot be repaired: all " + std::to_string(nt) +
-                                 " tetrahedra would have to be removed";
-    return result;
-  }
-  result.mesh = std::move(out);
+  const RawMesh& input_;
+  RepairReport& report_;
+  const std::size_t nv_, nt_;
+  std::vector<Tet> tets_;
+  std::vector<char> alive_;
+};
+
+}  // namespace
+
+RepairResult repair_mesh(const RawMesh& input) {
+  RepairResult result;
+  Repair repair(input, result.report);
+  repair.remove_invalid();
+  repair.orient();
+  repair.remove_duplicates();
+  repair.remove_over_shared_faces();
+  repair.remove_singularities();
+  repair.output(result);
   return result;
 }
 

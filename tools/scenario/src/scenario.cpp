@@ -203,267 +203,334 @@ invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& cen
   return o;
 }
 
-RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh_out) {
-  RunResult result;
-  TetMesh mesh;
-  std::optional<Cutter> cutter;
-  std::optional<invariants::LocalChecker> local;
-  // The tets' labels, when the mesh file has them: each cut's change log carries them on.
-  // (A plain member and a flag: GCC 12 sees an optional's vectors as maybe uninitialized.)
-  mechanics::TetLabels labels;
-  bool labelled = false;
-  // A file whose tets all have one label (a Gmsh file's single volume, as every bundled mesh):
-  // every tet a cut makes has it too, so nothing is tracked and the cuts run as without labels
-  // (a cut that fills a caller's log costs about 1 us more on the bundled resection).
-  std::optional<std::uint32_t> uniform_label;
-  ChangeLog log;
-  auto log_if_labelled = [&]() -> ChangeLog* {
-    if (!labelled) return nullptr;
-    log.clear();
-    return &log;
-  };
+namespace {
+
+// One run of a scenario: the mesh, its Cutter and local checker, the labels the change logs carry,
+// and the result so far. One method per kind of operation; each returns false once the run has
+// stopped (stop(): the result says why, and the mesh went to the caller).
+class Run {
+ public:
+  Run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh_out)
+      : scenario_(scenario),
+        options_(options),
+        mesh_out_(mesh_out),
+        params_(options.initial_params.value_or(CutParams{})),
+        uncuttable_labels_(options.uncuttable_labels) {}
+
+  RunResult run() {
+    for (const Op& op : scenario_.ops)
+      if (!step(op)) return std::move(result_);
+    finish();
+    return std::move(result_);
+  }
+
+ private:
+  bool step(const Op& op) {
+    if (op.kind != OpKind::kMesh && op.kind != OpKind::kParam && !cutter_) {
+      stop(op, 2, "no mesh loaded yet (use: mesh PATH)");
+      return false;
+    }
+    switch (op.kind) {
+      case OpKind::kMesh: return load_mesh(op);
+      case OpKind::kUncuttable: return set_uncuttable(op);
+      case OpKind::kParam: return set_parameter(op);
+      case OpKind::kCut:
+      case OpKind::kSweep: return cut(op);
+      case OpKind::kRemove: return remove(op);
+      case OpKind::kCompact: compact(); return true;
+      case OpKind::kCheck: return check(op);
+      case OpKind::kExpectHash:
+      case OpKind::kExpectTets:
+      case OpKind::kExpectComponents:
+      case OpKind::kExpectMinQuality:
+      case OpKind::kExpectUnresolved: return expect(op);
+    }
+    return true;
+  }
+
+  bool load_mesh(const Op& op) {
+    const std::string path = op.text.front() == '/' ? op.text : scenario_.base_dir + "/" + op.text;
+    ReadResult read = read_mesh(path);
+    if (!read.mesh) {
+      stop(op, 2, read.error ? read.error->message() : "cannot read " + path);
+      return false;
+    }
+    BuildResult built = build_mesh(*read.mesh);
+    if (!built.ok()) {
+      stop(op, 2, path + ": not a valid manifold mesh: " + built.problems.front().message);
+      return false;
+    }
+    if (cutter_) result_.removal += cutter_->removal_report();
+    cutter_.reset();
+    mesh_ = std::move(*built.mesh);
+    cutter_.emplace(mesh_, params_);
+    local_.emplace(mesh_.raw_view());
+    const std::vector<std::uint32_t>& file_labels = read.mesh->labels;
+    const bool one_label = read.mesh->labelled() && std::all_of(file_labels.begin(), file_labels.end(),
+                                                                [&](std::uint32_t l) { return l == file_labels[0]; });
+    uniform_label_ = one_label ? std::optional<std::uint32_t>(file_labels[0]) : std::nullopt;
+    labelled_ = read.mesh->labelled() && !one_label;
+    if (labelled_) {
+      labels_ = mechanics::TetLabels(mesh_, read.mesh->labels);  // the builder keeps the file's tet order: TetId = index
+      log_.reserve(4096);
+    }
+    if (auto bad = protect()) {
+      stop(op, 2, path + ": " + *bad);
+      return false;
+    }
+    return true;
+  }
+
+  bool set_uncuttable(const Op& op) {
+    uncuttable_labels_ = op.labels;
+    if (auto bad = protect()) {
+      stop(op, 2, *bad);
+      return false;
+    }
+    return true;
+  }
+
+  bool set_parameter(const Op& op) {
+    if (auto bad = set_param(params_, op.text, op.value)) {
+      stop(op, 2, *bad);
+      return false;
+    }
+    if (cutter_) cutter_->set_params(params_);
+    return true;
+  }
+
+  bool cut(const Op& op) {
+    const std::vector<Vec3> centres = op.kind == OpKind::kSweep ? sweep_centres(op.a, op.b, op.step) : std::vector{op.a};
+    for (const Vec3& centre : centres) {
+      const CutReport r = cutter_->cut(centre, log_if_labelled());
+      if (r.ok && labelled_) labels_.apply(mesh_, log_);
+      result_.cuts.push_back({op.line, centre, r});
+      count(r);
+      if (!r.ok) {
+        stop(op, 1, "cut failed: " + r.failure);
+        return false;
+      }
+      if (!after(op, &centre)) return false;
+      if (options_.after_cut) {
+        if (auto bad = options_.after_cut(mesh_, result_.cuts.size() - 1, current_labels())) {
+          stop(op, 2, *bad);
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  bool remove(const Op& op) {
+    const TetId t = cutter_->tet_containing(op.a);
+    if (!t.valid()) return true;  // nothing there any more: a no-op, as a cautery in the air
+    const CutReport r = cutter_->remove(t, log_if_labelled());
+    if (r.ok && labelled_) labels_.apply(mesh_, log_);
+    count(r);
+    if (!r.ok) {
+      stop(op, 1, "removal failed: " + r.failure);
+      return false;
+    }
+    return after(op);
+  }
+
+  void compact() {
+    result_.removal += cutter_->removal_report();
+    if (const Renumbering renumbering = mesh_.compact(); labelled_) labels_.renumber(renumbering);
+    cutter_.emplace(mesh_, params_);
+    local_.emplace(mesh_.raw_view());
+    (void)protect();  // the same labelled tets as before: it cannot refuse now
+  }
+
+  bool check(const Op& op) {
+    invariants::CheckOptions o;
+    // `check local` in a file has no operation to look around: it checks the whole mesh.
+    o.level = *parse_check_level(op.text) == invariants::CheckLevel::kExact ? invariants::CheckLevel::kExact
+                                                                             : invariants::CheckLevel::kFull;
+    const invariants::CheckReport r = invariants::check_mesh(mesh_.raw_view(), o);
+    if (!r.ok()) {
+      stop(op, 1, "check failed: " + violations(r));
+      return false;
+    }
+    return true;
+  }
+
+  // An `expect` line: what it expects, else why not.
+  std::optional<std::string> unmet(const Op& op) const {
+    switch (op.kind) {
+      case OpKind::kExpectHash: {
+        const std::string h = hash_to_hex(canonical_hash(mesh_));
+        if (h != op.text) return "expected hash " + op.text + ", got " + h;
+        break;
+      }
+      case OpKind::kExpectTets:
+        if (mesh_.num_tets() != op.count)
+          return "expected " + std::to_string(op.count) + " tets, got " + std::to_string(mesh_.num_tets());
+        break;
+      case OpKind::kExpectComponents: {
+        const std::uint64_t pieces = face_connected_pieces(mesh_).count;
+        if (pieces != op.count)
+          return "expected " + std::to_string(op.count) + " connected pieces, got " + std::to_string(pieces);
+        break;
+      }
+      case OpKind::kExpectMinQuality: {
+        // The checker's measure of what the cuts left created, not the engine's own account.
+        const double worst = result_.created_quality.tets == 0 ? 1.0 : result_.created_quality.min_radius_ratio;
+        if (!(worst >= op.bound))
+          return "expected every created tet to have radius ratio >= " + std::to_string(op.bound) + ", the worst has " +
+                 std::to_string(worst);
+        break;
+      }
+      case OpKind::kExpectUnresolved:
+        if (result_.unresolved != op.count)
+          return "expected " + std::to_string(op.count) + " unresolved, got " + std::to_string(result_.unresolved);
+        break;
+      default:
+        break;
+    }
+    return std::nullopt;
+  }
+
+  bool expect(const Op& op) {
+    if (auto why = unmet(op)) {
+      stop(op, 1, *why);
+      return false;
+    }
+    return true;
+  }
+
+  void finish() {
+    if (options_.check == CheckMode::kEnd && cutter_) {
+      const invariants::CheckReport r = invariants::check_mesh(mesh_.raw_view());
+      if (!r.ok()) {
+        result_.ok = false;
+        result_.exit_code = 1;
+        result_.reason = "invariant violated at the end: " + violations(r);
+        result_.error = scenario_.name + ": " + result_.reason;
+      }
+    }
+    if (cutter_) result_.removal += cutter_->removal_report();
+    result_.hash = hash_to_hex(canonical_hash(mesh_));
+    result_.tets = mesh_.num_tets();
+    keep_labels();
+    if (mesh_out_) *mesh_out_ = std::move(mesh_);
+  }
+
+  ChangeLog* log_if_labelled() {
+    if (!labelled_) return nullptr;
+    log_.clear();
+    return &log_;
+  }
+
   // The labels by TetId now (empty: unlabelled). A single label is spelt out only when asked for
   // (a result, a frame), which is O(tets) as writing the mesh is.
-  std::vector<std::uint32_t> spelt_out;
-  auto current_labels = [&]() -> std::span<const std::uint32_t> {
-    if (labelled) return labels.by_tet();
-    if (!uniform_label) return {};
-    spelt_out.assign(mesh.tet_capacity(), *uniform_label);
-    return spelt_out;
-  };
-  auto keep_labels = [&]() {
+  std::span<const std::uint32_t> current_labels() {
+    if (labelled_) return labels_.by_tet();
+    if (!uniform_label_) return {};
+    spelt_out_.assign(mesh_.tet_capacity(), *uniform_label_);
+    return spelt_out_;
+  }
+
+  void keep_labels() {
     const std::span<const std::uint32_t> now = current_labels();
-    result.labels.assign(now.begin(), now.end());
-  };
-  CutParams params = options.initial_params.value_or(CutParams{});
-  // The labels whose tets the cutter must leave, and the tets that have one now (by the labels
-  // the change logs carry): set on the cutter whenever it is made anew or the labels change.
-  std::vector<std::uint32_t> uncuttable_labels = options.uncuttable_labels;
-  std::vector<TetId> uncuttable_tets;
-  auto protect = [&]() -> std::optional<std::string> {
-    uncuttable_tets.clear();
+    result_.labels.assign(now.begin(), now.end());
+  }
+
+  // Sets the uncuttable tets (those with an uncuttable label now) on the cutter and the checker.
+  std::optional<std::string> protect() {
+    uncuttable_tets_.clear();
     auto kept = [&](std::uint32_t label) {
-      return std::find(uncuttable_labels.begin(), uncuttable_labels.end(), label) != uncuttable_labels.end();
+      return std::find(uncuttable_labels_.begin(), uncuttable_labels_.end(), label) != uncuttable_labels_.end();
     };
-    if (!uncuttable_labels.empty()) {
-      if (!labelled && !uniform_label) return std::string("uncuttable labels need a mesh whose tets carry labels");
-      for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
-        if (mesh.is_live(TetId{t}) && kept(labelled ? labels.label(TetId{t}) : *uniform_label)) uncuttable_tets.push_back(TetId{t});
+    if (!uncuttable_labels_.empty()) {
+      if (!labelled_ && !uniform_label_) return std::string("uncuttable labels need a mesh whose tets carry labels");
+      for (std::uint32_t t = 0; t < mesh_.tet_capacity(); ++t)
+        if (mesh_.is_live(TetId{t}) && kept(labelled_ ? labels_.label(TetId{t}) : *uniform_label_))
+          uncuttable_tets_.push_back(TetId{t});
     }
-    if (auto bad = cutter->set_uncuttable(uncuttable_tets)) return bad;
-    local->set_uncuttable(uncuttable_tets);
+    if (auto bad = cutter_->set_uncuttable(uncuttable_tets_)) return bad;
+    local_->set_uncuttable(uncuttable_tets_);
     return std::nullopt;
-  };
-  auto stop = [&](const Op& op, int code, const std::string& why) {
-    result.ok = false;
-    result.exit_code = code;
-    result.failed_line = op.line;
-    result.error = scenario.name + ":" + std::to_string(op.line) + ": " + why;
-    result.reason = why;
-    result.tets = mesh.num_tets();
-    if (cutter) result.removal += cutter->removal_report();
+  }
+
+  void stop(const Op& op, int code, const std::string& why) {
+    result_.ok = false;
+    result_.exit_code = code;
+    result_.failed_line = op.line;
+    result_.error = scenario_.name + ":" + std::to_string(op.line) + ": " + why;
+    result_.reason = why;
+    result_.tets = mesh_.num_tets();
+    if (cutter_) result_.removal += cutter_->removal_report();
     keep_labels();
-    if (mesh_out) *mesh_out = std::move(mesh);  // every caller returns right after
-  };
-  auto violations = [](const invariants::CheckReport& r) {
+    if (mesh_out_) *mesh_out_ = std::move(mesh_);  // the run returns right after
+  }
+
+  static std::string violations(const invariants::CheckReport& r) {
     std::string s;
     for (const invariants::Violation& v : r.violations)
       s += std::string(s.empty() ? "" : "; ") + invariants::id_string(v.id) + " " + invariants::description(v.id) + ": " + v.detail;
     return s;
-  };
-  // What a cut or removal that succeeded created, for the run's quality figures.
-  auto note_created = [&](const CutReport& r) {
-    result.min_created_radius_ratio = std::min(result.min_created_radius_ratio, r.min_radius_ratio);
-    invariants::pool(result.created_quality, invariants::quality_of(mesh.raw_view(), cutter->last_created()));
-  };
+  }
+
+  // A cut's or a removal's counts, and what one that succeeded created, for the run's quality figures.
+  void count(const CutReport& r) {
+    result_.removals += r.tets_removed + r.tets_removed_by_improvement;
+    result_.unresolved += r.unresolved;
+    if (!r.ok) return;
+    result_.min_created_radius_ratio = std::min(result_.min_created_radius_ratio, r.min_radius_ratio);
+    invariants::pool(result_.created_quality, invariants::quality_of(mesh_.raw_view(), cutter_->last_created()));
+  }
+
   // After every mutating operation: the growth guard, then the local check (or none); a cut's
   // with its tool.
-  auto after = [&](const Op& op, const Vec3* cut_centre = nullptr) {
-    if (options.max_tets != 0 && mesh.num_tets() > options.max_tets) {
-      stop(op, 1, "the mesh grew past " + std::to_string(options.max_tets) + " tets (" +
-                       std::to_string(mesh.num_tets()) + ")");
+  bool after(const Op& op, const Vec3* cut_centre = nullptr) {
+    if (options_.max_tets != 0 && mesh_.num_tets() > options_.max_tets) {
+      stop(op, 1, "the mesh grew past " + std::to_string(options_.max_tets) + " tets (" +
+                      std::to_string(mesh_.num_tets()) + ")");
       return false;
     }
-    if (options.check == CheckMode::kNone || !cutter) return true;
-    if (options.check == CheckMode::kEvery) {
-      const invariants::CheckOptions o = cut_centre ? cut_check_options(*cutter, *cut_centre)
-                                                    : transaction_check_options(params, cutter->last_min_dihedral_held());
+    if (options_.check == CheckMode::kNone || !cutter_) return true;
+    if (options_.check == CheckMode::kEvery) {
+      const invariants::CheckOptions o = cut_centre ? cut_check_options(*cutter_, *cut_centre)
+                                                    : transaction_check_options(params_, cutter_->last_min_dihedral_held());
       const invariants::CheckReport r =
-          local->after_operation(mesh.raw_view(), cutter->last_removed(), cutter->last_created(), o);
+          local_->after_operation(mesh_.raw_view(), cutter_->last_removed(), cutter_->last_created(), o);
       if (!r.ok()) {
         stop(op, 1, "invariant violated: " + violations(r));
         return false;
       }
     }
     return true;
-  };
+  }
 
-  for (const Op& op : scenario.ops) {
-    if (op.kind != OpKind::kMesh && op.kind != OpKind::kParam && !cutter) {
-      stop(op, 2, "no mesh loaded yet (use: mesh PATH)");
-      return result;
-    }
-    switch (op.kind) {
-      case OpKind::kMesh: {
-        const std::string path = op.text.front() == '/' ? op.text : scenario.base_dir + "/" + op.text;
-        ReadResult read = read_mesh(path);
-        if (!read.mesh) {
-          stop(op, 2, read.error ? read.error->message() : "cannot read " + path);
-          return result;
-        }
-        BuildResult built = build_mesh(*read.mesh);
-        if (!built.ok()) {
-          stop(op, 2, path + ": not a valid manifold mesh: " + built.problems.front().message);
-          return result;
-        }
-        if (cutter) result.removal += cutter->removal_report();
-        cutter.reset();
-        mesh = std::move(*built.mesh);
-        cutter.emplace(mesh, params);
-        local.emplace(mesh.raw_view());
-        const std::vector<std::uint32_t>& file_labels = read.mesh->labels;
-        const bool one_label = read.mesh->labelled() && std::all_of(file_labels.begin(), file_labels.end(),
-                                                                    [&](std::uint32_t l) { return l == file_labels[0]; });
-        uniform_label = one_label ? std::optional<std::uint32_t>(file_labels[0]) : std::nullopt;
-        labelled = read.mesh->labelled() && !one_label;
-        if (labelled) {
-          labels = mechanics::TetLabels(mesh, read.mesh->labels);  // the builder keeps the file's tet order: TetId = index
-          log.reserve(4096);
-        }
-        if (auto bad = protect()) {
-          stop(op, 2, path + ": " + *bad);
-          return result;
-        }
-        break;
-      }
-      case OpKind::kUncuttable: {
-        uncuttable_labels = op.labels;
-        if (auto bad = protect()) {
-          stop(op, 2, *bad);
-          return result;
-        }
-        break;
-      }
-      case OpKind::kParam:
-        if (auto bad = set_param(params, op.text, op.value)) {
-          stop(op, 2, *bad);
-          return result;
-        }
-        if (cutter) cutter->set_params(params);
-        break;
-      case OpKind::kCut:
-      case OpKind::kSweep: {
-        const std::vector<Vec3> centres = op.kind == OpKind::kSweep ? sweep_centres(op.a, op.b, op.step) : std::vector{op.a};
-        for (const Vec3& centre : centres) {
-          const CutReport r = cutter->cut(centre, log_if_labelled());
-          if (r.ok && labelled) labels.apply(mesh, log);
-          result.cuts.push_back({op.line, centre, r});
-          result.removals += r.tets_removed + r.tets_removed_by_improvement;
-          result.unresolved += r.unresolved;
-          if (r.ok) note_created(r);
-          if (!r.ok) {
-            stop(op, 1, "cut failed: " + r.failure);
-            return result;
-          }
-          if (!after(op, &centre)) return result;
-          if (options.after_cut) {
-            if (auto bad = options.after_cut(mesh, result.cuts.size() - 1, current_labels())) {
-              stop(op, 2, *bad);
-              return result;
-            }
-          }
-        }
-        break;
-      }
-      case OpKind::kRemove: {
-        const TetId t = cutter->tet_containing(op.a);
-        if (!t.valid()) break;  // nothing there any more: a no-op, as a cautery in the air
-        const CutReport r = cutter->remove(t, log_if_labelled());
-        if (r.ok && labelled) labels.apply(mesh, log);
-        result.removals += r.tets_removed + r.tets_removed_by_improvement;
-        result.unresolved += r.unresolved;
-        if (r.ok) note_created(r);
-        if (!r.ok) {
-          stop(op, 1, "removal failed: " + r.failure);
-          return result;
-        }
-        if (!after(op)) return result;
-        break;
-      }
-      case OpKind::kCompact:
-        result.removal += cutter->removal_report();
-        if (const Renumbering renumbering = mesh.compact(); labelled) labels.renumber(renumbering);
-        cutter.emplace(mesh, params);
-        local.emplace(mesh.raw_view());
-        (void)protect();  // the same labelled tets as before: it cannot refuse now
-        break;
-      case OpKind::kCheck: {
-        invariants::CheckOptions o;
-        // `check local` in a file has no operation to look around: it checks the whole mesh.
-        o.level = *parse_check_level(op.text) == invariants::CheckLevel::kExact ? invariants::CheckLevel::kExact
-                                                                                 : invariants::CheckLevel::kFull;
-        const invariants::CheckReport r = invariants::check_mesh(mesh.raw_view(), o);
-        if (!r.ok()) {
-          stop(op, 1, "check failed: " + violations(r));
-          return result;
-        }
-        break;
-      }
-      case OpKind::kExpectHash: {
-        const std::string h = hash_to_hex(canonical_hash(mesh));
-        if (h != op.text) {
-          stop(op, 1, "expected hash " + op.text + ", got " + h);
-          return result;
-        }
-        break;
-      }
-      case OpKind::kExpectTets:
-        if (mesh.num_tets() != op.count) {
-          stop(op, 1, "expected " + std::to_string(op.count) + " tets, got " + std::to_string(mesh.num_tets()));
-          return result;
-        }
-        break;
-      case OpKind::kExpectComponents: {
-        const std::uint64_t pieces = face_connected_pieces(mesh).count;
-        if (pieces != op.count) {
-          stop(op, 1, "expected " + std::to_string(op.count) + " connected pieces, got " + std::to_string(pieces));
-          return result;
-        }
-        break;
-      }
-      case OpKind::kExpectMinQuality: {
-        // The checker's measure of what the cuts left created, not the engine's own account.
-        const double worst = result.created_quality.tets == 0 ? 1.0 : result.created_quality.min_radius_ratio;
-        if (!(worst >= op.bound)) {
-          stop(op, 1, "expected every created tet to have radius ratio >= " + std::to_string(op.bound) + ", the worst has " +
-                          std::to_string(worst));
-          return result;
-        }
-        break;
-      }
-      case OpKind::kExpectUnresolved:
-        if (result.unresolved != op.count) {
-          stop(op, 1, "expected " + std::to_string(op.count) + " unresolved, got " + std::to_string(result.unresolved));
-          return result;
-        }
-        break;
-    }
-  }
-  if (options.check == CheckMode::kEnd && cutter) {
-    const invariants::CheckReport r = invariants::check_mesh(mesh.raw_view());
-    if (!r.ok()) {
-      result.ok = false;
-      result.exit_code = 1;
-      result.reason = "invariant violated at the end: " + violations(r);
-      result.error = scenario.name + ": " + result.reason;
-    }
-  }
-  if (cutter) result.removal += cutter->removal_report();
-  result.hash = hash_to_hex(canonical_hash(mesh));
-  result.tets = mesh.num_tets();
-  keep_labels();
-  if (mesh_out) *mesh_out = std::move(mesh);
-  return result;
+  const Scenario& scenario_;
+  const RunOptions& options_;
+  TetMesh* mesh_out_;
+  RunResult result_;
+  TetMesh mesh_;
+  std::optional<Cutter> cutter_;
+  std::optional<invariants::LocalChecker> local_;
+  // The tets' labels, when the mesh file has them: each cut's change log carries them on.
+  // (A plain member and a flag: GCC 12 sees an optional's vectors as maybe uninitialized.)
+  mechanics::TetLabels labels_;
+  bool labelled_ = false;
+  // A file whose tets all have one label (a Gmsh file's single volume, as every bundled mesh):
+  // every tet a cut makes has it too, so nothing is tracked and the cuts run as without labels
+  // (a cut that fills a caller's log costs about 1 us more on the bundled resection).
+  std::optional<std::uint32_t> uniform_label_;
+  ChangeLog log_;
+  std::vector<std::uint32_t> spelt_out_;
+  CutParams params_;
+  // The labels whose tets the cutter must leave, and the tets that have one now (by the labels
+  // the change logs carry): set on the cutter whenever it is made anew or the labels change.
+  std::vector<std::uint32_t> uncuttable_labels_;
+  std::vector<TetId> uncuttable_tets_;
+};
+
+}  // namespace
+
+RunResult run(const Scenario& scenario, const RunOptions& options, TetMesh* mesh_out) {
+  return Run(scenario, options, mesh_out).run();
 }
 
 }  // namespace tetcut::scenario

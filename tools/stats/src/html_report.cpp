@@ -102,7 +102,7 @@ std::string table2_html(const std::vector<MeshStats>& meshes, const char* id) {
   return h;
 }
 
-// Issue 32 item 7: the configurations of the edge singularities 3.5 searched.
+// The configurations of the edge singularities 3.5 searched.
 std::string edge_configurations_html(const std::vector<MeshStats>& meshes, const char* id) {
   std::vector<std::pair<std::uint64_t, int>> rows;
   for (int c = 0; c < EdgeSearchTally::kConfigurations; ++c) {

@@ -109,7 +109,7 @@ QualityRow quality_row(const PaperMesh& mesh, const char* strategy, const Cauter
   row.mesh = mesh;
   row.strategy = strategy;
   row.input_worst_radius_ratio = with.quality_before.min_radius_ratio;
-  // Issue 29's goal: min(0.1, the input's worst), half that for basic.
+  // The pass's goal: min(0.1, the input's worst), half that for basic.
   row.goal = std::min(0.1, row.input_worst_radius_ratio) * (with.strategy == RemovalStrategy::kBasic ? 0.5 : 1.0);
   row.created = with.result.created_quality;
   row.created_without_improvement = without.result.created_quality;

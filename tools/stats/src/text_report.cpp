@@ -157,7 +157,7 @@ std::string tables_1_and_2(const std::vector<MeshStats>& meshes, const std::stri
   return out;
 }
 
-// Issue 32 item 7: the configurations of the edge singularities 3.5 searched, one row per
+// The configurations of the edge singularities 3.5 searched, one row per
 // configuration met, most frequent first, per mesh and in all.
 std::string edge_configurations(const std::vector<MeshStats>& meshes, const std::string& order) {
   std::vector<std::pair<std::uint64_t, int>> rows;  // (total, configuration)

@@ -211,6 +211,7 @@ class LocalChecker {
 
  private:
   struct Scratch;  // per-operation scratch (vertex link workspace), reused: no steady allocation
+  struct Operation;  // one after_operation() call, step by step (local_checker.cpp)
 
   std::vector<std::array<std::uint32_t, 4>> known_tets_;       // the checker's copy of each tet
   std::vector<double> known_volume_;                          // its signed volume when created

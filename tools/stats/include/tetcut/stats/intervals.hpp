@@ -1,4 +1,4 @@
-// 95 % intervals for the cells of Tables 1 and 2 over a mesh's seeded sweeps (issue 32 item 6).
+// 95 % intervals for the cells of Tables 1 and 2 over a mesh's seeded sweeps.
 //
 // Rates (% removable, % vertex, % unresolved, ...) pool the events of every sweep and take the
 // Wilson score interval of the pooled count: unlike the normal (Wald) interval it stays inside

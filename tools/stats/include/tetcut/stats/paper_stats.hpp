@@ -8,7 +8,7 @@
 // comparison on one of those scenarios: basic
 // (3.4), neighbours (3.5) and combined (3.7), with templates and with sequential bisection, each
 // with and without the improvement pass. The quality of the tets the cuts created, per scenario
-// and strategy, with and without the pass (issue 29). And,
+// and strategy, with and without the pass. And,
 // for the pictures, the resection of the bundled liver (corpus/scenarios/liver-resection.scn).
 //
 // Everything but the per-cut times is deterministic: same corpus, same figures, same bits.
@@ -39,7 +39,7 @@ struct PaperMesh {
 // The five, in the paper's order.
 const std::vector<PaperMesh>& paper_meshes();
 
-// The offset of sweep k of a mesh's scenario (issue 32 item 6): sweep 0 is the scenario as
+// The offset of sweep k of a mesh's scenario: sweep 0 is the scenario as
 // written; sweep k >= 1 draws three numbers from std::mt19937_64 seeded with k (the standard
 // fixes its output), each mapped to u in [0, 1) by its top 53 bits, and is jitter * (2u - 1)
 // componentwise. The same k gives the same offset (relative to the jitter) on every mesh.
@@ -90,7 +90,7 @@ struct StrategyRow {
   std::string error;                    // why the run stopped early
 };
 
-// Issue 29's figures: one paper scenario with one strategy, run with the improvement pass and
+// The pass's figures: one paper scenario with one strategy, run with the improvement pass and
 // without it. The goal is the worst created radius ratio at least min(0.1, the input's worst)
 // (half that for basic, which may make small tets but not flat ones).
 struct QualityRow {

@@ -45,7 +45,7 @@ struct Table2Row {
 Table1Row table1_row(const RemovalReport& report);
 Table2Row table2_row(const RemovalReport& report);
 
-// One cell of Tables 1 and 2 over a mesh's sweeps (issue 32 item 6): the pooled estimate (the
+// One cell of Tables 1 and 2 over a mesh's sweeps: the pooled estimate (the
 // same figure as the row's), its 95 % interval in the same unit, and the raw counts it is made
 // of: events of trials for a rate (Wilson interval, x 100), tets of sets for a mean size
 // (bootstrap over the sweeps). intervals.hpp says why each.

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "checked.hpp"
-#include "core/boundary_tet_picker.hpp"
+#include "tetcut/boundary_tet_picker.hpp"
 #include "remove/removal.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/invariants/check.hpp"

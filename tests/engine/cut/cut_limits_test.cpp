@@ -1,4 +1,4 @@
-// Issue 16: no parameter makes a cut hang. One test per row of the issue's table, on the bundled
+// No parameter makes a cut hang. One test per kind of extreme parameter, on the bundled
 // liver, one cut at 95,100,100: the cut finishes, or it is refused up front with a message that
 // names the parameter and leaves the mesh bit-identical. How fast each row runs is the
 // benchmark's business (bench/cut_limits_bench.cpp, gated by ci/bench), not a test's.

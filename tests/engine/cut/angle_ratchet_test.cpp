@@ -13,7 +13,7 @@
 #include "checked.hpp"
 #include "core/quality.hpp"
 #include "core/random.hpp"
-#include "improve_test_support.hpp"
+#include "improve/improve_test_support.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/generators/shapes.hpp"

@@ -129,7 +129,7 @@ TEST(Refine, SmallerPSplitsMoreEdges) {
   EXPECT_GT(tight.tets_created, loose.tets_created);
 }
 
-// Issue 16: the budget is net. A loop needing several rounds makes children that it splits
+// The budget is net. A loop needing several rounds makes children that it splits
 // again; counting them twice would refuse a loop whose result fits.
 TEST(Refine, ABudgetEqualToTheNetResultIsNeverRefusedAndOneLessIs) {
   auto run = [](std::uint32_t budget, RefineReport& report) {

@@ -24,6 +24,7 @@
 #include "core/tool_ball.hpp"
 #include "refine/refine.hpp"
 #include "test_meshes.hpp"
+#include "tetcut/bounding_box.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/generators/shapes.hpp"
 #include "tetcut/detail/local_tables.hpp"
@@ -112,21 +113,6 @@ std::uint32_t any_left(const TetMesh& mesh, const Ball& tool, double d_ref) {
   return n;
 }
 
-struct Box {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-};
-
-Box bounds(const TetMesh& mesh) {
-  Box b;
-  for (std::uint32_t i = 0; i < mesh.vertex_capacity(); ++i) {
-    if (!mesh.is_live(VertId{i})) continue;
-    const Vec3& p = mesh.position(VertId{i});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
-}
-
 // Basic (3.4) splits around every singularity into slivers the improvement pass cannot always
 // lift to the floor; such a cut is refused (the mesh as it was), which only basic may be.
 bool refused_for_the_floor(const CutReport& report, RemovalStrategy strategy) {
@@ -147,7 +133,7 @@ TEST_P(CutLeavesNothing, EverySelectedTetIsRemovedOrCounted) {
   ReadResult read = read_mesh(path);
   ASSERT_TRUE(read.mesh.has_value()) << path;
   TetMesh mesh = build_or_fail(*read.mesh);
-  const Box box = bounds(mesh);
+  const BoundingBox box = bounding_box(mesh);
   const Vec3 size = box.hi - box.lo;
   // A tool a twelfth of the mesh's width, sweeping along x through the middle, into the surface
   // from above: cuts that start at the surface and go deeper on the second pass.
@@ -187,7 +173,7 @@ TEST_P(CutLeavesNothing, EverySelectedTetIsRemovedOrCounted) {
     EXPECT_EQ(unresolved, 0);
   }
   // Below the budget, a strategy with the fallback leaves a tet only when the splitter refused
-  // the fallback's split; each such refusal is counted (issue 32 item 8).
+  // the fallback's split; each such refusal is counted.
   if (s != RemovalStrategy::kNeighbours) {
     EXPECT_GE(cutter.removal_report().fallback_refused, cutter.removal_report().unresolved);
   }
@@ -206,9 +192,8 @@ INSTANTIATE_TEST_SUITE_P(BundledMeshes, CutLeavesNothing, ::testing::ValuesIn(ca
   return test_name_of_mesh(info.param.mesh) + "_" + to_string(info.param.strategy);
 });
 
-// Issue 32 item 9: on a TetGen cylinder, random sweeps met cuts whose 3.7 split unselected
-// neighbours and left pieces of them in the tool while reporting nothing unresolved. Now each
-// such piece is requested once and what stays is counted: nothing is left in the tool beyond
+// On a TetGen cylinder, random sweeps meet cuts whose 3.7 split cuts unselected neighbours and
+// leaves pieces of them in the tool. Each such piece is requested and what stays is counted: nothing is left in the tool beyond
 // what the report counts, and such pieces did occur (the case is exercised, not assumed).
 TEST(CutLeavesNothing, PiecesOfKeptTetsInTheToolAreRemovedOrCounted) {
   generators::CylinderOptions shape;
@@ -217,7 +202,7 @@ TEST(CutLeavesNothing, PiecesOfKeptTetsInTheToolAreRemovedOrCounted) {
   int pieces = 0, cuts = 0, left = 0;
   for (RemovalStrategy strategy : {RemovalStrategy::kCombined, RemovalStrategy::kBasic}) {
     TetMesh mesh = build_or_fail(*gen.mesh);
-    const Box box = bounds(mesh);
+    const BoundingBox box = bounding_box(mesh);
     const Vec3 size = box.hi - box.lo;
     CutParams params;
     params.strategy = strategy;

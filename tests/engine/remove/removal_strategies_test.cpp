@@ -42,7 +42,7 @@ TetMesh mesh_with_singularity(SingularityKind kind) {
   return mesh;
 }
 
-// Issue 32 item 7: every distinct edge singularity 3.5 searched has one configuration in the
+// Every distinct edge singularity 3.5 searched has one configuration in the
 // report (the neighbours and combined strategies; basic and wide do not run 3.5), and those
 // with a removable candidate are the ones the neighbours resolved.
 void expect_edge_search_logged(RemovalStrategy strategy, const RemovalReport& report) {

@@ -74,7 +74,7 @@ std::string configuration(int mask) {
   }
 }
 
-// Issue 4: every subset of the 6 edges under every ordering of the vertex ids gives a valid
+// Every subset of the 6 edges under every ordering of the vertex ids gives a valid
 // mesh with the configuration's tet count and the parent's volume, under both face rules.
 TEST(EdgeSplit, EverySubsetUnderEveryVertexOrderIsValidAndKeepsVolume) {
   std::map<std::string, std::set<std::uint32_t>> counts;
@@ -433,7 +433,7 @@ TEST(EdgeSplit, MovedSplitPointsSaveSliversAndLeaveEveryOtherSplitAlone) {
   EXPECT_GE(4 * saved, 3 * refused);
 }
 
-// Issue 4's table: the worst radius ratio of the children relative to their parent's, for each
+// The quality table: the worst radius ratio of the children relative to their parent's, for each
 // configuration, templates against bisection, over all vertex orders of a regular tet.
 TEST(EdgeSplit, QualityTableTemplatesAgainstBisection) {
   const double s = 1.0 / std::sqrt(2.0);

@@ -7,6 +7,7 @@
 #include "change_log_check.hpp"
 #include "checked.hpp"
 #include "test_meshes.hpp"
+#include "tetcut/bounding_box.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/cut.hpp"
 #include "tetcut/io.hpp"
@@ -23,38 +24,6 @@ TetMesh load_corpus(const std::string& name) {
   return testing::build_or_fail(*read.mesh);
 }
 
-struct Box {
-  Vec3 lo, hi;
-};
-Box bounds(const TetMesh& mesh) {
-  Box b{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (!mesh.is_live(VertId{v})) continue;
-    const Vec3 p = mesh.position(VertId{v});
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
-}
-
-// A sweep along the longest axis of the bounding box, through its middle, as the paper's lancet.
-std::vector<Vec3> sweep(const Box& b, int cuts) {
-  std::vector<Vec3> out;
-  const Vec3 size = b.hi - b.lo;
-  const Vec3 mid = 0.5 * (b.lo + b.hi);
-  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
-  for (int i = 0; i < cuts; ++i) {
-    Vec3 p = mid;
-    const double s = 0.1 + 0.8 * i / (cuts - 1);
-    (axis == 0 ? p.x : axis == 1 ? p.y : p.z) = (axis == 0 ? b.lo.x : axis == 1 ? b.lo.y : b.lo.z) +
-                                                s * (axis == 0 ? size.x : axis == 1 ? size.y : size.z);
-    out.push_back(p);
-  }
-  return out;
-}
-
-double diagonal(const Box& b) { return norm(b.hi - b.lo); }
-
 // The removal requests a fresh Cutter makes on `base` along `centres`.
 std::uint64_t removal_requests_of_fresh_sweep(const TetMesh& base, const std::vector<Vec3>& centres, double diameter) {
   TetMesh mesh = base;
@@ -70,11 +39,11 @@ TEST_P(CorpusSweep, EveryCutKeepsTheMeshValidAndRemovesEverythingRequested) {
   // A channel to follow: the change log's vertex origins must reproduce it (paper 3.2).
   const auto tag = *mesh.attributes().add_channel("tag", 1);
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = std::sin(v);
-  const Box box = bounds(mesh);
-  Cutter cutter(mesh, {.tool_diameter = diagonal(box) / 25});
+  const BoundingBox box = bounding_box(mesh);
+  Cutter cutter(mesh, {.tool_diameter = box.diagonal() / 25});
   invariants::LocalChecker local(mesh.raw_view());
   std::uint32_t removed = 0;
-  for (const Vec3& centre : sweep(box, 12)) {
+  for (const Vec3& centre : testing::lancet_sweep(box, 12)) {
     const TetMesh before = mesh;
     ChangeLog log;
     const CutReport r = cutter.cut(centre, &log);
@@ -96,17 +65,12 @@ TEST_P(CorpusSweep, EveryCutKeepsTheMeshValidAndRemovesEverythingRequested) {
 
 INSTANTIATE_TEST_SUITE_P(Bundled, CorpusSweep,
                          ::testing::Values("cylinder.msh", "sheet.msh", "liver-coarse.msh", "liver-refined.msh", "liver.msh"),
-                         [](const auto& info) {
-                           std::string n = info.param.substr(0, info.param.find('.'));
-                           for (char& c : n)
-                             if (c == '-') c = '_';
-                           return n;
-                         });
+                         [](const auto& info) { return testing::test_name_of_mesh(info.param); });
 
 // Every strategy, tools of 0.6 and 1.5 mean edges in turn (the small one refines and its new
 // vertices are then smoothed, the large one removes whole tets): each created vertex's origin in
 // the log reproduces its position and its attributes, as a consumer interpolating its own arrays
-// needs (a vertex moved after the origin was recorded was found this way, issue 30).
+// needs (a vertex moved after the origin was recorded was found this way).
 class StrategySweep : public ::testing::TestWithParam<std::tuple<std::string, RemovalStrategy>> {};
 
 TEST_P(StrategySweep, TheLogsVertexOriginsReproduceTheirPositions) {
@@ -114,11 +78,11 @@ TEST_P(StrategySweep, TheLogsVertexOriginsReproduceTheirPositions) {
   TetMesh mesh = load_corpus(file);
   const auto tag = *mesh.attributes().add_channel("tag", 1);
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = std::sin(v);
-  const Box box = bounds(mesh);
+  const BoundingBox box = bounding_box(mesh);
   const double edge = mesh.mean_edge_length();
   Cutter cutter(mesh, {.tool_diameter = edge, .strategy = strategy});
   int index = 0;
-  for (const Vec3& centre : sweep(box, 6)) {
+  for (const Vec3& centre : testing::lancet_sweep(box, 6)) {
     CutParams params = cutter.params();
     params.tool_diameter = (index++ % 2 == 0 ? 0.6 : 1.5) * edge;
     ASSERT_FALSE(cutter.set_params(params));
@@ -135,11 +99,8 @@ INSTANTIATE_TEST_SUITE_P(Bundled, StrategySweep,
                                             ::testing::Values(RemovalStrategy::kBasic, RemovalStrategy::kNeighbours,
                                                               RemovalStrategy::kCombined, RemovalStrategy::kWide)),
                          [](const auto& info) {
-                           std::string n = std::get<0>(info.param);
-                           n = n.substr(0, n.find('.'));
-                           for (char& c : n)
-                             if (c == '-') c = '_';
-                           return n + "_" + to_string(std::get<1>(info.param));
+                           return testing::test_name_of_mesh(std::get<0>(info.param)) + "_" +
+                                  to_string(std::get<1>(info.param));
                          });
 
 TEST(Cut, AToolOutsideTheMeshChangesNothing) {
@@ -192,8 +153,8 @@ TEST(Cut, InvalidParametersAreRefusedWithAMessage) {
 
 TEST(Cut, AFailedCutLeavesTheMeshBitIdentical) {
   TetMesh mesh = load_corpus("liver-coarse.msh");
-  const Box box = bounds(mesh);
-  Cutter cutter(mesh, {.tool_diameter = diagonal(box) / 30});
+  const BoundingBox box = bounding_box(mesh);
+  Cutter cutter(mesh, {.tool_diameter = box.diagonal() / 30});
   // A first cut so that the free lists are in use.
   ASSERT_TRUE(cutter.cut(0.5 * (box.lo + box.hi)).ok);
   const TetMesh before = mesh;
@@ -226,9 +187,9 @@ TEST(Cut, AFailedCutLeavesTheMeshBitIdentical) {
 TEST(Cut, TheSameSweepGivesTheSameHash) {
   auto run = [] {
     TetMesh mesh = load_corpus("liver-coarse.msh");
-    const Box box = bounds(mesh);
-    Cutter cutter(mesh, {.tool_diameter = diagonal(box) / 25});
-    for (const Vec3& c : sweep(box, 8)) cutter.cut(c);
+    const BoundingBox box = bounding_box(mesh);
+    Cutter cutter(mesh, {.tool_diameter = box.diagonal() / 25});
+    for (const Vec3& c : testing::lancet_sweep(box, 8)) cutter.cut(c);
     return canonical_hash(mesh);
   };
   EXPECT_EQ(run(), run());
@@ -241,8 +202,8 @@ TEST(Cut, AResetCutterCutsAsAFreshOne) {
   const TetMesh liver = load_corpus("liver-coarse.msh");
   const TetMesh cylinder = load_corpus("cylinder.msh");
   auto sweep_of = [](const TetMesh& m) {
-    const Box box = bounds(m);
-    return std::make_pair(sweep(box, 6), diagonal(box) / 20);
+    const BoundingBox box = bounding_box(m);
+    return std::make_pair(testing::lancet_sweep(box, 6), box.diagonal() / 20);
   };
   auto fresh = [&](const TetMesh& base) {
     TetMesh mesh = base;

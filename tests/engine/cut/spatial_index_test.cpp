@@ -92,8 +92,8 @@ TEST(SpatialIndex, ABallOutsideTheMeshFindsNothing) {
   EXPECT_EQ(got.size(), mesh.num_tets()) << "a ball swallowing the mesh finds every tet";
 }
 
-// Issue 16: a ball query visited every cell of the ball's box, so a 1e6 tool on the liver ran
-// for minutes. Now a ball larger than the mesh costs the same as one just engulfing it.
+// A query walks the cells the index holds, not every cell of the ball's box: a ball larger than
+// the mesh (a 1e6 tool on the liver) costs the same as one just engulfing it.
 TEST(SpatialIndex, AQueryCostsWhatTheIndexHoldsNotWhatTheBallSpans) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(6, 5, 4, {0, 0, 0}, {6, 5, 4}));
   SpatialIndex index(1.0);

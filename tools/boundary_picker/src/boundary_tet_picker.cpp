@@ -1,4 +1,4 @@
-#include "core/boundary_tet_picker.hpp"
+#include "tetcut/boundary_tet_picker.hpp"
 
 namespace tetcut {
 
