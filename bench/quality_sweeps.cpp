@@ -3,6 +3,7 @@
 //
 //   tetcut_quality_sweeps [--sweeps N] [--seed S] [--only MESH] [--tool TOOL]
 //                         [--refinement auto|paper|graded] [--min-dihedral DEG] [--json FILE]
+//                         [--gate FILE]
 //
 // The meshes come from other meshers at other densities: TetGen (through tools/generators) fills
 // a box at three densities, one without TetGen's quality bound (its plain Delaunay
@@ -290,6 +291,83 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
   return std::rename(tmp.c_str(), path.c_str()) == 0;
 }
 
+// The tool-size gate (--gate): a TetGen box, the TetGen sphere and the bundled CGAL liver, cut
+// with the five tools scaled to each mesh's median edge, from a cautery finer than a tenth of the
+// edge to one three edges wide. Its figures pool the three meshes per tool.
+constexpr std::array<const char*, 3> kGatedMeshes = {"box-fine", "sphere", "liver-16k"};
+constexpr std::array<const char*, 5> kGatedTools = {"0.05x", "0.1x", "0.3x", "1x", "3x"};
+
+bool gated(const std::string& name, const auto& names) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// One Google Benchmark entry per tool size, named tool_sizes/TOOL, for ci/bench to merge and
+// bench/budget_gate.py to read (bench/budgets.json): the tets made per cut and the cut times (p99,
+// max) over the three meshes' cuts pooled, the worst created tet, and the counts that must stay 0.
+bool write_gate(const std::string& path, const std::vector<Row>& rows, int sweeps, std::uint64_t seed) {
+  nlohmann::json benchmarks = nlohmann::json::array();
+  for (const char* tool : kGatedTools) {
+    std::vector<double> made, cut_us;
+    std::uint64_t cuts = 0, refused = 0, violations = 0, left = 0, beyond = 0, lowered = 0, max_made = 0;
+    inv::QualityStats created;
+    for (const Row& r : rows) {
+      if (r.tool != tool) continue;
+      made.insert(made.end(), r.made.begin(), r.made.end());
+      cut_us.insert(cut_us.end(), r.cut_us.begin(), r.cut_us.end());
+      cuts += r.cuts;
+      refused += r.refused;
+      violations += r.violations;
+      left += r.left;
+      beyond += r.beyond_reach;
+      lowered += r.theta_lowered;
+      max_made = std::max(max_made, r.max_created);
+      inv::pool(created, r.created);
+    }
+    const std::string name = std::string("tool_sizes/") + tool;
+    nlohmann::json entry = {{"name", name},
+                            {"run_name", name},
+                            {"run_type", "iteration"},
+                            {"cuts", cuts},
+                            {"refused", refused},
+                            {"checker_violations", violations},
+                            {"cuts_leaving_tissue", left},
+                            {"tets_removed_beyond_reach", beyond},
+                            {"cuts_lowering_theta", lowered},
+                            {"made_max", max_made}};
+    // No cut, no percentile and no worst tet: those figures are left out, and the gate says they
+    // are missing.
+    if (!made.empty()) entry["made_p99"] = tetcut::percentile(made, 0.99);
+    if (!cut_us.empty()) {
+      entry["p99_us"] = tetcut::percentile(cut_us, 0.99);
+      entry["max_us"] = max_of(cut_us);
+    }
+    if (created.tets) {
+      entry["worst_created_radius_ratio"] = created.min_radius_ratio;
+      entry["worst_created_min_dihedral_deg"] = created.min_dihedral_deg;
+    }
+    benchmarks.push_back(std::move(entry));
+  }
+  // And tool_sizes/all: the counts that must stay 0, summed over every tool.
+  nlohmann::json all = {{"name", "tool_sizes/all"}, {"run_name", "tool_sizes/all"}, {"run_type", "iteration"}};
+  for (const char* count :
+       {"cuts", "refused", "checker_violations", "cuts_leaving_tissue", "tets_removed_beyond_reach", "cuts_lowering_theta"}) {
+    std::uint64_t sum = 0;
+    for (const nlohmann::json& entry : benchmarks) sum += entry[count].get<std::uint64_t>();
+    all[count] = sum;
+  }
+  benchmarks.push_back(std::move(all));
+  const nlohmann::json out = {
+      {"context", {{"source", "tetcut_quality_sweeps --gate"}, {"sweeps_per_tool", sweeps}, {"seed", seed}}},
+      {"benchmarks", std::move(benchmarks)}};
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream file(tmp);
+    file << out.dump(1) << '\n';
+    if (!file) return false;
+  }
+  return std::rename(tmp.c_str(), path.c_str()) == 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -306,6 +384,10 @@ int main(int argc, char** argv) {
   app.add_option("--min-dihedral", min_dihedral, "the dihedral floor theta, degrees (CutParams::min_dihedral_deg)")
       ->check(CLI::Range(0.0, 70.0));
   app.add_option("--json", json, "also write the rows to FILE");
+  std::string gate;
+  app.add_option("--gate", gate,
+                 "only the tool-size gate's meshes (box-fine, sphere, liver-16k) and tools (0.05x to 3x), and write "
+                 "their figures per tool, pooled over the meshes, to FILE (Google Benchmark JSON for ci/bench)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -321,6 +403,7 @@ int main(int argc, char** argv) {
   bool known = only.empty();
   for (const SourceMesh& source : source_meshes()) {
     if (!only.empty() && source.name != only) continue;
+    if (!gate.empty() && !gated(source.name, kGatedMeshes)) continue;
     known = true;
     TetMesh base;
     if (source.make) {
@@ -346,7 +429,8 @@ int main(int argc, char** argv) {
                                      {"0.05x", 0.05 * median}, {"0.1x", 0.1 * median}, {"0.3x", 0.3 * median},
                                      {"1x", median},           {"3x", 3 * median}};
     for (const Tool& tool : tools)
-      if (only_tool.empty() || tool.name == only_tool) rows.push_back(sweep(source, base, tool, sweeps, seed, *rule, min_dihedral));
+      if ((only_tool.empty() || tool.name == only_tool) && (gate.empty() || gated(tool.name, kGatedTools)))
+        rows.push_back(sweep(source, base, tool, sweeps, seed, *rule, min_dihedral));
   }
   if (!known) {
     std::fprintf(stderr, "tetcut_quality_sweeps: --only %s: no such mesh\n", only.c_str());
@@ -359,6 +443,10 @@ int main(int argc, char** argv) {
   print(rows);
   if (!json.empty() && !write_json(json, rows, sweeps, seed, *rule, min_dihedral)) {
     std::fprintf(stderr, "tetcut_quality_sweeps: cannot write %s\n", json.c_str());
+    return 2;
+  }
+  if (!gate.empty() && !write_gate(gate, rows, sweeps, seed)) {
+    std::fprintf(stderr, "tetcut_quality_sweeps: cannot write %s\n", gate.c_str());
     return 2;
   }
   const bool clean = std::all_of(rows.begin(), rows.end(), [](const Row& r) { return r.violations == 0 && r.goal_met(); });
