@@ -35,10 +35,11 @@ void CheckedMesh::begin(std::string name) {
   arguments_.clear();
 }
 
-void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change, inv::QualityRule rule) {
+void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change, inv::QualityRule rule,
+                      const inv::ToolRule* tool, std::optional<double> min_dihedral_deg) {
   created_.clear();
   for (const CreatedTet& c : log.created) created_.push_back(c.tet);
-  end(log.removed, created_, volume_change, rule);
+  end(log.removed, created_, volume_change, rule, tool, min_dihedral_deg);
 }
 
 void CheckedMesh::end(std::span<const TetId> removed, std::span<const TetId> created,

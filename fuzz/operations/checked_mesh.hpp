@@ -46,10 +46,11 @@ class CheckedMesh {
   // operation's expected change of the total volume (0 for splits; nullopt: not checked).
   // `rule`: a Cutter transaction is judged by I7's no-degradation rule; a raw operation (a split,
   // a refinement loop) only reports quality (invariants/check.hpp, QualityRule).
-  void end(const ChangeLog& log, std::optional<double> volume_change,
-           invariants::QualityRule rule = invariants::QualityRule::kNoDegradation);
   // `tool`: the operation was a cut with this tool, held to the tissue rule (I10);
   // `min_dihedral_deg`: the theta a Cutter transaction held (Cutter::last_min_dihedral_held()).
+  void end(const ChangeLog& log, std::optional<double> volume_change,
+           invariants::QualityRule rule = invariants::QualityRule::kNoDegradation,
+           const invariants::ToolRule* tool = nullptr, std::optional<double> min_dihedral_deg = std::nullopt);
   void end(std::span<const TetId> removed, std::span<const TetId> created, std::optional<double> volume_change,
            invariants::QualityRule rule = invariants::QualityRule::kNoDegradation,
            const invariants::ToolRule* tool = nullptr, std::optional<double> min_dihedral_deg = std::nullopt);

@@ -8,6 +8,7 @@
 // Input: version byte (kInputVersion, mesh_edits.hpp), then (FuzzedDataProvider) one of the small
 // fuzz meshes (corpus/fuzz/meshes), the removal strategy, then up to kMaxCuts cuts, each a centre
 // in the bounding box grown by 10 % and a tool diameter of 0.3 to 2 mean edges.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -26,6 +27,7 @@
 namespace {
 
 using namespace tetcut;
+namespace inv = tetcut::invariants;
 
 constexpr std::size_t kMaxCuts = 12;
 
@@ -68,12 +70,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       checked.describe(fuzz::to_string(centre) + " diameter " + std::to_string(params.tool_diameter));
     check.before(mesh);
     ChangeLog log;
-    cutter.cut(centre, &log);
+    const CutReport report = cutter.cut(centre, &log);
     double change = 0;
     for (TetId t : log.removed) change -= volume[t.value];
     volume.resize(mesh.tet_capacity(), 0.0);
     for (const CreatedTet& c : log.created) change += volume[c.tet.value] = mesh.volume(c.tet);
-    checked.end(log, change);
+    // An ok cut is held to the tissue rule with its tool, and every cut to the theta it held.
+    const inv::ToolRule tool{.centre = centre, .radius = params.tool_diameter / 2, .d_ref = params.d_ref(),
+                             .left = cutter.last_left_in_tool()};
+    checked.end(log, change, inv::QualityRule::kNoDegradation, report.ok ? &tool : nullptr,
+                std::min(params.min_dihedral_deg, cutter.last_min_dihedral_held()));
     if (const auto problem = check.after(mesh, log))
       fuzz::fail("consumer-differential", checked.operation_index(), checked.operation_name(), *problem);
   }
