@@ -52,6 +52,7 @@ LongestEdgeBisection::RankedEdge LongestEdgeBisection::terminal_edge(const TetMe
     for (TetId u : shell_)
       if (const RankedEdge candidate = longest_edge(mesh, u); longer(candidate, next)) next = candidate;
     if (next.lo == edge.lo && next.hi == edge.hi) return edge;  // the longest edge of every tet around it
+    if (edge.length2 >= kNearlyLongest * kNearlyLongest * next.length2) return edge;  // nearly so
     if (step + 1 == kMaxPathSteps) {
       cut_short = true;
       return edge;
