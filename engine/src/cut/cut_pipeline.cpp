@@ -72,7 +72,7 @@ void Cutter::Pipeline::prepare() {
   using detail::reserve_touched;
   // Headroom of half the mesh again: cuts grow it (refinement creates more than removal takes)
   // and a reallocation of a million-tet array in the middle of a cut is a latency spike.
-  const std::uint32_t tets = mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096;
+  const std::uint32_t tets = room_for_tets();
   const std::uint32_t vertices = mesh_.vertex_capacity() + mesh_.vertex_capacity() / 2 + 1024;
   mesh_.reserve(tets, vertices);
   refiner_.reserve(tets);
@@ -81,6 +81,7 @@ void Cutter::Pipeline::prepare() {
   uncuttable_.reserve(tets);
   selection_.reserve(tets);
   removal_loop_.reserve(tets);
+  if (params_.order == RemovalOrder::kRevisit) reserve_revisit();
   audit_.reserve(tets);
   transaction_.reserve();
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
@@ -114,11 +115,18 @@ std::optional<std::string> Cutter::Pipeline::set_params(const CutParams& params)
   if (auto invalid = validate(params)) return invalid;
   const bool removal_changed = params.strategy != params_.strategy || params.search_depth != params_.search_depth ||
                                params.neighbour_set != params_.neighbour_set;
+  const bool revisit_now = params.order == RemovalOrder::kRevisit && params_.order != RemovalOrder::kRevisit;
   params_ = params;
   invalid_.reset();
   judge_scale();
   if (removal_changed) remover_.set_options(removal_options(params_));
+  if (revisit_now) reserve_revisit();  // between cuts, so that the cuts in that order do not allocate
   return std::nullopt;
+}
+
+void Cutter::Pipeline::reserve_revisit() {
+  removal_loop_.reserve_revisit(room_for_tets());
+  remover_.reserve_search_only(room_for_tets());
 }
 
 std::optional<std::string> Cutter::Pipeline::set_uncuttable(std::span<const TetId> tets) {

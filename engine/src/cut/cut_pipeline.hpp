@@ -30,6 +30,12 @@ class Cutter::Pipeline {
   Pipeline(TetMesh& mesh, const CutParams& params);
 
   void prepare();
+  // The tet ids prepare() makes room for: the mesh's and half as many again.
+  [[nodiscard]] std::uint32_t room_for_tets() const {
+    return mesh_.tet_capacity() + mesh_.tet_capacity() / 2 + 4096;
+  }
+  // The revisit order's marks, for a Cutter that uses it (prepare(), set_params()).
+  void reserve_revisit();
   void reset();
   Renumbering compact();
   std::optional<std::string> set_params(const CutParams& params);

@@ -7,8 +7,6 @@ namespace tetcut::detail {
 void RemovalLoop::reserve(std::uint32_t tets) {
   tried_.reserve(tets);
   queued_.reserve(tets);
-  put_off_.reserve(tets);
-  given_up_.reserve(tets);
   reserve_touched(work_, 16384);
 }
 

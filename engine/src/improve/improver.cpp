@@ -47,7 +47,6 @@ void Improver::reserve(std::uint32_t tets) {
   reserve_touched(bad_, 4096);
   reserve_touched(made_quality_, 4096);
   reserve_touched(ancestors_, 64);
-  host_quality_.reserve(tets);
 }
 
 std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::Savepoint& start) {
@@ -74,16 +73,14 @@ Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
     const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
     if (const DeepestTet deepest = deepest_at_start(mesh, ancestors_, centroid); deepest.found()) host = deepest.tet();
   }
-  Floors h;
-  if (const Floors* known = host_quality_.find(host)) {
-    h = *known;
-  } else {
+  HostShape& slot = host_shapes_[host.value % kHostSlots];
+  if (slot.generation != host_generation_ || slot.host != host.value) {
     // The host as it was: its vertices were there before the transaction and never move.
     const TetMesh::TetVerts v = mesh.tet_at_start(host);
     const TetShape s = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-    h = {s.ratio, s.max_cosine};
-    host_quality_.set(host, h);
+    slot = {host.value, host_generation_, {s.ratio, s.max_cosine}};
   }
+  const Floors& h = slot.shape;
   return {std::min(floor_f_, h.ratio), std::max(cos_theta_, h.cosine)};
 }
 
@@ -129,6 +126,13 @@ void Improver::judge(TetMesh& mesh, ImproveOutcome& out) {
   out.dihedral_floor_deg = degrees_of_cosine(lowest_cosine);
 }
 
+void Improver::forget_host_shapes() {
+  if (++host_generation_ == 0) {  // wrapped: every slot is from an older generation
+    host_shapes_.fill({});
+    host_generation_ = 1;
+  }
+}
+
 void Improver::set_theta(double theta_deg, double floor_f) {
   theta_ = theta_deg;
   floor_f_ = floor_f;
@@ -136,7 +140,7 @@ void Improver::set_theta(double theta_deg, double floor_f) {
   const double sine = std::sin(theta_deg * std::numbers::pi / 180.0);
   t_dihedral_sine_weight = sine > 0.0 ? floor_f / sine : 0.0;
   goal_ = floor_f;  // quality() at F and theta
-  host_quality_.clear();
+  forget_host_shapes();
 }
 
 Refusal Improver::star_rule(TetMesh& mesh, VertId v) {
@@ -298,7 +302,7 @@ void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operation
 
 ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params) {
   ImproveOutcome out;
-  host_quality_.clear();
+  forget_host_shapes();
   tool_ = params.reach;
   uncuttable_ = params.uncuttable;
   veto_ = params.veto;

@@ -174,7 +174,19 @@ class Improver {
   PlanVeto veto_;                               // the run's, if any
   std::vector<TetId> made_, ancestors_, created_;
   std::vector<std::pair<double, TetId>> bad_;  // (quality, tet), worst first
-  StampedMap<TetId, Floors> host_quality_;  // a host's radius ratio and largest dihedral cosine
+  // The hosts' shapes (radius ratio, largest dihedral cosine) met since the last forget: a
+  // direct-mapped memo by host id, since a host's shape at the start never changes within a
+  // transaction. Fixed size, so that the Cutter's memory does not grow with the mesh as a map by
+  // tet id would (24 bytes a tet with the Cutter's room); two hosts in one slot only measure
+  // again.
+  static constexpr std::uint32_t kHostSlots = 1024;
+  struct HostShape {
+    std::uint32_t host = 0, generation = 0;  // generation 0: empty
+    Floors shape;
+  };
+  std::array<HostShape, kHostSlots> host_shapes_{};
+  std::uint32_t host_generation_ = 1;
+  void forget_host_shapes();
 };
 
 }  // namespace tetcut::detail

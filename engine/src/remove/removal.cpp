@@ -153,8 +153,9 @@ void Remover::reserve(std::uint32_t tets, std::uint32_t vertices) {
   ws_->refinement.reserve();
   ws_->fallback.reserve();
   ws_->met_unresolved.reserve(tets);
-  ws_->put_off.reserve(tets);
 }
+
+void Remover::reserve_search_only(std::uint32_t tets) { ws_->put_off.reserve(tets); }
 
 void Remover::set_options(const RemovalOptions& options) {
   options_ = options;

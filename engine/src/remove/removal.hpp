@@ -128,6 +128,9 @@ class Remover {
   [[nodiscard]] const RemovalReport& report() const { return report_; }
   // Sizes all per-tet and per-vertex scratch for meshes up to these capacities (see Cutter).
   void reserve(std::uint32_t tets, std::uint32_t vertices);
+  // The marks of the tets a search-only request put off (RemovalOrder::kRevisit's requests), for
+  // ids up to `tets`: reserved only for a caller that asks such requests (4 bytes a tet of room).
+  void reserve_search_only(std::uint32_t tets);
   void reset_report() { report_ = {}; }
   // The statistics as they were before a transaction the caller rolled back (Cutter).
   void restore_report(const RemovalReport& before) { report_ = before; }
