@@ -268,6 +268,7 @@ py::dict stats_of(const CutterPtr& held) {
   removal["repeated_requests"] = r.repeated_requests;
   removal["removed"] = r.removed;
   removal["unresolved"] = r.unresolved;
+  removal["stopped_by_budget"] = r.stopped_by_budget;
   removal["direct"] = r.direct;
   removal["surface_requested"] = r.surface_requested;  // Table 1's population: a face on the surface
   removal["surface_direct"] = r.surface_direct;
@@ -587,6 +588,9 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
                "Singular requests resolved by the fallback construction (docs/removal-proof.md).");
   report_field(report, "unresolved", &CutReport::unresolved,
                "Requests left in place (the mesh still valid); a tet left twice counts twice.");
+  report_field(report, "stopped_by_budget", &CutReport::stopped_by_budget,
+               "Requests left in place because the cut's tet budget had run out (a kept piece's, in an ok cut), not "
+               "in `unresolved`.");
   report_field(report, "kept_pieces_requested", &CutReport::kept_pieces_requested,
                "Pieces of unselected tets a removal-time split left inside the tool, each requested once; counted in "
                "`requests` too.");

@@ -49,6 +49,7 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"resolved_by_refinement", r.resolved_by_refinement},
               {"resolved_by_fallback", r.resolved_by_fallback},
               {"unresolved", r.unresolved},
+              {"stopped_by_budget", r.stopped_by_budget},
               {"uncuttable_in_tool", r.uncuttable_in_tool},
               {"kept_pieces_requested", r.kept_pieces_requested},
               {"left_in_tool", r.left_in_tool},

@@ -71,6 +71,11 @@ struct RequestCounts {
   // How each request that was not direct ended; unresolved: left in place, a tet left twice
   // counting twice.
   std::uint32_t resolved_by_neighbours = 0, resolved_by_refinement = 0, resolved_by_fallback = 0, unresolved = 0;
+  // Requests left in place because the cut's tet budget (CutParams::max_tets_created) had run
+  // out, not in `unresolved`: the strategy did not fail, the cut stopped it. In a cut that ends
+  // ok only a kept piece's request ends so (its tets are in left_in_tool); any other refuses the
+  // cut.
+  std::uint32_t stopped_by_budget = 0;
   bool operator==(const RequestCounts&) const = default;
 };
 
@@ -79,6 +84,7 @@ struct RemovalReport {
   std::uint64_t repeated_requests = 0;     // requests for a tet already left unresolved
   std::uint64_t removed = 0;               // requested tets that went (by any way)
   std::uint64_t unresolved = 0;
+  std::uint64_t stopped_by_budget = 0;     // distinct tets left only because the budget ran out
   std::uint64_t direct = 0;
   std::uint64_t vertex_singularities = 0;
   std::uint64_t edge_singularities = 0;

@@ -55,7 +55,10 @@ void count_request(RequestCounts& counts, const RemovalResult& result, bool put_
     case RemovalOutcome::kNeighbours: ++counts.resolved_by_neighbours; break;
     case RemovalOutcome::kRefinement: ++counts.resolved_by_refinement; break;
     case RemovalOutcome::kFallback: ++counts.resolved_by_fallback; break;
-    case RemovalOutcome::kUnresolved: counts.unresolved += put_off ? 0 : 1; break;
+    case RemovalOutcome::kUnresolved:
+      if (put_off) break;
+      ++(result.over_budget ? counts.stopped_by_budget : counts.unresolved);
+      break;
   }
 }
 
@@ -113,7 +116,7 @@ void count_request(RemovalReport& report, RequestCounts* counts, const RemovalRe
       ++report.resolved_by_fallback;
       break;
     case RemovalOutcome::kUnresolved:
-      if (!repeat) ++report.unresolved;
+      if (!repeat) ++(result.over_budget ? report.stopped_by_budget : report.unresolved);
       break;
   }
 }

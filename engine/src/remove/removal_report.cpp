@@ -38,6 +38,7 @@ RemovalReport& RemovalReport::operator+=(const RemovalReport& o) {
   repeated_requests += o.repeated_requests;
   removed += o.removed;
   unresolved += o.unresolved;
+  stopped_by_budget += o.stopped_by_budget;
   direct += o.direct;
   vertex_singularities += o.vertex_singularities;
   edge_singularities += o.edge_singularities;
