@@ -260,6 +260,15 @@ class TetMesh {
   // The tets live at begin_transaction() that tet t descends from (t itself if it was live
   // then), appended sorted: what the ChangeLog names as its parents.
   void ancestors_at_start(TetId t, std::vector<TetId>& out);
+  // The index of live tet t's birth in the open transaction (its place in tets_made_since() from
+  // the start), kNoBirth if t was there at begin_transaction(). A birth is unique within the
+  // transaction (a reused id is born again at another index; rolled back births are gone), and so
+  // is its tet's shape: a move is a new birth of every tet around the vertex. O(1).
+  static constexpr std::uint32_t kNoBirth = 0xFFFFFFFFu;
+  [[nodiscard]] std::uint32_t birth_index(TetId t) const {
+    const std::uint32_t* slot = journal_.birth_of.find(t);
+    return slot && *slot < journal_.tet_births.size() && journal_.tet_births[*slot].tet == t ? *slot : kNoBirth;
+  }
   // The vertices tet t had at begin_transaction() (t live then, dead or alive now).
   [[nodiscard]] TetVerts tet_at_start(TetId t);
   // True when the open transaction made t (t live or not).

@@ -63,7 +63,10 @@ std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::S
   return {worst, cosine};
 }
 
-Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
+TetId Improver::host_of(TetMesh& mesh, TetId t) {
+  const std::uint32_t birth = mesh.birth_index(t);
+  MadeHost* memo = birth == TetMesh::kNoBirth ? nullptr : &made_hosts_[birth % kMadeSlots];
+  if (memo && memo->generation == made_generation_ && memo->birth == birth) return memo->host;
   ancestors_.clear();
   mesh.ancestors_at_start(t, ancestors_);
   TetId host = ancestors_.front();
@@ -73,6 +76,15 @@ Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
     const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
     if (const DeepestTet deepest = deepest_at_start(mesh, ancestors_, centroid); deepest.found()) host = deepest.tet();
   }
+  if (memo) {
+    *memo = {birth, made_generation_, host};
+    made_hosts_end_ = std::max(made_hosts_end_, birth + 1);
+  }
+  return host;
+}
+
+Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
+  const TetId host = host_of(mesh, t);
   HostShape& slot = host_shapes_[host.value % kHostSlots];
   if (slot.generation != host_generation_ || slot.host != host.value) {
     // The host as it was: its vertices were there before the transaction and never move.
@@ -124,6 +136,21 @@ void Improver::judge(TetMesh& mesh, ImproveOutcome& out) {
     out.shortfall = {radius_ratio(p0, p1, p2, p3), f.ratio, min_dihedral_angle_deg(p0, p1, p2, p3), degrees_of_cosine(f.cosine)};
   }
   out.dihedral_floor_deg = degrees_of_cosine(lowest_cosine);
+}
+
+void Improver::forget_made_hosts() {
+  made_hosts_end_ = 0;
+  if (++made_generation_ == 0) {
+    made_hosts_.fill({});
+    made_generation_ = 1;
+  }
+}
+
+void Improver::forget_made_hosts_from(std::uint32_t births) {
+  if (made_hosts_end_ <= births) return;  // nothing memoised at or past it
+  for (MadeHost& m : made_hosts_)
+    if (m.birth >= births) m.generation = 0;
+  made_hosts_end_ = births;
 }
 
 void Improver::forget_host_shapes() {
@@ -261,6 +288,7 @@ bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
     }
   }
   mesh.rollback_to(point);
+  forget_made_hosts_from(point.tet_births);  // the births it undid may come back as other tets
   created_.resize(before);
   return false;
 }
@@ -303,6 +331,7 @@ void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operation
 ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params) {
   ImproveOutcome out;
   forget_host_shapes();
+  forget_made_hosts();
   tool_ = params.reach;
   uncuttable_ = params.uncuttable;
   veto_ = params.veto;

@@ -187,6 +187,22 @@ class Improver {
   std::array<HostShape, kHostSlots> host_shapes_{};
   std::uint32_t host_generation_ = 1;
   void forget_host_shapes();
+  // Each made tet's host, by its birth (TetMesh::birth_index: unique in the transaction, and so
+  // is the tet's shape): every round asks again, and finding it walks the tet's lines of
+  // ancestors, which the smoothing's moves (each a new birth of the star) and the flips make long
+  // (one cut spent 1.7 s there). Direct-mapped and fixed, as host_shapes_; the births a rollback
+  // undoes are forgotten, since their indices may come back as other tets.
+  static constexpr std::uint32_t kMadeSlots = 4096;
+  struct MadeHost {
+    std::uint32_t birth = 0, generation = 0;  // generation 0: empty
+    TetId host;
+  };
+  std::array<MadeHost, kMadeSlots> made_hosts_{};
+  std::uint32_t made_generation_ = 1;
+  std::uint32_t made_hosts_end_ = 0;  // past the largest birth index memoised since the last forget
+  void forget_made_hosts();
+  void forget_made_hosts_from(std::uint32_t births);
+  TetId host_of(TetMesh& mesh, TetId t);
 };
 
 }  // namespace tetcut::detail
