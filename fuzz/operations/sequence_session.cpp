@@ -155,6 +155,8 @@ SequenceStart start_sequence(std::string_view target, std::uint8_t version, Fuzz
   const BundledMesh& bundled = sequence_mesh(version, input.ConsumeIntegralInRange<std::size_t>(0, kSequenceMeshCount - 1));
   recorder.add("# tetcut replay --target " + std::string(target) + " (input version " + std::to_string(version) + ")");
   recorder.add("mesh " + bundled.path);
+  // The session's budget (params_with_budget), so that `tetcut run` meets the same refusals.
+  recorder.add("max_tets_created " + std::to_string(SequenceSession::params_with_budget(bundled).max_tets_created));
   return {bundled, SequenceSession::start(bundled, recorder)};
 }
 

@@ -46,9 +46,10 @@ class SequenceSession {
  public:
   // The session of `bundled`, started on a fresh copy of its mesh, recording into `recorder`.
   // The Cutter starts with the default parameters but a per-operation tet budget of the
-  // initial mesh's tets (params_with_budget): an operation over it is rolled back, and written
-  // into the scenario as a comment, so that the scenario (which cannot set the budget) stays
-  // equivalent. The reference is valid until the next start() on the same mesh.
+  // initial mesh's tets (params_with_budget), which the scenario sets on its second line
+  // (max_tets_created): an operation over it is rolled back, and written into the scenario as a
+  // comment, and what the budget stops without a rollback (a kept piece's request) the scenario
+  // meets too. The reference is valid until the next start() on the same mesh.
   static SequenceSession& start(const BundledMesh& bundled, ScenarioRecorder& recorder);
   static CutParams params_with_budget(const BundledMesh& bundled);
   SequenceSession(const SequenceSession&) = delete;

@@ -65,6 +65,7 @@ TEST_F(ReplayMinimize, ReplayPrintsTheInputAsAScenarioAndSaysItPasses) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(r.out.starts_with("# tetcut replay --target cut_sequence (input version 1)\n"
                                 "mesh " + kMeshDir + "/sheet.msh\n"
+                                "max_tets_created 3350\n"  // the target's budget: the mesh's tets
                                 "depth 1\n"
                                 "iterations 1\n"
                                 "sweep 2.19,5.31,-0.44 1.9,5.02,-0.73 0.5\n"
@@ -77,6 +78,7 @@ TEST_F(ReplayMinimize, ReplayPrintsTheInputAsAScenarioAndSaysItPasses) {
   EXPECT_EQ(sweep.exit_code, 0) << sweep.err;
   EXPECT_TRUE(sweep.out.starts_with("# tetcut replay --target cut_sequence (input version 1)\n"
                                     "mesh " + kMeshDir + "/cylinder.msh\n"
+                                    "max_tets_created 3466\n"
                                     "cut -0.719,0.423,2.364\n"
                                     "cut -1.162,-1.181,-0.4\n"
                                     "check full\n"))
@@ -113,7 +115,8 @@ TEST_F(ReplayMinimize, ReplayOfARemovalInputWritesTetsAsPoints) {
   EXPECT_EQ(ops.back(), "check full") << "the final full check";
   std::size_t removes = 0;
   for (const std::string& op : ops) {
-    EXPECT_TRUE(op.starts_with("mesh ") || op.starts_with("remove ") || op.starts_with("strategy ") || op == "check full")
+    EXPECT_TRUE(op.starts_with("mesh ") || op.starts_with("max_tets_created ") || op.starts_with("remove ") ||
+                op.starts_with("strategy ") || op == "check full")
         << op;
     if (op.starts_with("remove ")) {
       ++removes;
@@ -129,10 +132,10 @@ TEST_F(ReplayMinimize, AFailingOperationIsNamedWithItsScenarioLineAndExitsOne) {
   const ProcessResult r = tetcut({"replay", write_bytes("in", kCylinderSweep), "--target", "cut_sequence"});
   ASSERT_TRUE(r.exited) << "signal " << r.signal;
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  EXPECT_NE(r.out.find("# replay: FAILS at operation 2 (cut), scenario line 4: injected violated"),
+  EXPECT_NE(r.out.find("# replay: FAILS at operation 2 (cut), scenario line 5: injected violated"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.err.find("operation 2 (cut), scenario line 4: injected violated"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("operation 2 (cut), scenario line 5: injected violated"), std::string::npos) << r.err;
 }
 
 TEST_F(ReplayMinimize, ReplayRefusesBadUsageAndUnreadableInputWithExitTwo) {

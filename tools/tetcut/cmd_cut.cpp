@@ -27,7 +27,7 @@ struct CutArgs {
   std::optional<double> diameter, step, dref_factor, p;
   opt::Improvement improvement;
   std::optional<Vec3> from, to;
-  std::optional<std::uint64_t> depth;
+  std::optional<std::uint64_t> depth, max_tets_created;
   std::optional<RemovalStrategy> strategy;
   std::optional<RemovalOrder> order;
   std::optional<NeighbourSetChoice> neighbour_set;
@@ -58,6 +58,8 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::number(app, "--dref-factor", a.dref_factor, "D_ref = F x diameter (paper 3.2; default 1.5)", "F");
   opt::number(app, "--p", a.p, "shell edge ratio of the refinement loop (paper 3.2; default 1.5)", "P");
   opt::count(app, "--depth", a.depth, "neighbour search depth (paper 3.5; default 10, at most 64)");
+  opt::count(app, "--max-tets-created", a.max_tets_created,
+             "the per-cut tet budget: net tets a cut may make (default 20000); a cut past it is refused", "N");
   opt::improvement(app, a.improvement, "cut");
   opt::labels(app, "--keep-label", a.uncuttable_labels,
               "tets with this label (the mesh file's) are tissue no cut takes, as the paper's Fig. 7 keeps the "
@@ -86,6 +88,10 @@ std::optional<std::string> cut_params(const CutArgs& a, CutParams& params) {
     if (*a.depth > 64) return "--depth: at most 64";
     params.search_depth = static_cast<std::uint32_t>(*a.depth);
   }
+  if (a.max_tets_created) {
+    if (*a.max_tets_created < 1 || *a.max_tets_created > 0xFFFFFFFFull) return "--max-tets-created: a positive integer";
+    params.max_tets_created = static_cast<std::uint32_t>(*a.max_tets_created);
+  }
   if (*a.step <= 0) return "--step: must be positive";
   if (norm(*a.to - *a.from) / *a.step > kMaxCuts) return "more than 100000 cuts: increase --step";
   return validate(params);
@@ -98,7 +104,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CommandParser parser(
       "cut",
       "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--order O] "
-      "[--neighbour-set smallest|first] [--split M] "
+      "[--neighbour-set smallest|first] [--split M] [--max-tets-created N] "
       "[--refinement auto|paper|graded] [--no-improve] [--quality-floor F] [--min-dihedral DEG] [--keep-label L ...] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"

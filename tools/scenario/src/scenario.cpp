@@ -28,7 +28,7 @@ std::vector<std::string> tokens_of(const std::string& line) {
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
          w == "order" || w == "neighbour_set" || w == "split" || w == "refinement" || w == "improve" || w == "quality_floor" ||
-         w == "min_dihedral";
+         w == "min_dihedral" || w == "max_tets_created";
 }
 
 // Applies a parameter line to `params`; a message when the value is not acceptable.
@@ -57,6 +57,10 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
   } else if (name == "improve") {
     if (value != "on" && value != "off") return std::string("improve must be on or off");
     next.improve = value == "on";
+  } else if (name == "max_tets_created") {
+    const auto n = parse_uint(value);
+    if (!n || *n < 1 || *n > 0xFFFFFFFFull) return std::string("max_tets_created must be a positive integer");
+    next.max_tets_created = static_cast<std::uint32_t>(*n);
   } else if (name == "depth" || name == "iterations") {
     const auto n = parse_uint(value);
     if (!n || *n > 64) return name + " must be an integer between 1 and 64";
