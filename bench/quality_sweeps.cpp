@@ -38,7 +38,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <numbers>
 #include <optional>
@@ -55,6 +54,7 @@
 #include "tetcut/generators/liver.hpp"
 #include "tetcut/generators/shapes.hpp"
 #include "tetcut/invariants/check.hpp"
+#include "tetcut/io.hpp"
 #include "tetcut/mesh_builder.hpp"
 #include "tetcut/percentile.hpp"
 #include "tetcut/scenario/scenario.hpp"
@@ -282,13 +282,7 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
   const nlohmann::json out = {
       {"sweeps_per_tool", sweeps}, {"seed", seed}, {"refinement", tetcut::to_string(rule)}, {"min_dihedral_deg", min_dihedral_deg},
       {"rows", std::move(out_rows)}};
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream file(tmp);
-    file << out.dump(1) << '\n';
-    if (!file) return false;
-  }
-  return std::rename(tmp.c_str(), path.c_str()) == 0;
+  return tetcut::write_file_atomically(path, out.dump(1) + "\n").ok;
 }
 
 // The tool-size gate (--gate): a TetGen box, the TetGen sphere and the bundled CGAL liver, cut
@@ -359,13 +353,7 @@ bool write_gate(const std::string& path, const std::vector<Row>& rows, int sweep
   const nlohmann::json out = {
       {"context", {{"source", "tetcut_quality_sweeps --gate"}, {"sweeps_per_tool", sweeps}, {"seed", seed}}},
       {"benchmarks", std::move(benchmarks)}};
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream file(tmp);
-    file << out.dump(1) << '\n';
-    if (!file) return false;
-  }
-  return std::rename(tmp.c_str(), path.c_str()) == 0;
+  return tetcut::write_file_atomically(path, out.dump(1) + "\n").ok;
 }
 
 }  // namespace

@@ -65,8 +65,8 @@ std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::S
 
 TetId Improver::host_of(TetMesh& mesh, TetId t) {
   const std::uint32_t birth = mesh.birth_index(t);
-  MadeHost* memo = birth == TetMesh::kNoBirth ? nullptr : &made_hosts_[birth % kMadeSlots];
-  if (memo && memo->generation == made_generation_ && memo->birth == birth) return memo->host;
+  if (birth != TetMesh::kNoBirth)
+    if (const TetId* known = made_hosts_.find(birth)) return *known;
   ancestors_.clear();
   mesh.ancestors_at_start(t, ancestors_);
   TetId host = ancestors_.front();
@@ -76,23 +76,22 @@ TetId Improver::host_of(TetMesh& mesh, TetId t) {
     const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
     if (const DeepestTet deepest = deepest_at_start(mesh, ancestors_, centroid); deepest.found()) host = deepest.tet();
   }
-  if (memo) {
-    *memo = {birth, made_generation_, host};
-    made_hosts_end_ = std::max(made_hosts_end_, birth + 1);
-  }
+  if (birth != TetMesh::kNoBirth) made_hosts_.set(birth, host);
   return host;
 }
 
 Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
   const TetId host = host_of(mesh, t);
-  HostShape& slot = host_shapes_[host.value % kHostSlots];
-  if (slot.generation != host_generation_ || slot.host != host.value) {
+  Floors h;
+  if (const Floors* known = host_shapes_.find(host.value)) {
+    h = *known;
+  } else {
     // The host as it was: its vertices were there before the transaction and never move.
     const TetMesh::TetVerts v = mesh.tet_at_start(host);
     const TetShape s = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
-    slot = {host.value, host_generation_, {s.ratio, s.max_cosine}};
+    h = {s.ratio, s.max_cosine};
+    host_shapes_.set(host.value, h);
   }
-  const Floors& h = slot.shape;
   return {std::min(floor_f_, h.ratio), std::max(cos_theta_, h.cosine)};
 }
 
@@ -138,28 +137,6 @@ void Improver::judge(TetMesh& mesh, ImproveOutcome& out) {
   out.dihedral_floor_deg = degrees_of_cosine(lowest_cosine);
 }
 
-void Improver::forget_made_hosts() {
-  made_hosts_end_ = 0;
-  if (++made_generation_ == 0) {
-    made_hosts_.fill({});
-    made_generation_ = 1;
-  }
-}
-
-void Improver::forget_made_hosts_from(std::uint32_t births) {
-  if (made_hosts_end_ <= births) return;  // nothing memoised at or past it
-  for (MadeHost& m : made_hosts_)
-    if (m.birth >= births) m.generation = 0;
-  made_hosts_end_ = births;
-}
-
-void Improver::forget_host_shapes() {
-  if (++host_generation_ == 0) {  // wrapped: every slot is from an older generation
-    host_shapes_.fill({});
-    host_generation_ = 1;
-  }
-}
-
 void Improver::set_theta(double theta_deg, double floor_f) {
   theta_ = theta_deg;
   floor_f_ = floor_f;
@@ -167,7 +144,6 @@ void Improver::set_theta(double theta_deg, double floor_f) {
   const double sine = std::sin(theta_deg * std::numbers::pi / 180.0);
   t_dihedral_sine_weight = sine > 0.0 ? floor_f / sine : 0.0;
   goal_ = floor_f;  // quality() at F and theta
-  forget_host_shapes();
 }
 
 Refusal Improver::star_rule(TetMesh& mesh, VertId v) {
@@ -288,7 +264,7 @@ bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
     }
   }
   mesh.rollback_to(point);
-  forget_made_hosts_from(point.tet_births);  // the births it undid may come back as other tets
+  made_hosts_.forget_from(point.tet_births);  // the births it undid may come back as other tets
   created_.resize(before);
   return false;
 }
@@ -330,8 +306,8 @@ void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operation
 
 ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params) {
   ImproveOutcome out;
-  forget_host_shapes();
-  forget_made_hosts();
+  host_shapes_.forget();
+  made_hosts_.forget();
   tool_ = params.reach;
   uncuttable_ = params.uncuttable;
   veto_ = params.veto;

@@ -41,6 +41,7 @@
 #include "core/tool_ball.hpp"
 #include "core/uncuttable_tets.hpp"
 #include "improve/collapse.hpp"
+#include "improve/direct_mapped_memo.hpp"
 #include "improve/flips.hpp"
 #include "improve/insertion.hpp"
 #include "improve/operation.hpp"
@@ -174,34 +175,15 @@ class Improver {
   PlanVeto veto_;                               // the run's, if any
   std::vector<TetId> made_, ancestors_, created_;
   std::vector<std::pair<double, TetId>> bad_;  // (quality, tet), worst first
-  // The hosts' shapes (radius ratio, largest dihedral cosine) met since the last forget: a
-  // direct-mapped memo by host id, since a host's shape at the start never changes within a
-  // transaction. Fixed size, so that the Cutter's memory does not grow with the mesh as a map by
-  // tet id would (24 bytes a tet with the Cutter's room); two hosts in one slot only measure
-  // again.
-  static constexpr std::uint32_t kHostSlots = 1024;
-  struct HostShape {
-    std::uint32_t host = 0, generation = 0;  // generation 0: empty
-    Floors shape;
-  };
-  std::array<HostShape, kHostSlots> host_shapes_{};
-  std::uint32_t host_generation_ = 1;
-  void forget_host_shapes();
+  // The hosts' shapes (radius ratio, largest dihedral cosine), by host id: a host's shape at the
+  // start never changes within a transaction.
+  DirectMappedMemo<Floors, 1024> host_shapes_;
   // Each made tet's host, by its birth (TetMesh::birth_index: unique in the transaction, and so
   // is the tet's shape): every round asks again, and finding it walks the tet's lines of
   // ancestors, which the smoothing's moves (each a new birth of the star) and the flips make long
-  // (one cut spent 1.7 s there). Direct-mapped and fixed, as host_shapes_; the births a rollback
-  // undoes are forgotten, since their indices may come back as other tets.
-  static constexpr std::uint32_t kMadeSlots = 4096;
-  struct MadeHost {
-    std::uint32_t birth = 0, generation = 0;  // generation 0: empty
-    TetId host;
-  };
-  std::array<MadeHost, kMadeSlots> made_hosts_{};
-  std::uint32_t made_generation_ = 1;
-  std::uint32_t made_hosts_end_ = 0;  // past the largest birth index memoised since the last forget
-  void forget_made_hosts();
-  void forget_made_hosts_from(std::uint32_t births);
+  // (one cut spent 1.7 s there). The births a rollback undoes are forgotten: their indices may
+  // come back as other tets.
+  DirectMappedMemo<TetId, 4096> made_hosts_;
   TetId host_of(TetMesh& mesh, TetId t);
 };
 
