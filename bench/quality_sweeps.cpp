@@ -23,10 +23,11 @@
 // created tet to, the tissue rule, the tet budget, a degenerate split), checker violations, cuts
 // that left tissue in the tool (CutReport::left_in_tool), cuts that allocated, the input's worst
 // radius ratio, the goal min(0.1, that), the worst created radius ratio and dihedral angle, the
-// tets one cut created (p99, max: net, ok cuts), and the cut times (p50, p99, max: every cut that
-// met the mesh, the refused ones included, since a refusal costs its attempt), cuts auto made
-// again with the graded rule, cuts whose pass held a lower theta, tets removed beyond the cut's
-// reach, and per ok cut the volume left
+// tets one cut created (p99, max: net, ok cuts; and of them the ones within the cut's reach, the
+// ball grown by D_ref, p99, with the share of all made tets beyond it), the cut times (p50, p99,
+// max: every cut that met the mesh, the refused ones included, since a refusal costs its
+// attempt), cuts auto made again with the graded rule, cuts whose pass held a lower theta, tets
+// removed beyond the cut's reach, and per ok cut the volume left
 // in the tool and removed beyond it as shares of the tool's ball (p50, p99).
 //
 // Deterministic but for the times: the meshers are seeded, and so are the chords (SplitMix64).
@@ -41,6 +42,7 @@
 #include <functional>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -114,6 +116,11 @@ struct Row {
   inv::QualityStats created;
   std::vector<double> cut_us;      // every cut that met the mesh, refused ones included
   std::vector<double> made;        // net tets created, per ok cut
+  // Of those, per ok cut, the ones whose centroid lies within the cut's reach (the tool's ball
+  // grown by D_ref): what the tissue rule asks for near the tool. The rest grade the refinement
+  // out to the mesh's own size.
+  std::vector<double> made_within_reach;
+  std::uint64_t made_total = 0, made_beyond_total = 0;
   std::string first_violation, first_refusal;
   // Met: no cut refused or lowering theta, and no created tet below either goal (an angle within
   // rounding of its goal meets it: a split child keeps its parent's angles).
@@ -148,6 +155,19 @@ double median_edge(const TetMesh& mesh) {
       for (int j = i + 1; j < 4; ++j) lengths.push_back(norm(mesh.position(v[j]) - mesh.position(v[i])));
   }
   return tetcut::percentile(lengths, 0.5);  // each interior edge once per tet around it: a weighted median
+}
+
+// The live tets among `created` whose centroid lies within `radius` of `centre`.
+std::uint32_t made_within_reach(const TetMesh& mesh, std::span<const tetcut::TetId> created, const Vec3& centre,
+                                double radius) {
+  std::uint32_t within = 0;
+  for (const tetcut::TetId t : created) {
+    if (!mesh.is_live(t)) continue;
+    Vec3 centroid{0, 0, 0};
+    for (const tetcut::VertId v : mesh.tet(t)) centroid = centroid + 0.25 * mesh.position(v);
+    within += norm(centroid - centre) <= radius ? 1 : 0;
+  }
+  return within;
 }
 
 Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int sweeps, std::uint64_t seed,
@@ -186,6 +206,10 @@ Row sweep(const SourceMesh& source, const TetMesh& base, const Tool& tool, int s
       if (r.tets_hit == 0) continue;  // the tool in the air: not a cut
       ++row.cuts;
       row.made.push_back(r.tets_created);
+      const std::uint32_t within = made_within_reach(mesh, cutter.last_created(), centre, 0.5 * tool.diameter + r.d_ref);
+      row.made_within_reach.push_back(within);
+      row.made_total += r.tets_created;
+      row.made_beyond_total += r.tets_created - within;
       row.max_created = std::max<std::uint64_t>(row.max_created, r.tets_created);
       row.left += r.left_in_tool > 0 ? 1 : 0;
       row.beyond_reach += r.tets_removed_beyond_reach;
@@ -211,11 +235,11 @@ std::string figure(double value, const char* format) {
 }
 
 void print(const std::vector<Row>& rows) {
-  std::printf("%-13s %-6s %-6s %8s %6s %6s %7s %5s %5s %5s %7s %6s %7s %7s %7s %7s %9s %9s %9s\n", "mesh", "rule", "tool",
+  std::printf("%-13s %-6s %-6s %8s %6s %6s %7s %5s %5s %5s %7s %6s %7s %7s %7s %7s %9s %9s %9s %9s\n", "mesh", "rule", "tool",
               "diameter", "tets", "cuts", "refused", "viol.", "left", "alloc", "input", "goal", "worst", "min dih",
-              "made p99", "max", "p50 us", "p99 us", "max us");
+              "made p99", "max", "reach p99", "p50 us", "p99 us", "max us");
   for (const Row& r : rows)
-    std::printf("%-13s %-6s %-6s %8.3g %6u %6llu %7llu %5llu %5llu %5llu %7.3g %6.3g %7s %7s %7.0f %7llu %9.1f %9.1f %9.1f%s\n",
+    std::printf("%-13s %-6s %-6s %8.3g %6u %6llu %7llu %5llu %5llu %5llu %7.3g %6.3g %7s %7s %7.0f %7llu %9.0f %9.1f %9.1f %9.1f%s\n",
                 r.mesh.c_str(), r.refinement.c_str(), r.tool.c_str(), r.diameter, r.tets,
                 static_cast<unsigned long long>(r.cuts), static_cast<unsigned long long>(r.refused),
                 static_cast<unsigned long long>(r.violations), static_cast<unsigned long long>(r.left),
@@ -223,7 +247,7 @@ void print(const std::vector<Row>& rows) {
                 r.created.tets ? figure(r.created.min_radius_ratio, "%.3g").c_str() : "-",
                 r.created.tets ? figure(r.created.min_dihedral_deg, "%.1f").c_str() : "-",
                 tetcut::percentile(r.made, 0.99), static_cast<unsigned long long>(r.max_created),
-                tetcut::percentile(r.cut_us, 0.5), tetcut::percentile(r.cut_us, 0.99), max_of(r.cut_us),
+                tetcut::percentile(r.made_within_reach, 0.99), tetcut::percentile(r.cut_us, 0.5), tetcut::percentile(r.cut_us, 0.99), max_of(r.cut_us),
                 r.goal_met() ? "" : "  BELOW GOAL");
   for (const Row& r : rows)
     if (r.refused) std::printf("%s, %s: refused %s\n", r.mesh.c_str(), r.tool.c_str(), refusal_reasons(r).c_str());
@@ -254,6 +278,9 @@ bool write_json(const std::string& path, const std::vector<Row>& rows, int sweep
                           {"created_tets", r.created.tets},
                           {"max_created_per_cut", r.max_created},
                           {"p99_created_per_cut", tetcut::percentile(r.made, 0.99)},
+                          {"p99_created_within_reach_per_cut", tetcut::percentile(r.made_within_reach, 0.99)},
+                          {"created_beyond_reach_share",
+                           r.made_total ? static_cast<double>(r.made_beyond_total) / static_cast<double>(r.made_total) : 0.0},
                           {"retried_cuts", r.retried},
                           {"cuts_lowering_theta", r.theta_lowered},
                           {"tets_removed_beyond_reach", r.beyond_reach},

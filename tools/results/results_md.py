@@ -495,6 +495,8 @@ def quality_sweeps(inputs):
         body.append((r["mesh"], r["tool"], short(r["tool_diameter"]), fmt(r["tets"], 0), fmt(r["cuts"], 0), refused,
                      fmt(r["checker_violations"], 0), fmt(r.get("cuts_leaving_tissue", 0), 0), worst,
                      f"{short(r.get('p99_created_per_cut'))} / {fmt(r['max_created_per_cut'], 0)}",
+                     f"{short(r.get('p99_created_within_reach_per_cut'))} / "
+                     f"{fmt(100 * r.get('created_beyond_reach_share', 0), 0)}",
                      f"{short(r['p50_us'])} / {short(r['p99_us'])} / {short(r['max_us'])}",
                      f"{fmt(100 * r.get('volume_left_share_p50', 0), 1)} / {fmt(100 * r.get('volume_left_share_p99', 0), 1)}",
                      f"{fmt(100 * r.get('volume_removed_beyond_share_p50', 0), 1)} / "
@@ -511,12 +513,13 @@ def quality_sweeps(inputs):
              "and 0.05 to 3 times the median edge (`0.05x` ...). Refused: cuts rolled back (the mesh as it was), and "
              "how many ok cuts auto made again with the graded rule. Left: ok cuts that left tissue the selection "
              "takes in the tool (`left_in_tool`). Worst created: radius ratio / smallest dihedral in degrees. Tets "
-             "made per ok cut p99 / max. Volume left in the tool and removed beyond it per ok cut, p50 / p99, in % "
+             "made per ok cut p99 / max; of them, within the cut's reach (the tool's ball grown by D_ref, by "
+             "centroid) p99 / beyond it, in % of all tets made: the refinement's grading out to the mesh's size. Volume left in the tool and removed beyond it per ok cut, p50 / p99, in % "
              "of the tool's ball (estimates: `volume_left_in_tool`, docs/usage.md). Goal met: no refused cut and "
              "every created tet at min(0.1, the input's worst) or better. Meshes: "
              + "; ".join(f"{k}: {v}" for k, v in made_by.items()) + ".", ""]
     lines += table(("mesh", "tool", "diameter", "tets", "cuts", "refused", "checker", "left", "worst created",
-                    "tets made p99 / max", "p50 / p99 / max us", "vol. left %", "vol. beyond %", "beyond reach",
+                    "tets made p99 / max", "in reach p99 / beyond %", "p50 / p99 / max us", "vol. left %", "vol. beyond %", "beyond reach",
                     "goal met"), body, right_from=2)
     return lines
 
