@@ -55,18 +55,35 @@ std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::S
   for (const TetMesh::TetBirth& b : mesh.tets_made_since(start))
     if (mesh.is_live(b.tet)) {
       made_.push_back(b.tet);
-      const TetMesh::TetVerts v = mesh.tet(b.tet);
-      const TetShape s = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+      const TetShape s = shape_of(mesh, b.tet);
       worst = std::min(worst, s.ratio);
       cosine = std::max(cosine, s.max_cosine);
     }
   return {worst, cosine};
 }
 
+TetShape Improver::shape_of(const TetMesh& mesh, TetId t) {
+  const std::uint32_t birth = mesh.birth_index(t);
+  MadeTet entry;
+  if (birth != TetMesh::kNoBirth)
+    if (const MadeTet* known = made_tets_.find(birth)) {
+      if (known->shape.ratio >= 0.0) return known->shape;
+      entry = *known;
+    }
+  const TetMesh::TetVerts v = mesh.tet(t);
+  entry.shape = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+  if (birth != TetMesh::kNoBirth) made_tets_.set(birth, entry);
+  return entry.shape;
+}
+
 TetId Improver::host_of(TetMesh& mesh, TetId t) {
   const std::uint32_t birth = mesh.birth_index(t);
+  MadeTet entry;
   if (birth != TetMesh::kNoBirth)
-    if (const TetId* known = made_hosts_.find(birth)) return *known;
+    if (const MadeTet* known = made_tets_.find(birth)) {
+      if (known->host.valid()) return known->host;
+      entry = *known;
+    }
   ancestors_.clear();
   mesh.ancestors_at_start(t, ancestors_);
   TetId host = ancestors_.front();
@@ -76,7 +93,8 @@ TetId Improver::host_of(TetMesh& mesh, TetId t) {
     const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
     if (const DeepestTet deepest = deepest_at_start(mesh, ancestors_, centroid); deepest.found()) host = deepest.tet();
   }
-  if (birth != TetMesh::kNoBirth) made_hosts_.set(birth, host);
+  entry.host = host;
+  if (birth != TetMesh::kNoBirth) made_tets_.set(birth, entry);
   return host;
 }
 
@@ -96,12 +114,10 @@ Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
 }
 
 bool Improver::below_floor(TetMesh& mesh, TetId t, Floors* floors) {
-  const TetMesh::TetVerts v = mesh.tet(t);
-  const Vec3 &p0 = mesh.position(v[0]), &p1 = mesh.position(v[1]), &p2 = mesh.position(v[2]), &p3 = mesh.position(v[3]);
   // The checker compares with its own formulas: aim a rounding above the ratio's floor. An angle
   // equal to its floor is not below it: a split child keeps its parent's dihedral angles at the
   // parent's edges exactly, to rounding, which the checker allows for (no_degradation.hpp).
-  const TetShape shape = tet_shape(p0, p1, p2, p3);
+  const TetShape shape = shape_of(mesh, t);
   auto below = [&](const Floors& f) { return shape.ratio < f.ratio * (1.0 + 1e-9) || shape.max_cosine > f.cosine + 1e-12; };
   const Floors global{floor_f_, cos_theta_};
   if (!below(global)) {
@@ -264,7 +280,7 @@ bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
     }
   }
   mesh.rollback_to(point);
-  made_hosts_.forget_from(point.tet_births);  // the births it undid may come back as other tets
+  made_tets_.forget_from(point.tet_births);  // the births it undid may come back as other tets
   created_.resize(before);
   return false;
 }
@@ -307,7 +323,7 @@ void Improver::lift(TetMesh& mesh, ImproveOutcome& out, std::uint32_t& operation
 ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params) {
   ImproveOutcome out;
   host_shapes_.forget();
-  made_hosts_.forget();
+  made_tets_.forget();
   tool_ = params.reach;
   uncuttable_ = params.uncuttable;
   veto_ = params.veto;
