@@ -276,9 +276,7 @@ struct LocalChecker::Operation {
                            options.volume_rel_tolerance, "the volume change of the operation", report, rounding);
     }
 
-    if (judge_quality)
-      no_degradation.finish(positions, options.quality_floor, options.min_dihedral_deg,
-                            options.tool ? &options.tool->centre : nullptr, options.tool ? options.tool->radius : 0.0, report);
+    if (judge_quality) no_degradation.finish(positions, options.quality_floor, options.min_dihedral_deg, report);
 
     // I10: uncuttable tissue neither went nor grew.
     if (!removed_uncuttable.empty() &&

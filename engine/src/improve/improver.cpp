@@ -186,30 +186,8 @@ Refusal Improver::region_rule(TetMesh& mesh, const Plan& plan) const {
   return Refusal::kNone;
 }
 
-double Improver::bad_volume(const TetMesh& mesh, std::span<const TetId> tets) {
-  double volume = 0.0;
-  for (TetId t : tets)
-    if (shape_of(mesh, t).max_cosine > cos_theta_ + 1e-12) volume += mesh.volume(t);
-  return volume;
-}
-
-Refusal Improver::bad_volume_rule(const TetMesh& mesh, const Plan& plan) {
-  if (plan.op == Operator::kSliverRemoval || !(theta_ > 0.0)) return Refusal::kNone;
-  double after = 0.0;
-  for (const TetMesh::TetVerts& tet : plan.added_tets()) {
-    const std::array<Vec3, 4> p = plan.corners(mesh, tet);
-    // Within rounding of theta counts as below: a made tet the checker could call bad.
-    if (tet_shape(p[0], p[1], p[2], p[3]).max_cosine > cos_theta_ - 1e-12)
-      after += dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0])) / 6.0;
-  }
-  if (after == 0.0) return Refusal::kNone;
-  const double before = plan.op == Operator::kInsertion ? insertion_bad_before_ : bad_volume(mesh, plan.removed_tets());
-  return after <= before * (1.0 + 1e-9) ? Refusal::kNone : Refusal::kSpreadsBadVolume;
-}
-
 Refusal Improver::admit(TetMesh& mesh, const Plan& plan, ImproveOutcome& out) {
   Refusal verdict = region_rule(mesh, plan);
-  if (verdict == Refusal::kNone) verdict = bad_volume_rule(mesh, plan);
   if (verdict == Refusal::kNone && veto_) {
     verdict = veto_(mesh, plan);
     out.vetoed += verdict != Refusal::kNone;
@@ -274,7 +252,6 @@ bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
     count(out, r);
     return false;
   }
-  insertion_bad_before_ = bad_volume(mesh, insertion_.removed_tets());
   const std::size_t before = created_.size();
   insertion_.apply(mesh, created_);
   const VertId midpoint = mesh.vertices_made_since(point).front().vertex;

@@ -142,15 +142,6 @@ class Improver {
   // Uncuttable tissue keeps its region: a flip retriangulates the polytope it replaces, so it only
   // needs tets of one kind; a split child lies in its parent; the other plans touch none.
   Refusal region_rule(TetMesh& mesh, const Plan& plan) const;
-  // The checker's mesh rule (I7), plan by plan: the volume of the tets below theta a plan makes
-  // is at most that of the tets below theta it removes. Every plan but a sliver removal keeps the
-  // polytope it replaces, so the two compare directly; without it the pass lifted a tet by a
-  // flip that spread a tet below theta (held to its bad host's angle) over good volume.
-  Refusal bad_volume_rule(const TetMesh& mesh, const Plan& plan);
-  // The volume of the tets below theta among `tets` (live ids); within rounding of theta does
-  // not count (what a plan removes: the rule stays on the strict side of the
-  // checker's).
-  double bad_volume(const TetMesh& mesh, std::span<const TetId> tets);
   // Whether the operations may reshape v's star (move v, collapse v): kNone when v was made by
   // the transaction and none of its tets is uncuttable, else why not. Asked before planning.
   Refusal star_rule(TetMesh& mesh, VertId v);
@@ -200,8 +191,6 @@ class Improver {
     TetId host;                 // invalid: not located yet
   };
   DirectMappedMemo<MadeTet, 4096> made_tets_;
-  // An insertion's removed tets' bad volume, taken before it is applied (admit() sees it after).
-  double insertion_bad_before_ = 0.0;
   TetShape shape_of(const TetMesh& mesh, TetId t);
   TetId host_of(TetMesh& mesh, TetId t);
 };
