@@ -181,11 +181,9 @@ class Improver {
   DirectMappedMemo<Floors, 1024> host_shapes_;
   // Each made tet's shape and host, by its birth (TetMesh::birth_index: unique in the
   // transaction, and so are the tet's shape and host, since a move makes its star anew). Every
-  // round asks for both again: the shape for each made tet several times a round (one cut of the
-  // README's sweep measured 190 made tets 1,310 times, a third of its instructions), the host by
-  // a walk of the tet's lines of ancestors, which the smoothing's moves and the flips make long
-  // (one cut spent 1.7 s there). The births a rollback undoes are forgotten: their indices may
-  // come back as other tets.
+  // round asks for both again: the shape for each made tet several times a round, the host by a
+  // walk of the tet's lines of ancestors, which the smoothing's moves and the flips make long.
+  // The births a rollback undoes are forgotten: their indices may come back as other tets.
   struct MadeTet {
     TetShape shape{-1.0, 2.0};  // a ratio below 0: not measured yet
     TetId host;                 // invalid: not located yet
