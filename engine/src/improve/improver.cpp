@@ -33,6 +33,12 @@ void count_applied(ImproveOutcome& out, Operator op) {
   }
 }
 
+// Live tet t's shape as the mesh has it now.
+TetShape shape_now(const TetMesh& mesh, TetId t) {
+  const TetMesh::TetVerts v = mesh.tet(t);
+  return tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+}
+
 }  // namespace
 
 void Improver::reserve(std::uint32_t tets) {
@@ -57,8 +63,7 @@ std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::S
       made_.push_back(b.tet);
       // Measured directly: most cuts' made tets all meet F and theta here, and the pass never
       // asks again (the memo would only cost them its look-ups).
-      const TetMesh::TetVerts v = mesh.tet(b.tet);
-      const TetShape s = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+      const TetShape s = shape_now(mesh, b.tet);
       worst = std::min(worst, s.ratio);
       cosine = std::max(cosine, s.max_cosine);
     }
@@ -73,8 +78,7 @@ TetShape Improver::shape_of(const TetMesh& mesh, TetId t) {
       if (known->shape.ratio >= 0.0) return known->shape;
       entry = *known;
     }
-  const TetMesh::TetVerts v = mesh.tet(t);
-  entry.shape = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+  entry.shape = shape_now(mesh, t);
   if (birth != TetMesh::kNoBirth) made_tets_.set(birth, entry);
   return entry.shape;
 }
