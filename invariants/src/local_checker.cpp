@@ -5,9 +5,16 @@
 // Why the vertices of the removed and created tets are enough: a face or edge whose star changed
 // belongs to a removed or created tet, so all its vertices are touched; an untouched vertex has
 // exactly the star it had before the operation, and the mesh was valid then.
+//
+// Why the checker keeps its own copy of the positions: an existing vertex may move (the
+// improvement pass smooths within a cut's reach), so the mesh no longer shows the removed tets as
+// they were. The copy gives their old shape, and comparing it with the mesh at the touched
+// vertices is how a move is seen at all.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "engine_records.hpp"
 #include "no_degradation.hpp"
@@ -29,6 +36,29 @@ constexpr RawTet kDeadTet{kDeadTetMarker, kDeadTetMarker, kDeadTetMarker, kDeadT
 bool references_in_range(const RawTet& q, std::size_t vertex_count) {
   return q[0] < vertex_count && q[1] < vertex_count && q[2] < vertex_count && q[3] < vertex_count;
 }
+
+// Bit for bit: a vertex that did not move is exactly where it was, whatever rounding would allow.
+bool same_position(const Vec3& a, const Vec3& b) {
+  return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
+         std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
+}
+
+// "(x, y, z)". Appended piece by piece: GCC 12's -Wrestrict misfires on "(" + std::string.
+std::string text(const Vec3& p) {
+  std::string out = detail::num(p.x);
+  out.insert(0, 1, '(');
+  return out.append(", ").append(detail::num(p.y)).append(", ").append(detail::num(p.z)).append(")");
+}
+
+// A reported move reproduces the position to this fraction of the distance to the vertices it
+// combines: the rounding of a sum of four weighted positions, with room to spare.
+constexpr double kMoveTolerance = 1e-9;
+// The weights of a reported move are affine: they sum to 1 up to rounding.
+constexpr double kWeightSumTolerance = 1e-12;
+// As the tissue rule: a distance within a relative 1e-9 of the cut's reach is the engine's
+// rounding, not a move out of reach.
+constexpr double kReachTolerance = 1e-9;
 }  // namespace
 
 struct LocalChecker::Scratch {
@@ -38,6 +68,9 @@ struct LocalChecker::Scratch {
   detail::TetGrid grid;                      // I10: which tets may meet a tool
   std::vector<std::uint32_t> near_tool;
   std::vector<RawTet> removed_uncuttable;    // the operation's, as they were
+  std::vector<std::uint32_t> live_before;    // touched vertices that had tets before the operation
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> reported_moves;  // (vertex, index in moved)
+  std::vector<std::uint32_t> created_sorted;  // the operation's created tets, to look up
 };
 
 LocalChecker::~LocalChecker() = default;
@@ -55,6 +88,7 @@ void LocalChecker::reset(const RawMeshView& mesh) {
   excluded_.assign(raw.size(), 0);
   for (auto& list : vertex_to_tets_) list.clear();  // their memory stays
   vertex_to_tets_.resize(positions.size());
+  known_positions_.assign(positions.begin(), positions.end());
   touched_stamp_.assign(positions.size(), 0);
   stamp_ = 0;
   live_tets_ = 0;
@@ -95,8 +129,11 @@ struct LocalChecker::Operation {
         engine(detail::usable_records(mesh, report)),
         raw(mesh.tets),
         positions(mesh.positions),
+        old_positions(checker.known_positions_),
         judge_quality(check_options.quality_rule == QualityRule::kNoDegradation),
         touched(checker.scratch_->touched),
+        live_before(checker.scratch_->live_before),
+        created_sorted(checker.scratch_->created_sorted),
         removed_uncuttable(checker.scratch_->removed_uncuttable),
         grid(checker.scratch_->grid),
         no_degradation(checker.scratch_->no_degradation),
@@ -113,6 +150,11 @@ struct LocalChecker::Operation {
     }
     if (c.any_uncuttable_ && c.uncuttable_.size() < raw.size()) c.uncuttable_.resize(raw.size(), 0);
     if (c.vertex_to_tets_.size() < positions.size()) {
+      // New vertices: where they are is where they were (nothing was there to move).
+      c.known_positions_.insert(c.known_positions_.end(),
+                                positions.begin() + static_cast<std::ptrdiff_t>(c.known_positions_.size()),
+                                positions.end());
+      old_positions = c.known_positions_;
       c.vertex_to_tets_.resize(positions.size());
       c.touched_stamp_.resize(positions.size(), 0);
     }
@@ -121,13 +163,15 @@ struct LocalChecker::Operation {
       c.stamp_ = 1;
     }
     touched.clear();
+    live_before.clear();
   }
 
-  void touch(std::uint32_t v) {
-    if (v < c.touched_stamp_.size() && c.touched_stamp_[v] != c.stamp_) {
-      c.touched_stamp_[v] = c.stamp_;
-      touched.push_back(v);
-    }
+  // Whether v is touched for the first time by this operation.
+  bool touch(std::uint32_t v) {
+    if (v >= c.touched_stamp_.size() || c.touched_stamp_[v] == c.stamp_) return false;
+    c.touched_stamp_[v] = c.stamp_;
+    touched.push_back(v);
+    return true;
   }
 
   // I8: the operation's account of what it did does not match the mesh.
@@ -137,7 +181,8 @@ struct LocalChecker::Operation {
     });
   }
 
-  // Removed tets leave the index; their old vertices are remembered from it, not from the mesh.
+  // Removed tets leave the index; their old vertices are remembered from it, and their old
+  // positions from the checker's copy, not from the mesh.
   void forget_removed(RawIds removed) {
     no_degradation.begin();
     removed_uncuttable.clear();
@@ -146,14 +191,15 @@ struct LocalChecker::Operation {
         misreported(t, "removing", "which was not live");
         continue;
       }
-      if (references_in_range(c.known_tets_[t], positions.size())) {
-        // Vertices that were there before an operation never move (only the ones it made may):
-        // the tet's volume now, from the same positions, is bit for bit the one remembered.
-        const double now = detail::tet_volume(c.known_tets_[t], positions);
+      if (references_in_range(c.known_tets_[t], old_positions.size())) {
+        // A live tet's corners move only when an operation remakes it (check_moves): at the
+        // positions the checker last saw, its volume is bit for bit the one remembered. A corner
+        // moved while the tet was kept (reported then) shows here again.
+        const double now = detail::tet_volume(c.known_tets_[t], old_positions);
         if (now != c.known_volume_[t])
           report.add(Invariant::kI8Bookkeeping, {t}, {}, [&] {
-            return "a vertex of removed tet " + str(t) + " moved: its volume was " + detail::num(c.known_volume_[t]) +
-                   " and is " + detail::num(now);
+            return "a vertex of removed tet " + str(t) + " moved since the tet was made: its volume was " +
+                   detail::num(c.known_volume_[t]) + " and is " + detail::num(now);
           });
         if (judge_quality) no_degradation.add_removed(t, c.known_tets_[t]);
         if (c.any_uncuttable_ && c.uncuttable_[t]) {
@@ -172,7 +218,7 @@ struct LocalChecker::Operation {
         *it = list.back();
         list.pop_back();
         if (list.empty()) --c.live_vertices_;
-        touch(v);
+        if (touch(v)) live_before.push_back(v);  // it had tet t
       }
       removed_volume.add(c.known_volume_[t]);
       removed_abs += std::abs(c.known_volume_[t]);
@@ -199,9 +245,11 @@ struct LocalChecker::Operation {
       if (!detail::check_references(t, q, positions, report)) continue;  // kept out of the index
       for (std::uint32_t v : q) {
         auto& list = c.vertex_to_tets_[v];
+        // Untouched so far, so its list is as it was before the operation.
+        const bool was_live = !list.empty();
         if (list.empty()) ++c.live_vertices_;
         list.push_back(t);
-        touch(v);
+        if (touch(v) && was_live) live_before.push_back(v);
       }
       const detail::TetGeometryChecker::Shape shape = geometry.check(t, q, positions);
       if (judge_quality) no_degradation.add_created(t, q, shape.ratio, shape.dihedral_deg);
@@ -218,16 +266,133 @@ struct LocalChecker::Operation {
         misreported(t, "removing", "but it is still live in the mesh");
   }
 
-  // A made tet is uncuttable when its centroid lies in an uncuttable tet the operation replaced.
+  // A made tet is uncuttable when its centroid (now) lies in an uncuttable tet the operation
+  // replaced (as it was).
   void inherit_uncuttable(std::uint32_t t, const RawTet& q) {
     const Vec3 centroid = 0.25 * (positions[q[0]] + positions[q[1]] + positions[q[2]] + positions[q[3]]);
     for (const RawTet& u : removed_uncuttable)
-      if (detail::tet_contains(centroid, positions[u[0]], positions[u[1]], positions[u[2]], positions[u[3]])) {
+      if (detail::tet_contains(centroid, old_positions[u[0]], old_positions[u[1]], old_positions[u[2]],
+                               old_positions[u[3]])) {
         c.uncuttable_[t] = 1;
         uncuttable_volume.add(c.known_volume_[t]);
         uncuttable_abs += std::abs(c.known_volume_[t]);
         break;
       }
+  }
+
+  // Had tets in the checker's index before the operation.
+  bool was_live_before(std::uint32_t v) const {
+    if (v >= c.vertex_to_tets_.size()) return false;
+    if (c.touched_stamp_[v] != c.stamp_) return !c.vertex_to_tets_[v].empty();  // its list is as it was
+    return std::binary_search(live_before.begin(), live_before.end(), v);
+  }
+
+  // I8: an existing vertex moves only as the operation reports it (options.moved), within the
+  // cut's reach, to where its entry's weights put it, and with every tet around it remade. The
+  // touched vertices are the ones whose shell changed: a move that keeps the whole shell is seen
+  // when the operation reports it, or at the next operation that touches the vertex.
+  void check_moves(RawIds created) {
+    std::sort(live_before.begin(), live_before.end());
+    auto& reported = c.scratch_->reported_moves;
+    reported.clear();
+    for (std::uint32_t i = 0; i < options.moved.size(); ++i) reported.push_back({options.moved[i].vertex, i});
+    std::sort(reported.begin(), reported.end());
+    created_sorted.clear();
+    if (!reported.empty() || std::any_of(touched.begin(), touched.end(), [&](std::uint32_t v) { return moved(v); })) {
+      for (std::uint32_t t : created) created_sorted.push_back(t);
+      std::sort(created_sorted.begin(), created_sorted.end());
+    }
+
+    for (std::size_t k = 0; k < reported.size(); ++k) {
+      // Named, not a structured binding: clang 14 cannot capture one in the lambda below.
+      const std::uint32_t v = reported[k].first, i = reported[k].second;
+      auto reported_but = [&](const char* fact) {
+        report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] { return "vertex " + str(v) + " reported moved but " + fact; });
+      };
+      if (k > 0 && reported[k - 1].first == v) reported_but("it is reported twice");
+      else if (!was_live_before(v)) reported_but("it was not there before the operation");
+      else if (v >= positions.size() || !moved(v)) reported_but("it did not move");
+      else if (c.touched_stamp_[v] != c.stamp_) judge_move(v, &options.moved[i]);  // the touched: below
+    }
+    for (std::uint32_t v : touched) {
+      if (!moved(v) || !was_live_before(v) || c.vertex_to_tets_[v].empty()) continue;
+      const auto it = std::lower_bound(reported.begin(), reported.end(), std::make_pair(v, 0u));
+      judge_move(v, it != reported.end() && it->first == v ? &options.moved[it->second] : nullptr);
+    }
+  }
+
+  // v is not where the checker last saw it.
+  bool moved(std::uint32_t v) const { return v < positions.size() && !same_position(positions[v], old_positions[v]); }
+
+  // A vertex that was there before, is there after and moved: `entry` is its report, if any.
+  void judge_move(std::uint32_t v, const RawMovedVertex* entry) {
+    const Vec3 was = old_positions[v], is = positions[v];
+    auto move_text = [&] { return "vertex " + str(v) + " moved from " + text(was) + " to " + text(is); };
+    if (entry == nullptr)
+      report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] { return move_text() + " and the operation did not report it"; });
+    if (!options.tool) {
+      report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
+        return "an operation without a tool moved vertex " + str(v) + " from " + text(was) + " to " + text(is);
+      });
+    } else {
+      const double reach = options.tool->radius + options.tool->d_ref;
+      const double distance = std::max(norm(was - options.tool->centre), norm(is - options.tool->centre));
+      if (!(distance <= reach * (1.0 + kReachTolerance)))
+        report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
+          return move_text() + ", " + detail::num(distance) + " from the tool's centre: beyond the cut's reach " +
+                 detail::num(reach) + " (radius + d_ref)";
+        });
+    }
+    if (entry != nullptr) check_reported_position(v, *entry);
+    // A kept tet keeps its shape: every tet around a moved vertex is one the operation made.
+    for (std::uint32_t t : c.vertex_to_tets_[v])
+      if (!std::binary_search(created_sorted.begin(), created_sorted.end(), t)) {
+        report.add(Invariant::kI8Bookkeeping, {t}, {v}, [&] {
+          return move_text() + " but tet " + str(t) + " around it was kept: a tet the operation did not create changed shape";
+        });
+        break;
+      }
+  }
+
+  // The entry puts v where it is: an affine combination of vertices that were there before, at
+  // their old positions.
+  void check_reported_position(std::uint32_t v, const RawMovedVertex& entry) {
+    auto wrong = [&](const std::string& fact) {
+      report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] { return "the reported move of vertex " + str(v) + " " + fact; });
+    };
+    if (entry.count < 1 || entry.count > entry.from.size()) {
+      wrong("combines " + str(entry.count) + " vertices, not 1 to 4");
+      return;
+    }
+    Vec3 combined{};
+    double weight_sum = 0.0, scale = 0.0;
+    for (std::size_t i = 0; i < entry.count; ++i) {
+      const std::uint32_t f = entry.from[i];
+      if (!was_live_before(f)) {
+        wrong("combines vertex " + str(f) + ", which was not there before the operation");
+        return;
+      }
+      combined = combined + entry.weight[i] * old_positions[f];
+      weight_sum += entry.weight[i];
+      scale = std::max(scale, norm(positions[v] - old_positions[f]));
+    }
+    if (!(std::abs(weight_sum - 1.0) <= kWeightSumTolerance)) {
+      wrong("has weights summing to " + detail::num(weight_sum) + ", not 1");
+      return;
+    }
+    const double off = norm(combined - positions[v]);
+    if (!(off <= kMoveTolerance * (scale > 0.0 ? scale : 1.0)))
+      wrong("puts it at " + text(combined) + ", " + detail::num(off) + " from where it is, " + text(positions[v]));
+  }
+
+  // The checker's copy of the positions follows the vertices this operation touched or reported
+  // (all that may have moved, as far as the checker can see).
+  void remember_positions() {
+    for (std::uint32_t v : touched)
+      if (v < positions.size()) c.known_positions_[v] = positions[v];
+    for (const RawMovedVertex& entry : options.moved)
+      if (entry.vertex < positions.size() && entry.vertex < c.known_positions_.size())
+        c.known_positions_[entry.vertex] = positions[entry.vertex];
   }
 
   // The shells of the touched vertices, in vertex order (the full level's order restricted).
@@ -276,7 +441,8 @@ struct LocalChecker::Operation {
                            options.volume_rel_tolerance, "the volume change of the operation", report, rounding);
     }
 
-    if (judge_quality) no_degradation.finish(positions, options.quality_floor, options.min_dihedral_deg, report);
+    if (judge_quality)
+      no_degradation.finish(old_positions, positions, options.quality_floor, options.min_dihedral_deg, report);
 
     // I10: uncuttable tissue neither went nor grew.
     if (!removed_uncuttable.empty() &&
@@ -307,8 +473,11 @@ struct LocalChecker::Operation {
   const EngineRecordsView* engine;
   std::span<const RawTet> raw;
   std::span<const Vec3> positions;
+  std::span<const Vec3> old_positions;  // the checker's copy: as they were before the operation
   const bool judge_quality;
   std::vector<std::uint32_t>& touched;
+  std::vector<std::uint32_t>& live_before;
+  std::vector<std::uint32_t>& created_sorted;
   std::vector<RawTet>& removed_uncuttable;  // the operation's, as they were
   detail::TetGrid& grid;
   detail::NoDegradationCheck& no_degradation;
@@ -328,8 +497,11 @@ CheckReport LocalChecker::after_operation(const RawMeshView& mesh, RawIds remove
   op.make_room();
   op.forget_removed(removed);
   op.admit_created(created, removed);
+  op.check_moves(created);
   op.check_shells();
-  return op.finish(expected_volume_change);
+  CheckReport out = op.finish(expected_volume_change);
+  op.remember_positions();
+  return out;
 }
 
 }  // namespace tetcut::invariants

@@ -41,19 +41,20 @@ void NoDegradationCheck::add_created(std::uint32_t t, const RawTet& q, double ra
   created_.push_back({t, q, radius_ratio, min_dihedral_deg});
 }
 
-void NoDegradationCheck::measure(Removed& r, std::span<const Vec3> positions) const {
+void NoDegradationCheck::measure(Removed& r, std::span<const Vec3> old_positions) const {
   if (!std::isnan(r.ratio)) return;
-  const Vec3 &a = positions[r.q[0]], &b = positions[r.q[1]], &c = positions[r.q[2]], &d = positions[r.q[3]];
+  const Vec3 &a = old_positions[r.q[0]], &b = old_positions[r.q[1]], &c = old_positions[r.q[2]],
+             &d = old_positions[r.q[3]];
   r.ratio = tet_radius_ratio(a, b, c, d);
   r.dihedral = tet_min_dihedral_deg(a, b, c, d);
 }
 
-bool NoDegradationCheck::hosts(const Removed& r, const Vec3& point, std::span<const Vec3> positions) const {
+bool NoDegradationCheck::hosts(const Removed& r, const Vec3& point, std::span<const Vec3> old_positions) const {
   const Vec3 slack = 1e-9 * (r.hi - r.lo);
   if (point.x < r.lo.x - slack.x || point.y < r.lo.y - slack.y || point.z < r.lo.z - slack.z || point.x > r.hi.x + slack.x ||
       point.y > r.hi.y + slack.y || point.z > r.hi.z + slack.z)
     return false;
-  const Vec3 p[4] = {positions[r.q[0]], positions[r.q[1]], positions[r.q[2]], positions[r.q[3]]};
+  const Vec3 p[4] = {old_positions[r.q[0]], old_positions[r.q[1]], old_positions[r.q[2]], old_positions[r.q[3]]};
   const double whole = volume6(p[0], p[1], p[2], p[3]);
   if (!(whole > 0.0)) return false;
   for (int i = 0; i < 4; ++i) {
@@ -64,7 +65,8 @@ bool NoDegradationCheck::hosts(const Removed& r, const Vec3& point, std::span<co
   return true;
 }
 
-void NoDegradationCheck::locate(const Created& c, std::span<const Vec3> positions) {
+void NoDegradationCheck::locate(const Created& c, std::span<const Vec3> old_positions,
+                                std::span<const Vec3> positions) {
   const Vec3 centroid = 0.25 * (positions[c.q[0]] + positions[c.q[1]] + positions[c.q[2]] + positions[c.q[3]]);
   const std::size_t first = hosts_.size();
   // The removed tets sharing a vertex with it first (a split's child keeps a corner of its
@@ -73,24 +75,24 @@ void NoDegradationCheck::locate(const Created& c, std::span<const Vec3> position
     auto it = std::lower_bound(by_vertex_.begin(), by_vertex_.end(), std::make_pair(v, 0u));
     for (; it != by_vertex_.end() && it->first == v; ++it)
       if (std::find(hosts_.begin() + static_cast<std::ptrdiff_t>(first), hosts_.end(), it->second) == hosts_.end() &&
-          hosts(removed_[it->second], centroid, positions))
+          hosts(removed_[it->second], centroid, old_positions))
         hosts_.push_back(it->second);
   }
   if (hosts_.size() > first) return;
   for (std::uint32_t k = 0; k < removed_.size(); ++k)
-    if (hosts(removed_[k], centroid, positions)) hosts_.push_back(k);
+    if (hosts(removed_[k], centroid, old_positions)) hosts_.push_back(k);
 }
 
-void NoDegradationCheck::finish(std::span<const Vec3> positions, double floor, double min_dihedral_deg,
-                                ReportBuilder& report) {
+void NoDegradationCheck::finish(std::span<const Vec3> old_positions, std::span<const Vec3> positions, double floor,
+                                double min_dihedral_deg, ReportBuilder& report) {
   if (created_.empty() || !(floor > 0.0 || min_dihedral_deg > 0.0)) return;
   by_vertex_.clear();
   for (std::uint32_t k = 0; k < removed_.size(); ++k) {
     Removed& r = removed_[k];
-    r.lo = r.hi = positions[r.q[0]];
+    r.lo = r.hi = old_positions[r.q[0]];
     for (std::uint32_t v : r.q) {
       by_vertex_.push_back({v, k});
-      const Vec3& p = positions[v];
+      const Vec3& p = old_positions[v];
       r.lo = {std::min(r.lo.x, p.x), std::min(r.lo.y, p.y), std::min(r.lo.z, p.z)};
       r.hi = {std::max(r.hi.x, p.x), std::max(r.hi.y, p.y), std::max(r.hi.z, p.z)};
     }
@@ -103,11 +105,11 @@ void NoDegradationCheck::finish(std::span<const Vec3> positions, double floor, d
   double worst_ratio = std::numeric_limits<double>::infinity(), worst_dihedral = worst_ratio;
   for (const Created& c : created_) {
     host_begin_.push_back(static_cast<std::uint32_t>(hosts_.size()));
-    if (needs_hosts(c)) locate(c, positions);
+    if (needs_hosts(c)) locate(c, old_positions, positions);
   }
   host_begin_.push_back(static_cast<std::uint32_t>(hosts_.size()));
   for (std::uint32_t k : hosts_) {
-    measure(removed_[k], positions);
+    measure(removed_[k], old_positions);
     worst_ratio = std::min(worst_ratio, removed_[k].ratio);
     worst_dihedral = std::min(worst_dihedral, removed_[k].dihedral);
   }

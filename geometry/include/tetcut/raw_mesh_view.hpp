@@ -98,6 +98,17 @@ struct EngineRecordsView {
   std::uint64_t attribute_rows = 0;  // rows of per-vertex attributes (one per vertex id)
 };
 
+// A vertex that was there before an operation and moved during it (the improvement pass smooths
+// vertices within a cut's reach): its new position as a combination of the positions of `count`
+// vertices as they were before the operation, sum of weight[i] * old position of from[i] (the
+// engine's ChangeLog::moved, as plain numbers). What the checker's I8 holds a move to.
+struct RawMovedVertex {
+  std::uint32_t vertex = kNoRawRef;
+  std::array<std::uint32_t, 4> from{};
+  std::array<double, 4> weight{};
+  std::uint8_t count = 0;
+};
+
 struct RawMeshView {
   std::span<const Vec3> positions;                     // #V positions
   std::span<const std::array<std::uint32_t, 4>> tets;  // #T by 4 vertex ids, 0-based

@@ -130,6 +130,11 @@ struct CheckOptions {
   std::optional<double> expected_volume;
   // I10, the local level: when set, the operation was a cut with this tool.
   std::optional<ToolRule> tool;
+  // I8, the local level only: the vertices that were there before the operation and moved, as
+  // the operation reports them (the engine's change log). A vertex may move only when listed
+  // here, within the tool's reach, to where its entry's weights put it, and when every tet
+  // around it is one the operation created.
+  std::span<const RawMovedVertex> moved;
   double volume_rel_tolerance = 1e-9;
   // Names the operation in the report ("remove tet 12", "cut 3"), for people triaging.
   std::string operation;
@@ -181,6 +186,12 @@ CheckReport check_mesh(const RawMeshView& mesh, const CheckOptions& options = {}
 // when the options name the cut's tool: over the tets its own grid of bounding boxes finds near
 // the tool (built on the first such check, O(#T) once, then kept up to date per operation), and,
 // when uncuttable tets were named, that the operation kept their volume.
+// An existing vertex moves only within the cut's reach, and as the change log says
+// (CheckOptions::moved): the checker keeps its own copy of every vertex's position as it last
+// saw it, so that the removed tets are judged as they were (their volume, their quality, the
+// uncuttable tissue they held) and a move nobody reported is caught (I8) at the next operation
+// that touches the vertex. That copy is one Vec3 per vertex more than the index; it is taken
+// once by reset() and then updated for the touched and the reported vertices only.
 // It assumes the mesh was valid before the operation: it reports what the operation broke.
 // compact() renumbers everything: build a new LocalChecker after it.
 class LocalChecker {
@@ -194,7 +205,8 @@ class LocalChecker {
   LocalChecker& operator=(LocalChecker&&) noexcept;
 
   // `mesh`: the same engine mesh after the operation (its raw_view() again). `removed`: tet
-  // ids the operation killed (their old vertices are remembered from the index); `created`:
+  // ids the operation killed (their old vertices are remembered from the index, their old
+  // positions from the checker's copy); `created`:
   // ids it made live (may reuse removed ids); both as the caller holds them (TetId spans or
   // vectors). I9 is checked when an expected volume change of the region (created volume -
   // removed volume) is given. options.level is ignored (the region is always checked
@@ -217,6 +229,7 @@ class LocalChecker {
   std::vector<double> known_volume_;                          // its signed volume when created
   std::vector<double> known_rounding_;                        // the rounding bound of that volume
   std::vector<std::vector<std::uint32_t>> vertex_to_tets_;     // its own incidence
+  std::vector<Vec3> known_positions_;                          // each vertex where it last saw it
   std::vector<std::uint8_t> excluded_;                         // per tet, during one check
   std::vector<std::uint32_t> touched_stamp_;                   // per vertex
   std::uint32_t stamp_ = 0;
