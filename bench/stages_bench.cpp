@@ -165,6 +165,7 @@ void BM_LocalCheck(benchmark::State& state) {
     tetcut::invariants::CheckOptions options;  // with the tissue rule (I10) at the cut's tool
     options.tool = tetcut::invariants::ToolRule{.centre = {95, y, 100}, .radius = 4.0, .d_ref = cutter.params().d_ref(),
                                                 .left = cutter.last_left_in_tool()};
+    options.moved = cutter.last_moved();
     state.ResumeTiming();
     failures += !local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options).ok();
   }

@@ -236,6 +236,7 @@ Outcome run_tetcut(const Sweep& s, std::size_t cuts) {
     if (r.ok)
       options.tool = inv::ToolRule{.centre = s.centres[i], .radius = params.tool_diameter / 2, .d_ref = params.d_ref(),
                                    .left = cutter.last_left_in_tool()};
+    options.moved = cutter.last_moved();
     out.count(local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options), i,
               r.tets_removed);
   }

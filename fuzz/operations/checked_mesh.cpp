@@ -39,15 +39,18 @@ void CheckedMesh::end(const ChangeLog& log, std::optional<double> volume_change,
                       const inv::ToolRule* tool, std::optional<double> min_dihedral_deg) {
   created_.clear();
   for (const CreatedTet& c : log.created) created_.push_back(c.tet);
-  end(log.removed, created_, volume_change, rule, tool, min_dihedral_deg);
+  moved_.clear();
+  for (const MovedVertex& m : log.moved) moved_.push_back(raw_moved(m));
+  end(log.removed, created_, volume_change, rule, tool, min_dihedral_deg, moved_);
 }
 
 void CheckedMesh::end(std::span<const TetId> removed, std::span<const TetId> created,
                       std::optional<double> volume_change, inv::QualityRule rule, const inv::ToolRule* tool,
-                      std::optional<double> min_dihedral_deg) {
+                      std::optional<double> min_dihedral_deg, std::span<const RawMovedVertex> moved) {
   if (volume_change) expected_volume_ += *volume_change;
   inv::CheckOptions options;
   if (tool) options.tool = *tool;
+  options.moved = moved;
   if (min_dihedral_deg) options.min_dihedral_deg = *min_dihedral_deg;
   options.level = inv::CheckLevel::kLocal;
   options.quality_rule = rule;

@@ -51,9 +51,11 @@ class CheckedMesh {
   void end(const ChangeLog& log, std::optional<double> volume_change,
            invariants::QualityRule rule = invariants::QualityRule::kNoDegradation,
            const invariants::ToolRule* tool = nullptr, std::optional<double> min_dihedral_deg = std::nullopt);
+  // `moved`: the vertices there before that the operation moved (Cutter::last_moved()).
   void end(std::span<const TetId> removed, std::span<const TetId> created, std::optional<double> volume_change,
            invariants::QualityRule rule = invariants::QualityRule::kNoDegradation,
-           const invariants::ToolRule* tool = nullptr, std::optional<double> min_dihedral_deg = std::nullopt);
+           const invariants::ToolRule* tool = nullptr, std::optional<double> min_dihedral_deg = std::nullopt,
+           std::span<const RawMovedVertex> moved = {});
   // Ends an operation that renumbered everything (compact()): the local checker starts over and
   // the full check runs.
   void end_renumbered();
@@ -76,6 +78,7 @@ class CheckedMesh {
   std::string arguments_;
   bool tracing_ = false;
   std::vector<TetId> created_;
+  std::vector<RawMovedVertex> moved_;
 };
 
 }  // namespace tetcut::fuzz

@@ -126,7 +126,8 @@ OperationOutcome SequenceSession::after(const CutReport& report, const Vec3* cut
     tool = invariants::ToolRule{.centre = *cut_centre, .radius = cutter_.params().tool_diameter / 2,
                                 .d_ref = cutter_.params().d_ref(), .left = cutter_.last_left_in_tool()};
   checked_.end(cutter_.last_removed(), cutter_.last_created(), change, invariants::QualityRule::kNoDegradation,
-               tool ? &*tool : nullptr, std::min(cutter_.params().min_dihedral_deg, cutter_.last_min_dihedral_held()));
+               tool ? &*tool : nullptr, std::min(cutter_.params().min_dihedral_deg, cutter_.last_min_dihedral_held()),
+               cutter_.last_moved());
   if (!cutter_.last_removed().empty() || !cutter_.last_created().empty()) changed_since_full_check_ = true;
   const std::uint64_t before = unresolved_;
   unresolved_ += report.unresolved;

@@ -91,6 +91,7 @@ void TensorMassModel::reserve(std::uint32_t tets, std::uint32_t vertices) {
   tets_.reserve(tets);
   labels_.reserve(tets);
   created_labels_.reserve(std::max<std::size_t>(created_labels_.capacity(), 4096));
+  interpolated_.reserve(std::max<std::size_t>(interpolated_.capacity(), 4096));
   for (auto* a : {&rest_, &u_, &v_, &force_}) a->reserve(vertices);
   vertex_k_.reserve(vertices);
   vertex_scale_.reserve(vertices);
@@ -277,25 +278,30 @@ std::uint32_t TensorMassModel::inherited_label(const TetMesh& mesh, const Change
 ApplyProblems TensorMassModel::apply(const TetMesh& mesh, const ChangeLog& log) {
   ApplyProblems problems;
   grow(mesh.tet_capacity(), mesh.vertex_capacity());
-  // Created vertices: their origins are vertices from before, whose values are still here.
-  for (const CreatedVertex& cv : log.vertices) {
-    const std::uint32_t v = cv.vertex.value;
-    Vec3 u{}, w{};
-    bool fixed = cv.count > 0;
+  // Created and moved vertices: their origins are vertices from before, whose values are still
+  // here. All are computed before any is written: a moved vertex is the origin of others.
+  interpolated_.clear();
+  auto interpolate = [&](const CreatedVertex& cv) {
+    Interpolated out{cv.vertex.value, {}, {}, cv.count > 0};
     for (std::uint8_t i = 0; i < cv.count; ++i) {
       const std::uint32_t f = cv.from[i].value;
       if (f >= vertex_tets_.size() || vertex_tets_[f] == 0) {
         ++problems.origin_not_live;
-        fixed = false;
+        out.fixed = false;
         continue;
       }
-      u = u + cv.weight[i] * u_[f];
-      w = w + cv.weight[i] * v_[f];
-      fixed = fixed && fixed_[f] != 0;
+      out.u = out.u + cv.weight[i] * u_[f];
+      out.v = out.v + cv.weight[i] * v_[f];
+      out.fixed = out.fixed && fixed_[f] != 0;
     }
-    fixed_[v] = fixed ? 1 : 0;
-    u_[v] = fixed ? Vec3{} : u;
-    v_[v] = fixed ? Vec3{} : w;
+    interpolated_.push_back(out);
+  };
+  for (const CreatedVertex& cv : log.vertices) interpolate(cv);
+  for (const MovedVertex& mv : log.moved) interpolate(mv);
+  for (const Interpolated& x : interpolated_) {
+    fixed_[x.vertex] = x.fixed ? 1 : 0;
+    u_[x.vertex] = x.fixed ? Vec3{} : x.u;
+    v_[x.vertex] = x.fixed ? Vec3{} : x.v;
   }
   created_labels_.clear();
   for (const CreatedTet& c : log.created) created_labels_.push_back(inherited_label(mesh, log, c, problems));

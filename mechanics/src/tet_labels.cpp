@@ -30,6 +30,13 @@ std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
   // The created tets' labels first, while their parents are still here.
   std::uint32_t orphans = 0;
   created_labels_.clear();
+  // The parents as they were: a vertex the operation moved is where the log says it was (moved
+  // is sorted by id).
+  auto before = [&](std::uint32_t v) -> Vec3 {
+    const auto m = std::lower_bound(log.moved.begin(), log.moved.end(), VertId{v},
+                                    [](const MovedVertex& x, VertId id) { return x.vertex < id; });
+    return m != log.moved.end() && m->vertex == VertId{v} ? m->before : mesh.position(VertId{v});
+  };
   for (const CreatedTet& c : log.created) {
     const auto cv = mesh.tet(c.tet);
     const auto parents = log.parents_of(c);
@@ -39,8 +46,7 @@ std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
         parents, log.removed, [&](TetId p) { return has(p); }, [&](TetId p) { return labels_[p.value]; },
         [&](TetId p) {
           const auto& pv = tets_[p.value];
-          return tet_contains(mesh.position(VertId{pv[0]}), mesh.position(VertId{pv[1]}),
-                              mesh.position(VertId{pv[2]}), mesh.position(VertId{pv[3]}), centroid);
+          return tet_contains(before(pv[0]), before(pv[1]), before(pv[2]), before(pv[3]), centroid);
         });
     if (label == kNoLabel) ++orphans;
     created_labels_.push_back(label);

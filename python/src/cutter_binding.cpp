@@ -38,6 +38,8 @@ struct Changes {
   py::array_t<std::int64_t> removed, created, parent, parents, parents_offsets;
   py::array_t<std::int64_t> new_vertices, new_vertex_edges, new_vertex_from, removed_vertices;
   py::array_t<double> new_vertex_t, new_vertex_weights;
+  py::array_t<std::int64_t> moved_vertices, moved_vertex_from;
+  py::array_t<double> moved_vertex_weights, moved_vertex_before;
 };
 
 struct Report {
@@ -98,9 +100,27 @@ Changes changes_of(const ChangeLog& log) {
       weights(i, k) = k < v.count ? v.weight[k] : 0.0;
     }
   }
+  const auto nm = static_cast<py::ssize_t>(log.moved.size());
+  c.moved_vertices = py::array_t<std::int64_t>(nm);
+  c.moved_vertex_from = py::array_t<std::int64_t>({nm, py::ssize_t{4}});
+  c.moved_vertex_weights = py::array_t<double>({nm, py::ssize_t{4}});
+  c.moved_vertex_before = py::array_t<double>({nm, py::ssize_t{3}});
+  auto moved_from = c.moved_vertex_from.mutable_unchecked<2>();
+  auto moved_weights = c.moved_vertex_weights.mutable_unchecked<2>();
+  auto moved_before = c.moved_vertex_before.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < nm; ++i) {
+    const MovedVertex& v = log.moved[static_cast<std::size_t>(i)];
+    c.moved_vertices.mutable_data()[i] = v.vertex.value;
+    for (int k = 0; k < 4; ++k) {
+      moved_from(i, k) = k < v.count ? static_cast<std::int64_t>(v.from[k].value) : -1;
+      moved_weights(i, k) = k < v.count ? v.weight[k] : 0.0;
+    }
+    moved_before(i, 0) = v.before.x, moved_before(i, 1) = v.before.y, moved_before(i, 2) = v.before.z;
+  }
   for (py::array* a : std::initializer_list<py::array*>{&c.removed, &c.created, &c.parent, &c.parents, &c.parents_offsets,
                        &c.new_vertices, &c.new_vertex_edges, &c.new_vertex_from, &c.removed_vertices,
-                                                       &c.new_vertex_t, &c.new_vertex_weights})
+                       &c.new_vertex_t, &c.new_vertex_weights, &c.moved_vertices, &c.moved_vertex_from,
+                       &c.moved_vertex_weights, &c.moved_vertex_before})
     make_read_only(*a);
   return c;
 }
@@ -517,7 +537,8 @@ void report_field(py::class_<Report>& c, const char* name, T Owner::*field, cons
 std::string changes_repr(const Changes& c) {
   return "<tetcut.Changes " + std::to_string(c.removed.size()) + " removed, " + std::to_string(c.created.size()) +
          " created, " + std::to_string(c.new_vertices.size()) + " new vertices, " +
-         std::to_string(c.removed_vertices.size()) + " removed vertices>";
+         std::to_string(c.moved_vertices.size()) + " moved vertices, " + std::to_string(c.removed_vertices.size()) +
+         " removed vertices>";
 }
 
 // tetcut.Changes: a cut's net change as numpy arrays.
@@ -544,6 +565,14 @@ report.changes, and the same arrays on every access.)doc");
                     "#N by 4 int64: the old vertices it is a convex combination of (-1 padded).")
       .def_readonly("new_vertex_weights", &Changes::new_vertex_weights, "#N by 4 float64: their weights (sum 1).")
       .def_readonly("removed_vertices", &Changes::removed_vertices, "int64: vertices no tet uses any more.")
+      .def_readonly("moved_vertices", &Changes::moved_vertices,
+                    "#M int64: vertices there before the cut that its improvement pass moved (within the cut's reach), sorted; "
+                    "every tet around one is in removed and created.")
+      .def_readonly("moved_vertex_from", &Changes::moved_vertex_from,
+                    "#M by 4 int64: the old vertices its new position is a combination of (-1 padded); "
+                    "compute every new and moved vertex's values from the old ones before writing any.")
+      .def_readonly("moved_vertex_weights", &Changes::moved_vertex_weights, "#M by 4 float64: their weights (sum 1).")
+      .def_readonly("moved_vertex_before", &Changes::moved_vertex_before, "#M by 3 float64: where it was before the cut.")
       .def("__repr__", &changes_repr);
 }
 
@@ -632,6 +661,8 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
   report_field(report, "improvement_flips", &CutReport::improvement_flips, "Flips the improvement pass made.");
   report_field(report, "improvement_collapses", &CutReport::improvement_collapses, "Edge collapses the improvement pass made.");
   report_field(report, "improvement_moves", &CutReport::improvement_moves, "Vertex moves (smoothing) the improvement pass made.");
+  report_field(report, "vertices_moved", &CutReport::vertices_moved,
+               "Vertices there before the cut that the pass moved, within the cut's reach (changes.moved_vertices).");
   report_field(report, "improvement_insertions", &CutReport::improvement_insertions,
                "Edge splits the improvement pass made and kept (insertion at an edge's midpoint).");
   report_field(report, "tets_removed_by_improvement", &CutReport::tets_removed_by_improvement,

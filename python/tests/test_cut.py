@@ -66,6 +66,30 @@ def test_report_fields_and_changes_agree_with_the_mesh(box):
     assert tetcut.check(box) == []
 
 
+def test_moved_vertices_are_where_their_weights_on_the_old_points_put_them():
+    # Small tools on the cylinder (about 0.4 of its median edge): the improvement pass moves a
+    # few vertices that were there before, within the cut's reach.
+    mesh = tetcut.read(str(CORPUS / "cylinder.msh"))
+    cutter = tetcut.Cutter(mesh, tool_diameter=0.2)
+    moved = 0
+    for centre in np.linspace((0.0, -0.8, 0.5), (0.0, 0.8, 3.5), 52):
+        before = dict(zip(mesh.vertex_ids, mesh.points))
+        report = cutter.cut(tuple(centre))
+        assert report.ok
+        c = report.changes
+        assert len(c.moved_vertices) == report.vertices_moved
+        assert list(c.moved_vertices) == sorted(c.moved_vertices)
+        after = dict(zip(mesh.vertex_ids, mesh.points))
+        for v, frm, w, was in zip(c.moved_vertices, c.moved_vertex_from, c.moved_vertex_weights, c.moved_vertex_before):
+            np.testing.assert_array_equal(was, before[v])
+            assert not np.array_equal(after[v], before[v])
+            np.testing.assert_allclose(w.sum(), 1.0)
+            np.testing.assert_allclose(after[v], sum(wk * before[f] for f, wk in zip(frm, w) if f >= 0), atol=1e-12)
+            moved += 1
+        assert set(c.moved_vertices) <= set(after)
+    assert moved > 0, "no cut moved a vertex there before: the test tests nothing"
+
+
 def test_a_cut_in_the_air_changes_nothing(box):
     before = box.hash()
     r = tetcut.Cutter(box, tool_diameter=1.0).cut((50, 50, 50))
@@ -278,7 +302,8 @@ def test_change_arrays_are_read_only_and_the_same_on_every_read(box):
     report = tetcut.Cutter(box, tool_diameter=1.5).cut((2, 2, 4))
     changes = report.changes
     for name in ["removed", "created", "parent", "parents", "parents_offsets", "new_vertices", "new_vertex_edges",
-                 "new_vertex_t", "new_vertex_from", "new_vertex_weights", "removed_vertices"]:
+                 "new_vertex_t", "new_vertex_from", "new_vertex_weights", "removed_vertices", "moved_vertices",
+                 "moved_vertex_from", "moved_vertex_weights", "moved_vertex_before"]:
         a = getattr(changes, name)
         assert not a.flags.writeable, name
         with pytest.raises(ValueError, match="read-only"):

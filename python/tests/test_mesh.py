@@ -176,7 +176,8 @@ def test_every_index_array_is_int64_but_the_slot_views(box):
     report = tetcut.Cutter(box, tool_diameter=1.5).cut((2, 2, 3))
     arrays = [box.tets, box.tet_ids, box.vertex_ids, box.surface(), *box.compact()]
     arrays += [getattr(report.changes, n) for n in ["removed", "created", "parent", "parents", "parents_offsets",
-                                                    "new_vertices", "new_vertex_edges", "new_vertex_from", "removed_vertices"]]
+                                                    "new_vertices", "new_vertex_edges", "new_vertex_from", "removed_vertices",
+                                                    "moved_vertices", "moved_vertex_from"]]
     assert all(a.dtype == np.int64 for a in arrays)
     tetcut.Cutter(box, tool_diameter=1.5).cut((0, 4, 4))
     slots = box.slot_tets

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <vector>
 
 #include "tetcut/change_log.hpp"
 #include "tetcut/mesh.hpp"
@@ -50,6 +51,35 @@ inline int expect_log_describes(const TetMesh& before, const TetMesh& mesh, cons
       EXPECT_NEAR(mesh.attributes().value(ch, v.vertex)[0], want, 1e-12);
     }
     beyond_edges += v.count > 2;
+  }
+  // A vertex there before that moved: where it was and where it is, over the old positions, with
+  // every tet around it new.
+  EXPECT_TRUE(std::is_sorted(log.moved.begin(), log.moved.end(),
+                             [](const MovedVertex& x, const MovedVertex& y) { return x.vertex < y.vertex; }));
+  for (const MovedVertex& v : log.moved) {
+    EXPECT_TRUE(before.is_live(v.vertex));
+    EXPECT_TRUE(mesh.is_live(v.vertex));
+    EXPECT_EQ(v.before, before.position(v.vertex)) << "moved vertex " << v.vertex.value;
+    EXPECT_NE(v.before, mesh.position(v.vertex)) << "moved vertex " << v.vertex.value << " did not move";
+    Vec3 p{};
+    double sum = 0.0;
+    for (int i = 0; i < v.count; ++i) {
+      EXPECT_TRUE(before.is_live(v.from[i]));
+      p = p + v.weight[i] * before.position(v.from[i]);
+      sum += v.weight[i];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-14);
+    EXPECT_LT(norm(p - mesh.position(v.vertex)), 1e-12) << "moved vertex " << v.vertex.value;
+    for (std::uint32_t ch = 0; ch < mesh.attributes().channel_count(); ++ch) {
+      double want = 0.0;
+      for (int i = 0; i < v.count; ++i) want += v.weight[i] * before.attributes().value(ch, v.from[i])[0];
+      EXPECT_NEAR(mesh.attributes().value(ch, v.vertex)[0], want, 1e-12);
+    }
+    std::vector<TetId> shell;
+    mesh.vertex_shell(v.vertex, shell);
+    for (TetId t : shell)
+      EXPECT_TRUE(std::any_of(log.created.begin(), log.created.end(), [&](const CreatedTet& c) { return c.tet == t; }))
+          << "tet " << t.value << " around moved vertex " << v.vertex.value << " is not new";
   }
   for (VertId v : log.removed_vertices) {
     EXPECT_TRUE(before.is_live(v));

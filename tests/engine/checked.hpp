@@ -28,13 +28,15 @@ inline ::testing::AssertionResult mesh_is_valid(const TetMesh& mesh,
 }
 
 // What the local checker holds the cut `cutter` just made at `centre` to: the default rules and
-// I10 with the cut's tool, D_ref and the tets it reports left (a view: use it before the next cut).
+// I10 with the cut's tool, D_ref and the tets it reports left, I8 with the vertices it moved (views:
+// use them before the next cut).
 inline invariants::CheckOptions cut_check(const Cutter& cutter, const Vec3& centre) {
   invariants::CheckOptions options;
   options.min_dihedral_deg = std::min(cutter.params().min_dihedral_deg, cutter.last_min_dihedral_held());
   options.quality_floor = cutter.params().quality_floor;
   options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
                                       .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
+  options.moved = cutter.last_moved();
   return options;
 }
 

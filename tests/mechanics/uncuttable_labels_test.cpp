@@ -136,6 +136,7 @@ TEST_P(Uncuttable, EveryCutLeavesTheVesselWholeAndTakesTheTissueAroundIt) {
     options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
                                         .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
     options.min_dihedral_deg = std::min(cutter.params().min_dihedral_deg, cutter.last_min_dihedral_held());
+    options.moved = cutter.last_moved();
     const invariants::CheckReport check =
         checker.after_operation(box.mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options);
     ASSERT_TRUE(check.ok()) << invariants::id_string(check.violations.front().id) << ": " << check.violations.front().detail;
@@ -222,6 +223,7 @@ TEST_P(Uncuttable, ScatteredUncuttableTetsOnTheBundledMeshesSurviveEveryCut) {
       options.tool = invariants::ToolRule{.centre = centre, .radius = cutter.params().tool_diameter / 2,
                                           .d_ref = cutter.params().d_ref(), .left = cutter.last_left_in_tool()};
       options.min_dihedral_deg = std::min(cutter.params().min_dihedral_deg, cutter.last_min_dihedral_held());
+      options.moved = cutter.last_moved();
       const invariants::CheckReport check =
           checker.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), options);
       ASSERT_TRUE(check.ok()) << invariants::id_string(check.violations.front().id) << ": " << check.violations.front().detail;

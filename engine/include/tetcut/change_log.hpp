@@ -9,11 +9,18 @@
 //   vertices          vertices made and still used, sorted by id, each a convex combination of
 //                     vertices live before (an edge midpoint: two; a vertex smoothing moved off
 //                     its edge: barycentric coordinates in the tet it moved into);
+//   moved             vertices live before and after that the operation moved (the improvement
+//                     pass smooths vertices within a cut's reach: improve/smoothing.hpp), sorted
+//                     by id, each with its new position as a combination of vertices live
+//                     before, as `vertices` has them; every tet around one is in `removed` and
+//                     `created` (a tet's shape changed, so it is a new tet);
 //   removed_vertices  vertices live before and gone after (no tet uses them any more).
 //
 // Net means intermediate steps are invisible: a tet a refinement made and a later step split or
 // removed again appears nowhere, and its children's parents are the tets that were there before.
-// Apply removals first, then creations. Ids of removed tets and vertices may be reused by
+// Apply removals first, then creations. Compute the values of created and moved vertices from
+// the values before the operation, all of them before writing any: a moved vertex may be an
+// origin of another. Ids of removed tets and vertices may be reused by
 // created ones in a later operation, never within one.
 #pragma once
 
@@ -24,6 +31,8 @@
 #include <vector>
 
 #include "tetcut/ids.hpp"
+#include "tetcut/raw_mesh_view.hpp"
+#include "tetcut/vec3.hpp"
 
 namespace tetcut {
 
@@ -50,11 +59,27 @@ struct CreatedVertex {
   [[nodiscard]] bool on_edge() const { return count == 2; }
 };
 
+// A vertex there before the operation that it moved: where it is now, as a created vertex's
+// record says it (`vertex` an old id, usually one of its own origins: it moves within its old
+// star), and where it was, for a consumer that needs the old tets' shapes (which old tet holds a
+// created tet's centroid) without a copy of its own.
+struct MovedVertex : CreatedVertex {
+  Vec3 before{};
+};
+
+// The move as plain numbers, the way the independent checker reads it (CheckOptions::moved).
+inline RawMovedVertex raw_moved(const MovedVertex& m) {
+  RawMovedVertex raw{m.vertex.value, {}, m.weight, m.count};
+  for (std::size_t i = 0; i < m.count; ++i) raw.from[i] = m.from[i].value;
+  return raw;
+}
+
 struct ChangeLog {
   std::vector<TetId> removed;
   std::vector<CreatedTet> created;
   std::vector<TetId> parents;
   std::vector<CreatedVertex> vertices;
+  std::vector<MovedVertex> moved;
   std::vector<VertId> removed_vertices;
 
   [[nodiscard]] std::span<const TetId> parents_of(const CreatedTet& c) const {
@@ -67,6 +92,7 @@ struct ChangeLog {
     created.reserve(n);
     parents.reserve(2 * n);
     vertices.reserve(n);
+    moved.reserve(n);
     removed_vertices.reserve(n);
   }
 
@@ -75,6 +101,7 @@ struct ChangeLog {
     created.clear();
     parents.clear();
     vertices.clear();
+    moved.clear();
     removed_vertices.clear();
   }
 };
@@ -89,6 +116,7 @@ inline void append(ChangeLog& to, const ChangeLog& from) {
   }
   to.parents.insert(to.parents.end(), from.parents.begin(), from.parents.end());
   to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+  to.moved.insert(to.moved.end(), from.moved.begin(), from.moved.end());
   to.removed_vertices.insert(to.removed_vertices.end(), from.removed_vertices.begin(), from.removed_vertices.end());
 }
 

@@ -169,6 +169,10 @@ struct CutReport : RequestCounts {
   // (an edge split at its midpoint, kept), and the slivers it let go with the tissue (in
   // tets_removed_by_improvement, apart from the requests' tets_removed).
   std::uint32_t improvement_flips = 0, improvement_collapses = 0, improvement_moves = 0, improvement_insertions = 0;
+  // Vertices there before the cut that the pass moved (within the cut's reach, each to where its
+  // whole star meets the floors): ChangeLog::moved, Cutter::last_moved(). Net: a vertex moved
+  // twice counts once.
+  std::uint32_t vertices_moved = 0;
   std::uint32_t tets_removed_by_improvement = 0;
   double d_ref = 0;                  // the D_ref the cut was judged at: CutParams::d_ref()
   RefinementRule refinement = RefinementRule::kPaper;  // the rule of the attempt that ended it
@@ -246,6 +250,9 @@ class Cutter {
   // The removals and creations of the last cut, net (what LocalChecker wants).
   [[nodiscard]] const std::vector<TetId>& last_removed() const;
   [[nodiscard]] const std::vector<TetId>& last_created() const;
+  // The vertices there before the last cut that it moved (ChangeLog::moved, as raw numbers: what
+  // LocalChecker's I8 holds a move to, CheckOptions::moved), sorted by vertex id.
+  [[nodiscard]] std::span<const RawMovedVertex> last_moved() const;
   // The tets the last cut left in its tool (CutReport::left_in_tool), sorted by id: what the
   // checker's I10 accepts as reported.
   [[nodiscard]] std::span<const TetId> last_left_in_tool() const;

@@ -146,14 +146,25 @@ class TetMesh {
   // A new vertex at (1 - t) * a + t * b with every attribute channel interpolated the same way
   // (paper 3.2: texture and mechanical data follow the split).
   VertId add_vertex_on_edge(VertId a, VertId b, double t);
-  // Moves a vertex the open transaction made (smoothing; never a vertex that was there before:
-  // input vertices do not move). Its origin becomes barycentric coordinates in the tet that was
-  // there before the transaction and contains its new position, and its attribute channels
-  // are interpolated from them, so a consumer still sees one convex combination of old values.
-  // The tets around it are made anew (new ids appended to `created`), each with all of them as
-  // parents: moving v reshapes its star within the same polytope, so every tet of it lies in
-  // the star's old tets, not in its own parent alone.
+  // Moves a vertex inside the open transaction (smoothing). Its origin becomes barycentric
+  // coordinates in the tet that was there before the transaction and contains its new position
+  // (at the positions of then: position_at_start()), so a consumer still sees one combination of
+  // old values. A vertex the transaction made has its attribute channels interpolated now; a
+  // vertex that was there before (ChangeLog::moved) keeps them until commit(), which
+  // interpolates every vertex the log names from the values at the start, so that no value is
+  // read after it changed. The tets around it are made anew (new ids appended to `created`),
+  // each with all of them as parents: moving v reshapes its star within the same polytope, so
+  // every tet of it lies in the star's old tets, not in its own parent alone.
   void move_vertex(VertId v, const Vec3& p, std::vector<TetId>* created = nullptr);
+  // Where v was when the open transaction began: its position now unless the transaction moved
+  // it (a vertex it made: where it was made or last moved to, which is where it is). O(1).
+  [[nodiscard]] const Vec3& position_at_start(VertId v) const {
+    if (journal_.vertex_moves.empty()) return positions_[v.value];
+    const VertexMove* move = current_move(v);
+    return move ? move->start : positions_[v.value];
+  }
+  // Whether the open transaction moved v, a vertex that was there before it.
+  [[nodiscard]] bool moved_in_transaction(VertId v) const { return current_move(v) != nullptr; }
 
   // The one local mutation primitive: removes `removed` and inserts `added`, gluing the new tets
   // to each other and to the faces the removed ones shared with the rest of the mesh (matched by
@@ -215,7 +226,7 @@ class TetMesh {
     std::uint32_t entries = 0, attribute_values = 0;
     std::uint32_t tets = 0, vertices = 0;  // array sizes
     std::uint32_t live_tets = 0, live_vertices = 0;
-    std::uint32_t tet_births = 0, parents = 0, vertex_births = 0, births_removed = 0;
+    std::uint32_t tet_births = 0, parents = 0, vertex_births = 0, vertex_moves = 0, births_removed = 0;
     TetId free_tet_head, pending_tet_head, pending_tet_tail;
     VertId free_vert_head, pending_vert_head, pending_vert_tail;
   };
@@ -236,6 +247,13 @@ class TetMesh {
     VertId vertex;
     VertId a, b;
     double t = 0.0;
+    CreatedVertex origin;
+  };
+  // A vertex that was there before the open transaction and moved in it: where it was, and where
+  // it is now over vertices there before (their positions at the start).
+  struct VertexMove {
+    VertId vertex;
+    Vec3 start;
     CreatedVertex origin;
   };
   // What the open transaction made since `point`, in the order it was made: raw, not net (a tet
@@ -279,6 +297,9 @@ class TetMesh {
   // gets the ids live then and dead now, `created` the ids live now and dead then. O(tets made
   // and freed since the point), from the births and the freed ids, not the journal.
   void changes_since(const Savepoint& point, std::vector<TetId>& removed, std::vector<TetId>& created);
+  // The vertices there before the open transaction that it moved and that are still used and not
+  // back where they were, by id, with their origins (ChangeLog::moved). O(moves).
+  void moved_vertices(std::vector<MovedVertex>& out) const;
   // The same since begin_transaction(): what the local checker needs, whatever mix of
   // operations ran.
   void transaction_changes(std::vector<TetId>& removed, std::vector<TetId>& created) {
@@ -383,9 +404,11 @@ class TetMesh {
     std::vector<TetBirth> tet_births;
     std::vector<TetId> parents;
     std::vector<VertexBirth> vertex_births;
+    std::vector<VertexMove> vertex_moves;
     std::uint32_t births_removed = 0;      // tets made in the transaction and removed again
     StampedMap<TetId, std::uint32_t> birth_of;
     StampedMap<VertId, std::uint32_t> vertex_birth_of;
+    StampedMap<VertId, std::uint32_t> vertex_move_of;
     // Per tet id noted: its first kTetVerts entry (the tet's vertices at begin_transaction()),
     // indexed up to entry first_verts_indexed.
     StampedMap<TetId, std::uint32_t> first_verts_entry;
@@ -404,6 +427,13 @@ class TetMesh {
   // they were put on, or located in an old tet (mesh_journal.cpp).
   void compose_origin(VertId a, VertId b, double t, CreatedVertex& out) const;
   void locate_origin(VertId v, CreatedVertex& out);
+  // The move of v in the open transaction, if it was there before and moved.
+  [[nodiscard]] const VertexMove* current_move(VertId v) const;
+  // At commit, when the transaction moved vertices that were there before: every vertex the log
+  // names (made or moved) gets its attribute channels from its origin's values at the start.
+  void interpolate_attributes_at_commit();
+  std::vector<double> attribute_scratch_;
+  std::vector<MovedVertex> moved_scratch_;
   void append_change_log(ChangeLog& log);
   std::vector<TetId> ancestor_stack_, locate_scratch_, net_removed_scratch_, net_created_scratch_, move_star_;
   std::vector<TetVerts> move_tets_;

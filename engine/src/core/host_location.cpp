@@ -28,7 +28,7 @@ DeepestTet deepest_at_start(TetMesh& mesh, std::span<const TetId> candidates, co
   DeepestTet deepest(p);
   for (TetId t : candidates) {
     const TetMesh::TetVerts c = mesh.tet_at_start(t);
-    deepest.offer(t, c, {mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]), mesh.position(c[3])});
+    deepest.offer(t, c, {mesh.position_at_start(c[0]), mesh.position_at_start(c[1]), mesh.position_at_start(c[2]), mesh.position_at_start(c[3])});
   }
   return deepest;
 }

@@ -45,7 +45,8 @@ class DeepestTet {
 };
 
 // The host of p among `candidates`, tets live at begin_transaction(), at their shape then
-// (TetMesh::tet_at_start: their vertices were there before the transaction).
+// (TetMesh::tet_at_start, their corners at TetMesh::position_at_start: those vertices were there
+// before the transaction, and a move since does not change where the tet was).
 DeepestTet deepest_at_start(TetMesh& mesh, std::span<const TetId> candidates, const Vec3& p);
 
 }  // namespace tetcut::detail

@@ -27,6 +27,7 @@ TetMesh::Savepoint TetMesh::savepoint() {
   p.tet_births = static_cast<std::uint32_t>(journal_.tet_births.size());
   p.parents = static_cast<std::uint32_t>(journal_.parents.size());
   p.vertex_births = static_cast<std::uint32_t>(journal_.vertex_births.size());
+  p.vertex_moves = static_cast<std::uint32_t>(journal_.vertex_moves.size());
   p.births_removed = journal_.births_removed;
   p.free_tet_head = free_tet_head_;
   p.pending_tet_head = pending_tet_head_;
@@ -51,6 +52,8 @@ void TetMesh::begin_transaction() {
   journal_.births_removed = 0;
   journal_.birth_of.clear();
   journal_.vertex_birth_of.clear();
+  journal_.vertex_moves.clear();
+  journal_.vertex_move_of.clear();
   journal_.first_verts_entry.clear();
   journal_.first_verts_indexed = 0;
   journal_.start = savepoint();
@@ -58,8 +61,10 @@ void TetMesh::begin_transaction() {
 }
 
 void TetMesh::commit(ChangeLog* log) {
+  if (journal_.active && !journal_.vertex_moves.empty() && attributes_.channel_count() > 0) interpolate_attributes_at_commit();
   if (log && journal_.active) append_change_log(*log);
   journal_.active = false;
+  journal_.vertex_moves.clear();
   journal_.entries.clear();
   journal_.attribute_values.clear();
   // The ids freed by the transaction become reusable now.
@@ -121,6 +126,7 @@ void TetMesh::rollback_to(const Savepoint& p) {
   journal_.tet_births.resize(p.tet_births);
   journal_.parents.resize(p.parents);
   journal_.vertex_births.resize(p.vertex_births);
+  journal_.vertex_moves.resize(p.vertex_moves);  // their slots go stale like the births'
   journal_.births_removed = p.births_removed;
   // Entries past p are gone: their first-entry records too (rare: only after a locate).
   if (journal_.first_verts_indexed > p.entries) {
@@ -185,6 +191,59 @@ const typename Births::value_type* current_birth(const Births& births, const std
 }
 
 }  // namespace
+
+const TetMesh::VertexMove* TetMesh::current_move(VertId v) const {
+  return current_birth(journal_.vertex_moves, journal_.vertex_move_of.find(v), v);
+}
+
+void TetMesh::moved_vertices(std::vector<MovedVertex>& out) const {
+  out.clear();
+  if (!journal_.active) return;
+  for (const VertexMove& m : journal_.vertex_moves) {
+    // Moved back exactly where it was (a rollback past its move truncated the record instead):
+    // nothing a consumer must hear of.
+    if (!is_live(m.vertex) || positions_[m.vertex.value] == m.start) continue;
+    out.push_back(MovedVertex{m.origin, m.start});
+  }
+  std::sort(out.begin(), out.end(), [](const MovedVertex& x, const MovedVertex& y) { return x.vertex < y.vertex; });
+}
+
+// Every vertex the log names gets sum of weight * (its origin's value at the start), computed for
+// all of them before any is written: an origin may be a vertex that moved, whose channels still
+// hold their start values until now (move_vertex() leaves them), and a made vertex interpolated
+// on an edge to such a vertex read its start values, not those of where it had moved.
+void TetMesh::interpolate_attributes_at_commit() {
+  attribute_scratch_.clear();
+  // (A birth's origin names no vertex until the log is derived: the vertex is passed apart.)
+  auto each_named = [&](auto&& visit) {
+    for (const VertexMove& m : journal_.vertex_moves)
+      if (is_live(m.vertex)) visit(m.vertex, m.origin);
+    for (VertexBirth& b : journal_.vertex_births) {
+      if (!is_live(b.vertex)) continue;
+      if (b.origin.count == 0) {
+        locate_origin(b.vertex, b.origin);
+        b.origin.vertex = b.vertex;
+      }
+      visit(b.vertex, b.origin);
+    }
+  };
+  each_named([&](VertId, const CreatedVertex& o) {
+    for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c) {
+      const std::size_t width = attributes_.channel(c).width;
+      for (std::size_t k = 0; k < width; ++k) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < o.count; ++i) sum += o.weight[i] * attributes_.value(c, o.from[i])[k];
+        attribute_scratch_.push_back(sum);
+      }
+    }
+  });
+  std::size_t next = 0;
+  each_named([&](VertId v, const CreatedVertex&) {
+    note(Array::kAttributes, v.value);
+    for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
+      for (double& x : attributes_.value(c, v)) x = attribute_scratch_[next++];
+  });
+}
 
 // From the births and the pending list, not the journal's entries (several per tet made or
 // removed, and every neighbour glued): inside a transaction an id freed waits on the pending list
@@ -260,7 +319,7 @@ void TetMesh::locate_origin(VertId v, CreatedVertex& out) {
       if (e.array == Array::kTetVerts && e.index < journal_.start.tets) {
         const TetVerts c = tet_at_start(TetId{e.index});
         if (c[0].value == kDeadTetMarker) continue;
-        host.offer(TetId{e.index}, c, {positions_[c[0].value], positions_[c[1].value], positions_[c[2].value], positions_[c[3].value]});
+        host.offer(TetId{e.index}, c, {position_at_start(c[0]), position_at_start(c[1]), position_at_start(c[2]), position_at_start(c[3])});
       }
   }
   assert(host.found() && "a vertex made in the transaction lies in no tet that was there before it");
@@ -288,7 +347,8 @@ void TetMesh::compose_origin(VertId a, VertId b, double t, CreatedVertex& out) c
     if (w == 0.0) return true;
     const VertexBirth* birth = current_birth(journal_.vertex_births, journal_.vertex_birth_of.find(x), x);
     const CreatedVertex single{x, {x}, {1.0}, 1};
-    const CreatedVertex& o = birth ? birth->origin : single;
+    const VertexMove* move = birth ? nullptr : current_move(x);
+    const CreatedVertex& o = birth ? birth->origin : move ? move->origin : single;
     if (o.count == 0) return false;
     for (int i = 0; i < o.count; ++i) {
       int k = 0;
@@ -327,6 +387,11 @@ void TetMesh::append_change_log(ChangeLog& log) {
   }
   std::sort(log.vertices.begin() + static_cast<std::ptrdiff_t>(first_vertex), log.vertices.end(),
             [](const CreatedVertex& x, const CreatedVertex& y) { return x.vertex < y.vertex; });
+  // Vertices there before that moved, in id order.
+  if (!journal_.vertex_moves.empty()) {
+    moved_vertices(moved_scratch_);
+    log.moved.insert(log.moved.end(), moved_scratch_.begin(), moved_scratch_.end());
+  }
   const std::size_t first_removed = log.removed_vertices.size();
   vertex_seen_.clear();
   for (const JournalEntry& e : journal_.entries) {

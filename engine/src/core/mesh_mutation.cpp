@@ -66,19 +66,28 @@ VertId TetMesh::add_vertex_on_edge(VertId a, VertId b, double t) {
 }
 
 void TetMesh::move_vertex(VertId v, const Vec3& p, std::vector<TetId>* created) {
-  assert(journal_.active && journal_.vertex_birth_of.contains(v) && "only a vertex the transaction made moves");
+  assert(journal_.active && "a vertex moves inside a transaction, which records where it was");
+  const std::uint32_t* birth_slot = journal_.vertex_birth_of.find(v);
+  const bool made = birth_slot && *birth_slot < journal_.vertex_births.size() && journal_.vertex_births[*birth_slot].vertex == v;
+  // A vertex there before: its first move records where it was (position_at_start()).
+  if (!made && !current_move(v)) {
+    journal_.vertex_move_of.set(v, static_cast<std::uint32_t>(journal_.vertex_moves.size()));
+    journal_.vertex_moves.push_back({v, positions_[v.value], {}});
+  }
   note(Array::kPositions, v.value);
   positions_[v.value] = p;
   vertex_shell(v, move_star_);
   move_tets_.clear();
   for (TetId t : move_star_) move_tets_.push_back(tet(t));
   replace_tets(move_star_, move_tets_, created);
-  VertexBirth& birth = journal_.vertex_births[*journal_.vertex_birth_of.find(v)];
-  locate_origin(v, birth.origin);
-  birth.origin.vertex = v;
+  CreatedVertex& origin = made ? journal_.vertex_births[*birth_slot].origin
+                               : journal_.vertex_moves[*journal_.vertex_move_of.find(v)].origin;
+  locate_origin(v, origin);
+  origin.vertex = v;
+  if (!made) return;  // its channels at commit (interpolate_attributes_at_commit)
   note(Array::kAttributes, v.value);
-  attributes_.combine(v, std::span<const VertId>(birth.origin.from.data(), birth.origin.count),
-                      std::span<const double>(birth.origin.weight.data(), birth.origin.count));
+  attributes_.combine(v, std::span<const VertId>(origin.from.data(), origin.count),
+                      std::span<const double>(origin.weight.data(), origin.count));
 }
 
 TetId TetMesh::allocate_tet() {
@@ -296,6 +305,7 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
   vertex_seen_.reserve(vertices);
   journal_.birth_of.reserve(tets);
   journal_.vertex_birth_of.reserve(vertices);
+  journal_.vertex_move_of.reserve(vertices);
   journal_.first_verts_entry.reserve(tets);
   reserve_touched(positions_, vertices);
   reserve_touched(vert_tet_, vertices);
@@ -308,6 +318,7 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
   reserve_touched(journal_.tet_births, kJournalWorkingSize / 4);
   reserve_touched(journal_.parents, kJournalWorkingSize / 4);
   reserve_touched(journal_.vertex_births, kJournalWorkingSize / 16);
+  reserve_touched(journal_.vertex_moves, kJournalWorkingSize / 64);
   reserve_touched(ancestor_stack_, 64);
   reserve_touched(move_star_, 128);
   reserve_touched(move_tets_, 128);

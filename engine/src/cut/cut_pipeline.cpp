@@ -368,6 +368,7 @@ bool Cutter::Pipeline::audit(CutReport& report) {
 // the net change (the journal derives it).
 void Cutter::Pipeline::commit(CutReport& report, ChangeLog* log) {
   report.tets_created = transaction_.commit(mesh_, uncuttable_, index_, log);
+  report.vertices_moved = static_cast<std::uint32_t>(transaction_.net_moved().size());
 }
 
 }  // namespace tetcut

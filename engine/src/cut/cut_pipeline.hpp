@@ -51,6 +51,7 @@ class Cutter::Pipeline {
   [[nodiscard]] const CutParams& params() const { return params_; }
   [[nodiscard]] const RemovalReport& removal_report() const { return remover_.report(); }
   [[nodiscard]] const std::vector<TetId>& last_removed() const { return transaction_.net_removed(); }
+  [[nodiscard]] std::span<const RawMovedVertex> last_moved() const { return transaction_.net_moved(); }
   [[nodiscard]] const std::vector<TetId>& last_created() const { return transaction_.net_created(); }
   [[nodiscard]] std::span<const TetId> last_left_in_tool() const { return audit_.left(); }
   [[nodiscard]] double last_min_dihedral_held() const { return last_min_dihedral_held_; }

@@ -12,6 +12,9 @@ void CutTransaction::reserve() {
   reserve_touched(changes_.created, kCutScratch);
   reserve_touched(changes_.vertices, kCutScratch);
   reserve_touched(changes_.removed_vertices, kCutScratch);
+  reserve_touched(changes_.moved, kCutScratch / 16);
+  reserve_touched(moved_, kCutScratch / 16);
+  reserve_touched(net_moved_, kCutScratch / 16);
 }
 
 void CutTransaction::begin(TetMesh& mesh, const Remover& remover) {
@@ -34,16 +37,25 @@ std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, 
     net_removed_.assign(changes_.removed.begin(), changes_.removed.end());
     net_created_.clear();
     for (const CreatedTet& c : changes_.created) net_created_.push_back(c.tet);
+    keep_moved(changes_.moved);
     append(*log, changes_);
   } else {
-    // Nobody reads the parents and origins: the ids alone, for the index.
+    // Nobody reads the parents and origins: the ids alone, for the index, and the moves, for
+    // the checker.
     mesh.transaction_changes(net_removed_, net_created_);
+    mesh.moved_vertices(moved_);
+    keep_moved(moved_);
     mesh.commit();
   }
   uncuttable.after_commit(mesh);
   for (TetId t : net_removed_) index.erase(t);
   for (TetId t : net_created_) index.insert(mesh, t);
   return static_cast<std::uint32_t>(net_created_.size());
+}
+
+void CutTransaction::keep_moved(std::span<const MovedVertex> moved) {
+  net_moved_.clear();
+  for (const MovedVertex& m : moved) net_moved_.push_back(raw_moved(m));
 }
 
 }  // namespace tetcut::detail

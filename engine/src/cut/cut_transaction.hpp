@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/uncuttable_tets.hpp"
@@ -29,6 +30,7 @@ class CutTransaction {
   void forget() {
     net_removed_.clear();
     net_created_.clear();
+    net_moved_.clear();
   }
 
   [[nodiscard]] const TetMesh::Savepoint& start() const { return start_; }
@@ -36,12 +38,17 @@ class CutTransaction {
   // live after and not before.
   [[nodiscard]] const std::vector<TetId>& net_removed() const { return net_removed_; }
   [[nodiscard]] const std::vector<TetId>& net_created() const { return net_created_; }
+  // And the vertices there before that it moved (ChangeLog::moved), as the checker reads them.
+  [[nodiscard]] std::span<const RawMovedVertex> net_moved() const { return net_moved_; }
 
  private:
   TetMesh::Savepoint start_;
   RemovalReport removal_at_start_;  // the Remover's statistics when the transaction began
   ChangeLog changes_;               // the net change, derived by the journal at commit
   std::vector<TetId> net_removed_, net_created_;
+  std::vector<MovedVertex> moved_;       // the journal's, when no log is asked for
+  std::vector<RawMovedVertex> net_moved_;
+  void keep_moved(std::span<const MovedVertex> moved);
 };
 
 }  // namespace tetcut::detail

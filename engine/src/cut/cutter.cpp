@@ -42,6 +42,7 @@ TetId Cutter::tet_containing(const Vec3& p) { return pipeline_->tet_containing(p
 const RemovalReport& Cutter::removal_report() const { return pipeline_->removal_report(); }
 TetMesh& Cutter::mesh() { return pipeline_->mesh(); }
 const std::vector<TetId>& Cutter::last_removed() const { return pipeline_->last_removed(); }
+std::span<const RawMovedVertex> Cutter::last_moved() const { return pipeline_->last_moved(); }
 const std::vector<TetId>& Cutter::last_created() const { return pipeline_->last_created(); }
 std::span<const TetId> Cutter::last_left_in_tool() const { return pipeline_->last_left_in_tool(); }
 double Cutter::last_min_dihedral_held() const { return pipeline_->last_min_dihedral_held(); }

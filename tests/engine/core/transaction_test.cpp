@@ -289,6 +289,51 @@ TEST(RecordOfChange, AMovedVertexIsLocatedInTheOldTetItMovedInto) {
   testing::expect_log_describes(before, mesh, log);
 }
 
+// A vertex there before moves (the pass smooths within a cut's reach): the log lists it as moved
+// with its old position, its origin over old positions, and its channels interpolated from the
+// values at the start; so is a midpoint made on an edge to it after it moved, whose origin goes
+// through the moved vertex's; a rollback undoes the move bit for bit.
+TEST(RecordOfChange, AVertexThereBeforeMovesAsTheLogSaysAndRollsBack) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(2, 2, 2));
+  const auto tag = *mesh.attributes().add_channel("tag", 1);
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) mesh.attributes().value(tag, VertId{v})[0] = 1.0 + v * v;
+  const TetMesh before = mesh;
+  VertId inner = kNoVert;  // the box's one interior vertex
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity() && !inner.valid(); ++v)
+    if (mesh.is_live(VertId{v}) && !mesh.is_boundary_vertex(VertId{v})) inner = VertId{v};
+  ASSERT_TRUE(inner.valid());
+  const Vec3 start = mesh.position(inner);
+
+  mesh.begin_transaction();
+  mesh.move_vertex(inner, start + Vec3{0.011, 0.007, -0.013});
+  mesh.rollback();
+  expect_identical(mesh, before);
+
+  mesh.begin_transaction();
+  mesh.move_vertex(inner, start + Vec3{0.011, 0.007, -0.013});
+  EXPECT_TRUE(mesh.moved_in_transaction(inner));
+  EXPECT_EQ(mesh.position_at_start(inner), start);
+  EXPECT_EQ(mesh.attributes().value(tag, inner)[0], before.attributes().value(tag, inner)[0]) << "kept until commit";
+  // A midpoint on an edge from the moved vertex, then a second move of it.
+  std::vector<TetId> shell;
+  mesh.vertex_shell(inner, shell);
+  const TetId t = shell.front();
+  const Edge edge{inner, mesh.vertex(t, (mesh.local_index(t, inner) + 1) % 4)};
+  EdgeSplitter splitter;
+  ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates).ok());
+  mesh.move_vertex(inner, start + Vec3{-0.02, 0.004, 0.009});
+  ChangeLog log;
+  mesh.commit(&log);
+  ASSERT_EQ(log.moved.size(), 1u);
+  EXPECT_EQ(log.moved[0].vertex, inner);
+  EXPECT_EQ(log.moved[0].before, start);
+  EXPECT_FALSE(mesh.moved_in_transaction(inner)) << "no transaction open";
+  ASSERT_EQ(log.vertices.size(), 1u);
+  EXPECT_GE(log.vertices[0].count, 3u) << "the midpoint's origin goes through where the moved vertex was then";
+  EXPECT_NE(mesh.attributes().value(tag, inner)[0], before.attributes().value(tag, inner)[0]);
+  testing::expect_log_describes(before, mesh, log);
+}
+
 TEST(RecordOfChange, RemovedTetsAndVerticesAreNetAndTheLogOfAnEmptyTransactionIsEmpty) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(1, 1, 1));
   const TetMesh before = mesh;

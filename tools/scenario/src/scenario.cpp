@@ -204,6 +204,7 @@ invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& cen
   invariants::CheckOptions o = transaction_check_options(params, cutter.last_min_dihedral_held());
   const std::span<const TetId> left = cutter.last_left_in_tool();
   o.tool = invariants::ToolRule{.centre = centre, .radius = params.tool_diameter / 2, .d_ref = params.d_ref(), .left = left};
+  o.moved = cutter.last_moved();
   return o;
 }
 

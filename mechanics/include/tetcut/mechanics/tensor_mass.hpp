@@ -198,6 +198,13 @@ class TensorMassModel {
   std::uint32_t live_edges_ = 0;
   // scratch for apply()
   std::vector<std::uint32_t> created_labels_;
+  // apply()'s scratch: a created or moved vertex's state, computed before any is written.
+  struct Interpolated {
+    std::uint32_t vertex;
+    Vec3 u, v;
+    bool fixed;
+  };
+  std::vector<Interpolated> interpolated_;
 };
 
 }  // namespace tetcut::mechanics
