@@ -111,9 +111,10 @@ Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
   if (const Floors* known = host_shapes_.find(host.value)) {
     h = *known;
   } else {
-    // The host as it was: its vertices were there before the transaction and never move.
+    // The host as it was: its vertices were there before the transaction, where they were then.
     const TetMesh::TetVerts v = mesh.tet_at_start(host);
-    const TetShape s = tet_shape(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3]));
+    const TetShape s = tet_shape(mesh.position_at_start(v[0]), mesh.position_at_start(v[1]), mesh.position_at_start(v[2]),
+                                 mesh.position_at_start(v[3]));
     h = {s.ratio, s.max_cosine};
     host_shapes_.set(host.value, h);
   }
@@ -176,6 +177,19 @@ Refusal Improver::star_rule(TetMesh& mesh, VertId v) {
   return uncuttable_->any_of(mesh, star_) ? Refusal::kUncuttable : Refusal::kNone;
 }
 
+Refusal Improver::old_vertex_rule(TetMesh& mesh, VertId v) {
+  if (!tool_) return Refusal::kNotMadeByCut;  // a removal request has no reach
+  if (norm(mesh.position_at_start(v) - tool_->centre) > tool_->radius) return Refusal::kOutOfReach;
+  if (!uncuttable_ || uncuttable_->empty()) return Refusal::kNone;
+  mesh.vertex_shell(v, star_);
+  return uncuttable_->any_of(mesh, star_) ? Refusal::kUncuttable : Refusal::kNone;
+}
+
+Refusal Improver::old_vertex_move(const Plan& plan) const {
+  if (norm(plan.placed_at - tool_->centre) > tool_->radius) return Refusal::kOutOfReach;
+  return plan.worst_after >= goal_ * (1.0 + kMargin) ? Refusal::kNone : Refusal::kNotBetter;
+}
+
 Refusal Improver::region_rule(TetMesh& mesh, const Plan& plan) const {
   if (!uncuttable_ || uncuttable_->empty()) return Refusal::kNone;
   switch (plan.op) {
@@ -235,15 +249,31 @@ std::optional<Operator> Improver::improve_tet(TetMesh& mesh, TetId t, ImproveOut
     return best_.op;
   }
   const TetMesh::TetVerts corners = mesh.tet(t);
+  std::array<VertId, 4> old_corners{};
+  std::size_t old_count = 0;
   for (VertId v : corners) {
     if (const Refusal r = star_rule(mesh, v); r != Refusal::kNone) {
-      count(out, r);
+      if (r == Refusal::kNotMadeByCut) old_corners[old_count++] = v;
+      else count(out, r);
       continue;
     }
     // Into any neighbour: v's going removes the tet whichever way it goes.
     mesh.vertex_neighbours(v, neighbours_, star_);
     for (VertId w : neighbours_) offer(mesh, collapser_.plan(mesh, v, w, kMargin, best_after_, candidate_), out);
     offer(mesh, smoother_.plan(mesh, v, kMargin, tool_, candidate_), out);
+  }
+  // Only when nothing above lifts it (most bad tets are lifted by what the cut made, and this
+  // costs a star's worth of evaluations per vertex): a vertex there before, within the reach,
+  // smoothed (never collapsed) to where its whole star meets F and theta (old_vertex_move).
+  for (std::size_t i = 0; i < old_count && !has_best_; ++i) {
+    const VertId v = old_corners[i];
+    if (const Refusal r = old_vertex_rule(mesh, v); r != Refusal::kNone) {
+      count(out, r);
+      continue;
+    }
+    Refusal planned = smoother_.plan(mesh, v, kMargin, tool_, candidate_);
+    if (planned == Refusal::kNone) planned = old_vertex_move(candidate_);
+    offer(mesh, planned, out);
   }
   if (!has_best_) {
     if (!insert(mesh, t, out)) return std::nullopt;

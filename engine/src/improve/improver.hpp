@@ -14,7 +14,9 @@
 //   edge removal and the 2-3 flip (flips.hpp), on the tet's edges and faces;
 //   collapse of one of the tet's vertices that the transaction made into any neighbour
 //   (collapse.hpp);
-//   smoothing of the tet's vertices that the transaction made (smoothing.hpp), never another;
+//   smoothing of the tet's vertices (smoothing.hpp): those the transaction made, and those there
+//   before it within the cut's reach when their whole star ends at or above F and theta
+//   (old_vertex_rule, old_vertex_move; ChangeLog::moved tells the consumers);
 //   and when none of those lifts it, insertion (insertion.hpp): the tet's longest edge split at
 //   its midpoint, the new vertex smoothed, kept only when the worst tet of what was split ends
 //   better (else rolled back to a savepoint).
@@ -145,6 +147,15 @@ class Improver {
   // Whether the operations may reshape v's star (move v, collapse v): kNone when v was made by
   // the transaction and none of its tets is uncuttable, else why not. Asked before planning.
   Refusal star_rule(TetMesh& mesh, VertId v);
+  // Whether the pass may smooth v, a vertex there before the transaction: kNone when the run has
+  // a reach (a cut), v was within it (its start position inside the tool's ball grown by D_ref)
+  // and none of its tets is uncuttable. Such a vertex is never collapsed (the organ keeps its
+  // input vertices), and moves only as old_vertex_move() allows.
+  Refusal old_vertex_rule(TetMesh& mesh, VertId v);
+  // A move of such a vertex: kNone when it stays within the reach and its whole star ends at or
+  // above F and theta, so that the move makes no tet below the floors anywhere, whatever its
+  // hosts were (the tets around an old vertex are mostly tets no cut made, and good).
+  Refusal old_vertex_move(const Plan& plan) const;
   // Insertion on t's longest edge, with its new vertex smoothed: kept when it lifts the worst
   // tet around the edge and the hook lets it through, else rolled back.
   bool insert(TetMesh& mesh, TetId t, ImproveOutcome& out);

@@ -5,8 +5,8 @@
 // only when the worst tet of the star improves and every tet stays positive by the exact
 // predicate).
 //
-// Only vertices the open transaction made move (TetMesh::move_vertex asserts it): input vertices,
-// and those of earlier cuts, never do. An interior vertex moves freely; a surface vertex only
+// Which vertices may move is the pass's rule (improver.hpp): those the open transaction made, and
+// those there before it within the cut's reach (ChangeLog::moved). An interior vertex moves freely; a surface vertex only
 // within its surface: in the plane of its boundary faces when they are all coplanar, along the
 // line where two such planes meet when its boundary faces lie in exactly two (a crease, e.g. the
 // midpoint of an edge of the organ's surface), otherwise not at all. "Coplanar" is to within a
@@ -32,7 +32,7 @@ inline constexpr double kCutSurfaceTolerance = 0.05;
 class Smoother {
  public:
   void reserve();
-  // Where to move v (made in the open transaction) so that the worst quality() of its star
+  // Where to move v so that the worst quality() of its star
   // rises by more than the relative `margin` (Operator::kSmoothing: v's star removed and added
   // again, v placed at its new position); kNotBetter when nowhere found does, kSurfaceConstraint
   // when v may not move at all.
