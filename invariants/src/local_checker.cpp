@@ -442,7 +442,8 @@ struct LocalChecker::Operation {
     }
 
     if (judge_quality)
-      no_degradation.finish(old_positions, positions, options.quality_floor, options.min_dihedral_deg, report);
+      no_degradation.finish(old_positions, positions, options.quality_floor, options.min_dihedral_deg,
+                            options.tool ? &options.tool->centre : nullptr, options.tool ? options.tool->radius : 0.0, report);
 
     // I10: uncuttable tissue neither went nor grew.
     if (!removed_uncuttable.empty() &&

@@ -1,11 +1,14 @@
 #include "no_degradation.hpp"
 
+#include <array>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 
 #include "tet_checks.hpp"
+#include "tet_intersection.hpp"
 #include "tet_quality.hpp"
 
 namespace tetcut::invariants::detail {
@@ -25,6 +28,13 @@ constexpr double kInsideTolerance = 1e-9;
 // computed from its own tet's normals, may differ by rounding (1e-13 degrees and less). An angle
 // this close to its floor meets it.
 constexpr double kAngleTolerance = 1e-7;
+
+// The mesh rule's volumes agree to this share of the created tets' volume: the shared volume of
+// a child and its parent is the child's volume up to the clip's rounding.
+constexpr double kVolumeTolerance = 1e-9;
+
+// The unsigned volume, for the mesh rule's sums.
+double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return std::abs(volume6(a, b, c, d)) / 6.0; }
 
 }  // namespace
 
@@ -84,7 +94,7 @@ void NoDegradationCheck::locate(const Created& c, std::span<const Vec3> old_posi
 }
 
 void NoDegradationCheck::finish(std::span<const Vec3> old_positions, std::span<const Vec3> positions, double floor,
-                                double min_dihedral_deg, ReportBuilder& report) {
+                                double min_dihedral_deg, const Vec3* tool_centre, double tool_radius, ReportBuilder& report) {
   if (created_.empty() || !(floor > 0.0 || min_dihedral_deg > 0.0)) return;
   by_vertex_.clear();
   for (std::uint32_t k = 0; k < removed_.size(); ++k) {
@@ -137,6 +147,94 @@ void NoDegradationCheck::finish(std::span<const Vec3> old_positions, std::span<c
              (hosts_text.empty() ? std::string("none holds its centroid, the operation's worst taken") : hosts_text);
     });
   }
+  if (min_dihedral_deg > 0.0) check_bad_volume(old_positions, positions, min_dihedral_deg, tool_centre, tool_radius, report);
+}
+
+double NoDegradationCheck::bad_volume_under(const Created& c, std::span<const Vec3> old_positions,
+                                            std::span<const Vec3> positions, double min_dihedral_deg, bool all) {
+  const std::array<Vec3, 4> corners = {positions[c.q[0]], positions[c.q[1]], positions[c.q[2]], positions[c.q[3]]};
+  Vec3 lo = corners[0], hi = corners[0];
+  for (const Vec3& p : corners) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  candidates_.clear();
+  if (all) {
+    for (std::uint32_t k = 0; k < removed_.size(); ++k) candidates_.push_back(k);
+  } else {
+    for (std::uint32_t v : c.q)
+      for (auto it = std::lower_bound(by_vertex_.begin(), by_vertex_.end(), std::make_pair(v, 0u));
+           it != by_vertex_.end() && it->first == v; ++it)
+        candidates_.push_back(it->second);
+    const Vec3 centroid = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]);
+    for (std::uint32_t k = 0; k < removed_.size(); ++k)
+      if (hosts(removed_[k], centroid, old_positions)) candidates_.push_back(k);
+    std::sort(candidates_.begin(), candidates_.end());
+    candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
+  }
+  double shared = 0.0;
+  for (std::uint32_t k : candidates_) {
+    Removed& r = removed_[k];
+    if (r.hi.x < lo.x || r.hi.y < lo.y || r.hi.z < lo.z || r.lo.x > hi.x || r.lo.y > hi.y || r.lo.z > hi.z) continue;
+    measure(r, old_positions);
+    if (!(r.dihedral < min_dihedral_deg)) continue;
+    shared += tet_intersection_volume(
+        corners, {old_positions[r.q[0]], old_positions[r.q[1]], old_positions[r.q[2]], old_positions[r.q[3]]});
+  }
+  return shared;
+}
+
+void NoDegradationCheck::check_bad_volume(std::span<const Vec3> old_positions, std::span<const Vec3> positions,
+                                          double min_dihedral_deg, const Vec3* tool_centre, double tool_radius,
+                                          ReportBuilder& report) {
+  // The created tets outside the tool, and after: the volume of those below theta. A created tet
+  // within rounding of theta is not below it (a split child keeps its parent's angles).
+  outside_.clear();
+  double after = 0.0, scale = 0.0;
+  for (std::uint32_t k = 0; k < created_.size(); ++k) {
+    const Created& c = created_[k];
+    const Vec3 centroid = 0.25 * (positions[c.q[0]] + positions[c.q[1]] + positions[c.q[2]] + positions[c.q[3]]);
+    if (tool_centre && norm(centroid - *tool_centre) < tool_radius) continue;
+    outside_.push_back(k);
+    const double volume = tet_volume(positions[c.q[0]], positions[c.q[1]], positions[c.q[2]], positions[c.q[3]]);
+    scale += volume;
+    if (c.dihedral < min_dihedral_deg - kAngleTolerance) after += volume;
+  }
+  if (after == 0.0) return;
+  // Before: a lower bound from the removed tets each created one shares a vertex with or sits in
+  // (every pair a split or a flip makes), and only if that falls short, every removed tet.
+  const double tolerance = kVolumeTolerance * scale;
+  double before = 0.0;
+  for (std::uint32_t k : outside_) before += bad_volume_under(created_[k], old_positions, positions, min_dihedral_deg, false);
+  if (after <= before + tolerance) return;
+  before = 0.0;
+  for (std::uint32_t k : outside_) before += bad_volume_under(created_[k], old_positions, positions, min_dihedral_deg, true);
+  if (after <= before + tolerance) return;
+  report.add(Invariant::kI7Quality, {}, {}, [&] {
+    // Name the largest created tets below theta.
+    std::vector<std::pair<double, std::uint32_t>> bad;
+    for (std::uint32_t k : outside_) {
+      const Created& c = created_[k];
+      if (c.dihedral < min_dihedral_deg - kAngleTolerance)
+        bad.push_back({tet_volume(positions[c.q[0]], positions[c.q[1]], positions[c.q[2]], positions[c.q[3]]), k});
+    }
+    std::sort(bad.begin(), bad.end(), std::greater<>());
+    std::string named;
+    for (std::size_t i = 0; i < bad.size() && i < 5; ++i) {
+      const std::uint32_t k = bad[i].second;
+      const Created& c = created_[k];
+      std::string hosts_text;
+      for (std::uint32_t h = host_begin_[k]; h < host_begin_[k + 1]; ++h) {
+        Removed& r = removed_[hosts_[h]];
+        measure(r, old_positions);
+        hosts_text += (hosts_text.empty() ? "" : ", ") + str(r.id) + " (" + num(r.dihedral) + " deg)";
+      }
+      named += (named.empty() ? "" : "; ") + str(c.id) + " (" + num(c.dihedral) + " deg, volume " + num(bad[i].first) +
+               ", its hosts: " + (hosts_text.empty() ? std::string("none holds its centroid") : hosts_text) + ")";
+    }
+    return "the volume of tets below " + num(min_dihedral_deg) + " deg outside the tool grew from " + num(before) +
+           " to " + num(after) + " over the operation; its created tets below theta, the largest first: " + named;
+  });
 }
 
 }  // namespace tetcut::invariants::detail

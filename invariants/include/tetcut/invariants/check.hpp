@@ -88,7 +88,11 @@ enum class QualityRule : std::uint8_t {
   // floors. Its hosts are the removed tets that contain its centroid (the checker's own point
   // location: it does not take the engine's parents on trust); one that no removed tet holds is
   // held to the operation's worst host; tissue the operation removed whole hosts nothing and
-  // lowers no floor.
+  // lowers no floor. And the mesh rule: the volume of tets below min_dihedral_deg outside the
+  // tool (the created tets whose centroid is outside CheckOptions::tool's ball; all of them
+  // without a tool) is no more than the volume of that same region that removed tets below it
+  // covered (their shared volumes, exactly, by clipping): splitting a bad tet keeps its bad
+  // volume, spreading one over good volume does not, and removed tissue pays for nothing.
   kNoDegradation,
   // A raw operation (one split, a refinement loop, an edit under fuzzing): the quality of what it
   // made is reported, not judged. A midpoint split has no quality bound of its own to keep: the
