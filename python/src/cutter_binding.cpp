@@ -663,6 +663,9 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
   report_field(report, "improvement_moves", &CutReport::improvement_moves, "Vertex moves (smoothing) the improvement pass made.");
   report_field(report, "vertices_moved", &CutReport::vertices_moved,
                "Vertices there before the cut that the pass moved, within the cut's reach (changes.moved_vertices).");
+  report_field(report, "mesh_rule_retries", &CutReport::mesh_rule_retries,
+               "1 when the pass was made again with every plan held to the mesh rule (the volume below theta outside "
+               "the tool does not grow), because its first run grew it.");
   report_field(report, "improvement_insertions", &CutReport::improvement_insertions,
                "Edge splits the improvement pass made and kept (insertion at an edge's midpoint).");
   report_field(report, "tets_removed_by_improvement", &CutReport::tets_removed_by_improvement,

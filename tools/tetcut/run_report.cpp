@@ -70,6 +70,7 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"improvement_collapses", r.improvement_collapses},
               {"improvement_moves", r.improvement_moves},
               {"vertices_moved", r.vertices_moved},
+              {"mesh_rule_retries", r.mesh_rule_retries},
               {"improvement_insertions", r.improvement_insertions},
               {"tets_removed_by_improvement", r.tets_removed_by_improvement},
               {"d_ref", r.d_ref},
@@ -119,7 +120,8 @@ Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::st
                   {"tets_removed_beyond_reach", t.removed_beyond_reach},
                   {"tets_removed_by_improvement", t.removed_by_improvement},
                   {"improvement", {{"flips", t.flips}, {"collapses", t.collapses}, {"moves", t.moves},
-                                   {"insertions", t.insertions}, {"vertices_moved", t.vertices_moved}}},
+                                   {"insertions", t.insertions}, {"vertices_moved", t.vertices_moved},
+                                   {"mesh_rule_retries", t.mesh_rule_retries}}},
                   {"min_radius_ratio", t.worst_created},
                   {"valid", valid},
                   {"hash", hash}};
@@ -139,7 +141,8 @@ int report_run(const scenario::RunResult& r, const TetMesh& mesh, const RunOutpu
         << " tets beyond its reach\n";
     out << "improvement: " << t.flips << " flips, " << t.collapses << " collapses, " << t.moves << " moves (" << t.vertices_moved
         << " of vertices there before), " << t.insertions << " insertions, " << t.removed_by_improvement
-        << " slivers removed; " << t.refused << " cuts refused";
+        << " slivers removed, " << t.mesh_rule_retries << " passes made again under the mesh rule; " << t.refused
+        << " cuts refused";
     for (int k = 1; k < kCutRefusals; ++k)
       if (t.refusals[k]) out << " (" << t.refusals[k] << " " << to_string(static_cast<CutRefusal>(k)) << ")";
     out << "\n";

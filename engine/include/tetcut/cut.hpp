@@ -173,6 +173,10 @@ struct CutReport : RequestCounts {
   // whole star meets the floors): ChangeLog::moved, Cutter::last_moved(). Net: a vertex moved
   // twice counts once.
   std::uint32_t vertices_moved = 0;
+  // 1 when the pass was made again from its start with every plan held to the mesh rule (the
+  // volume of tets below theta outside the tool does not grow: the checker's I7), because the
+  // first grew it; 0 for most cuts.
+  std::uint32_t mesh_rule_retries = 0;
   std::uint32_t tets_removed_by_improvement = 0;
   double d_ref = 0;                  // the D_ref the cut was judged at: CutParams::d_ref()
   RefinementRule refinement = RefinementRule::kPaper;  // the rule of the attempt that ended it

@@ -321,7 +321,7 @@ bool Cutter::Pipeline::improve(CutReport& report) {
   const detail::TissueRuleVeto veto(mesh_, selection_, uncuttable_, params_.d_ref());
   const detail::ImproveOutcome outcome =
       improver_.run(mesh_, transaction_.start(),
-                    {.floor = params_.quality_floor, .min_dihedral_deg = params_.min_dihedral_deg, .improve = params_.improve, .reach = reach ? &*reach : nullptr,
+                    {.floor = params_.quality_floor, .min_dihedral_deg = params_.min_dihedral_deg, .improve = params_.improve, .reach = reach ? &*reach : nullptr, .tool = tool,
                      .uncuttable = &uncuttable_, .tissue = &tissue_, .veto = veto});
   report.tets_removed_by_improvement = outcome.removed;
   report.min_radius_ratio_before_improvement = outcome.worst_before;
@@ -337,6 +337,7 @@ bool Cutter::Pipeline::improve(CutReport& report) {
   report.improvement_collapses = outcome.collapses;
   report.improvement_moves = outcome.moves;
   report.improvement_insertions = outcome.insertions;
+  report.mesh_rule_retries = outcome.mesh_rule_retries;
   if (report.quality_met || !params_.improve) return true;
   const detail::ImproveOutcome::Shortfall& s = outcome.shortfall;
   char text[400];

@@ -6,6 +6,7 @@
 
 #include "core/host_location.hpp"
 #include "core/quality.hpp"
+#include "core/tet_intersection.hpp"
 #include "improve/sliver_removal.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
 
@@ -53,6 +54,7 @@ void Improver::reserve(std::uint32_t tets) {
   reserve_touched(bad_, 4096);
   reserve_touched(made_quality_, 4096);
   reserve_touched(ancestors_, 64);
+  reserve_touched(outside_, 4096);
 }
 
 std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::Savepoint& start) {
@@ -106,19 +108,19 @@ TetId Improver::host_of(TetMesh& mesh, TetId t) {
 }
 
 Improver::Floors Improver::floors_of(TetMesh& mesh, TetId t) {
-  const TetId host = host_of(mesh, t);
-  Floors h;
-  if (const Floors* known = host_shapes_.find(host.value)) {
-    h = *known;
-  } else {
-    // The host as it was: its vertices were there before the transaction, where they were then.
-    const TetMesh::TetVerts v = mesh.tet_at_start(host);
-    const TetShape s = tet_shape(mesh.position_at_start(v[0]), mesh.position_at_start(v[1]), mesh.position_at_start(v[2]),
-                                 mesh.position_at_start(v[3]));
-    h = {s.ratio, s.max_cosine};
-    host_shapes_.set(host.value, h);
-  }
+  const Floors h = shape_at_start(mesh, host_of(mesh, t));
   return {std::min(floor_f_, h.ratio), std::max(cos_theta_, h.cosine)};
+}
+
+Improver::Floors Improver::shape_at_start(TetMesh& mesh, TetId old) {
+  if (const Floors* known = host_shapes_.find(old.value)) return *known;
+  // As it was: its vertices were there before the transaction, where they were then.
+  const TetMesh::TetVerts v = mesh.tet_at_start(old);
+  const TetShape s = tet_shape(mesh.position_at_start(v[0]), mesh.position_at_start(v[1]), mesh.position_at_start(v[2]),
+                               mesh.position_at_start(v[3]));
+  const Floors h{s.ratio, s.max_cosine};
+  host_shapes_.set(old.value, h);
+  return h;
 }
 
 bool Improver::below_floor(TetMesh& mesh, TetId t, Floors* floors) {
@@ -207,8 +209,38 @@ Refusal Improver::region_rule(TetMesh& mesh, const Plan& plan) const {
   return Refusal::kNone;
 }
 
+bool Improver::in_tool(const std::array<Vec3, 4>& p) const {
+  return cut_tool_ && norm(0.25 * (p[0] + p[1] + p[2] + p[3]) - cut_tool_->centre) < cut_tool_->radius;
+}
+
+double Improver::bad_volume(const TetMesh& mesh, std::span<const TetId> tets) {
+  double volume = 0.0;
+  for (TetId t : tets) {
+    const TetMesh::TetVerts v = mesh.tet(t);
+    if (in_tool({mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])})) continue;
+    if (shape_of(mesh, t).max_cosine > cos_theta_ + 1e-12) volume += mesh.volume(t);
+  }
+  return volume;
+}
+
+Refusal Improver::bad_volume_rule(const TetMesh& mesh, const Plan& plan) {
+  if (!spread_rule_ || plan.op == Operator::kSliverRemoval || !(theta_ > 0.0)) return Refusal::kNone;
+  double after = 0.0;
+  for (const TetMesh::TetVerts& tet : plan.added_tets()) {
+    const std::array<Vec3, 4> p = plan.corners(mesh, tet);
+    if (in_tool(p)) continue;
+    // Within rounding of theta counts as below: a made tet the checker could call bad.
+    if (tet_shape(p[0], p[1], p[2], p[3]).max_cosine > cos_theta_ - 1e-12)
+      after += dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0])) / 6.0;
+  }
+  if (after == 0.0) return Refusal::kNone;
+  const double before = plan.op == Operator::kInsertion ? insertion_bad_before_ : bad_volume(mesh, plan.removed_tets());
+  return after <= before * (1.0 + 1e-9) ? Refusal::kNone : Refusal::kSpreadsBadVolume;
+}
+
 Refusal Improver::admit(TetMesh& mesh, const Plan& plan, ImproveOutcome& out) {
   Refusal verdict = region_rule(mesh, plan);
+  if (verdict == Refusal::kNone) verdict = bad_volume_rule(mesh, plan);
   if (verdict == Refusal::kNone && veto_) {
     verdict = veto_(mesh, plan);
     out.vetoed += verdict != Refusal::kNone;
@@ -289,6 +321,7 @@ bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
     count(out, r);
     return false;
   }
+  insertion_bad_before_ = bad_volume(mesh, insertion_.removed_tets());
   const std::size_t before = created_.size();
   insertion_.apply(mesh, created_);
   const VertId midpoint = mesh.vertices_made_since(point).front().vertex;
@@ -362,6 +395,7 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
   host_shapes_.forget();
   made_tets_.forget();
   tool_ = params.reach;
+  cut_tool_ = params.tool;
   uncuttable_ = params.uncuttable;
   veto_ = params.veto;
   tissue_ = params.tissue;
@@ -369,6 +403,7 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
     own_tissue_.begin(nullptr, 0.0);
     tissue_ = &own_tissue_;
   }
+  spread_rule_ = false;
   // quality() weighs the angle for this run's floors, and for the default ones again after it.
   struct WeightScope {
     ~WeightScope() { t_dihedral_sine_weight = kDihedralSineWeight; }
@@ -376,19 +411,40 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
   set_theta(params.min_dihedral_deg, params.floor);
   out.floor = params.floor;
   out.dihedral_floor_deg = params.min_dihedral_deg;
-  auto measure = [&](double& ratio, double& dihedral) {
-    const auto [worst, cosine] = collect_made(mesh, start);
-    ratio = worst;
-    dihedral = made_.empty() ? 180.0 : degrees_of_cosine(cosine);
-    // Every made tet at or above F and theta is above its floors: met, without locating hosts.
-    return worst >= params.floor * (1.0 + 1e-9) && cosine <= std::cos(params.min_dihedral_deg * std::numbers::pi / 180.0) + 1e-12;
-  };
   out.min_dihedral_held_deg = params.min_dihedral_deg;
-  if (measure(out.worst_before, out.min_dihedral_before_deg)) {
-    out.worst_after = out.worst_before;
-    out.min_dihedral_after_deg = out.min_dihedral_before_deg;
-    return out;
-  }
+  if (measure(mesh, start, params, out)) return out;
+  // Some made tet is below its floors: the pass has work, and may have to take it back.
+  const TetMesh::Savepoint pass_start = mesh.savepoint();
+  const RemovedTissue tissue_at_start = tissue_->removed();
+  lift_to_floors(mesh, start, params, out);
+  if (!params.improve || !grows_bad_volume(mesh)) return out;
+  // The mesh rule (header): made again with every plan held to it, from where the pass began.
+  mesh.rollback_to(pass_start);
+  made_tets_.forget_from(pass_start.tet_births);
+  tissue_->restore(tissue_at_start);
+  const std::uint32_t retries = out.mesh_rule_retries + 1;
+  out = ImproveOutcome{};
+  out.mesh_rule_retries = retries;
+  spread_rule_ = true;
+  set_theta(params.min_dihedral_deg, params.floor);
+  out.floor = params.floor;
+  out.dihedral_floor_deg = params.min_dihedral_deg;
+  out.min_dihedral_held_deg = params.min_dihedral_deg;
+  measure(mesh, start, params, out);
+  lift_to_floors(mesh, start, params, out);
+  spread_rule_ = false;
+  return out;
+}
+
+bool Improver::measure(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params, ImproveOutcome& out) {
+  const auto [worst, cosine] = collect_made(mesh, start);
+  out.worst_before = out.worst_after = worst;
+  out.min_dihedral_before_deg = out.min_dihedral_after_deg = made_.empty() ? 180.0 : degrees_of_cosine(cosine);
+  // Every made tet at or above F and theta is above its floors: met, without locating hosts.
+  return worst >= params.floor * (1.0 + 1e-9) && cosine <= std::cos(params.min_dihedral_deg * std::numbers::pi / 180.0) + 1e-12;
+}
+
+void Improver::lift_to_floors(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params, ImproveOutcome& out) {
   judge(mesh, out);
   bool changed = false;  // whether the made set was taken again since the measure before
   std::pair<double, double> after{};
@@ -420,14 +476,67 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
     }
   }
   out.min_dihedral_held_deg = theta_;
-  if (!changed) {
-    out.worst_after = out.worst_before;
-    out.min_dihedral_after_deg = out.min_dihedral_before_deg;
-  } else {
+  if (changed) {
     out.worst_after = after.first;
     out.min_dihedral_after_deg = made_.empty() ? 180.0 : degrees_of_cosine(after.second);
   }
-  return out;
+}
+
+bool Improver::grows_bad_volume(TetMesh& mesh) {
+  if (!(theta_ > 0.0)) return false;
+  // After: the made tets below theta outside the tool (within rounding of theta counts as below:
+  // the checker's strict side). Most transactions have none and stop here.
+  double after = 0.0, scale = 0.0, before = 0.0;
+  outside_.clear();
+  for (TetId t : made_) {
+    if (!mesh.is_live(t)) continue;
+    const TetMesh::TetVerts v = mesh.tet(t);
+    if (in_tool({mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])})) continue;
+    const double volume = mesh.volume(t);
+    scale += volume;
+    if (shape_of(mesh, t).max_cosine > cos_theta_ - 1e-12) {
+      after += volume;
+      // Most of them are children of a tet below theta, which covered all of them before.
+      if (shares_bad_volume(mesh, t, before)) continue;
+    }
+    outside_.push_back(t);
+  }
+  // Stricter than the checker's tolerance (1e-9 of the region's volume) by a factor of 10.
+  const double tolerance = 1e-10 * scale;
+  if (after <= before + tolerance) return false;
+  // The rest of before: what the other made tets outside the tool cover of tets below theta.
+  for (TetId t : outside_) {
+    if (!shares_bad_volume(mesh, t, before)) continue;
+    if (after <= before + tolerance) return false;
+  }
+  return after > before + tolerance;
+}
+
+bool Improver::shares_bad_volume(TetMesh& mesh, TetId t, double& before) {
+  // A made tet lies in the union of its ancestors (a split's child in its parent, a flip's tets
+  // in the polytope they replaced, a move's star in the star it replaced), whose interiors are
+  // disjoint: only they can share volume with it, and a child of one ancestor shares all of its
+  // own. (A vertex moved within the cut surface's tolerance may take a tet a little outside
+  // them: what it shares there is not counted, the strict side of the checker's rule.) Below
+  // theta as they were, at their old positions; within rounding of theta counts as good.
+  ancestors_.clear();
+  mesh.ancestors_at_start(t, ancestors_);
+  if (ancestors_.size() == 1) {
+    if (!(shape_at_start(mesh, ancestors_[0]).cosine > cos_theta_ + 1e-12)) return false;
+    before += mesh.volume(t);
+    return true;
+  }
+  const TetMesh::TetVerts v = mesh.tet(t);
+  const std::array<Vec3, 4> p{mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])};
+  bool shared = false;
+  for (TetId r : ancestors_) {
+    if (!(shape_at_start(mesh, r).cosine > cos_theta_ + 1e-12)) continue;
+    const TetMesh::TetVerts c = mesh.tet_at_start(r);
+    before += tet_intersection_volume(p, {mesh.position_at_start(c[0]), mesh.position_at_start(c[1]),
+                                          mesh.position_at_start(c[2]), mesh.position_at_start(c[3])});
+    shared = true;
+  }
+  return shared;
 }
 
 }  // namespace tetcut::detail

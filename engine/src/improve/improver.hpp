@@ -23,6 +23,12 @@
 // A made tet still below its floor after all that, on the surface, within the cut's reach and
 // removable on its own, goes with the tissue (sliver_removal.hpp), reported apart
 // (ImproveOutcome::removed).
+// And the mesh rule the checker's I7 holds a transaction to: the volume of tets below theta
+// outside the tool does not grow. Per-tet floors allow the growth (a made tet is held to the
+// angle of the host holding its centroid, so a flip can lift the worst tet by spreading a bad
+// host's angle over good volume), so at the end of the pass the transaction is weighed as the
+// checker weighs it (grows_bad_volume); when it grew, the pass is made again from where it
+// began with every plan held to the rule (bad_volume_rule), which most cuts never need.
 // Every plan passes, after its operator's own tests, the run's rules (uncuttable tissue keeps
 // its region) and then the caller's hook (plan_veto.hpp), which may veto it; a plan refused for
 // any reason is not applied, and the outcome counts why.
@@ -64,6 +70,9 @@ struct ImproveParams {
   // The cut's ball grown by D_ref (none for a removal request), where a sliver may go with the
   // tissue and the cut's surface may move within its tolerance.
   const Ball* reach = nullptr;
+  // The cut's tool itself (none for a removal request): the mesh rule counts no tet whose
+  // centroid lies in it.
+  const Ball* tool = nullptr;
   // Tets the pass must leave as a region (uncuttable_tets.hpp): it flips only among tets all or
   // none of which are uncuttable, moves and collapses no vertex of one, and removes none.
   const UncuttableTets* uncuttable = nullptr;
@@ -98,6 +107,9 @@ struct ImproveOutcome {
   // below theta, and the report says which cut lowered it.
   double min_dihedral_held_deg = 180.0;
   std::uint32_t angle_retries = 0;
+  // Passes made again from their start with every plan held to the mesh rule, because the first
+  // grew the volume below theta outside the tool (0 or 1).
+  std::uint32_t mesh_rule_retries = 0;
   std::uint32_t flips = 0, collapses = 0, moves = 0, insertions = 0;
   std::uint32_t removed = 0;  // slivers removed with the tissue
   std::uint32_t vetoed = 0;   // plans the caller's hook vetoed
@@ -121,10 +133,25 @@ class Improver {
   struct Floors {
     double ratio = 0.0, cosine = 1.0;
   };
+  // The made tets against F and theta, into `out`'s before and after figures: true when every
+  // one is at or above both (nothing to do).
+  bool measure(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params, ImproveOutcome& out);
+  // The pass proper: judge, then lift at theta, kFallbackDihedralDeg and none in turn.
+  void lift_to_floors(TetMesh& mesh, const TetMesh::Savepoint& start, const ImproveParams& params, ImproveOutcome& out);
+  // The mesh rule over the transaction, as the checker's I7 weighs it: whether the made tets
+  // below theta outside the tool cover more volume than the tets below theta that were there
+  // before covered of the same region (their shared volumes: core/tet_intersection.hpp).
+  bool grows_bad_volume(TetMesh& mesh);
+  // Adds to `before` the volume made tet t shares with the tets below theta it descends from, as
+  // they were; whether it shares any.
+  bool shares_bad_volume(TetMesh& mesh, TetId t, double& before);
   // The made tets still live into made_; their worst radius ratio and largest dihedral cosine.
   std::pair<double, double> collect_made(TetMesh& mesh, const TetMesh::Savepoint& start);
   // Made tet t's floors: F and theta when it reaches them, else min(F or theta, its host's).
   Floors floors_of(TetMesh& mesh, TetId t);
+  // Tet `old`'s shape when the transaction began (live then), as Floors: its radius ratio and
+  // largest dihedral cosine. Memoized: it never changes within a transaction.
+  Floors shape_at_start(TetMesh& mesh, TetId old);
   // Whether made tet t is below its floors (`floors`, when given, receives them).
   bool below_floor(TetMesh& mesh, TetId t, Floors* floors = nullptr);
   // The run's F and theta, and what follows from them.
@@ -144,6 +171,18 @@ class Improver {
   // Uncuttable tissue keeps its region: a flip retriangulates the polytope it replaces, so it only
   // needs tets of one kind; a split child lies in its parent; the other plans touch none.
   Refusal region_rule(TetMesh& mesh, const Plan& plan) const;
+  // The checker's mesh rule (I7), plan by plan: the volume of the tets below theta a plan makes
+  // is at most that of the tets below theta it removes, both outside the cut's tool (a tet whose
+  // centroid is in the tool's open ball counts on neither side, as the checker counts it). Every plan but a sliver removal keeps the
+  // polytope it replaces, so the two compare directly; without it the pass lifted a tet by a
+  // flip that spread a tet below theta (held to its bad host's angle) over good volume.
+  Refusal bad_volume_rule(const TetMesh& mesh, const Plan& plan);
+  // The volume of the tets below theta among `tets` (live ids); within rounding of theta does
+  // not count (what a plan removes: the rule stays on the strict side of the
+  // checker's).
+  double bad_volume(const TetMesh& mesh, std::span<const TetId> tets);
+  // Whether a tet with these corners has its centroid in the cut's tool (its open ball).
+  [[nodiscard]] bool in_tool(const std::array<Vec3, 4>& corners) const;
   // Whether the operations may reshape v's star (move v, collapse v): kNone when v was made by
   // the transaction and none of its tets is uncuttable, else why not. Asked before planning.
   Refusal star_rule(TetMesh& mesh, VertId v);
@@ -181,6 +220,7 @@ class Improver {
   double cos_theta_ = 1.0;             // cos(theta)
   std::vector<std::pair<double, TetId>> made_quality_;  // judge()'s, worst first
   const Ball* tool_ = nullptr;         // the run's reach, if a cut
+  const Ball* cut_tool_ = nullptr;     // the cut's tool itself, if a cut
   const UncuttableTets* uncuttable_ = nullptr;  // the run's, if any
   TissueRemoval* tissue_ = nullptr;             // the run's removal path
   TissueRemoval own_tissue_;
@@ -200,6 +240,13 @@ class Improver {
     TetId host;                 // invalid: not located yet
   };
   DirectMappedMemo<MadeTet, 4096> made_tets_;
+  // An insertion's removed tets' bad volume, taken before it is applied (admit() sees it after).
+  double insertion_bad_before_ = 0.0;
+  // Whether plans are held to the mesh rule one by one (bad_volume_rule): only in a pass made
+  // again because the first grew the volume below theta (the common pass pays nothing for it).
+  bool spread_rule_ = false;
+  // grows_bad_volume()'s scratch: the made tets outside the tool it weighs last.
+  std::vector<TetId> outside_;
   TetShape shape_of(const TetMesh& mesh, TetId t);
   TetId host_of(TetMesh& mesh, TetId t);
 };

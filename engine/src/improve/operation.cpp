@@ -27,6 +27,7 @@ std::string_view to_string(Refusal refusal) {
     case Refusal::kLinkCondition: return "link condition";
     case Refusal::kInvertedChild: return "inverted child";
     case Refusal::kNotBetter: return "not better";
+    case Refusal::kSpreadsBadVolume: return "would spread tets below theta over more volume";
     case Refusal::kSurfaceConstraint: return "surface constraint";
     case Refusal::kNotMadeByCut: return "a vertex the cut did not make";
     case Refusal::kUncuttable: return "uncuttable";

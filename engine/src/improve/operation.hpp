@@ -53,6 +53,7 @@ enum class Refusal : std::uint8_t {
   kLinkCondition,      // a collapse would change the topology (Dey, Edelsbrunner, Guha, Nekhayev)
   kInvertedChild,      // a new tet would be flat or inverted by the exact predicate
   kNotBetter,          // its worst new tet does not beat the worst one it replaces by the margin
+  kSpreadsBadVolume,   // its new tets below theta would cover more volume than those it replaces
   kSurfaceConstraint,  // the organ's surface would change shape
   kNotMadeByCut,       // moves or removes a vertex the open transaction did not make
   kUncuttable,         // reshapes uncuttable tissue, or mixes it with cuttable tissue
@@ -60,7 +61,7 @@ enum class Refusal : std::uint8_t {
   kNotRemovable,       // removing the tet alone would leave the mesh non-manifold (paper 3.3)
   kVetoed,             // the caller's acceptance hook said no
 };
-inline constexpr std::size_t kRefusalCount = 13;
+inline constexpr std::size_t kRefusalCount = 14;
 static_assert(static_cast<std::size_t>(Refusal::kVetoed) + 1 == kRefusalCount, "the last refusal");
 
 [[nodiscard]] std::string_view to_string(Operator op);

@@ -27,6 +27,7 @@ CutTotals cut_totals(const std::vector<CutRecord>& cuts) {
     t.moves += r.improvement_moves;
     t.insertions += r.improvement_insertions;
     t.vertices_moved += r.vertices_moved;
+    t.mesh_rule_retries += r.mesh_rule_retries;
     t.volume_removed += r.volume_removed;
     t.volume_removed_beyond_tool += r.volume_removed_beyond_tool;
     if (r.tets_hit > 0) {

@@ -18,6 +18,7 @@ struct CutTotals {
   std::uint64_t removed_beyond_tool = 0, removed_beyond_reach = 0, removed_by_improvement = 0;
   std::uint64_t flips = 0, collapses = 0, moves = 0, insertions = 0;
   std::uint64_t vertices_moved = 0;  // vertices there before a cut that it moved
+  std::uint64_t mesh_rule_retries = 0;  // passes made again under the mesh rule
   double volume_removed = 0.0, volume_removed_beyond_tool = 0.0;
   // Per ok cut that met tissue: the volume left in the tool, and removed beyond it.
   std::vector<double> volume_left, volume_beyond;
