@@ -201,23 +201,46 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   report.tets_hit = static_cast<std::uint32_t>(hit_.size());
   report.time.locate_us = clock.lap();
   if (!hit_.empty()) {
-    attempt(tool, rule_, clock, report, log);
+    attempt_under_mesh_rule(tool, rule_, clock, report, log);
     // Auto's one retry: the paper's loop made tets the pass cannot lift; the graded rule, at the
     // same D_ref (the tissue rule is judged at it either way), makes tets the pass keeps above the
     // floor. The rolled-back attempt's time stays in the stages' and the cut's.
     if (!report.ok && report.refusal == CutRefusal::kQualityFloor && params_.refinement == RefinementRule::kAuto &&
         rule_ == RefinementRule::kPaper) {
       const CutTimings spent = report.time;
+      const std::uint32_t mesh_rule_retries = report.mesh_rule_retries;
       report = CutReport{};
       report.d_ref = params_.d_ref();
       report.tets_hit = static_cast<std::uint32_t>(hit_.size());
       report.retries = 1;
+      report.mesh_rule_retries = mesh_rule_retries;
       report.time = spent;
-      attempt(tool, RefinementRule::kGraded, clock, report, log);
+      attempt_under_mesh_rule(tool, RefinementRule::kGraded, clock, report, log);
     }
   }
   report.time.total_us = clock.total();
   return report;
+}
+
+void Cutter::Pipeline::attempt_under_mesh_rule(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report,
+                                               ChangeLog* log) {
+  grew_bad_volume_ = false;
+  attempt(tool, rule, clock, report, log);
+  if (!grew_bad_volume_) return;
+  // Rolled back: the same attempt with every plan of the pass held to the mesh rule. The first
+  // attempt's time stays in the stages' and the cut's.
+  const CutTimings spent = report.time;
+  const std::uint32_t retries = report.retries, mesh_rule_retries = report.mesh_rule_retries + 1;
+  report = CutReport{};
+  report.d_ref = params_.d_ref();
+  report.tets_hit = static_cast<std::uint32_t>(hit_.size());
+  report.retries = retries;
+  report.mesh_rule_retries = mesh_rule_retries;
+  report.time = spent;
+  grew_bad_volume_ = false;
+  hold_plans_to_mesh_rule_ = true;
+  attempt(tool, rule, clock, report, log);
+  hold_plans_to_mesh_rule_ = false;
 }
 
 void Cutter::Pipeline::attempt(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log) {
@@ -257,18 +280,33 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
     return report;
   }
   Laps clock;
-  begin(nullptr);  // no tool: the request alone, no children join it
-  selection_.select_request(t);
-  bool ok = remove_selected(report);
-  report.time.remove_us = clock.lap();
-  if (ok) {
-    ok = improve(report);
-    report.time.improve_us = clock.lap();
+  auto request = [&] {
+    begin(nullptr);  // no tool: the request alone, no children join it
+    selection_.select_request(t);
+    bool ok = remove_selected(report);
+    report.time.remove_us += clock.lap();
+    if (ok) {
+      ok = improve(report);
+      report.time.improve_us += clock.lap();
+    }
+    if (ok) ok = audit(report);
+    if (ok) commit(report, log);
+    else roll_back(report);
+    report.time.finish_us += clock.lap();
+  };
+  grew_bad_volume_ = false;
+  request();
+  if (grew_bad_volume_) {
+    // The mesh rule, as for a cut (attempt_under_mesh_rule).
+    const CutTimings spent = report.time;
+    report = CutReport{};
+    report.mesh_rule_retries = 1;
+    report.time = spent;
+    grew_bad_volume_ = false;
+    hold_plans_to_mesh_rule_ = true;
+    request();
+    hold_plans_to_mesh_rule_ = false;
   }
-  if (ok) ok = audit(report);
-  if (ok) commit(report, log);
-  else roll_back(report);
-  report.time.finish_us = clock.lap();
   report.time.total_us = clock.total();
   return report;
 }
@@ -322,7 +360,8 @@ bool Cutter::Pipeline::improve(CutReport& report) {
   const detail::ImproveOutcome outcome =
       improver_.run(mesh_, transaction_.start(),
                     {.floor = params_.quality_floor, .min_dihedral_deg = params_.min_dihedral_deg, .improve = params_.improve, .reach = reach ? &*reach : nullptr, .tool = tool,
-                     .uncuttable = &uncuttable_, .tissue = &tissue_, .veto = veto});
+                     .uncuttable = &uncuttable_, .tissue = &tissue_, .veto = veto,
+                     .hold_plans_to_mesh_rule = hold_plans_to_mesh_rule_});
   report.tets_removed_by_improvement = outcome.removed;
   report.min_radius_ratio_before_improvement = outcome.worst_before;
   report.min_radius_ratio = outcome.worst_after;  // the worst net new tet: the made tets still live
@@ -337,7 +376,11 @@ bool Cutter::Pipeline::improve(CutReport& report) {
   report.improvement_collapses = outcome.collapses;
   report.improvement_moves = outcome.moves;
   report.improvement_insertions = outcome.insertions;
-  report.mesh_rule_retries = outcome.mesh_rule_retries;
+  if (outcome.grew_bad_volume) {
+    // The mesh rule: rolled back, and made again with every plan held to it (cut(), remove()).
+    grew_bad_volume_ = true;
+    return refuse(report, CutRefusal::kQualityFloor, "the volume of tets below theta outside the tool grew");
+  }
   if (report.quality_met || !params_.improve) return true;
   const detail::ImproveOutcome::Shortfall& s = outcome.shortfall;
   char text[400];

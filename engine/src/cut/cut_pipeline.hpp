@@ -62,6 +62,10 @@ class Cutter::Pipeline {
   class Laps;  // the stages' stopwatch
   // Refine to commit with one refinement rule: committed, or refused and rolled back.
   void attempt(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log);
+  // attempt(), and when its pass grew the volume below theta outside the tool (the mesh rule,
+  // weighed once when the pass ends: improve/improver.hpp), the same attempt again with every
+  // plan held to the rule (CutReport::mesh_rule_retries).
+  void attempt_under_mesh_rule(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log);
   void locate(const Ball& tool);
   bool refine(const Ball& tool, RefinementRule rule, CutReport& report);
   void select(CutReport& report);
@@ -101,6 +105,8 @@ class Cutter::Pipeline {
   detail::TissueRemoval tissue_;
   detail::RemovalLoop removal_loop_;
   detail::TissueAudit audit_;
+  bool grew_bad_volume_ = false;          // the last pass's outcome: the mesh rule asks for another attempt
+  bool hold_plans_to_mesh_rule_ = false;  // the attempt being made is that other one
   double last_min_dihedral_held_ = 180.0;  // the last transaction's (CutReport::min_dihedral_held_deg)
   std::vector<TetId> hit_, region_;  // T_hit, and the refined region
   // Where the removal stage began and ended in the journal: what it made, for the audit.

@@ -403,7 +403,6 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
     own_tissue_.begin(nullptr, 0.0);
     tissue_ = &own_tissue_;
   }
-  spread_rule_ = false;
   // quality() weighs the angle for this run's floors, and for the default ones again after it.
   struct WeightScope {
     ~WeightScope() { t_dihedral_sine_weight = kDihedralSineWeight; }
@@ -413,25 +412,11 @@ ImproveOutcome Improver::run(TetMesh& mesh, const TetMesh::Savepoint& start, con
   out.dihedral_floor_deg = params.min_dihedral_deg;
   out.min_dihedral_held_deg = params.min_dihedral_deg;
   if (measure(mesh, start, params, out)) return out;
-  // Some made tet is below its floors: the pass has work, and may have to take it back.
-  const TetMesh::Savepoint pass_start = mesh.savepoint();
-  const RemovedTissue tissue_at_start = tissue_->removed();
+  spread_rule_ = params.hold_plans_to_mesh_rule;
   lift_to_floors(mesh, start, params, out);
-  if (!params.improve || !grows_bad_volume(mesh)) return out;
-  // The mesh rule (header): made again with every plan held to it, from where the pass began.
-  mesh.rollback_to(pass_start);
-  made_tets_.forget_from(pass_start.tet_births);
-  tissue_->restore(tissue_at_start);
-  const std::uint32_t retries = out.mesh_rule_retries + 1;
-  out = ImproveOutcome{};
-  out.mesh_rule_retries = retries;
-  spread_rule_ = true;
-  set_theta(params.min_dihedral_deg, params.floor);
-  out.floor = params.floor;
-  out.dihedral_floor_deg = params.min_dihedral_deg;
-  out.min_dihedral_held_deg = params.min_dihedral_deg;
-  measure(mesh, start, params, out);
-  lift_to_floors(mesh, start, params, out);
+  // The mesh rule (header), weighed once: the caller makes the transaction again with every plan
+  // held to it when this one grew the volume below theta.
+  if (params.improve && !spread_rule_) out.grew_bad_volume = grows_bad_volume(mesh);
   spread_rule_ = false;
   return out;
 }

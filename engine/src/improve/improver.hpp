@@ -27,8 +27,8 @@
 // outside the tool does not grow. Per-tet floors allow the growth (a made tet is held to the
 // angle of the host holding its centroid, so a flip can lift the worst tet by spreading a bad
 // host's angle over good volume), so at the end of the pass the transaction is weighed as the
-// checker weighs it (grows_bad_volume); when it grew, the pass is made again from where it
-// began with every plan held to the rule (bad_volume_rule), which most cuts never need.
+// checker weighs it (grows_bad_volume); when it grew, the caller makes the transaction again
+// with every plan held to the rule (bad_volume_rule), which most cuts never need.
 // Every plan passes, after its operator's own tests, the run's rules (uncuttable tissue keeps
 // its region) and then the caller's hook (plan_veto.hpp), which may veto it; a plan refused for
 // any reason is not applied, and the outcome counts why.
@@ -81,6 +81,9 @@ struct ImproveParams {
   TissueRemoval* tissue = nullptr;
   // The caller's say over every plan the pass would apply (empty: none).
   PlanVeto veto{};
+  // Every plan held to the mesh rule (bad_volume_rule): for a transaction made again because it
+  // grew the volume below theta when the rule was only weighed at the end.
+  bool hold_plans_to_mesh_rule = false;
 };
 
 // The first theta a pass falls back to (ImproveOutcome::min_dihedral_held_deg).
@@ -107,9 +110,10 @@ struct ImproveOutcome {
   // below theta, and the report says which cut lowered it.
   double min_dihedral_held_deg = 180.0;
   std::uint32_t angle_retries = 0;
-  // Passes made again from their start with every plan held to the mesh rule, because the first
-  // grew the volume below theta outside the tool (0 or 1).
-  std::uint32_t mesh_rule_retries = 0;
+  // The transaction grew the volume of tets below theta outside the tool (the mesh rule, weighed
+  // when the pass ends unless its plans were held to it): the caller rolls it back and makes it
+  // again with ImproveParams::hold_plans_to_mesh_rule.
+  bool grew_bad_volume = false;
   std::uint32_t flips = 0, collapses = 0, moves = 0, insertions = 0;
   std::uint32_t removed = 0;  // slivers removed with the tissue
   std::uint32_t vetoed = 0;   // plans the caller's hook vetoed

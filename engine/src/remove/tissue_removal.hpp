@@ -46,9 +46,6 @@ class TissueRemoval {
   // Removes `set` (live, distinct) and tallies it.
   void remove(TetMesh& mesh, std::span<const TetId> set);
   [[nodiscard]] const RemovedTissue& removed() const { return removed_; }
-  // Back to an earlier tally, for a caller that rolled the mesh back past removals (the
-  // improvement pass's second try under the mesh rule).
-  void restore(const RemovedTissue& removed) { removed_ = removed; }
 
  private:
   bool has_tool_ = false;
