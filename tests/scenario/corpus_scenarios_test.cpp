@@ -34,7 +34,7 @@ TEST_P(CorpusScenario, RunsWithEveryCheckAndExpectation) {
 }
 
 // The mesh rule (I7: the volume of tets below theta outside the tool does not grow over a cut)
-// needs the pass's second run in one cut of liver-local's scenario: a flip there spread a bad
+// needs a second attempt in cuts of liver-local's scenario: a flip there spread a bad
 // host's angle over good volume, which per-tet floors allow. The run checks every cut, so the
 // second run held the rule where the first did not.
 TEST(MeshRule, OneCutOfLiverLocalsScenarioIsImprovedAgainUnderTheRuleAndPassesTheChecker) {

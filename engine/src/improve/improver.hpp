@@ -249,6 +249,7 @@ class Improver {
   // Whether plans are held to the mesh rule one by one (bad_volume_rule): only in a pass made
   // again because the first grew the volume below theta (the common pass pays nothing for it).
   bool spread_rule_ = false;
+  std::uint32_t old_vertex_plans_ = 0;  // smoothing plans of old vertices left in this pass
   // grows_bad_volume()'s scratch: the made tets outside the tool it weighs last.
   std::vector<TetId> outside_;
   TetShape shape_of(const TetMesh& mesh, TetId t);
