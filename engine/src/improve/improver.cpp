@@ -18,12 +18,13 @@ namespace {
 constexpr double kMargin = 1e-6;
 // Operations per pass: far above what a cut needs (a few dozen), a bound for pathological ones.
 constexpr std::uint32_t kMaxOperations = 512;
-// Smoothing plans for vertices there before the transaction, per pass: each evaluates a star of
-// a few dozen tets over and over, and where they cannot help (the gated sweep's cuts move none) a
-// cut with many tets nothing lifts planned them again and again: its slowest cut went from 2.3 to
-// 3.4 million instructions unbounded, 3.2 at 4 plans, 2.7 at 2. Where they help, two per pass
-// still move old vertices (the cylinder sweep of tests/mechanics, paper/liver-local.scn).
-constexpr std::uint32_t kOldVertexPlans = 2;
+// Smoothing plans for vertices there before the transaction that may come to nothing, per pass:
+// each evaluates a star of a few dozen tets over and over, and where they cannot help (the gated
+// sweep's cuts move none) a cut with many tets nothing lifts planned them again and again: its
+// slowest cut went from 2.3 to 3.4 million instructions unbounded, 2.8 at three. A plan that
+// lifts a tet does not count: at two, one cut of the sphere's ratchet (tests/engine/cut/
+// angle_ratchet_test.cpp) fell back below theta; at three none does.
+constexpr std::uint32_t kOldVertexPlans = 3;
 // Tets a plan may remove or add before its storage grows: a star of a vertex in a real mesh.
 constexpr std::size_t kPlanTets = 128;
 
@@ -309,9 +310,9 @@ std::optional<Operator> Improver::improve_tet(TetMesh& mesh, TetId t, ImproveOut
       count(out, r);
       continue;
     }
-    --old_vertex_plans_;
     Refusal planned = smoother_.plan(mesh, v, kMargin, tool_, candidate_);
     if (planned == Refusal::kNone) planned = old_vertex_move(candidate_);
+    if (planned != Refusal::kNone) --old_vertex_plans_;  // only a plan that came to nothing counts
     offer(mesh, planned, out);
   }
   if (!has_best_) {
