@@ -224,22 +224,26 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
 
 void Cutter::Pipeline::attempt_under_mesh_rule(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report,
                                                ChangeLog* log) {
+  under_mesh_rule(report, [&] { attempt(tool, rule, clock, report, log); });
+}
+
+template <class Attempt>
+void Cutter::Pipeline::under_mesh_rule(CutReport& report, Attempt&& make) {
   grew_bad_volume_ = false;
-  attempt(tool, rule, clock, report, log);
+  make();
   if (!grew_bad_volume_) return;
-  // Rolled back: the same attempt with every plan of the pass held to the mesh rule. The first
-  // attempt's time stays in the stages' and the cut's.
-  const CutTimings spent = report.time;
-  const std::uint32_t retries = report.retries, mesh_rule_retries = report.mesh_rule_retries + 1;
-  report = CutReport{};
-  report.d_ref = params_.d_ref();
-  report.tets_hit = static_cast<std::uint32_t>(hit_.size());
-  report.retries = retries;
-  report.mesh_rule_retries = mesh_rule_retries;
-  report.time = spent;
+  // Rolled back: the same attempt with every plan of the pass held to the mesh rule. What the
+  // first attempt was given and the time it took stay in the report.
+  CutReport again;
+  again.d_ref = report.d_ref;
+  again.tets_hit = report.tets_hit;
+  again.retries = report.retries;
+  again.mesh_rule_retries = report.mesh_rule_retries + 1;
+  again.time = report.time;
+  report = again;
   grew_bad_volume_ = false;
   hold_plans_to_mesh_rule_ = true;
-  attempt(tool, rule, clock, report, log);
+  make();
   hold_plans_to_mesh_rule_ = false;
 }
 
@@ -280,7 +284,7 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
     return report;
   }
   Laps clock;
-  auto request = [&] {
+  under_mesh_rule(report, [&] {
     begin(nullptr);  // no tool: the request alone, no children join it
     selection_.select_request(t);
     bool ok = remove_selected(report);
@@ -293,20 +297,7 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
     if (ok) commit(report, log);
     else roll_back(report);
     report.time.finish_us += clock.lap();
-  };
-  grew_bad_volume_ = false;
-  request();
-  if (grew_bad_volume_) {
-    // The mesh rule, as for a cut (attempt_under_mesh_rule).
-    const CutTimings spent = report.time;
-    report = CutReport{};
-    report.mesh_rule_retries = 1;
-    report.time = spent;
-    grew_bad_volume_ = false;
-    hold_plans_to_mesh_rule_ = true;
-    request();
-    hold_plans_to_mesh_rule_ = false;
-  }
+  });
   report.time.total_us = clock.total();
   return report;
 }

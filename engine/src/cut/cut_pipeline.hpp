@@ -66,6 +66,10 @@ class Cutter::Pipeline {
   // weighed once when the pass ends: improve/improver.hpp), the same attempt again with every
   // plan held to the rule (CutReport::mesh_rule_retries).
   void attempt_under_mesh_rule(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log);
+  // `make` (an attempt, or a removal request's one transaction), and again with every plan held
+  // to the mesh rule when its pass grew the volume below theta; the report counts the second.
+  template <class Attempt>
+  void under_mesh_rule(CutReport& report, Attempt&& make);
   void locate(const Ball& tool);
   bool refine(const Ball& tool, RefinementRule rule, CutReport& report);
   void select(CutReport& report);
