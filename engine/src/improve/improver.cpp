@@ -329,7 +329,7 @@ bool Improver::insert(TetMesh& mesh, TetId t, ImproveOutcome& out) {
     count(out, r);
     return false;
   }
-  insertion_bad_before_ = bad_volume(mesh, insertion_.removed_tets());
+  if (spread_rule_) insertion_bad_before_ = bad_volume(mesh, insertion_.removed_tets());  // bad_volume_rule's, when on
   const std::size_t before = created_.size();
   insertion_.apply(mesh, created_);
   const VertId midpoint = mesh.vertices_made_since(point).front().vertex;
