@@ -62,7 +62,7 @@ void BM_RefineLoopOnLiver(benchmark::State& state) {
   for (auto _ : state) {
     state.PauseTiming();
     tetcut::TetMesh mesh = liver;
-    const tetcut::Ball tool{centres[next++ % centres.size()], diameter / 2};
+    const tetcut::Tool tool = tetcut::Tool::ball(centres[next++ % centres.size()], diameter / 2);
     hit.clear();
     for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
       const auto v = mesh.tet(TetId{t});

@@ -71,12 +71,12 @@ Box bounding_box(const TetMesh& mesh) {
   return box;
 }
 
-Ball consume_ball(FuzzedDataProvider& input, const Box& box, double min_fraction, double max_fraction) {
+Tool consume_ball(FuzzedDataProvider& input, const Box& box, double min_fraction, double max_fraction) {
   const Vec3 margin = 0.1 * (box.hi - box.lo);
   const Vec3 lo = box.lo - margin;
   const Vec3 span = (box.hi + margin) - lo;
-  Ball ball;
-  ball.centre = {lo.x + span.x * consume_unit(input), lo.y + span.y * consume_unit(input),
+  Tool ball;
+  ball.a = ball.b = {lo.x + span.x * consume_unit(input), lo.y + span.y * consume_unit(input),
                  lo.z + span.z * consume_unit(input)};
   ball.radius = std::max(box.diagonal(), 1e-9) * consume_in(input, min_fraction, max_fraction);
   return ball;

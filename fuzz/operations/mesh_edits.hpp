@@ -11,7 +11,7 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "refine/edge_split.hpp"
 #include "refine/refine.hpp"
 #include "tetcut/change_log.hpp"
@@ -84,7 +84,7 @@ Box bounding_box(const TetMesh& mesh);
 
 // A ball whose centre lies in the bounding box grown by 10 % and whose radius is between
 // min_fraction and max_fraction of the box diagonal.
-Ball consume_ball(FuzzedDataProvider& input, const Box& box, double min_fraction, double max_fraction);
+Tool consume_ball(FuzzedDataProvider& input, const Box& box, double min_fraction, double max_fraction);
 
 
 // Paper 3.3, written here from the paper independently of the engine's removability(), so that

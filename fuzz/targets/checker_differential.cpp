@@ -110,7 +110,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       case Edit::kRemoveAdjacentSet: remove_adjacent_set(mesh, ws, input); break;
       case Edit::kRefine: {
-        const Ball ball = fuzz::consume_ball(input, fuzz::bounding_box(mesh), 0.08, 0.3);
+        const Tool ball = fuzz::consume_ball(input, fuzz::bounding_box(mesh), 0.08, 0.3);
         RefineParams params;
         params.d_ref = 3.0 * ball.radius;
         params.max_iterations = input.ConsumeIntegralInRange<std::uint32_t>(1, 4);

@@ -136,7 +136,7 @@ void refine(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input) {
   // Without a focus the loop spreads through the whole mesh (refine.hpp), so the tool is kept
   // larger then: the final size goes as (box diagonal / D_ref)^3.
   const bool focus = input.ConsumeBool();
-  const Ball ball = fuzz::consume_ball(input, fuzz::bounding_box(mesh), focus ? 0.08 : 0.2, focus ? 0.3 : 0.5);
+  const Tool ball = fuzz::consume_ball(input, fuzz::bounding_box(mesh), focus ? 0.08 : 0.2, focus ? 0.3 : 0.5);
   RefineParams params;
   params.d_ref = 1.5 * (2.0 * ball.radius);  // paper 3.2: D_ref = 1.5 x tool diameter
   params.p = fuzz::consume_in(input, 1.1, 3.0);
@@ -145,7 +145,7 @@ void refine(CheckedMesh& checked, Workspace& ws, FuzzedDataProvider& input) {
   if (focus) params.focus = ball;
   checked.require(!validate(params).has_value(), "refine-params", "clamped parameters refused");
   if (checked.tracing())
-    checked.describe("centre " + fuzz::to_string(ball.centre) + " radius " + std::to_string(ball.radius) + " p " +
+    checked.describe("centre " + fuzz::to_string(ball.a) + " radius " + std::to_string(ball.radius) + " p " +
                      std::to_string(params.p) + " iterations " + std::to_string(params.max_iterations) +
                      (params.method == SplitMethod::kBisection ? " bisection" : " templates") +
                      (params.focus ? " focus" : ""));

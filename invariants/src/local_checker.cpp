@@ -336,10 +336,10 @@ struct LocalChecker::Operation {
       });
     } else {
       const double reach = options.tool->radius + options.tool->d_ref;
-      const double distance = std::max(norm(was - options.tool->centre), norm(is - options.tool->centre));
+      const double distance = std::max(detail::distance_to_axis(*options.tool, was), detail::distance_to_axis(*options.tool, is));
       if (!(distance <= reach * (1.0 + kReachTolerance)))
         report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
-          return move_text() + ", " + detail::num(distance) + " from the tool's centre: beyond the cut's reach " +
+          return move_text() + ", " + detail::num(distance) + " from the tool's axis: beyond the cut's reach " +
                  detail::num(reach) + " (radius + d_ref)";
         });
     }
@@ -443,7 +443,7 @@ struct LocalChecker::Operation {
 
     if (judge_quality)
       no_degradation.finish(old_positions, positions, options.quality_floor, options.min_dihedral_deg,
-                            options.tool ? &options.tool->centre : nullptr, options.tool ? options.tool->radius : 0.0, report);
+                            options.tool ? &*options.tool : nullptr, report);
 
     // I10: uncuttable tissue neither went nor grew.
     if (!removed_uncuttable.empty() &&
@@ -456,7 +456,10 @@ struct LocalChecker::Operation {
     // I10: the tool's tissue.
     if (options.tool) {
       if (!grid.built()) grid.build(c.known_tets_, positions);
-      grid.candidates(options.tool->centre, options.tool->radius, c.scratch_->near_tool);
+      // A capsule's candidates: those near the ball about its midpoint that holds it.
+      const ToolRule& tool = *options.tool;
+      const Vec3 end = tool.end.value_or(tool.centre);
+      grid.candidates(0.5 * (tool.centre + end), tool.radius + 0.5 * norm(end - tool.centre), c.scratch_->near_tool);
       detail::check_tissue_rule(*options.tool, c.scratch_->near_tool, c.known_tets_, positions, c.uncuttable_, report);
     }
 

@@ -10,6 +10,7 @@
 #include "tet_checks.hpp"
 #include "tet_intersection.hpp"
 #include "tet_quality.hpp"
+#include "tissue_rule.hpp"
 
 namespace tetcut::invariants::detail {
 namespace {
@@ -94,7 +95,7 @@ void NoDegradationCheck::locate(const Created& c, std::span<const Vec3> old_posi
 }
 
 void NoDegradationCheck::finish(std::span<const Vec3> old_positions, std::span<const Vec3> positions, double floor,
-                                double min_dihedral_deg, const Vec3* tool_centre, double tool_radius, ReportBuilder& report) {
+                                double min_dihedral_deg, const ToolRule* tool, ReportBuilder& report) {
   if (created_.empty() || !(floor > 0.0 || min_dihedral_deg > 0.0)) return;
   by_vertex_.clear();
   for (std::uint32_t k = 0; k < removed_.size(); ++k) {
@@ -147,7 +148,7 @@ void NoDegradationCheck::finish(std::span<const Vec3> old_positions, std::span<c
              (hosts_text.empty() ? std::string("none holds its centroid, the operation's worst taken") : hosts_text);
     });
   }
-  if (min_dihedral_deg > 0.0) check_bad_volume(old_positions, positions, min_dihedral_deg, tool_centre, tool_radius, report);
+  if (min_dihedral_deg > 0.0) check_bad_volume(old_positions, positions, min_dihedral_deg, tool, report);
 }
 
 double NoDegradationCheck::bad_volume_under(const Created& c, std::span<const Vec3> old_positions,
@@ -185,8 +186,7 @@ double NoDegradationCheck::bad_volume_under(const Created& c, std::span<const Ve
 }
 
 void NoDegradationCheck::check_bad_volume(std::span<const Vec3> old_positions, std::span<const Vec3> positions,
-                                          double min_dihedral_deg, const Vec3* tool_centre, double tool_radius,
-                                          ReportBuilder& report) {
+                                          double min_dihedral_deg, const ToolRule* tool, ReportBuilder& report) {
   // The created tets outside the tool, and after: the volume of those below theta. A created tet
   // within rounding of theta is not below it (a split child keeps its parent's angles).
   outside_.clear();
@@ -194,7 +194,7 @@ void NoDegradationCheck::check_bad_volume(std::span<const Vec3> old_positions, s
   for (std::uint32_t k = 0; k < created_.size(); ++k) {
     const Created& c = created_[k];
     const Vec3 centroid = 0.25 * (positions[c.q[0]] + positions[c.q[1]] + positions[c.q[2]] + positions[c.q[3]]);
-    if (tool_centre && norm(centroid - *tool_centre) < tool_radius) continue;
+    if (tool && distance_to_axis(*tool, centroid) < tool->radius) continue;
     outside_.push_back(k);
     const double volume = tet_volume(positions[c.q[0]], positions[c.q[1]], positions[c.q[2]], positions[c.q[3]]);
     scale += volume;

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "report_builder.hpp"
+#include "tetcut/invariants/check.hpp"
 #include "tetcut/vec3.hpp"
 #include "vertex_link.hpp"
 
@@ -44,9 +45,9 @@ class NoDegradationCheck {
   // Locates the hosts of every created tet below F or theta and reports each below its floors,
   // naming its quality, its hosts' and the floors. `old_positions`: the vertices as they were
   // before the operation (the removed tets' corners); `positions`: as they are now (the created
-  // tets' corners). `tool`: the cut's ball (centre, radius), or null for an operation without one.
+  // tets' corners). `tool`: the cut's tool, or null for an operation without one.
   void finish(std::span<const Vec3> old_positions, std::span<const Vec3> positions, double floor,
-              double min_dihedral_deg, const Vec3* tool_centre, double tool_radius, ReportBuilder& report);
+              double min_dihedral_deg, const ToolRule* tool, ReportBuilder& report);
 
  private:
   struct Removed {
@@ -69,7 +70,7 @@ class NoDegradationCheck {
   bool hosts(const Removed& r, const Vec3& point, std::span<const Vec3> old_positions) const;
   // The mesh rule (above), after the per-tet floors, which measured what it needs.
   void check_bad_volume(std::span<const Vec3> old_positions, std::span<const Vec3> positions, double min_dihedral_deg,
-                        const Vec3* tool_centre, double tool_radius, ReportBuilder& report);
+                        const ToolRule* tool, ReportBuilder& report);
   // The volume created tet c (at `positions`) shares with the removed tets below theta (at
   // `old_positions`): those sharing one of its vertices or hosting its centroid when `all` is
   // false (a lower bound), every one whose box meets c's when true.

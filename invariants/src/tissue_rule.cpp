@@ -193,6 +193,31 @@ void TetGrid::candidates(const Vec3& centre, double radius, std::vector<std::uin
   std::sort(out.begin(), out.end());
 }
 
+double distance_to_axis(const ToolRule& tool, const Vec3& p) {
+  return tool.end ? distance_to_segment(p, tool.centre, *tool.end) : dist(p, tool.centre);
+}
+
+double distance_from_axis_to_tet(const ToolRule& tool, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  if (!tool.end || *tool.end == tool.centre) return distance_to_tet(tool.centre, a, b, c, d);
+  const Vec3 from = tool.centre, along = *tool.end - tool.centre;
+  auto f = [&](double s) { return distance_to_tet(from + s * along, a, b, c, d); };
+  // 0.618^70 < 1e-14 of the segment: far below the checker's margins.
+  constexpr double kGolden = 0.6180339887498949;
+  double lo = 0.0, hi = 1.0;
+  double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+  double f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < 70 && f1 > 0.0 && f2 > 0.0; ++i) {
+    if (f1 <= f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - kGolden * (hi - lo), f1 = f(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + kGolden * (hi - lo), f2 = f(x2);
+    }
+  }
+  return std::min({f1, f2, f(0.0), f(1.0)});
+}
+
 void check_tissue_rule(const ToolRule& rule, std::span<const std::uint32_t> candidates, std::span<const RawTet> tets,
                        std::span<const Vec3> positions, std::span<const std::uint8_t> uncuttable,
                        ReportBuilder& report) {
@@ -216,11 +241,11 @@ void check_tissue_rule(const ToolRule& rule, std::span<const std::uint32_t> cand
     }
     const Corners c = corners(tets[t], positions);
     const Vec3 centroid = 0.25 * (c.p[0] + c.p[1] + c.p[2] + c.p[3]);
-    const double from_centre = dist(centroid, rule.centre), longest = longest_edge(c);
+    const double from_centre = distance_to_axis(rule, centroid), longest = longest_edge(c);
     if (!cuttable(t) || from_centre > r * (1 + kMargin) || longest > d_ref * (1 + kMargin))
       report.add(Invariant::kI10Tissue, {t}, {}, [&] {
         return "tet " + str(t) + " is reported left in the tool but is not tissue the cut takes: " +
-               (cuttable(t) ? "its centroid is " + num(from_centre) + " from the tool's centre (radius " + num(r) +
+               (cuttable(t) ? "its centroid is " + num(from_centre) + " from the tool's axis (radius " + num(r) +
                                   "), its longest edge " + num(longest) + " (D_ref " + num(d_ref) + ")"
                             : std::string("it is uncuttable"));
       });
@@ -232,20 +257,22 @@ void check_tissue_rule(const ToolRule& rule, std::span<const std::uint32_t> cand
     const double longest = longest_edge(c);
     if (longest > d_ref * (1 + kMargin)) {
       // Only a tet that meets the tool: the distance last, as it is the dearest.
-      if (distance_to_tet(rule.centre, c.p[0], c.p[1], c.p[2], c.p[3]) < r * (1 - kMargin))
+      if (distance_from_axis_to_tet(rule, c.p[0], c.p[1], c.p[2], c.p[3]) < r * (1 - kMargin))
         report.add(Invariant::kI10Tissue, {t}, {}, [&] {
           return "tet " + str(t) + " meets the tool (centre " + num(rule.centre.x) + "," + num(rule.centre.y) + "," +
-                 num(rule.centre.z) + ", radius " + num(r) + ") with an edge of " + num(longest) +
+                 num(rule.centre.z) +
+                 (rule.end ? " to " + num(rule.end->x) + "," + num(rule.end->y) + "," + num(rule.end->z) : std::string()) +
+                 ", radius " + num(r) + ") with an edge of " + num(longest) +
                  ", longer than D_ref " + num(d_ref) + ": the tool's neighbourhood is not refined";
         });
       continue;
     }
     if (longest > d_ref * (1 - kMargin)) continue;
     const Vec3 centroid = 0.25 * (c.p[0] + c.p[1] + c.p[2] + c.p[3]);
-    const double from_centre = dist(centroid, rule.centre);
+    const double from_centre = distance_to_axis(rule, centroid);
     if (from_centre <= r * (1 - kMargin) && !std::binary_search(left.begin(), left.end(), t))
       report.add(Invariant::kI10Tissue, {t}, {}, [&] {
-        return "tet " + str(t) + " is tissue the cut takes (centroid " + num(from_centre) + " from the tool's centre, radius " +
+        return "tet " + str(t) + " is tissue the cut takes (centroid " + num(from_centre) + " from the tool's axis, radius " +
                num(r) + "; longest edge " + num(longest) + ", D_ref " + num(d_ref) +
                ") and is still there, and the cut does not report it left";
       });

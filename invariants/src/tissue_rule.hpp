@@ -67,6 +67,14 @@ class TetGrid {
 // projection with barycentric coordinates per face, else the nearest edge.
 double distance_to_tet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+// The distance from p to the tool's axis: its centre, or the segment centre-end of a capsule.
+double distance_to_axis(const ToolRule& tool, const Vec3& p);
+// The distance from the tool's axis to the closed tet (a, b, c, d): distance_to_tet() from the
+// centre for a ball. For a capsule, the least distance_to_tet() along the segment, a convex
+// function of the position on it, found by golden-section search (the engine clips the segment
+// and measures it against the faces: the checker owes it nothing).
+double distance_from_axis_to_tet(const ToolRule& tool, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
 // Whether p lies in the closed tet, up to a relative 1e-12 of its volume.
 bool tet_contains(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 

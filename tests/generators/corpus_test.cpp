@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "cut/spatial_index.hpp"
 #include "refine/refine.hpp"
 #include "tetcut/canonical_hash.hpp"
@@ -73,7 +73,7 @@ TEST(Corpus, TheLocallyRefinedLiverIsTheCoarseLiverRefinedByOurOwnLoop) {
   ASSERT_TRUE(built.ok());
   TetMesh& mesh = *built.mesh;
   RefineParams params;
-  params.focus = Ball{Vec3{95, 110, 100}, 28};
+  params.focus = Tool::ball(Vec3{95, 110, 100}, 28);
   params.d_ref = 10;
   params.p = 3;
   std::vector<TetId> hit, region;

@@ -88,7 +88,9 @@ class MeshRule : public ::testing::Test {
     const Vec3 &w = p[created[0]], &x = p[created[1]], &y = p[created[2]], &z = p[created[3]];
     check.add_created(2, created, tet_radius_ratio(w, x, y, z), tet_min_dihedral_deg(w, x, y, z));
     ReportBuilder report;
-    check.finish(positions, positions, 0.0, 15.0, tool_centre, tool_radius, report);
+    std::optional<ToolRule> tool;
+    if (tool_centre) tool = ToolRule{.centre = *tool_centre, .radius = tool_radius};
+    check.finish(positions, positions, 0.0, 15.0, tool ? &*tool : nullptr, report);
     CheckReport out;
     report.finish(out);
     return out;

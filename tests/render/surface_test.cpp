@@ -105,7 +105,7 @@ TEST(ClassifySurface, RefinedOriginalFacesAreNotCut) {
     const TetMesh original = build(make_box_mesh(3, 3, 3));
     TetMesh mesh = original;
     // Refine around the middle of the +x side: its faces split into smaller ones in place.
-    const Ball focus{{1.0, 0.5, 0.5}, 0.2};
+    const Tool focus = Tool::ball({1.0, 0.5, 0.5}, 0.2);
     std::vector<TetId> hit;
     for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
       const auto v = mesh.tet(TetId{i});

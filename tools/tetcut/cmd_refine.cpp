@@ -60,13 +60,13 @@ void add_options(CLI::App& app, RefineArgs& a) {
 }
 
 // "X,Y,Z,R" with R > 0.
-std::optional<Ball> parse_ball(const std::string& text) {
+std::optional<Tool> parse_ball(const std::string& text) {
   const auto comma = text.rfind(',');
   if (comma == std::string::npos) return std::nullopt;
   const auto centre = scenario::parse_vec3(text.substr(0, comma));
   const auto radius = scenario::parse_double(text.substr(comma + 1));
   if (!centre || !radius || *radius <= 0) return std::nullopt;
-  return Ball{*centre, *radius};
+  return Tool::ball(*centre, *radius);
 }
 
 std::vector<Edge> all_edges(const TetMesh& mesh) {
@@ -104,7 +104,7 @@ int cmd_refine(Args args, std::ostream& out, std::ostream& err) {
   if (const auto code = parser.parse(args, out, err)) return *code;
   const int modes = int{a.uniform} + int{a.random_edges.has_value()} + int{a.ball.has_value()};
   if (modes != 1) return parser.usage_error("give exactly one of --uniform, --random-edges, --ball", err);
-  std::optional<Ball> ball;
+  std::optional<Tool> ball;
   if (a.ball && !(ball = parse_ball(*a.ball))) return parser.usage_error("--ball: expects X,Y,Z,R with R > 0", err);
   if (a.max_iterations && *a.max_iterations > 1000) return parser.usage_error("--max-iterations: at most 1000", err);
   const SplitMethod method = a.method.value_or(SplitMethod::kTemplates);

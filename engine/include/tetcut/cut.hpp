@@ -1,11 +1,15 @@
-// One cautery cut, as a simulator calls it many times a second (paper 3.1 to 3.7 together):
+// One cautery cut, as a simulator calls it many times a second (paper 3.1 to 3.7 together). The
+// tool is the paper's ball at the tip (cut()), or the capsule the tip sweeps between two samples
+// of a stroke (cut_segment(): every point within the tool's radius of the segment; a ball is the
+// capsule of a zero-length segment). Every stage below holds for both, "in the tool" meaning
+// within the radius of the segment:
 //
-//   locate   T_hit = live tets meeting the tool ball (spatial index, never a mesh scan)
+//   locate   T_hit = live tets meeting the tool (spatial index, never a mesh scan)
 //   refine   the loop of paper 3.2 around T_hit with D_ref = d_ref_factor x diameter, following
-//            the new tets that meet the ball
+//            the new tets that meet the tool
 //   select   T_removal = the refined region's tets that are inside the tool and have no edge
 //            longer than D_ref (paper 3.3). "Inside" means: the tet's centroid lies in the
-//            closed ball. A tet that only grazes the ball stays; the cavity then has the
+//            closed tool. A tet that only grazes the tool stays; the cavity then has the
 //            tool's size to within one small tet.
 //   remove   every directly removable selected tet first (3.3), again until none is left; then
 //            the strategy (cut_strategies.hpp) on one stuck tet, on the surface first (outside in),
@@ -21,8 +25,12 @@
 //            edge longer than D_ref, and the tets the selection would take that are still there
 //            are counted and listed (last_left_in_tool()): unresolved requests, pieces of kept
 //            tets no request removed. With the volume of tissue left in the tool and removed
-//            beyond it (estimates: core/tool_ball.hpp, volume_in_ball).
-//   commit   the transaction, the spatial index, the change log.
+//            beyond it (estimates: core/tool.hpp, volume_in_tool).
+//   pieces   the pieces the cut detached from the organ (Cutter::last_fragments()): a walk from
+//            the cut's new surface in lockstep that stops once every piece but the largest is
+//            walked (engine/src/cut/fragment_search.hpp); with CutParams::debris_volume, the
+//            detached pieces below it are removed in the same transaction.
+//   commit   the transaction, the spatial index, the change log, the piece labels.
 //
 // Atomic: the whole cut runs in a mesh transaction; if it cannot complete (a split refused for
 // degeneracy, the per-cut tet budget exceeded, a created tet the improvement pass cannot lift to
@@ -55,7 +63,7 @@
 namespace tetcut {
 
 struct CutParams {
-  double tool_diameter = 1.0;        // the ball's diameter (paper: the cautery tip)
+  double tool_diameter = 1.0;        // the ball's diameter (paper: the cautery tip), a capsule's width
   double d_ref_factor = 1.5;         // D_ref = d_ref_factor x tool_diameter (paper 3.2)
   double p = 1.5;                    // shell edge ratio of the refinement loop (paper 3.2)
   std::uint32_t search_depth = 10;   // neighbour search depth (paper 3.5)
@@ -82,6 +90,14 @@ struct CutParams {
   bool improve = true;
   double quality_floor = 0.1;     // F, a radius ratio in [0, 1]
   double min_dihedral_deg = 15.0;  // theta, degrees in [0, 70] (a regular tet's is 70.53)
+  // The pieces a cut detaches (Cutter::last_fragments()) are always reported. With a debris
+  // volume > 0, those below it (and with no uncuttable tet) are removed in the same cut, as a
+  // simulator drops debris: in the cut's change log, reported apart from the tissue removed
+  // (CutReport::debris_*). 0: report only.
+  double debris_volume = 0.0;
+  // The tets the search for detached pieces visits at most: reached when the two sides of a cut
+  // stay joined by a bridge far from it (CutReport::fragment_search_bounded).
+  std::uint32_t fragment_search_bound = 65536;
 
   // D_ref, the one length the refinement, the selection and the tissue rule are judged at.
   [[nodiscard]] double d_ref() const { return d_ref_factor * tool_diameter; }
@@ -95,6 +111,7 @@ std::optional<std::string> validate(const CutParams& params);
 struct CutTimings {
   double locate_us = 0, refine_us = 0, select_us = 0, remove_us = 0, improve_us = 0;
   double finish_us = 0;  // the tissue audit, the commit, the index and the change log
+  double pieces_us = 0;  // the search for detached pieces, and the debris removed
   double total_us = 0;
 };
 
@@ -120,7 +137,7 @@ struct CutReport : RequestCounts {
   std::string failure;               // why the cut was rolled back (when !ok), for people
   // A refused cut's counts say what it did before it was refused; none of it is in the mesh or
   // in removal_report().
-  std::uint32_t tets_hit = 0;        // live tets meeting the ball before refinement
+  std::uint32_t tets_hit = 0;        // live tets meeting the tool before refinement
   std::uint32_t refine_iterations = 0;
   std::uint32_t edges_split = 0;     // by the refinement loop
   std::uint32_t tets_refined = 0;    // parents replaced by the refinement loop
@@ -134,14 +151,14 @@ struct CutReport : RequestCounts {
   // of unresolved requests and pieces of kept tets their request did not remove. Listed by
   // Cutter::last_left_in_tool(). 0: the cut took all the tissue its rule takes.
   std::uint32_t left_in_tool = 0;
-  // The volume of cuttable tissue still inside the tool's ball: of every live cuttable tet that
-  // meets it, the part inside (volume_in_ball: exact for tets wholly in or out, else the midpoint
-  // rule on 8 equal children). The paper's selection (centroid in the ball, edges within D_ref)
+  // The volume of cuttable tissue still inside the tool: of every live cuttable tet that
+  // meets it, the part inside (volume_in_tool: exact for tets wholly in or out, else the midpoint
+  // rule on 8 equal children). The paper's selection (centroid in the tool, edges within D_ref)
   // leaves the parts of grazing tets by design: this says how much.
   double volume_left_in_tool = 0.0;
   // What the cut removed as tissue (the removal requests and the improvement pass's slivers):
   // its volume, and of it the tets whose centroid is outside the tool, the volume outside the
-  // tool (estimated as above) and the tets reaching beyond the cut's reach (the tool's ball grown
+  // tool (estimated as above) and the tets reaching beyond the cut's reach (the tool grown
   // by D_ref).
   double volume_removed = 0.0;
   std::uint32_t tets_removed_beyond_tool = 0;
@@ -178,6 +195,17 @@ struct CutReport : RequestCounts {
   // first grew it; 0 for most cuts.
   std::uint32_t mesh_rule_retries = 0;
   std::uint32_t tets_removed_by_improvement = 0;
+  // The pieces the cut detached from the organ (the largest piece its new surface bounds):
+  // listed by Cutter::last_fragments(), those removed as debris included. The search visited
+  // `fragment_tets_visited` tets; bounded: it stopped at CutParams::fragment_search_bound with
+  // pieces it could not tell apart, which are not reported.
+  std::uint32_t fragments = 0;
+  std::uint32_t fragment_tets_visited = 0;
+  bool fragment_search_bounded = false;
+  // Detached pieces removed as debris (CutParams::debris_volume): not in tets_removed or
+  // volume_removed, which count tissue.
+  std::uint32_t debris_pieces_removed = 0, debris_tets_removed = 0;
+  double debris_volume_removed = 0.0;
   double d_ref = 0;                  // the D_ref the cut was judged at: CutParams::d_ref()
   RefinementRule refinement = RefinementRule::kPaper;  // the rule of the attempt that ended it
   // Attempts rolled back before the one that ended the cut: under RefinementRule::kAuto, a cut
@@ -185,6 +213,17 @@ struct CutReport : RequestCounts {
   // (at the same D_ref). Every attempt's time is in `time`.
   std::uint32_t retries = 0;
   CutTimings time;
+};
+
+// A face-connected piece of the mesh a cut detached from the rest (CutReport::fragments). Of the
+// pieces the cut's new surface bounds that were one piece before it, the largest by volume is
+// the organ and is not listed; the others are.
+struct Fragment {
+  std::span<const TetId> tets;  // sorted by id (dead when removed as debris)
+  double volume = 0.0;
+  Vec3 centroid{};              // volume-weighted
+  bool removed = false;         // dropped as debris (CutParams::debris_volume)
+  TetId organ;                  // a live tet of the piece it came away from
 };
 
 class Cutter {
@@ -226,6 +265,11 @@ class Cutter {
   // live after and not before with their parents among the former, the vertices made that are
   // still used with their origin, the vertices gone.
   CutReport cut(const Vec3& centre, ChangeLog* log = nullptr);
+  // One cut by the capsule the tool sweeps from `a` to `b` (its radius the tool's): the tissue a
+  // stroke passes through between two haptic samples, whatever the sampling. The same pipeline,
+  // guarantees and report as cut(); cut_segment(c, c) is cut(c), bit for bit. Refused
+  // (kParameters, the mesh untouched) when an end is not finite, as cut() is.
+  CutReport cut_segment(const Vec3& a, const Vec3& b, ChangeLog* log = nullptr);
 
   // One removal request outside the cut pipeline (tetcut remove, scenarios): tet t with the
   // strategy, atomically, the index kept up to date. Reported like a cut with one request.
@@ -260,6 +304,13 @@ class Cutter {
   // The tets the last cut left in its tool (CutReport::left_in_tool), sorted by id: what the
   // checker's I10 accepts as reported.
   [[nodiscard]] std::span<const TetId> last_left_in_tool() const;
+  // The pieces the last cut or removal request detached, in the order its search finished them
+  // (views, valid until the next cut).
+  [[nodiscard]] std::span<const Fragment> last_fragments() const;
+  // The mesh's face-connected pieces, kept by every cut and removal request without a scan
+  // (counted once when the mesh is indexed). Exact unless a search was bounded since the last
+  // reset(): then pieces it could not tell apart count as one.
+  [[nodiscard]] std::uint32_t pieces() const;
   // The theta the last cut or removal request held its created tets to
   // (CutReport::min_dihedral_held_deg): what the checker's I7 takes for it.
   [[nodiscard]] double last_min_dihedral_held() const;

@@ -2,6 +2,7 @@
 #include "cut/cut_pipeline.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "cut/tissue_rule_veto.hpp"
@@ -61,6 +62,7 @@ Cutter::Pipeline::Pipeline(TetMesh& mesh, const CutParams& params)
       remover_(removal_options(params)),
       selection_(params_) {
   index_.build(mesh_);
+  labels_.build(mesh_);
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
   invalid_ = validate(params_);
@@ -83,15 +85,19 @@ void Cutter::Pipeline::prepare() {
   removal_loop_.reserve(tets);
   if (params_.order == RemovalOrder::kRevisit) reserve_revisit();
   audit_.reserve(tets);
+  labels_.reserve(tets);
+  search_.reserve(tets, vertices, params_.fragment_search_bound);
+  reserve_touched(fragments_, 1024);
   transaction_.reserve();
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
   // gated by ci/bench).
   constexpr std::size_t kCutScratch = 16384;
-  for (auto* list : {&hit_, &region_}) reserve_touched(*list, kCutScratch);
+  for (auto* list : {&hit_, &region_, &removed_, &created_}) reserve_touched(*list, kCutScratch);
 }
 
 void Cutter::Pipeline::reset() {
   index_.build(mesh_, mesh_.mean_edge_length());
+  labels_.build(mesh_);
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
   judge_scale();
@@ -121,6 +127,7 @@ std::optional<std::string> Cutter::Pipeline::set_params(const CutParams& params)
   judge_scale();
   if (removal_changed) remover_.set_options(removal_options(params_));
   if (revisit_now) reserve_revisit();  // between cuts, so that the cuts in that order do not allocate
+  search_.reserve(room_for_tets(), mesh_.vertex_capacity(), params_.fragment_search_bound);  // likewise for a larger bound
   return std::nullopt;
 }
 
@@ -154,7 +161,7 @@ std::optional<std::string> Cutter::Pipeline::stale() const {
 
 TetId Cutter::Pipeline::tet_containing(const Vec3& p) {
   if (!indexes_current_mesh()) return kNoTet;
-  index_.query(mesh_, Ball{p, 0.0}, hit_);
+  index_.query(mesh_, Tool::ball(p, 0.0), hit_);
   return hit_.empty() ? kNoTet : hit_.front();
 }
 
@@ -165,7 +172,7 @@ bool Cutter::Pipeline::refuse(CutReport& report, CutRefusal refusal, std::string
   return false;
 }
 
-void Cutter::Pipeline::begin(const Ball* tool) {
+void Cutter::Pipeline::begin(const Tool* tool) {
   transaction_.begin(mesh_, remover_);
   selection_.begin(tool);
   // The cut's reach: the tool's ball grown by D_ref, the longest edge its refinement leaves at
@@ -182,11 +189,12 @@ void Cutter::Pipeline::roll_back(CutReport& report) {
   audit_.clear();
 }
 
-CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
+CutReport Cutter::Pipeline::cut(const Vec3& a, const Vec3& b, ChangeLog* log) {
   CutReport report;
   report.d_ref = params_.d_ref();
   transaction_.forget();
   audit_.clear();
+  fragments_.clear();
   if (auto invalid = stale()) {
     refuse(report, CutRefusal::kStaleIndex, *invalid);
     return report;
@@ -195,8 +203,13 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
     refuse(report, CutRefusal::kParameters, *refusal_);
     return report;
   }
+  auto finite = [](const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+  if (!finite(a) || !finite(b)) {
+    refuse(report, CutRefusal::kParameters, "the tool's position must be finite");
+    return report;
+  }
   Laps clock;
-  const Ball tool{centre, params_.tool_diameter / 2};
+  const Tool tool{a, b, params_.tool_diameter / 2};
   locate(tool);
   report.tets_hit = static_cast<std::uint32_t>(hit_.size());
   report.time.locate_us = clock.lap();
@@ -222,7 +235,7 @@ CutReport Cutter::Pipeline::cut(const Vec3& centre, ChangeLog* log) {
   return report;
 }
 
-void Cutter::Pipeline::attempt_under_mesh_rule(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report,
+void Cutter::Pipeline::attempt_under_mesh_rule(const Tool& tool, RefinementRule rule, Laps& clock, CutReport& report,
                                                ChangeLog* log) {
   under_mesh_rule(report, [&] { attempt(tool, rule, clock, report, log); });
 }
@@ -247,7 +260,7 @@ void Cutter::Pipeline::under_mesh_rule(CutReport& report, Attempt&& make) {
   hold_plans_to_mesh_rule_ = false;
 }
 
-void Cutter::Pipeline::attempt(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log) {
+void Cutter::Pipeline::attempt(const Tool& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log) {
   begin(&tool);
   bool ok = refine(tool, rule, report);
   report.time.refine_us += clock.lap();
@@ -262,8 +275,14 @@ void Cutter::Pipeline::attempt(const Ball& tool, RefinementRule rule, Laps& cloc
     report.time.improve_us += clock.lap();
   }
   if (ok) ok = audit(report);
-  if (ok) commit(report, log);
-  else roll_back(report);
+  if (ok) {
+    report.time.finish_us += clock.lap();
+    find_pieces(report);
+    report.time.pieces_us += clock.lap();
+    commit(report, log);
+  } else {
+    roll_back(report);
+  }
   report.time.finish_us += clock.lap();
 }
 
@@ -271,6 +290,7 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
   CutReport report;
   transaction_.forget();
   audit_.clear();
+  fragments_.clear();
   if (auto invalid = stale()) {
     refuse(report, CutRefusal::kStaleIndex, *invalid);
     return report;
@@ -294,8 +314,14 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
       report.time.improve_us += clock.lap();
     }
     if (ok) ok = audit(report);
-    if (ok) commit(report, log);
-    else roll_back(report);
+    if (ok) {
+      report.time.finish_us += clock.lap();
+      find_pieces(report);
+      report.time.pieces_us += clock.lap();
+      commit(report, log);
+    } else {
+      roll_back(report);
+    }
     report.time.finish_us += clock.lap();
   });
   report.time.total_us = clock.total();
@@ -303,10 +329,10 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
 }
 
 // Locate (paper 3.1): T_hit, the live tets meeting the tool.
-void Cutter::Pipeline::locate(const Ball& tool) { index_.query(mesh_, tool, hit_); }
+void Cutter::Pipeline::locate(const Tool& tool) { index_.query(mesh_, tool, hit_); }
 
 // Refine (paper 3.2), following the new tets that meet the tool.
-bool Cutter::Pipeline::refine(const Ball& tool, RefinementRule rule, CutReport& report) {
+bool Cutter::Pipeline::refine(const Tool& tool, RefinementRule rule, CutReport& report) {
   RefineParams refine;
   refine.rule = rule;
   report.refinement = rule;
@@ -343,9 +369,9 @@ bool Cutter::Pipeline::remove_selected(CutReport& report) {
 
 // The improvement pass (improve/improver.hpp) over what the transaction made.
 bool Cutter::Pipeline::improve(CutReport& report) {
-  const Ball* tool = selection_.tool();
-  const std::optional<Ball> reach =
-      tool ? std::optional<Ball>(Ball{tool->centre, tool->radius + params_.d_ref()}) : std::nullopt;
+  const Tool* tool = selection_.tool();
+  const std::optional<Tool> reach =
+      tool ? std::optional<Tool>(tool->grown(params_.d_ref())) : std::nullopt;
   // No operation of the pass may break the tissue rule the audit then holds the cut to.
   const detail::TissueRuleVeto veto(mesh_, selection_, uncuttable_, params_.d_ref());
   const detail::ImproveOutcome outcome =
@@ -399,11 +425,40 @@ bool Cutter::Pipeline::audit(CutReport& report) {
   return true;
 }
 
-// Commits the transaction, brings the index up to date with the net changes and hands the caller
-// the net change (the journal derives it).
+// The pieces the transaction detached (fragment_search.hpp), and the debris removed: whole
+// pieces, so no singularity can follow (a manifold mesh's pieces share no vertex), through the
+// mesh's one removal primitive, inside the transaction and so in its change log.
+void Cutter::Pipeline::find_pieces(CutReport& report) {
+  fragments_.clear();
+  mesh_.changes_since(transaction_.start(), removed_, created_);
+  search_.run(mesh_, labels_, removed_, created_, params_.fragment_search_bound);
+  report.fragment_tets_visited = search_.visited();
+  report.fragment_search_bounded = search_.bounded();
+  for (const detail::FragmentSearch::Piece& piece : search_.pieces()) {
+    const std::span<const TetId> tets = search_.tets_of(piece);
+    const bool debris = params_.debris_volume > 0.0 && piece.volume < params_.debris_volume && !uncuttable_.any_of(mesh_, tets);
+    if (debris) {
+      mesh_.remove_tets(tets);
+      ++report.debris_pieces_removed;
+      report.debris_tets_removed += piece.count;
+      report.debris_volume_removed += piece.volume;
+    }
+    fragments_.push_back({tets, piece.volume, piece.centroid, debris, piece.organ});
+  }
+  report.fragments = static_cast<std::uint32_t>(fragments_.size());
+}
+
+// Commits the transaction, brings the index and the piece labels up to date with the net changes
+// and hands the caller the net change (the journal derives it).
 void Cutter::Pipeline::commit(CutReport& report, ChangeLog* log) {
-  report.tets_created = transaction_.commit(mesh_, uncuttable_, index_, log);
+  labels_.before_commit(mesh_, transaction_.start(), removed_);
+  // The search's net change is the transaction's unless debris went since.
+  const detail::CutTransaction::NetChange known{removed_, created_};
+  report.tets_created = transaction_.commit(mesh_, uncuttable_, index_, log, report.debris_pieces_removed == 0 ? &known : nullptr);
   report.vertices_moved = static_cast<std::uint32_t>(transaction_.net_moved().size());
+  labels_.after_commit(transaction_.net_removed());
+  for (const Fragment& f : fragments_)
+    if (!f.removed) labels_.detach(f.tets);
 }
 
 }  // namespace tetcut

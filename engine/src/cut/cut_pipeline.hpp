@@ -1,6 +1,7 @@
 // What a Cutter holds (cut.hpp) and the walk of one cut through its stages: locate (the spatial
 // index), refine (refine/refine.hpp), select (tissue_selection.hpp), remove (removal_loop.hpp),
-// improve (improve/improver.hpp), audit (tissue_audit.hpp), commit (cut_transaction.hpp). Behind
+// improve (improve/improver.hpp), audit (tissue_audit.hpp), pieces (fragment_search.hpp),
+// commit (cut_transaction.hpp, piece_labels.hpp). Behind
 // a pointer so that the installed cut.hpp names none of these internal types; allocated once, by
 // the Cutter's constructor, so that a cut still allocates nothing (bench/cut_bench counts it).
 #pragma once
@@ -10,9 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "core/uncuttable_tets.hpp"
 #include "cut/cut_transaction.hpp"
+#include "cut/fragment_search.hpp"
+#include "cut/piece_labels.hpp"
 #include "cut/removal_loop.hpp"
 #include "cut/spatial_index.hpp"
 #include "cut/tissue_audit.hpp"
@@ -40,7 +43,8 @@ class Cutter::Pipeline {
   Renumbering compact();
   std::optional<std::string> set_params(const CutParams& params);
   std::optional<std::string> set_uncuttable(std::span<const TetId> tets);
-  CutReport cut(const Vec3& centre, ChangeLog* log);
+  // A cut by the capsule a-b (a ball when a == b), of the tool's diameter.
+  CutReport cut(const Vec3& a, const Vec3& b, ChangeLog* log);
   CutReport remove(TetId t, ChangeLog* log);
   TetId tet_containing(const Vec3& p);
   // The mesh's ids are the ones the index was built on (TetMesh::id_epoch() unchanged since).
@@ -55,31 +59,34 @@ class Cutter::Pipeline {
   [[nodiscard]] const std::vector<TetId>& last_created() const { return transaction_.net_created(); }
   [[nodiscard]] std::span<const TetId> last_left_in_tool() const { return audit_.left(); }
   [[nodiscard]] double last_min_dihedral_held() const { return last_min_dihedral_held_; }
+  [[nodiscard]] std::span<const Fragment> last_fragments() const { return fragments_; }
+  [[nodiscard]] std::uint32_t pieces() const { return labels_.pieces(); }
 
  private:
   // The stages of one cut, in order; each fills its part of the report. A stage that returns
   // false has refused the cut (refuse()): the caller rolls the transaction back.
   class Laps;  // the stages' stopwatch
   // Refine to commit with one refinement rule: committed, or refused and rolled back.
-  void attempt(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log);
+  void attempt(const Tool& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log);
   // attempt(), and when its pass grew the volume below theta outside the tool (the mesh rule,
   // weighed once when the pass ends: improve/improver.hpp), the same attempt again with every
   // plan held to the rule (CutReport::mesh_rule_retries).
-  void attempt_under_mesh_rule(const Ball& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log);
+  void attempt_under_mesh_rule(const Tool& tool, RefinementRule rule, Laps& clock, CutReport& report, ChangeLog* log);
   // `make` (an attempt, or a removal request's one transaction), and again with every plan held
   // to the mesh rule when its pass grew the volume below theta; the report counts the second.
   template <class Attempt>
   void under_mesh_rule(CutReport& report, Attempt&& make);
-  void locate(const Ball& tool);
-  bool refine(const Ball& tool, RefinementRule rule, CutReport& report);
+  void locate(const Tool& tool);
+  bool refine(const Tool& tool, RefinementRule rule, CutReport& report);
   void select(CutReport& report);
   bool remove_selected(CutReport& report);
   bool improve(CutReport& report);
   bool audit(CutReport& report);
+  void find_pieces(CutReport& report);
   void commit(CutReport& report, ChangeLog* log);
 
   // Opens the transaction a cut or a removal request is, with the tool (none for a request).
-  void begin(const Ball* tool);
+  void begin(const Tool* tool);
   // A refusal, into the report: false, for the stage to return.
   static bool refuse(CutReport& report, CutRefusal refusal, std::string why);
   // Rolls the open transaction back after a refusal: the mesh and the removal statistics as
@@ -109,6 +116,10 @@ class Cutter::Pipeline {
   detail::TissueRemoval tissue_;
   detail::RemovalLoop removal_loop_;
   detail::TissueAudit audit_;
+  detail::PieceLabels labels_;          // which piece each tet is in: Cutter::pieces()
+  detail::FragmentSearch search_;       // the pieces a transaction detached
+  std::vector<Fragment> fragments_;     // the last transaction's: Cutter::last_fragments()
+  std::vector<TetId> removed_, created_;  // the open transaction's net change, for the search
   bool grew_bad_volume_ = false;          // the last pass's outcome: the mesh rule asks for another attempt
   bool hold_plans_to_mesh_rule_ = false;  // the attempt being made is that other one
   double last_min_dihedral_held_ = 180.0;  // the last transaction's (CutReport::min_dihedral_held_deg)

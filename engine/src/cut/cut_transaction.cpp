@@ -29,7 +29,8 @@ void CutTransaction::roll_back(TetMesh& mesh, Remover& remover) {
   forget();
 }
 
-std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log) {
+std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log,
+                                     const NetChange* known) {
   uncuttable.before_commit(mesh, start_);
   if (log) {
     changes_.clear();
@@ -42,7 +43,12 @@ std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, 
   } else {
     // Nobody reads the parents and origins: the ids alone, for the index, and the moves, for
     // the checker.
-    mesh.transaction_changes(net_removed_, net_created_);
+    if (known) {
+      net_removed_.assign(known->removed.begin(), known->removed.end());
+      net_created_.assign(known->created.begin(), known->created.end());
+    } else {
+      mesh.transaction_changes(net_removed_, net_created_);
+    }
     mesh.moved_vertices(moved_);
     keep_moved(moved_);
     mesh.commit();

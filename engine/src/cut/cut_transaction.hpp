@@ -25,7 +25,13 @@ class CutTransaction {
   void begin(TetMesh& mesh, const Remover& remover);
   void roll_back(TetMesh& mesh, Remover& remover);
   // Commits; appends the net change to `log` when given. Returns the net tets created.
-  std::uint32_t commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log);
+  // `known`: the net change as TetMesh::changes_since(start()) gave it just before (the search
+  // for pieces asked it), when nothing changed since: not derived again.
+  struct NetChange {
+    std::span<const TetId> removed, created;
+  };
+  std::uint32_t commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log,
+                       const NetChange* known = nullptr);
   // A new call: no net change yet (a refused or empty cut reports none).
   void forget() {
     net_removed_.clear();

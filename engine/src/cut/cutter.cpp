@@ -20,6 +20,9 @@ std::optional<std::string> validate(const CutParams& p) {
   if (!(p.quality_floor >= 0.0 && p.quality_floor <= 1.0)) return "the quality floor must be a radius ratio between 0 and 1";
   if (!(p.min_dihedral_deg >= 0.0 && p.min_dihedral_deg <= 70.0))
     return "the dihedral floor min_dihedral_deg must be an angle between 0 and 70 degrees";
+  if (!(p.debris_volume >= 0.0 && std::isfinite(p.debris_volume)))
+    return "the debris volume must be a finite volume, 0 or more (0: detached pieces are only reported)";
+  if (p.fragment_search_bound == 0) return "the fragment search bound must be at least one tet";
   return std::nullopt;
 }
 
@@ -36,13 +39,16 @@ bool Cutter::uncuttable(TetId t) const { return pipeline_->uncuttable(t); }
 bool Cutter::indexes_current_mesh() const { return pipeline_->indexes_current_mesh(); }
 std::optional<std::string> Cutter::set_params(const CutParams& params) { return pipeline_->set_params(params); }
 const CutParams& Cutter::params() const { return pipeline_->params(); }
-CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) { return pipeline_->cut(centre, log); }
+CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) { return pipeline_->cut(centre, centre, log); }
+CutReport Cutter::cut_segment(const Vec3& a, const Vec3& b, ChangeLog* log) { return pipeline_->cut(a, b, log); }
 CutReport Cutter::remove(TetId t, ChangeLog* log) { return pipeline_->remove(t, log); }
 TetId Cutter::tet_containing(const Vec3& p) { return pipeline_->tet_containing(p); }
 const RemovalReport& Cutter::removal_report() const { return pipeline_->removal_report(); }
 TetMesh& Cutter::mesh() { return pipeline_->mesh(); }
 const std::vector<TetId>& Cutter::last_removed() const { return pipeline_->last_removed(); }
 std::span<const RawMovedVertex> Cutter::last_moved() const { return pipeline_->last_moved(); }
+std::span<const Fragment> Cutter::last_fragments() const { return pipeline_->last_fragments(); }
+std::uint32_t Cutter::pieces() const { return pipeline_->pieces(); }
 const std::vector<TetId>& Cutter::last_created() const { return pipeline_->last_created(); }
 std::span<const TetId> Cutter::last_left_in_tool() const { return pipeline_->last_left_in_tool(); }
 double Cutter::last_min_dihedral_held() const { return pipeline_->last_min_dihedral_held(); }

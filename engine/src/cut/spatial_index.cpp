@@ -198,30 +198,40 @@ void SpatialIndex::apply(const TetMesh& mesh, const ChangeLog& log, std::size_t 
   }
 }
 
-// Distance from coordinate q to slab i of cells along one axis (0 inside it).
-double SpatialIndex::axis_gap(std::int32_t i, double q) const {
+// Distance from the interval [q_lo, q_hi] to slab i of cells along one axis (0 when they meet).
+double SpatialIndex::axis_gap(std::int32_t i, double q_lo, double q_hi) const {
   const double lo = i * cell_size_, hi = lo + cell_size_;
-  return q < lo ? lo - q : q > hi ? q - hi : 0.0;
+  return q_hi < lo ? lo - q_hi : q_lo > hi ? q_lo - hi : 0.0;
 }
 
-// Distance from p to the box of cell `key` (0 inside it). query() computes the same sum axis by
-// axis in its loops: keep the two in step (the same bits decide which cells are passed over).
-double SpatialIndex::gap_to_cell(const Vec3& p, std::uint64_t key) const {
+// Distance from the box [lo, hi] to the box of cell `key` (0 when they meet). query() computes
+// the same sum axis by axis in its loops: keep the two in step (the same bits decide which cells
+// are passed over).
+double SpatialIndex::gap_to_cell(const Vec3& lo, const Vec3& hi, std::uint64_t key) const {
   const std::array<std::int32_t, 3> ijk = unpack(key);
-  const double gx = axis_gap(ijk[0], p.x), gy = axis_gap(ijk[1], p.y), gz = axis_gap(ijk[2], p.z);
+  const double gx = axis_gap(ijk[0], lo.x, hi.x), gy = axis_gap(ijk[1], lo.y, hi.y), gz = axis_gap(ijk[2], lo.z, hi.z);
   return std::sqrt(gx * gx + gy * gy + gz * gz);
 }
 
-void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out) {
+void SpatialIndex::query(const TetMesh& mesh, const Tool& tool, std::vector<TetId>& out) {
   out.clear();
   if (occupied_lo_[0] > occupied_hi_[0]) return;  // nothing was ever indexed
-  const Vec3 c = ball.centre;
-  // Centroids farther than r + reach from the centre belong to tets that cannot meet the ball.
-  const double r = ball.radius + reach_;
+  if (tool.is_ball()) query_cells<false>(mesh, tool, out);
+  else query_cells<true>(mesh, tool, out);
+  std::sort(out.begin(), out.end());
+}
+
+template <bool kCapsule>
+void SpatialIndex::query_cells(const TetMesh& mesh, const Tool& tool, std::vector<TetId>& out) {
+  // The axis's box: the centre of a ball.
+  const Vec3 c_lo{std::min(tool.a.x, tool.b.x), std::min(tool.a.y, tool.b.y), std::min(tool.a.z, tool.b.z)};
+  const Vec3 c_hi{std::max(tool.a.x, tool.b.x), std::max(tool.a.y, tool.b.y), std::max(tool.a.z, tool.b.z)};
+  // Centroids farther than r + reach from the axis belong to tets that cannot meet the tool.
+  const double r = tool.radius + reach_;
   // The box, clamped to the occupied bounds: beyond them every cell is empty, and a tool a
   // thousand times the mesh's size must not pay for the cells around the mesh.
-  std::array<std::int32_t, 3> lo = {cell_of(c.x - r), cell_of(c.y - r), cell_of(c.z - r)};
-  std::array<std::int32_t, 3> hi = {cell_of(c.x + r), cell_of(c.y + r), cell_of(c.z + r)};
+  std::array<std::int32_t, 3> lo = {cell_of(c_lo.x - r), cell_of(c_lo.y - r), cell_of(c_lo.z - r)};
+  std::array<std::int32_t, 3> hi = {cell_of(c_hi.x + r), cell_of(c_hi.y + r), cell_of(c_hi.z + r)};
   std::uint64_t box_cells = 1;
   for (int a = 0; a < 3; ++a) {
     lo[a] = std::max(lo[a], occupied_lo_[a]);
@@ -237,72 +247,95 @@ void SpatialIndex::query(const TetMesh& mesh, const Ball& ball, std::vector<TetI
       if (!cell.used) continue;
       const std::array<std::int32_t, 3> ijk = unpack(cell.key);
       if (ijk[0] < lo[0] || ijk[0] > hi[0] || ijk[1] < lo[1] || ijk[1] > hi[1] || ijk[2] < lo[2] || ijk[2] > hi[2]) continue;
-      collect(mesh, cell, ball, gap_to_cell(ball.centre, cell.key), out);
+      collect<kCapsule>(mesh, cell, tool, gap_to_cell(c_lo, c_hi, cell.key), out);
     }
   } else {
     cells_visited_ += box_cells;
-    // A cell's gap to the centre, summed axis by axis as the loops go (the bits gap_to_cell()
+    // A cell's gap to the axis's box, summed axis by axis as the loops go (the bits gap_to_cell()
     // gives): a cell, a row or a slab farther than the radius plus the largest sphere ever indexed
-    // holds no tet that can meet the ball, and is passed over before any hash lookup. collect()
+    // holds no tet that can meet the tool, and is passed over before any hash lookup. collect()
     // would pass over each such cell anyway (its own sphere is no larger), only later.
-    const double reach = ball.radius + reach_;
+    const double reach = tool.radius + reach_;
     for (std::int32_t i = lo[0]; i <= hi[0]; ++i) {
-      const double gx = axis_gap(i, c.x), x2 = gx * gx;
+      const double gx = axis_gap(i, c_lo.x, c_hi.x), x2 = gx * gx;
       if (std::sqrt(x2) > reach) continue;
       for (std::int32_t j = lo[1]; j <= hi[1]; ++j) {
-        const double gy = axis_gap(j, c.y), xy2 = x2 + gy * gy;
+        const double gy = axis_gap(j, c_lo.y, c_hi.y), xy2 = x2 + gy * gy;
         if (std::sqrt(xy2) > reach) continue;
         for (std::int32_t k = lo[2]; k <= hi[2]; ++k) {
-          const double gz = axis_gap(k, c.z), gap = std::sqrt(xy2 + gz * gz);
+          const double gz = axis_gap(k, c_lo.z, c_hi.z), gap = std::sqrt(xy2 + gz * gz);
           if (gap > reach) continue;
-          if (const std::size_t s = find_slot(pack(i, j, k)); s != kNoSlot) collect(mesh, table_[s], ball, gap, out);
+          if (const std::size_t s = find_slot(pack(i, j, k)); s != kNoSlot) collect<kCapsule>(mesh, table_[s], tool, gap, out);
         }
       }
     }
   }
-  std::sort(out.begin(), out.end());
 }
 
-// Appends the tets of one cell that meet the ball; `gap` is the cell's distance to its centre.
-void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, double gap,
+// Appends the tets of one cell that meet the tool; `gap` is the cell's distance to the axis's
+// box (a ball's centre).
+template <bool kCapsule>
+void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Tool& tool, double gap,
                            std::vector<TetId>& out) const {
-  if (cell.head == kNone || gap > ball.radius + cell.reach) return;
+  if (cell.head == kNone || gap > tool.radius + cell.reach) return;
   // A pre-filter in single precision over the whole block, which the compiler turns into a few
   // vector instructions: an entry it rejects is farther than the outer sphere allows by a wide
   // margin, so the double-precision test below, which alone decides, would reject it too. The
   // margin: 2^-14 of the reach, far above the float rounding of the differences, squares and sums
-  // (a few 2^-24), and 2^-16 of the centre's coordinates, above the rounding of the centre to float
-  // (2^-24 each). A NaN or an infinity is never rejected here.
-  const float cx = static_cast<float>(ball.centre.x), cy = static_cast<float>(ball.centre.y),
-              cz = static_cast<float>(ball.centre.z), rf = static_cast<float>(ball.radius);
-  const float slack =
-      static_cast<float>(0x1p-16 * (std::abs(ball.centre.x) + std::abs(ball.centre.y) + std::abs(ball.centre.z)));
+  // (a few 2^-24), and 2^-16 of the axis's coordinates, above the rounding of its box to float
+  // (2^-24 each). A NaN or an infinity is never rejected here. For a capsule the distance is the
+  // centroid's to the axis's box, no more than to the axis.
+  const Vec3& c = tool.a;
+  const float cx = static_cast<float>(c.x), cy = static_cast<float>(c.y), cz = static_cast<float>(c.z),
+              rf = static_cast<float>(tool.radius);
+  float lox = cx, loy = cy, loz = cz, hix = cx, hiy = cy, hiz = cz;
+  double magnitude = std::abs(c.x) + std::abs(c.y) + std::abs(c.z);
+  if constexpr (kCapsule) {
+    const float hx = static_cast<float>(tool.b.x), hy = static_cast<float>(tool.b.y), hz = static_cast<float>(tool.b.z);
+    lox = std::min(cx, hx), loy = std::min(cy, hy), loz = std::min(cz, hz);
+    hix = std::max(cx, hx), hiy = std::max(cy, hy), hiz = std::max(cz, hz);
+    magnitude = std::max(std::abs(c.x), std::abs(tool.b.x)) + std::max(std::abs(c.y), std::abs(tool.b.y)) +
+                std::max(std::abs(c.z), std::abs(tool.b.z));
+  }
+  const float slack = static_cast<float>(0x1p-16 * magnitude);
   for (std::uint32_t b = cell.head; b != kNone; b = blocks_[b].next) {
     const Block& block = blocks_[b];
     std::uint32_t near[kBlockEntries];
     for (std::uint32_t e = 0; e < kBlockEntries; ++e) {
-      const float dx = block.x[e] - cx, dy = block.y[e] - cy, dz = block.z[e] - cz;
+      float dx, dy, dz;
+      if constexpr (kCapsule) {
+        dx = std::max(std::max(lox - block.x[e], block.x[e] - hix), 0.0f);
+        dy = std::max(std::max(loy - block.y[e], block.y[e] - hiy), 0.0f);
+        dz = std::max(std::max(loz - block.z[e], block.z[e] - hiz), 0.0f);
+      } else {
+        dx = block.x[e] - cx, dy = block.y[e] - cy, dz = block.z[e] - cz;
+      }
       const float reach = (rf + block.outer[e]) * (1.0f + 0x1p-14f) + slack;
       near[e] = (dx * dx + dy * dy + dz * dz > reach * reach) ? 0u : 1u;
     }
     for (std::uint32_t e = 0; e < block.count; ++e) {
       if (near[e] == 0) continue;
-      const double dx = block.x[e] - ball.centre.x, dy = block.y[e] - ball.centre.y, dz = block.z[e] - ball.centre.z;
-      const double d2 = dx * dx + dy * dy + dz * dz;
-      const double outer = ball.radius + block.outer[e];
+      double d2;
+      if constexpr (kCapsule) {
+        d2 = squared_distance_to_axis(tool, Vec3{block.x[e], block.y[e], block.z[e]});
+      } else {
+        const double dx = block.x[e] - c.x, dy = block.y[e] - c.y, dz = block.z[e] - c.z;
+        d2 = dx * dx + dy * dy + dz * dz;
+      }
+      const double outer = tool.radius + block.outer[e];
       if (d2 > outer * outer) continue;
       const TetId t{block.tet[e]};
       if (!mesh.is_live(t)) continue;
-      const double inner = ball.radius + block.inner[e];
-      if (d2 <= inner * inner || tet_meets_ball(mesh, t, ball)) out.push_back(t);
+      const double inner = tool.radius + block.inner[e];
+      if (d2 <= inner * inner || tet_meets_tool(mesh, t, tool)) out.push_back(t);
     }
   }
 }
 
-void scan_tets_meeting(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out) {
+void scan_tets_meeting(const TetMesh& mesh, const Tool& tool, std::vector<TetId>& out) {
   out.clear();
   for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i)
-    if (mesh.is_live(TetId{i}) && tet_meets_ball(mesh, TetId{i}, ball)) out.push_back(TetId{i});
+    if (mesh.is_live(TetId{i}) && tet_meets_tool(mesh, TetId{i}, tool)) out.push_back(TetId{i});
 }
 
 }  // namespace tetcut

@@ -8,7 +8,7 @@
 // radius plus that largest sphere, skips a cell whose box is farther from the centre than the
 // radius plus the cell's own largest sphere, rejects a tet whose outer sphere misses the ball
 // and accepts one whose inner sphere meets it without reading the mesh, and runs the closest-
-// point test (tool_ball.hpp) on the rest. (Listing a tet in every cell its box overlaps instead
+// point test (tool.hpp) on the rest. (Listing a tet in every cell its box overlaps instead
 // would meet each tet in several cells, most of them far from the ball.) A cell keeps its
 // entries contiguously, in a chain of fixed-size blocks from a pool, so that a query reads each
 // cell in a few cache lines rather than chasing one line per tet; erasing moves the cell's last
@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/mesh.hpp"
 
@@ -54,7 +54,11 @@ class SpatialIndex {
   void apply(const TetMesh& mesh, const ChangeLog& log, std::size_t removed_from = 0, std::size_t created_from = 0);
 
   // The live tets that share a point with the ball (exact closest-point test), sorted by id.
-  void query(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out);
+  // A capsule is queried as a ball whose centre is the axis's box: cells and entries are passed
+  // over by their gap to that box (a lower bound of their distance to the axis), and an entry is
+  // decided by its centroid's distance to the axis itself. For a ball the box is its centre, and
+  // every gap is computed as it was for the ball alone.
+  void query(const TetMesh& mesh, const Tool& tool, std::vector<TetId>& out);
 
   [[nodiscard]] double cell_size() const { return cell_size_; }
   [[nodiscard]] std::size_t entries() const { return entries_; }
@@ -93,9 +97,14 @@ class SpatialIndex {
   [[nodiscard]] std::int32_t cell_of(double x) const;
   [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
   [[nodiscard]] static std::array<std::int32_t, 3> unpack(std::uint64_t key);
-  void collect(const TetMesh& mesh, const Slot& cell, const Ball& ball, double gap, std::vector<TetId>& out) const;
-  [[nodiscard]] double axis_gap(std::int32_t i, double q) const;
-  [[nodiscard]] double gap_to_cell(const Vec3& p, std::uint64_t key) const;
+  template <bool kCapsule>
+  void query_cells(const TetMesh& mesh, const Tool& tool, std::vector<TetId>& out);
+  template <bool kCapsule>
+  void collect(const TetMesh& mesh, const Slot& cell, const Tool& tool, double gap, std::vector<TetId>& out) const;
+  // Distance from the interval [q_lo, q_hi] to slab i of cells along one axis (0 when they meet).
+  [[nodiscard]] double axis_gap(std::int32_t i, double q_lo, double q_hi) const;
+  // Distance from the box [lo, hi] to the box of cell `key`.
+  [[nodiscard]] double gap_to_cell(const Vec3& lo, const Vec3& hi, std::uint64_t key) const;
   static constexpr std::size_t kNoSlot = ~std::size_t{0};
   [[nodiscard]] std::size_t find_slot(std::uint64_t key) const;
   std::size_t cell_for(std::uint64_t key);  // the slot, made if new
@@ -116,6 +125,6 @@ class SpatialIndex {
 
 // Every live tet meeting the ball, in id order, by a scan of the whole mesh (O(#T)): the
 // reference the index is tested against and the query of one-off commands, never a cut's.
-void scan_tets_meeting(const TetMesh& mesh, const Ball& ball, std::vector<TetId>& out);
+void scan_tets_meeting(const TetMesh& mesh, const Tool& ball, std::vector<TetId>& out);
 
 }  // namespace tetcut

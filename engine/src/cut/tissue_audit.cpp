@@ -16,7 +16,7 @@ void TissueAudit::reserve(std::uint32_t tets) {
 
 std::optional<std::string> TissueAudit::audit(const Context& ctx, TetId t, bool meeting, CutReport& report) {
   TetMesh& mesh = ctx.mesh;
-  const Ball& tool = *ctx.selection.tool();
+  const Tool& tool = *ctx.selection.tool();
   const TetMesh::TetVerts v = mesh.tet(t);
   const std::array<Vec3, 4> p = {mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])};
   if (!meeting && !intersects(tool, p[0], p[1], p[2], p[3])) return std::nullopt;
@@ -37,7 +37,7 @@ std::optional<std::string> TissueAudit::audit(const Context& ctx, TetId t, bool 
     return std::string(text);
   }
   const double volume = std::abs(dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0]))) / 6.0;
-  report.volume_left_in_tool += volume * share_in_ball_meeting(tool, p[0], p[1], p[2], p[3]);
+  report.volume_left_in_tool += volume * share_in_tool_meeting(tool, p[0], p[1], p[2], p[3]);
   if (!ctx.selection.within_d_ref(longest) || !ctx.selection.centroid_in_tool(p)) return std::nullopt;
   if (!ctx.removal.requested(t) && !removal_made_.contains(t))
     return std::string("the tissue rule: a tet inside the tool that the selection takes was never requested");

@@ -10,7 +10,7 @@
 //      counted and listed (Cutter::last_left_in_tool()). Any other such tet (one no request
 //      asked for, one a later stage made) means the cut did not do what it reports: it is
 //      refused;
-// and, for people, the volume of cuttable tissue still inside the tool's ball (volume_in_ball).
+// and, for people, the volume of cuttable tissue still inside the tool's ball (volume_in_tool).
 //
 // Local: the tets that meet the tool after the cut are those of T_hit still live (tets that
 // were there before the cut never move) and the live tets the transaction made that meet it.
@@ -21,7 +21,7 @@
 #include <span>
 #include <vector>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "core/uncuttable_tets.hpp"
 #include "cut/removal_loop.hpp"
 #include "cut/tissue_selection.hpp"

@@ -8,7 +8,7 @@
 namespace tetcut::detail {
 
 Refusal TissueRuleVeto::operator()(const TetMesh& mesh, const Plan& plan) const {
-  const Ball* tool = selection_.tool();
+  const Tool* tool = selection_.tool();
   if (!tool || plan.added.empty()) return Refusal::kNone;
   const bool uncuttable = uncuttable_.any_of(mesh_, plan.removed);
   for (const TetMesh::TetVerts& tet : plan.added) {

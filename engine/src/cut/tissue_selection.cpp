@@ -13,8 +13,8 @@ void TissueSelection::reserve(std::uint32_t tets) {
   reserve_touched(removal_, 16384);
 }
 
-void TissueSelection::begin(const Ball* tool) {
-  tool_ = tool ? std::optional<Ball>(*tool) : std::nullopt;
+void TissueSelection::begin(const Tool* tool) {
+  tool_ = tool ? std::optional<Tool>(*tool) : std::nullopt;
   selected_.clear();
   tissue_.clear();
   removal_.clear();
@@ -24,7 +24,7 @@ bool TissueSelection::centroid_in_tool(const std::array<Vec3, 4>& corners) const
   if (!tool_) return false;
   Vec3 centroid{};
   for (const Vec3& p : corners) centroid = centroid + 0.25 * p;
-  return !(norm(centroid - tool_->centre) > tool_->radius);
+  return !(distance_to_axis(*tool_, centroid) > tool_->radius);
 }
 
 bool TissueSelection::selectable(const TetMesh& mesh, TetId t) const {
@@ -33,7 +33,7 @@ bool TissueSelection::selectable(const TetMesh& mesh, TetId t) const {
   // The centroid as centroid_in_tool() sums it, corner by corner.
   Vec3 centroid{};
   for (VertId x : v) centroid = centroid + 0.25 * mesh.position(x);
-  if (norm(centroid - tool_->centre) > tool_->radius) return false;
+  if (distance_to_axis(*tool_, centroid) > tool_->radius) return false;
   const double d_ref = params_.d_ref();
   for (int e = 0; e < 6; ++e)
     if (norm(mesh.position(v[kEdgeVerts[e][1]]) - mesh.position(v[kEdgeVerts[e][0]])) > d_ref) return false;

@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "core/uncuttable_tets.hpp"
 #include "remove/selection.hpp"
 #include "tetcut/cut.hpp"
@@ -30,7 +30,7 @@ class TissueSelection {
   void reserve(std::uint32_t tets);
 
   // A new transaction: the cut's tool, or none (a removal request); nothing selected.
-  void begin(const Ball* tool);
+  void begin(const Tool* tool);
   // Paper 3.3: inside the tool (centroid in the closed ball) and no edge longer than D_ref.
   // False without a tool.
   [[nodiscard]] bool selectable(const TetMesh& mesh, TetId t) const;
@@ -54,11 +54,11 @@ class TissueSelection {
   [[nodiscard]] const Selection& selected() const { return selected_; }
   // T_removal in the order it was selected; it grows as follow() adds pieces.
   [[nodiscard]] const std::vector<TetId>& removal() const { return removal_; }
-  [[nodiscard]] const Ball* tool() const { return tool_ ? &*tool_ : nullptr; }
+  [[nodiscard]] const Tool* tool() const { return tool_ ? &*tool_ : nullptr; }
 
  private:
   const CutParams& params_;
-  std::optional<Ball> tool_;
+  std::optional<Tool> tool_;
   // Selected; selected tissue (a selected tet or a piece of one, inside the tool or not).
   Selection selected_;
   StampedSet<TetId> tissue_;

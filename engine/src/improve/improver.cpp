@@ -188,14 +188,14 @@ Refusal Improver::star_rule(TetMesh& mesh, VertId v) {
 
 Refusal Improver::old_vertex_rule(TetMesh& mesh, VertId v) {
   if (!tool_) return Refusal::kNotMadeByCut;  // a removal request has no reach
-  if (norm(mesh.position_at_start(v) - tool_->centre) > tool_->radius) return Refusal::kOutOfReach;
+  if (distance_to_axis(*tool_, mesh.position_at_start(v)) > tool_->radius) return Refusal::kOutOfReach;
   if (!uncuttable_ || uncuttable_->empty()) return Refusal::kNone;
   mesh.vertex_shell(v, star_);
   return uncuttable_->any_of(mesh, star_) ? Refusal::kUncuttable : Refusal::kNone;
 }
 
 Refusal Improver::old_vertex_move(const Plan& plan) const {
-  if (norm(plan.placed_at - tool_->centre) > tool_->radius) return Refusal::kOutOfReach;
+  if (distance_to_axis(*tool_, plan.placed_at) > tool_->radius) return Refusal::kOutOfReach;
   return plan.worst_after >= goal_ * (1.0 + kMargin) ? Refusal::kNone : Refusal::kNotBetter;
 }
 
@@ -217,7 +217,7 @@ Refusal Improver::region_rule(TetMesh& mesh, const Plan& plan) const {
 }
 
 bool Improver::in_tool(const std::array<Vec3, 4>& p) const {
-  return cut_tool_ && norm(0.25 * (p[0] + p[1] + p[2] + p[3]) - cut_tool_->centre) < cut_tool_->radius;
+  return cut_tool_ && distance_to_axis(*cut_tool_, 0.25 * (p[0] + p[1] + p[2] + p[3])) < cut_tool_->radius;
 }
 
 double Improver::bad_volume(const TetMesh& mesh, std::span<const TetId> tets) {

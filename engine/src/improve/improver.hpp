@@ -47,7 +47,7 @@
 #include <vector>
 
 #include "core/quality.hpp"
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "core/uncuttable_tets.hpp"
 #include "improve/collapse.hpp"
 #include "improve/direct_mapped_memo.hpp"
@@ -69,10 +69,10 @@ struct ImproveParams {
   bool improve = true;  // false: the made tets are only measured against the floor
   // The cut's ball grown by D_ref (none for a removal request), where a sliver may go with the
   // tissue and the cut's surface may move within its tolerance.
-  const Ball* reach = nullptr;
+  const Tool* reach = nullptr;
   // The cut's tool itself (none for a removal request): the mesh rule counts no tet whose
   // centroid lies in it.
-  const Ball* tool = nullptr;
+  const Tool* tool = nullptr;
   // Tets the pass must leave as a region (uncuttable_tets.hpp): it flips only among tets all or
   // none of which are uncuttable, moves and collapses no vertex of one, and removes none.
   const UncuttableTets* uncuttable = nullptr;
@@ -223,8 +223,8 @@ class Improver {
   double theta_ = 0.0;                 // the run's theta, degrees
   double cos_theta_ = 1.0;             // cos(theta)
   std::vector<std::pair<double, TetId>> made_quality_;  // judge()'s, worst first
-  const Ball* tool_ = nullptr;         // the run's reach, if a cut
-  const Ball* cut_tool_ = nullptr;     // the cut's tool itself, if a cut
+  const Tool* tool_ = nullptr;         // the run's reach, if a cut
+  const Tool* cut_tool_ = nullptr;     // the cut's tool itself, if a cut
   const UncuttableTets* uncuttable_ = nullptr;  // the run's, if any
   TissueRemoval* tissue_ = nullptr;             // the run's removal path
   TissueRemoval own_tissue_;

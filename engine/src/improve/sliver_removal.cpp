@@ -5,7 +5,7 @@
 
 namespace tetcut::detail {
 
-Refusal plan_sliver_removal(const TetMesh& mesh, TetId t, const Ball* reach, TissueRemoval& tissue, Plan& plan) {
+Refusal plan_sliver_removal(const TetMesh& mesh, TetId t, const Tool* reach, TissueRemoval& tissue, Plan& plan) {
   plan.start(Operator::kSliverRemoval);
   // Inside the organ it would open a cavity: only a tet with a face on the surface goes.
   if (mesh.boundary_face_count(t) == 0) return Refusal::kNotRemovable;

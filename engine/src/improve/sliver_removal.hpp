@@ -9,7 +9,7 @@
 // one way tissue leaves the mesh.
 #pragma once
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "improve/operation.hpp"
 #include "remove/tissue_removal.hpp"
 #include "tetcut/mesh.hpp"
@@ -18,7 +18,7 @@ namespace tetcut::detail {
 
 // `reach`: the cut's (none for a removal request, where any surface tet may go). `tissue`: the
 // removal path apply() goes through.
-[[nodiscard]] Refusal plan_sliver_removal(const TetMesh& mesh, TetId t, const Ball* reach, TissueRemoval& tissue,
+[[nodiscard]] Refusal plan_sliver_removal(const TetMesh& mesh, TetId t, const Tool* reach, TissueRemoval& tissue,
                                           Plan& plan);
 
 }  // namespace tetcut::detail

@@ -69,7 +69,7 @@ bool Smoother::near_surface(const Vec3& p) const {
   return true;
 }
 
-int Smoother::constraint(const TetMesh& mesh, VertId v, const Ball* tool) {
+int Smoother::constraint(const TetMesh& mesh, VertId v, const Tool* tool) {
   surface_tolerance_ = 0.0;
   surface_normals_.clear();
   if (!mesh.is_boundary_vertex(v)) {
@@ -96,7 +96,7 @@ int Smoother::constraint(const TetMesh& mesh, VertId v, const Ball* tool) {
     // Curved: only on the cut's own surface, within the tolerance (the header says why).
     if (!tool || too_many) return 0;
     const Vec3 p = mesh.position(v);
-    if (norm(p - tool->centre) > tool->radius) return 0;
+    if (distance_to_axis(*tool, p) > tool->radius) return 0;
     double shortest = 0.0;
     for (TetId t : shell_)
       for (VertId w : mesh.tet(t))
@@ -121,7 +121,7 @@ int Smoother::constraint(const TetMesh& mesh, VertId v, const Ball* tool) {
   return norm(basis_[0]) > 0.0 ? 1 : 0;
 }
 
-Refusal Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, Plan& plan) {
+Refusal Smoother::plan(const TetMesh& mesh, VertId v, double margin, const Tool* tool, Plan& plan) {
   plan.start(Operator::kSmoothing);
   mesh.vertex_shell(v, shell_);
   const int dims = constraint(mesh, v, tool);

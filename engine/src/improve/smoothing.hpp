@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "improve/operation.hpp"
 #include "tetcut/mesh.hpp"
 
@@ -37,7 +37,7 @@ class Smoother {
   // again, v placed at its new position); kNotBetter when nowhere found does, kSurfaceConstraint
   // when v may not move at all.
   // `tool`: the cut's reach, where the cut's own surface may move within the tolerance.
-  [[nodiscard]] Refusal plan(const TetMesh& mesh, VertId v, double margin, const Ball* tool, Plan& plan);
+  [[nodiscard]] Refusal plan(const TetMesh& mesh, VertId v, double margin, const Tool* tool, Plan& plan);
 
  private:
   struct StarTet {
@@ -51,7 +51,7 @@ class Smoother {
   Vec3 gradient(std::size_t i, const Vec3& p, int dims, double h) const;
   // The directions v may move in: 3 (interior, or the cut's surface within the tolerance), 2 (a
   // plane), 1 (a line) or 0.
-  int constraint(const TetMesh& mesh, VertId v, const Ball* tool);
+  int constraint(const TetMesh& mesh, VertId v, const Tool* tool);
   // A candidate position stays within the tolerance of the cut's surface (when that applies).
   [[nodiscard]] bool near_surface(const Vec3& p) const;
 

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "core/quality.hpp"
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "refine/refine.hpp"
 #include "tetcut/detail/local_tables.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
@@ -117,7 +117,7 @@ RefineReport LongestEdgeBisection::refine(TetMesh& mesh, std::span<const TetId> 
         const auto parent = std::find_if(parents_.begin(), parents_.end(),
                                          [&](const ShellTet& p) { return p.c == off[0] && p.d == off[1]; });
         if (parent == parents_.end() || !parent->target) continue;
-        if (params.focus && !tet_meets_ball(mesh, child, *params.focus)) continue;
+        if (params.focus && !tet_meets_tool(mesh, child, *params.focus)) continue;
         target_.insert(child);
         queue_.push_back(child);
       }

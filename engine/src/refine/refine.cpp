@@ -154,7 +154,7 @@ RefineReport Refiner::refine(TetMesh& mesh, std::span<const TetId> initial, cons
     if (params.measure_quality) report.min_radius_ratio = std::min(report.min_radius_ratio, min_radius_ratio(mesh, created_));
     region.insert(region.end(), created_.begin(), created_.end());
     if (params.focus)
-      created_.erase(std::remove_if(created_.begin(), created_.end(), [&](TetId t) { return !tet_meets_ball(mesh, t, *params.focus); }),
+      created_.erase(std::remove_if(created_.begin(), created_.end(), [&](TetId t) { return !tet_meets_tool(mesh, t, *params.focus); }),
                      created_.end());
     current_.swap(created_);
   }

@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "core/edge_key_set.hpp"
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "refine/edge_split.hpp"
 #include "refine/longest_edge_bisection.hpp"
 #include "tetcut/cut_strategies.hpp"  // RefinementRule
@@ -45,7 +45,7 @@ struct RefineParams {
   double p = 1.5;                   // shell edges longer than p x |e| are split too; must be > 1
   std::uint32_t max_iterations = 8;
   SplitMethod method = SplitMethod::kTemplates;
-  std::optional<Ball> focus;        // when set, only new tets meeting it are refined further
+  std::optional<Tool> focus;        // when set, only new tets meeting it are refined further
   std::uint32_t max_tets_created = UINT32_MAX;  // net tets the loop may make; must be positive
   // RefineReport::min_radius_ratio over every child made. The cut leaves it off: it reports the
   // worst of its net new tets instead, and measuring every intermediate child is work on the

@@ -4,12 +4,12 @@
 
 namespace tetcut::detail {
 
-void TissueRemoval::begin(const Ball* tool, double reach_radius) {
+void TissueRemoval::begin(const Tool* tool, double reach_radius) {
   removed_ = {};
   has_tool_ = tool != nullptr;
   if (has_tool_) {
     tool_ = *tool;
-    reach_ = Ball{tool->centre, reach_radius};
+    reach_ = Tool{tool->a, tool->b, reach_radius};
   }
 }
 
@@ -18,8 +18,7 @@ bool TissueRemoval::within_reach(const TetMesh& mesh, std::span<const TetId> set
   const double r2 = reach_.radius * reach_.radius;
   for (TetId t : set)
     for (VertId v : mesh.tet(t)) {
-      const Vec3 d = mesh.position(v) - reach_.centre;
-      if (dot(d, d) > r2) return false;
+      if (squared_distance_to_axis(reach_, mesh.position(v)) > r2) return false;
     }
   return true;
 }
@@ -37,10 +36,10 @@ void TissueRemoval::remove(TetMesh& mesh, std::span<const TetId> set) {
       continue;
     }
     const Vec3 centroid = 0.25 * (a + b + c + d);
-    const bool beyond = norm(centroid - tool_.centre) > tool_.radius;
+    const bool beyond = distance_to_axis(tool_, centroid) > tool_.radius;
     removed_.tets_beyond_tool += beyond ? 1 : 0;
     // A tet whose centroid is in the ball meets it: the estimate need not test that again.
-    const double share = beyond ? share_in_ball(tool_, a, b, c, d) : share_in_ball_meeting(tool_, a, b, c, d);
+    const double share = beyond ? share_in_tool(tool_, a, b, c, d) : share_in_tool_meeting(tool_, a, b, c, d);
     removed_.volume_beyond_tool += volume * (1.0 - share);
     if (!within_reach(mesh, std::span<const TetId>(&t, 1))) ++removed_.tets_beyond_reach;
   }

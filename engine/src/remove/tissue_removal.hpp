@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <span>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "tetcut/mesh.hpp"
 
 namespace tetcut::detail {
@@ -29,7 +29,7 @@ struct RemovedTissue {
   std::uint32_t tets = 0;
   double volume = 0.0;
   // Of those, the tets whose centroid lies outside the tool's closed ball, the estimated volume
-  // outside it (volume_in_ball()), and the tets with a corner beyond the cut's reach. A removal
+  // outside it (volume_in_tool()), and the tets with a corner beyond the cut's reach. A removal
   // request outside a cut has no tool: everything it takes is beyond, and the reach is not asked.
   std::uint32_t tets_beyond_tool = 0;
   double volume_beyond_tool = 0.0;
@@ -39,7 +39,7 @@ struct RemovedTissue {
 class TissueRemoval {
  public:
   // A new transaction: the cut's tool and reach (none: a removal request), nothing removed yet.
-  void begin(const Ball* tool, double reach_radius);
+  void begin(const Tool* tool, double reach_radius);
   // Whether every tet of `set` lies within the cut's reach (all its corners: it is convex).
   // Always true for a removal request, which has no tool.
   [[nodiscard]] bool within_reach(const TetMesh& mesh, std::span<const TetId> set) const;
@@ -49,7 +49,7 @@ class TissueRemoval {
 
  private:
   bool has_tool_ = false;
-  Ball tool_{}, reach_{};
+  Tool tool_{}, reach_{};
   RemovedTissue removed_;
 };
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "checked.hpp"
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "refine/refine.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/bounding_box.hpp"
@@ -44,8 +44,8 @@ Corners corners(const TetMesh& mesh, TetId t) {
 Vec3 centroid(const Corners& c) { return 0.25 * (c[0] + c[1] + c[2] + c[3]); }
 
 // Centroid in the closed ball, no edge over D_ref: paper 3.3's selection.
-bool in_tool(const Corners& c, const Ball& tool, double d_ref) {
-  if (norm(centroid(c) - tool.centre) > tool.radius) return false;
+bool in_tool(const Corners& c, const Tool& tool, double d_ref) {
+  if (distance_to_axis(tool, centroid(c)) > tool.radius) return false;
   for (int e = 0; e < 6; ++e)
     if (norm(c[kEdgeVerts[e][1]] - c[kEdgeVerts[e][0]]) > d_ref) return false;
   return true;
@@ -66,7 +66,7 @@ bool contains(const Corners& t, const Vec3& p) {
 
 // The selected tets of the refined region of a cut at `tool` on `mesh` (left unchanged): the
 // refinement loop redone on a copy, as the Cutter runs it.
-std::vector<Corners> reference_selection(const TetMesh& mesh, const CutParams& params, const Ball& tool) {
+std::vector<Corners> reference_selection(const TetMesh& mesh, const CutParams& params, const Tool& tool) {
   TetMesh copy = mesh;
   std::vector<TetId> hit, region;
   for (std::uint32_t i = 0; i < copy.tet_capacity(); ++i) {
@@ -91,7 +91,7 @@ std::vector<Corners> reference_selection(const TetMesh& mesh, const CutParams& p
 }
 
 // Live tets inside the tool whose tissue was selected: pieces of a selected tet left behind.
-std::uint32_t selected_left(const TetMesh& mesh, const std::vector<Corners>& selected, const Ball& tool, double d_ref) {
+std::uint32_t selected_left(const TetMesh& mesh, const std::vector<Corners>& selected, const Tool& tool, double d_ref) {
   std::uint32_t n = 0;
   for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
     const TetId t{i};
@@ -106,7 +106,7 @@ std::uint32_t selected_left(const TetMesh& mesh, const std::vector<Corners>& sel
 
 // Live tets inside the tool, whatever their origin: a piece of a kept tet that a removal-time
 // split (3.4, 3.7, the fallback) left there included.
-std::uint32_t any_left(const TetMesh& mesh, const Ball& tool, double d_ref) {
+std::uint32_t any_left(const TetMesh& mesh, const Tool& tool, double d_ref) {
   std::uint32_t n = 0;
   for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i)
     if (mesh.is_live(TetId{i}) && in_tool(corners(mesh, TetId{i}), tool, d_ref)) ++n;
@@ -147,7 +147,7 @@ TEST_P(CutLeavesNothing, EverySelectedTetIsRemovedOrCounted) {
   for (double depth : {0.15, 0.3})
     for (double x = box.lo.x; x <= box.hi.x; x += r) {
       const Vec3 centre{x, box.lo.y + 0.5 * size.y, box.hi.z - depth * size.z};
-      const Ball tool{centre, r};
+      const Tool tool = Tool::ball(centre, r);
       const std::vector<Corners> selected = reference_selection(mesh, params, tool);
       const CutReport report = cutter.cut(centre);
       if (!report.ok && refused_for_the_floor(report, GetParam().strategy)) continue;
@@ -232,7 +232,7 @@ TEST(CutLeavesNothing, PiecesOfKeptTetsInTheToolAreRemovedOrCounted) {
         const invariants::CheckReport l =
             local.after_operation(mesh.raw_view(), cutter.last_removed(), cutter.last_created(), cut_check(cutter, centre));
         ASSERT_TRUE(l.ok()) << invariants::to_string(l);
-        EXPECT_EQ(any_left(mesh, Ball{centre, r}, d_ref), report.left_in_tool)
+        EXPECT_EQ(any_left(mesh, Tool::ball(centre, r), d_ref), report.left_in_tool)
             << to_string(strategy) << " cut " << cuts << " at " << centre.x << "," << centre.y << "," << centre.z;
       }
     }
@@ -261,7 +261,7 @@ TEST(CutLeavesNothing, TheReportedBasicCutsOnTheLiver) {
     CutParams params;
     params.tool_diameter = 8;
     params.strategy = RemovalStrategy::kBasic;
-    const Ball tool{centre, 4.0};
+    const Tool tool = Tool::ball(centre, 4.0);
     const std::vector<Corners> selected = reference_selection(mesh, params, tool);
     ASSERT_FALSE(selected.empty());
     Cutter cutter(mesh, params);

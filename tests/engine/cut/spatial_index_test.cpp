@@ -12,7 +12,7 @@
 namespace tetcut {
 namespace {
 
-std::vector<TetId> brute_force(const TetMesh& mesh, const Ball& ball) {
+std::vector<TetId> brute_force(const TetMesh& mesh, const Tool& ball) {
   std::vector<TetId> out;
   scan_tets_meeting(mesh, ball, out);
   return out;
@@ -40,8 +40,8 @@ TEST(ToolBall, IntersectsAgreesWithTheDistanceBeyondRounding) {
     Vec3 q[4];
     for (Vec3& x : q) x = {coordinate(), coordinate(), coordinate()};
     if (dot(q[1] - q[0], cross(q[2] - q[0], q[3] - q[0])) < 0) std::swap(q[2], q[3]);
-    const Ball ball{{coordinate(), coordinate(), coordinate()}, trial % 10 == 0 ? 0.0 : 2.0 * rng.unit() * rng.unit()};
-    const double distance = distance_to_tet(ball.centre, q[0], q[1], q[2], q[3]);
+    const Tool ball = Tool::ball({coordinate(), coordinate(), coordinate()}, trial % 10 == 0 ? 0.0 : 2.0 * rng.unit() * rng.unit());
+    const double distance = distance_to_tet(ball.a, q[0], q[1], q[2], q[3]);
     if (std::abs(distance - ball.radius) <= 1e-9 * (1.0 + ball.radius)) continue;
     const bool expected = distance <= ball.radius;
     ASSERT_EQ(intersects(ball, q[0], q[1], q[2], q[3]), expected) << "trial " << trial;
@@ -60,7 +60,7 @@ TEST(SpatialIndex, QueriesMatchAScanThroughSplitsAndRemovals) {
   std::vector<TetId> got;
   for (int round = 0; round < 40; ++round) {
     for (int q = 0; q < 10; ++q) {
-      const Ball ball{{rng.unit() * 7 - 0.5, rng.unit() * 6 - 0.5, rng.unit() * 5 - 0.5}, rng.unit() * 1.5};
+      const Tool ball = Tool::ball({rng.unit() * 7 - 0.5, rng.unit() * 6 - 0.5, rng.unit() * 5 - 0.5}, rng.unit() * 1.5);
       index.query(mesh, ball, got);
       ASSERT_EQ(got, brute_force(mesh, ball)) << "round " << round;
     }
@@ -102,7 +102,7 @@ TEST(SpatialIndex, AQueryCostsWhatTheIndexHoldsNotWhatTheBallSpans) {
   std::vector<std::uint64_t> cost;
   for (double radius : {10.0, 1e3, 1e6, 1e12}) {
     const std::uint64_t before = index.cells_visited();
-    const Ball ball{{3, 2.5, 2}, radius};
+    const Tool ball = Tool::ball({3, 2.5, 2}, radius);
     index.query(mesh, ball, got);
     cost.push_back(index.cells_visited() - before);
     ASSERT_EQ(got, brute_force(mesh, ball));

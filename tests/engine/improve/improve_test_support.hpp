@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "refine/refine.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/io.hpp"
@@ -45,12 +45,12 @@ inline Refined refined_liver(const Vec3& centre, double radius) {
   std::vector<TetId> hit, region;
   for (std::uint32_t t = 0; t < r.mesh.tet_capacity(); ++t) {
     const auto v = r.mesh.tet(TetId{t});
-    if (intersects(Ball{centre, radius}, r.mesh.position(v[0]), r.mesh.position(v[1]), r.mesh.position(v[2]),
+    if (intersects(Tool::ball(centre, radius), r.mesh.position(v[0]), r.mesh.position(v[1]), r.mesh.position(v[2]),
                    r.mesh.position(v[3])))
       hit.push_back(TetId{t});
   }
   Refiner refiner;
-  refiner.refine(r.mesh, hit, {.d_ref = 3.0 * radius, .focus = Ball{centre, radius}}, region);
+  refiner.refine(r.mesh, hit, {.d_ref = 3.0 * radius, .focus = Tool::ball(centre, radius)}, region);
   return r;
 }
 

@@ -15,7 +15,7 @@
 
 #include "checked.hpp"
 #include "core/random.hpp"
-#include "core/tool_ball.hpp"
+#include "core/tool.hpp"
 #include "refine/refine.hpp"
 #include "test_meshes.hpp"
 #include "tetcut/canonical_hash.hpp"
@@ -35,10 +35,10 @@ double longest_edge(const TetMesh& mesh, TetId t) {
 }
 
 // Every live tet meeting the ball, by a scan (the test's own locate, not the spatial index).
-std::vector<TetId> tets_meeting(const TetMesh& mesh, const Ball& ball) {
+std::vector<TetId> tets_meeting(const TetMesh& mesh, const Tool& ball) {
   std::vector<TetId> out;
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
-    if (mesh.is_live(TetId{t}) && tet_meets_ball(mesh, TetId{t}, ball)) out.push_back(TetId{t});
+    if (mesh.is_live(TetId{t}) && tet_meets_tool(mesh, TetId{t}, ball)) out.push_back(TetId{t});
   return out;
 }
 
@@ -74,7 +74,7 @@ struct Refined {
 };
 
 // One graded refinement around `ball`, in a transaction so that what it made is known.
-Refined refine_graded(TetMesh& mesh, const Ball& ball, double d_ref, std::uint32_t budget = UINT32_MAX) {
+Refined refine_graded(TetMesh& mesh, const Tool& ball, double d_ref, std::uint32_t budget = UINT32_MAX) {
   const TetMesh before = mesh;
   Refined out;
   const std::vector<TetId> hit = tets_meeting(mesh, ball);
@@ -108,13 +108,13 @@ void for_each_ball_in_the_sphere(int balls, Body body) {
       const Vec3 centre{2 * rng.unit() - 1, 2 * rng.unit() - 1, 2 * rng.unit() - 1};
       const double diameter = tool.edge_fraction * median;
       SCOPED_TRACE(std::string("tool ") + tool.name + " x median edge, ball " + std::to_string(k));
-      body(Ball{centre, diameter / 2}, 1.5 * diameter);
+      body(Tool::ball(centre, diameter / 2), 1.5 * diameter);
     }
 }
 
 TEST(GradedRefinement, EveryLiveTetMeetingTheBallEndsWithAllEdgesWithinDref) {
   int refined = 0;
-  for_each_ball_in_the_sphere(4, [&](const Ball& ball, double d_ref) {
+  for_each_ball_in_the_sphere(4, [&](const Tool& ball, double d_ref) {
     TetMesh mesh = sphere();
     const Refined r = refine_graded(mesh, ball, d_ref);
     ASSERT_EQ(r.report.refusal, SplitRefusal::kNone);
@@ -125,7 +125,7 @@ TEST(GradedRefinement, EveryLiveTetMeetingTheBallEndsWithAllEdgesWithinDref) {
 }
 
 TEST(GradedRefinement, LeavesAValidMeshOfTheSameVolume) {
-  for_each_ball_in_the_sphere(2, [](const Ball& ball, double d_ref) {
+  for_each_ball_in_the_sphere(2, [](const Tool& ball, double d_ref) {
     TetMesh mesh = sphere();
     const double volume = mesh.total_volume();
     refine_graded(mesh, ball, d_ref);
@@ -139,7 +139,7 @@ TEST(GradedRefinement, LeavesAValidMeshOfTheSameVolume) {
 // (0.001 at worst). The bound asserted keeps a margin below the measure.
 TEST(GradedRefinement, CreatedTetsKeepATenthOfTheWorstRadiusRatioTheyReplace) {
   constexpr double kFactor = 0.1;
-  for_each_ball_in_the_sphere(16, [&](const Ball& ball, double d_ref) {
+  for_each_ball_in_the_sphere(16, [&](const Tool& ball, double d_ref) {
     TetMesh mesh = sphere();
     const Refined r = refine_graded(mesh, ball, d_ref);
     if (r.created.empty()) return;
@@ -148,7 +148,7 @@ TEST(GradedRefinement, CreatedTetsKeepATenthOfTheWorstRadiusRatioTheyReplace) {
 }
 
 TEST(GradedRefinement, TheSameInputGivesTheSameMeshBitForBit) {
-  const Ball ball{{0.1, -0.2, 0.3}, 0.05 * median_edge(sphere()) / 2};
+  const Tool ball = Tool::ball({0.1, -0.2, 0.3}, 0.05 * median_edge(sphere()) / 2);
   TetMesh first = sphere(), second = sphere();
   const Refined a = refine_graded(first, ball, 3 * ball.radius), b = refine_graded(second, ball, 3 * ball.radius);
   ASSERT_GT(a.report.edges_split, 0u);
@@ -162,7 +162,7 @@ TEST(GradedRefinement, TheSameInputGivesTheSameMeshBitForBit) {
 // As the paper's loop: the budget is net, checked before each bisection, and a bisection over it
 // is refused before it is applied.
 TEST(GradedRefinement, ABudgetEqualToTheNetResultIsNeverRefusedAndOneLessIs) {
-  const Ball ball{{-0.3, 0.2, 0.1}, 0.1 * median_edge(sphere()) / 2};
+  const Tool ball = Tool::ball({-0.3, 0.2, 0.1}, 0.1 * median_edge(sphere()) / 2);
   TetMesh free_mesh = sphere();
   const Refined free = refine_graded(free_mesh, ball, 3 * ball.radius);
   ASSERT_EQ(free.report.refusal, SplitRefusal::kNone);
@@ -201,7 +201,7 @@ TEST(GradedRefinement, AFineSweepOnTheSphereCutsEveryTimeWithinTheCheckersRules)
     const invariants::CheckReport report = local.after_operation(mesh.raw_view(), cutter.last_removed(),
                                                                  cutter.last_created(), testing::cut_check(cutter, centre));
     ASSERT_TRUE(report.ok()) << "cut " << k << ": " << invariants::to_string(report);
-    for (TetId t : tets_meeting(mesh, Ball{centre, diameter / 2}))
+    for (TetId t : tets_meeting(mesh, Tool::ball(centre, diameter / 2)))
       EXPECT_LE(longest_edge(mesh, t), 1.5 * diameter) << "cut " << k << ", tet " << t.value;
   }
   EXPECT_GT(cut, steps / 2);

@@ -51,7 +51,7 @@ TEST(Refine, RefinesUntilEveryEdgeOfTheNewTetsIsShorterThanDref) {
     ASSERT_FALSE(hit.empty());
     Refiner refiner;
     std::vector<TetId> region;
-    const RefineParams params{.d_ref = 0.1, .p = 1.5, .max_iterations = 10, .method = method, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}};
+    const RefineParams params{.d_ref = 0.1, .p = 1.5, .max_iterations = 10, .method = method, .focus = Tool::ball({0.5, 0.5, 0.5}, 0.2)};
     const RefineReport r = refiner.refine(mesh, hit, params, region);
     EXPECT_TRUE(r.converged);
     EXPECT_GE(r.iterations, 2u) << "edges of 0.25 to 0.43 need two halvings to get under 0.1";
@@ -64,7 +64,7 @@ TEST(Refine, RefinesUntilEveryEdgeOfTheNewTetsIsShorterThanDref) {
     std::vector<TetId> in_tool;
     for (TetId t : region) {
       EXPECT_TRUE(mesh.is_live(t));
-      if (tet_meets_ball(mesh, t, *params.focus)) in_tool.push_back(t);
+      if (tet_meets_tool(mesh, t, *params.focus)) in_tool.push_back(t);
     }
     EXPECT_FALSE(in_tool.empty());
     EXPECT_LE(longest_edge(mesh, in_tool), 0.1);
@@ -76,7 +76,7 @@ TEST(Refine, TheQualityFigureIsOnlyMeasuredWhenAskedAndChangesNothing) {
     const std::vector<TetId> hit = tets_near(mesh, {0.5, 0.5, 0.5}, 0.2);
     Refiner refiner;
     std::vector<TetId> region;
-    RefineParams params{.d_ref = 0.1, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}};
+    RefineParams params{.d_ref = 0.1, .focus = Tool::ball({0.5, 0.5, 0.5}, 0.2)};
     params.measure_quality = measure;
     return refiner.refine(mesh, hit, params, region);
   };
@@ -121,7 +121,7 @@ TEST(Refine, SmallerPSplitsMoreEdges) {
     TetMesh mesh = testing::build_or_fail(make_box_mesh(4, 4, 4));
     Refiner refiner;
     std::vector<TetId> region;
-    return refiner.refine(mesh, tets_near(mesh, {0.5, 0.5, 0.5}, 0.3), {.d_ref = 0.2, .p = p, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}},
+    return refiner.refine(mesh, tets_near(mesh, {0.5, 0.5, 0.5}, 0.3), {.d_ref = 0.2, .p = p, .focus = Tool::ball({0.5, 0.5, 0.5}, 0.2)},
                           region);
   };
   const RefineReport tight = run(1.05), loose = run(3.0);
@@ -136,7 +136,7 @@ TEST(Refine, ABudgetEqualToTheNetResultIsNeverRefusedAndOneLessIs) {
     TetMesh mesh = testing::build_or_fail(make_box_mesh(4, 4, 4));
     Refiner refiner;
     std::vector<TetId> region;
-    const RefineParams params{.d_ref = 0.1, .focus = Ball{{0.5, 0.5, 0.5}, 0.2}, .max_tets_created = budget};
+    const RefineParams params{.d_ref = 0.1, .focus = Tool::ball({0.5, 0.5, 0.5}, 0.2), .max_tets_created = budget};
     report = refiner.refine(mesh, tets_near(mesh, {0.5, 0.5, 0.5}, 0.2), params, region);
     return mesh;
   };
@@ -166,7 +166,7 @@ TEST(Refine, ARefusedLoopCreatesAtMostItsBudget) {
   Refiner refiner;
   std::vector<TetId> region;
   // D_ref 0.002 on edges of 0.25: millions of tets without a budget.
-  const RefineParams params{.d_ref = 0.002, .max_iterations = 20, .focus = Ball{{0.5, 0.5, 0.5}, 0.3}, .max_tets_created = 300};
+  const RefineParams params{.d_ref = 0.002, .max_iterations = 20, .focus = Tool::ball({0.5, 0.5, 0.5}, 0.3), .max_tets_created = 300};
   const RefineReport r = refiner.refine(mesh, tets_near(mesh, {0.5, 0.5, 0.5}, 0.3), params, region);
   EXPECT_EQ(r.refusal, SplitRefusal::kOverBudget);
   EXPECT_LE(r.net_tets_created, 300u);

@@ -98,7 +98,7 @@ std::vector<SurfaceTriangle> classify_surface(const TetMesh& mesh, const TetMesh
   std::vector<TetId> near;
   for (SurfaceTriangle& s : out) {
     const Vec3 g = (1.0 / 3.0) * (s.a + s.b + s.c);
-    index.query(original, Ball{g, tol}, near);
+    index.query(original, Tool::ball(g, tol), near);
     bool on_original = false;
     for (TetId o : near) {
       for (int f = 0; f < 4 && !on_original; ++f)

@@ -101,17 +101,19 @@ enum class QualityRule : std::uint8_t {
   kReportOnly,
 };
 
-// I10's tool (the local level only: a cut is an operation): the cut's ball, the length its
-// neighbourhood was refined to, and the tets the cut reports it left in the tool
-// (Cutter::last_left_in_tool()). After the operation no live cuttable tet meets the open ball
-// with an edge longer than d_ref, and none with its centroid in the closed ball and its edges
-// within d_ref remains unless `left` lists it; each listed tet is such a tet. Cuttable: not
-// named by LocalChecker::set_uncuttable(), nor made from such a tet.
+// I10's tool (the local level only: a cut is an operation): the cut's ball (or capsule: every
+// point within `radius` of the segment centre-end), the length its neighbourhood was refined to,
+// and the tets the cut reports it left in the tool (Cutter::last_left_in_tool()). After the
+// operation no live cuttable tet meets the open tool with an edge longer than d_ref, and none with
+// its centroid in the closed tool and its edges within d_ref remains unless `left` lists it; each
+// listed tet is such a tet. Cuttable: not named by LocalChecker::set_uncuttable(), nor made from
+// such a tet.
 struct ToolRule {
   Vec3 centre;
   double radius = 0.0;
   double d_ref = 0.0;
   RawIds left;
+  std::optional<Vec3> end;  // a capsule's other end (Cutter::cut_segment); none: a ball
 };
 
 struct CheckOptions {
@@ -243,5 +245,98 @@ class LocalChecker {
   bool any_uncuttable_ = false;
   std::unique_ptr<Scratch> scratch_;
 };
+
+// ---- pieces and fragments -------------------------------------------------------------------
+// A cut can detach face-connected pieces of tissue from the rest of the mesh; the engine reports
+// them ("fragments") and the largest remaining piece is "the organ". The checker finds the
+// pieces itself, from the raw tets alone (invariants/src/components.hpp): two live tets are in
+// one piece when they share a face (three vertex ids); a shared edge or vertex does not join them.
+
+// No piece: the entry of a dead tet in Components::of_tet.
+inline constexpr std::uint32_t kNoComponent = 0xFFFFFFFFu;
+
+struct Components {
+  std::uint32_t count = 0;            // the number of pieces
+  // #T: the piece of each tet, kNoComponent for a tombstone. Pieces are numbered 0 .. count - 1
+  // in order of their lowest tet id.
+  std::vector<std::uint32_t> of_tet;
+};
+
+// The face-connected pieces of the live tets. Purely combinatorial: a tet with a bad reference
+// (I1) is joined by its vertex ids as they are. O(#T log #T) (a sort of the 4 #T faces).
+Components count_components(const RawMeshView& mesh);
+
+// One piece a cut detached, as the engine reports it, in plain numbers (the engine fills it from
+// its own records; the checker depends on nothing of the engine's).
+struct RawFragment {
+  RawIds tets;           // its tet ids, as the engine holds them (TetId or uint32 spans, vectors)
+  double volume = 0.0;   // the sum of its tets' |signed volume|
+  Vec3 centroid;         // the volume-weighted mean of its tets' centroids (vertex means)
+};
+
+// What the engine reports after one cut.
+struct FragmentReport {
+  std::span<const RawFragment> fragments;  // the detached pieces, the organ not among them
+  // One live tet of the piece the engine takes for the organ; none when the cut detached nothing
+  // or the engine did not resolve it (then the organ is not checked).
+  std::optional<std::uint32_t> organ_tet;
+  // The engine's running count of the mesh's pieces; none: not checked.
+  std::optional<std::uint32_t> piece_count;
+};
+
+// What can be wrong with a FragmentReport. A fragment's piece is the checker's piece holding
+// most of its live listed tets (the lowest such piece on a tie).
+enum class FragmentFault : std::uint8_t {
+  kDeadTet = 1,      // a listed id is out of range or a tombstone
+  kRepeatedTet,      // a tet listed twice, in one fragment or in two
+  kNoPiece,          // a fragment lists no live tet at all
+  kForeignTet,       // a listed tet is in another piece than the fragment's
+  kMissingTet,       // a tet of the fragment's piece is not listed
+  kSamePiece,        // two fragments are the same piece
+  kVolume,           // the reported volume is not the piece's
+  kCentroid,         // the reported centroid is not the piece's
+  kOrganTet,         // organ_tet is out of range or a tombstone
+  kOrganListed,      // the organ's piece is reported as a fragment
+  kLargerThanOrgan,  // a fragment's piece has more volume than the organ's
+  kPieceCount,       // the engine's piece count is not the checker's
+};
+
+// A short human name: "a tet of the piece not listed".
+const char* description(FragmentFault fault);
+
+// One fault of one fragment (all its offending tets together).
+struct FragmentViolation {
+  FragmentFault fault;
+  std::uint32_t fragment = kNoRawRef;  // index into FragmentReport::fragments; kNoRawRef: none
+  std::uint64_t count = 0;             // how many offending tets (1 for a fault of the whole)
+  std::vector<std::uint32_t> tets;     // the first offending tets (at most kMaxListed)
+  std::string detail;                  // one line, for people: which fragment, which tet, numbers
+};
+
+struct FragmentCheckReport {
+  std::vector<FragmentViolation> violations;  // by fragment, then in FragmentFault order
+  Components components;                      // the checker's own pieces
+  std::string operation;                      // copied from CheckOptions::operation
+  std::vector<std::string> notes;             // what was not checked and why
+
+  [[nodiscard]] bool ok() const { return violations.empty(); }
+  // The first violation of that kind (of that fragment, when given).
+  [[nodiscard]] const FragmentViolation* find(FragmentFault fault,
+                                              std::optional<std::uint32_t> fragment = std::nullopt) const;
+};
+
+// One line per violation, "fragments: a tet of the piece not listed: detail", then the notes.
+std::string to_string(const FragmentCheckReport& report);
+
+// Checks what the engine reports after a cut against the checker's own pieces of `mesh` (the mesh
+// after the cut): each fragment lists exactly the live tets of one piece, no two fragments the
+// same; its volume is the piece's to options.volume_rel_tolerance of it plus the rounding bound of
+// its tets' volumes; its centroid is the piece's to options.volume_rel_tolerance of the bounding
+// box diagonal of the live tets; with an organ tet, the organ's piece is no fragment and has at
+// least every fragment's volume (both as the checker measures them); with a piece count, it is
+// the checker's. Uses options.volume_rel_tolerance and options.operation, nothing else.
+// O(#T log #T) (count_components) plus O(#T + listed tets).
+FragmentCheckReport check_fragments(const RawMeshView& mesh, const FragmentReport& report,
+                                    const CheckOptions& options = {});
 
 }  // namespace tetcut::invariants
