@@ -127,6 +127,9 @@ class CutReport:
     @property
     def centre(self) -> list[float]: ...
     @property
+    def end(self) -> list[float] | None:
+        """A capsule's other end (cut_segment, a swept sweep); None for a ball."""
+    @property
     def ok(self) -> bool: ...
     @property
     def failure(self) -> str: ...
@@ -251,8 +254,11 @@ class Cutter:
     ) -> None: ...
     def cut(self, centre: _Point) -> CutReport:
         """One atomic cut (ok False: refused, the mesh untouched). Releases the GIL."""
-    def sweep(self, start: _Point, end: _Point, step: float) -> list[CutReport]:
-        """One cut every `step` from start to end (end included within a billionth of a step), as `tetcut cut`."""
+    def cut_segment(self, a: _Point, b: _Point) -> CutReport:
+        """One atomic cut by the capsule the tool sweeps from a to b; cut_segment(c, c) is cut(c)."""
+    def sweep(self, start: _Point, end: _Point, step: float, swept: bool = False) -> list[CutReport]:
+        """One cut every `step` from start to end (end included within a billionth of a step), as `tetcut cut`;
+        swept=True joins those centres by capsules (cut_segment from each to the next), as `tetcut cut --swept`."""
     @property
     def tool_diameter(self) -> float: ...
     @tool_diameter.setter

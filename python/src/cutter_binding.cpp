@@ -46,7 +46,8 @@ struct Report {
   CutReport report;
   double wall_us = 0;  // the engine call alone, timed by the binding: Python's overhead is the rest
   ChangeLog log;
-  Vec3 centre;
+  Vec3 centre;               // the ball's centre, or the capsule's first end
+  std::optional<Vec3> end;   // the capsule's other end (Cutter.cut_segment, a swept sweep); none: a ball
   std::optional<Changes> changes;
 };
 
@@ -168,17 +169,17 @@ class PyCutter {
     seen_version_ = handle_->version;
   }
 
-  Report cut(const Vec3& centre) {
+  // One cut by the ball at `centre`, or with `end` by the capsule from `centre` to `end`
+  // (Cutter::cut_segment).
+  Report cut(const Vec3& centre, const std::optional<Vec3>& end = std::nullopt) {
     MeshUse use(*handle_);
     prepare_to_mutate();
     Report r;
     r.centre = centre;
+    r.end = end;
     {
       py::gil_scoped_release release;
-      const auto start = std::chrono::steady_clock::now();
-      r.report = cutter_->cut(centre, &r.log);
-      r.wall_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-      if (r.report.ok) handle_->labels.apply(handle_->mesh, r.log);
+      engine_cut(r);
     }
     if (r.report.ok) seen_version_ = ++handle_->version;
     return r;
@@ -186,25 +187,24 @@ class PyCutter {
 
   // The sweep's centres as `tetcut cut --from START --to END --step STEP`, a scenario's sweep and
   // `tetcut simulate --sweep` place them (scenario::sweep_centres, the end included within a
-  // billionth of a step), so that the mesh and its hash are the command's. Stops after the first
-  // cut refused, as `tetcut cut` does (that cut's report is the last).
-  std::vector<Report> sweep(const Vec3& a, const Vec3& b, double step) {
+  // billionth of a step), so that the mesh and its hash are the command's; `swept`: joined by
+  // capsules, one from each centre to the next (scenario::sweep_cuts, `--swept`). Stops after the
+  // first cut refused, as `tetcut cut` does (that cut's report is the last).
+  std::vector<Report> sweep(const Vec3& a, const Vec3& b, double step, bool swept) {
     if (!(step > 0) || !std::isfinite(step)) throw py::value_error("tetcut: step: must be positive");
     if (norm(b - a) / step > scenario::kMaxSweepCuts)
       throw py::value_error("tetcut: step: more than 100000 cuts: increase step");
     MeshUse use(*handle_);
     prepare_to_mutate();
-    const std::vector<Vec3> centres = scenario::sweep_centres(a, b, step);
-    std::vector<Report> reports(centres.size());
+    const std::vector<scenario::CutTool> tools = scenario::sweep_cuts(a, b, step, swept);
+    std::vector<Report> reports(tools.size());
     {
       py::gil_scoped_release release;
-      for (std::size_t k = 0; k < centres.size(); ++k) {
+      for (std::size_t k = 0; k < tools.size(); ++k) {
         Report& r = reports[k];
-        r.centre = centres[k];
-        const auto start = std::chrono::steady_clock::now();
-        r.report = cutter_->cut(r.centre, &r.log);
-        r.wall_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-        if (r.report.ok) handle_->labels.apply(handle_->mesh, r.log);
+        r.centre = tools[k].centre;
+        r.end = tools[k].end;
+        engine_cut(r);
         if (!r.report.ok) {
           reports.resize(k + 1);
           break;
@@ -224,6 +224,15 @@ class PyCutter {
   [[nodiscard]] const MeshPtr& mesh() const { return handle_; }
 
  private:
+  // The engine's cut of r's tool (the ball at r.centre, or the capsule to r.end) into r, timed
+  // alone, the labels carried through it. The GIL released by the caller.
+  void engine_cut(Report& r) {
+    const auto start = std::chrono::steady_clock::now();
+    r.report = r.end ? cutter_->cut_segment(r.centre, *r.end, &r.log) : cutter_->cut(r.centre, &r.log);
+    r.wall_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+    if (r.report.ok) handle_->labels.apply(handle_->mesh, r.log);
+  }
+
   // Another Cutter cut the mesh, or it was compacted, since this one indexed it: index it again.
   void prepare_to_mutate() {
     require_no_slot_views(*handle_);
@@ -247,7 +256,10 @@ class PyCutter {
     for (std::uint32_t l : keep_labels_) {
       if (present.count(l)) continue;
       std::string labels;
-      for (std::uint32_t p : present) labels += (labels.empty() ? "" : ", ") + std::to_string(p);
+      for (std::uint32_t p : present) {
+        if (!labels.empty()) labels += ", ";  // appended apart: `"" + std::string&&` trips GCC 12's -Wstringop-overflow under LTO
+        labels += std::to_string(p);
+      }
       throw py::value_error("tetcut.Cutter: keep_labels: no tet is labelled " + std::to_string(l) + " (the mesh's labels: " +
                             labels + ")");
     }
@@ -332,16 +344,29 @@ py::dict stats_of(const CutterPtr& held) {
 // (python/bench/test_overhead.py). Same conversions, same exceptions as the other methods.
 const py::detail::type_info* report_type = nullptr;
 
-PyObject* cut_fast(PyObject* self, PyObject* const* args, Py_ssize_t nargs, PyObject* kwnames) {
+// The N arguments of a METH_FASTCALL method, positional then by keyword, in the order of
+// `names`; TypeError `usage` unless each is given exactly once.
+template <std::size_t N>
+std::array<PyObject*, N> fast_arguments(const std::array<const char*, N>& names, const char* usage, PyObject* const* args,
+                                        Py_ssize_t nargs, PyObject* kwnames) {
+  const Py_ssize_t nkw = kwnames ? PyTuple_GET_SIZE(kwnames) : 0;
+  if (nargs + nkw != static_cast<Py_ssize_t>(N)) throw py::type_error(usage);
+  std::array<PyObject*, N> given{};
+  for (Py_ssize_t i = 0; i < nargs; ++i) given[static_cast<std::size_t>(i)] = args[i];
+  for (Py_ssize_t k = 0; k < nkw; ++k) {
+    std::size_t slot = static_cast<std::size_t>(nargs);
+    while (slot < N && PyUnicode_CompareWithASCIIString(PyTuple_GET_ITEM(kwnames, k), names[slot]) != 0) ++slot;
+    if (slot == N || given[slot]) throw py::type_error(usage);
+    given[slot] = args[nargs + k];
+  }
+  return given;
+}
+
+// A fast method's report, or its exception set as Python's error (nullptr).
+template <class MakeReport>
+PyObject* report_or_error(MakeReport&& make) {
   try {
-    const Py_ssize_t nkw = kwnames ? PyTuple_GET_SIZE(kwnames) : 0;
-    if (nargs + nkw != 1 || (nkw == 1 && PyUnicode_CompareWithASCIIString(PyTuple_GET_ITEM(kwnames, 0), "centre") != 0)) {
-      throw py::type_error("tetcut: Cutter.cut() takes one argument, centre");
-    }
-    // As a holder: an instance made by __new__ without __init__ has none, and is refused here.
-    const auto held = py::cast<CutterPtr>(py::handle(self));
-    PyCutter& cutter = *held;
-    auto* report = new Report(cutter.cut(point_from(args[0], "centre")));
+    auto* report = new Report(make());
     return py::detail::type_caster_generic::cast(report, py::return_value_policy::take_ownership, {}, report_type,
                                                  nullptr, nullptr)
         .ptr();
@@ -357,12 +382,42 @@ PyObject* cut_fast(PyObject* self, PyObject* const* args, Py_ssize_t nargs, PyOb
   return nullptr;
 }
 
+PyObject* cut_fast(PyObject* self, PyObject* const* args, Py_ssize_t nargs, PyObject* kwnames) {
+  return report_or_error([&] {
+    const auto [centre] =
+        fast_arguments<1>({"centre"}, "tetcut: Cutter.cut() takes one argument, centre", args, nargs, kwnames);
+    // As a holder: an instance made by __new__ without __init__ has none, and is refused here.
+    const auto held = py::cast<CutterPtr>(py::handle(self));
+    return held->cut(point_from(centre, "centre"));
+  });
+}
+
+// Cutter.cut_segment(a, b): the capsule, bound as cut() is (a simulator calls it once a frame).
+PyObject* cut_segment_fast(PyObject* self, PyObject* const* args, Py_ssize_t nargs, PyObject* kwnames) {
+  return report_or_error([&] {
+    const auto [a, b] =
+        fast_arguments<2>({"a", "b"}, "tetcut: Cutter.cut_segment() takes two arguments, a and b", args, nargs, kwnames);
+    const auto held = py::cast<CutterPtr>(py::handle(self));
+    const Vec3 from = point_from(a, "a");
+    return held->cut(from, point_from(b, "b"));
+  });
+}
+
 PyMethodDef cut_method = {
     "cut", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&cut_fast)), METH_FASTCALL | METH_KEYWORDS,
     // A method descriptor of the class (PyDescr_NewMethod), for which "$self" is CPython's form.
     "cut($self, /, centre)\n--\n\nOne cut with the tool centred at `centre` (3 real numbers, mesh units): a "
     "CutReport. Atomic: report.ok False means refused, the mesh bit-identical to before. Releases the GIL while the "
     "engine works."};
+
+PyMethodDef cut_segment_method = {
+    "cut_segment", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&cut_segment_fast)),
+    METH_FASTCALL | METH_KEYWORDS,
+    "cut_segment($self, /, a, b)\n--\n\nOne cut by the capsule the tool sweeps from `a` to `b` (3 real numbers each, "
+    "mesh units): every tet whose centroid is within the tool's radius of the segment and whose edges are within "
+    "D_ref, as cut() takes a ball's; the tissue a stroke passes through between two samples, whatever the sampling. "
+    "A CutReport (report.centre is a, report.end is b), atomic as cut(); cut_segment(c, c) is cut(c), bit for bit. "
+    "Releases the GIL while the engine works."};
 
 // Keyword arguments read one by one, so that an error names the keyword: pybind11's overload
 // resolution says only "incompatible constructor arguments" and lists every parameter's type.
@@ -585,7 +640,13 @@ tets, while report.changes lists the net ids a simulator updates (see Changes). 
 removes every tet (a tool larger than the organ) is ok: the mesh is then empty (num_tets 0).)doc");
   made_by_the_module_only(report);
   report.def_property_readonly("centre", [](const Report& r) { return std::array<double, 3>{r.centre.x, r.centre.y, r.centre.z}; },
-                               "[x, y, z]: where the tool was centred (mesh units).");
+                               "[x, y, z]: where the tool was centred (mesh units); a capsule's first end.");
+  report.def_property_readonly("end", [](const Report& r) -> std::optional<std::array<double, 3>> {
+        if (!r.end) return std::nullopt;
+        return std::array<double, 3>{r.end->x, r.end->y, r.end->z};
+      },
+      "[x, y, z]: a capsule's other end (Cutter.cut_segment, a swept sweep: the tool swept from centre to end); "
+      "None for a ball.");
   // One line per CutReport field (engine/include/tetcut/cut.hpp), documented as the header is;
   // python/tests/test_docs.py fails on a field of the header that is not here.
   report_field(report, "ok", &CutReport::ok, "False: refused and rolled back, the mesh as before (failure says why).");
@@ -698,9 +759,13 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
         return *r.changes;
       }, py::return_value_policy::reference_internal, "The net change as numpy arrays (Changes), built on first access.")
       .def("__repr__", [](const Report& r) {
-        char centre[96];
-        std::snprintf(centre, sizeof centre, "(%.6g, %.6g, %.6g)", r.centre.x, r.centre.y, r.centre.z);
-        return std::string("<tetcut.CutReport at ") + centre + ": " +
+        auto text = [](const Vec3& p) {
+          char out[96];
+          std::snprintf(out, sizeof out, "(%.6g, %.6g, %.6g)", p.x, p.y, p.z);
+          return std::string(out);
+        };
+        const std::string where = r.end ? "from " + text(r.centre) + " to " + text(*r.end) : "at " + text(r.centre);
+        return "<tetcut.CutReport " + where + ": " +
                (r.report.ok ? "ok" : "refused: " + r.report.failure) + ", " + std::to_string(r.report.tets_removed) +
                " removed, " + std::to_string(r.report.tets_created) + " created>";
       });
@@ -718,15 +783,18 @@ Cutter(mesh, *, tool_diameter, ...) indexes the mesh once, then each cut costs O
 the mesh alive; several Cutters may share one mesh (each re-indexes when another changed it).)doc");
   cutter.def(py::init(&make_cutter), cutter_init_doc().c_str())
       .def("sweep",
-           [](const CutterPtr& c, py::handle start, py::handle end, double step) {
-             return c->sweep(point_from(start, "start"), point_from(end, "end"), step);
+           [](const CutterPtr& c, py::handle start, py::handle end, double step, bool swept) {
+             return c->sweep(point_from(start, "start"), point_from(end, "end"), step, swept);
            },
-           py::arg("start"), py::arg("end"), py::arg("step"),
-           signature_doc("sweep", "self, /, start, end, step",
+           py::arg("start"), py::arg("end"), py::arg("step"), py::arg("swept") = false,
+           signature_doc("sweep", "self, /, start, end, step, swept=False",
                          "One cut every `step` from start to end, as `tetcut cut --from --to --step`, a scenario's "
                          "sweep and `tetcut simulate --sweep` place them: the end is the last centre when it is a "
-                         "whole number of steps away, to within a billionth of a step. A list of CutReport; stops "
-                         "after a refused cut (its report is the last). Releases the GIL.")
+                         "whole number of steps away, to within a billionth of a step. swept=True joins those "
+                         "centres by capsules, one cut_segment from each to the next (`tetcut cut --swept`): no "
+                         "tissue stays between two centres whatever the step, and a sweep of one centre is one "
+                         "ball. A list of CutReport; stops after a refused cut (its report is the last). Releases "
+                         "the GIL.")
                .c_str())
       .def_property("tool_diameter", [](const CutterPtr& c) { return c->params().tool_diameter; },
                     [](const CutterPtr& c, double d) {
@@ -747,6 +815,8 @@ the mesh alive; several Cutters may share one mesh (each re-indexes when another
   report_type = py::detail::get_type_info(typeid(Report));
   cutter.attr("cut") = py::reinterpret_steal<py::object>(
       PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cutter.ptr()), &cut_method));
+  cutter.attr("cut_segment") = py::reinterpret_steal<py::object>(
+      PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cutter.ptr()), &cut_segment_method));
 
   m.def("stats", &stats_of, py::arg("cutter").none(false), signature_doc("stats", "cutter", R"doc(The paper's statistics (Tables 1 and 2, section 3.6) over every removal request this Cutter made
 since it was made or last re-indexed: {"removal": counts, "table1": {...}, "table2": {...}}, as

@@ -220,11 +220,12 @@ def test_misuse_raises_instead_of_crashing(box):
             use()
     half_made_cutter = tetcut.Cutter.__new__(tetcut.Cutter)
     for use in [lambda: half_made_cutter.cut((0, 0, 0)), lambda: half_made_cutter.sweep((0, 0, 0), (1, 1, 1), 1),
+                lambda: half_made_cutter.cut_segment((0, 0, 0), (1, 1, 1)),
                 lambda: half_made_cutter.tool_diameter, lambda: tetcut.stats(half_made_cutter)]:
         with pytest.raises((TypeError, RuntimeError)):
             use()
     for none_use in [lambda: tetcut.Cutter(None), lambda: tetcut.check(None), lambda: tetcut.stats(None),
-                     lambda: tetcut.Cutter.cut(box, (0, 0, 0))]:
+                     lambda: tetcut.Cutter.cut(box, (0, 0, 0)), lambda: tetcut.Cutter.cut_segment(box, (0, 0, 0), (1, 1, 1))]:
         with pytest.raises(TypeError):
             none_use()
     for cls in [tetcut.CutReport, tetcut.Changes, tetcut.Violation]:
@@ -380,3 +381,68 @@ def test_the_dihedral_floor_is_a_keyword_and_every_report_keeps_it():
     assert any(r.min_dihedral_deg_before_improvement < r.min_dihedral_deg for r in made)  # the pass lifted angles
     with pytest.raises(ValueError, match="min_dihedral_deg"):
         tetcut.Cutter(mesh, tool_diameter=1.0, min_dihedral_deg=80.0)
+
+
+def test_cut_segment_cuts_the_capsule_and_records_its_changes_as_cut_does(box):
+    a, b = (1.0, 2.0, 4.0), (3.0, 2.0, 4.0)
+    ball = tetcut.Cutter(box.copy(), tool_diameter=1.5).cut(a)
+    cutter = tetcut.Cutter(box, tool_diameter=1.5)
+    live_before, verts_before = set(box.tet_ids), set(box.vertex_ids)
+    report = cutter.cut_segment(a, b)
+    assert report.ok and report.tets_removed > 0 and report.left_in_tool == 0
+    assert list(report.centre) == list(a) and list(report.end) == list(b) and ball.end is None
+    assert repr(report).startswith("<tetcut.CutReport from (1, 2, 4) to (3, 2, 4): ok, ")
+    # The capsule takes the tissue between its ends, which the ball at one end does not.
+    assert report.volume_removed > 2 * ball.volume_removed > 0
+    c = report.changes
+    assert set(c.removed) == live_before - set(box.tet_ids)
+    assert set(c.created) == set(box.tet_ids) - live_before
+    assert set(c.new_vertices) == set(box.vertex_ids) - verts_before
+    assert set(c.parent) <= set(c.removed)
+    assert tetcut.check(box) == []
+    # The arguments as cut() reads them: any 3 real numbers, by position or keyword.
+    assert cutter.cut_segment(b=(50, 50, 50), a=np.array([50, 50, 51], dtype=np.float32)).ok
+    with pytest.raises(TypeError, match="b: expected 3 real numbers"):
+        cutter.cut_segment((0, 0, 0), (1, 2))
+    with pytest.raises(ValueError, match="a: coordinates must be finite"):
+        cutter.cut_segment((np.nan, 0, 0), (0, 0, 0))
+    for bad in [lambda: cutter.cut_segment((0, 0, 0)), lambda: cutter.cut_segment((0, 0, 0), (1, 1, 1), (2, 2, 2)),
+                lambda: cutter.cut_segment((0, 0, 0), a=(1, 1, 1)), lambda: cutter.cut_segment(a=(0, 0, 0), c=(1, 1, 1))]:
+        with pytest.raises(TypeError, match="takes two arguments, a and b"):
+            bad()
+
+
+def test_a_zero_length_cut_segment_is_the_ball_bit_for_bit(box):
+    centre = (2.0, 2.0, 4.0)
+    other = box.copy()
+    ball = tetcut.Cutter(box, tool_diameter=1.5).cut(centre)
+    segment = tetcut.Cutter(other, tool_diameter=1.5).cut_segment(centre, centre)
+    assert ball.ok and ball.tets_removed > 0
+    assert other.hash() == box.hash()
+    np.testing.assert_array_equal(other.slot_points, box.slot_points)
+    np.testing.assert_array_equal(other.slot_tets, box.slot_tets)
+    for name in ("removed", "created", "parent", "new_vertices", "new_vertex_weights", "moved_vertices"):
+        np.testing.assert_array_equal(getattr(segment.changes, name), getattr(ball.changes, name))
+    assert (segment.tets_removed, segment.tets_created) == (ball.tets_removed, ball.tets_created)
+    assert list(segment.end) == list(centre) and ball.end is None
+
+
+def test_a_swept_sweep_joins_its_centres_by_capsules_as_tetcut_cut_swept(cli, tmp_path):
+    # Centres two diameters apart: balls leave tissue between them, capsules take it.
+    path = str(CORPUS / "cylinder.msh")
+    start, end, step = (-0.8, -0.3, 2.0), (0.8, -0.3, 2.0), 0.4
+    balls = tetcut.Cutter(tetcut.read(path), tool_diameter=0.2).sweep(start, end, step)
+    mesh = tetcut.read(path)
+    capsules = tetcut.Cutter(mesh, tool_diameter=0.2).sweep(start, end, step, swept=True)
+    assert len(balls) == 5 and len(capsules) == 4 and all(r.ok for r in balls + capsules)
+    for k, r in enumerate(capsules):
+        assert r.centre == balls[k].centre and r.end == balls[k + 1].centre
+        assert balls[k].end is None
+    assert sum(r.volume_removed for r in capsules) > 1.5 * sum(r.volume_removed for r in balls)
+    cli_report = sweep_cuts_of_the_cli(cli, path, start, end, step, 0.2, tmp_path, "--swept")
+    assert cli_report["summary"]["hash"] == mesh.hash()
+    assert [c["end"] for c in cli_report["cuts"]] == [r.end for r in capsules]
+    assert [c["tets_removed"] for c in cli_report["cuts"]] == [r.tets_removed for r in capsules]
+    # A sweep of one centre is one ball, swept or not.
+    one = tetcut.Cutter(tetcut.read(path), tool_diameter=0.2).sweep(start, start, step, swept=True)
+    assert len(one) == 1 and one[0].end is None

@@ -39,7 +39,8 @@ MADE_BY_THE_MODULE = {"CutReport", "Changes", "Violation"}  # no constructor: __
 
 def test_the_module_has_what_the_docs_list():
     names = {name for name, _, _ in MEMBERS}
-    for expected in ["tetcut.read", "tetcut.Mesh.copy", "tetcut.Cutter.sweep", "tetcut.CutReport.left_in_tool",
+    for expected in ["tetcut.read", "tetcut.Mesh.copy", "tetcut.Cutter.sweep", "tetcut.Cutter.cut_segment",
+                     "tetcut.CutReport.end", "tetcut.CutReport.left_in_tool",
                      "tetcut.CutReport.kept_pieces_requested", "tetcut.Changes.removed", "tetcut.check"]:
         assert expected in names
     assert len(MEMBERS) > 80  # every class, method and field, not a few
@@ -69,9 +70,11 @@ def test_class_signatures_name_their_arguments():
     assert list(cutter)[:2] == ["mesh", "tool_diameter"]
     assert cutter["tool_diameter"].default is inspect.Parameter.empty  # required
     assert cutter["strategy"].default == "combined" and cutter["keep_labels"].default == ()
-    assert str(inspect.signature(tetcut.Cutter.sweep)) in ("(self, /, start, end, step)", "(start, end, step)")
+    assert str(inspect.signature(tetcut.Cutter.sweep)) in ("(self, /, start, end, step, swept=False)",
+                                                           "(start, end, step, swept=False)")
     mesh = tetcut.read(str(CORPUS / "cylinder.msh"))
     assert str(inspect.signature(tetcut.Cutter(mesh, tool_diameter=0.5).cut)) == "(centre)"
+    assert str(inspect.signature(tetcut.Cutter(mesh, tool_diameter=0.5).cut_segment)) == "(a, b)"
     assert str(inspect.signature(mesh.write)) == "(path, *, binary=False, compression='none')"
 
 

@@ -44,7 +44,7 @@ const std::vector<CommandCase>& cases() {
        {"BOX", "--random", "all", "--seed", "1e3", "-o", "OUT"},
        "--seed"},
       {"cut",
-       {"MESH", "--diameter", "--from", "--to", "--step", "--strategy", "--split", "--refinement", "--dref-factor", "--p",
+       {"MESH", "--diameter", "--from", "--to", "--step", "--swept", "--strategy", "--split", "--refinement", "--dref-factor", "--p",
         "--depth", "--check", "--out", "--report", "--frames"},
        {"BOX", "--diameter", "1e3x", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"},
        "--diameter"},
@@ -53,7 +53,7 @@ const std::vector<CommandCase>& cases() {
       {"replay", {"INPUT", "--target", "--scenario-out"}, {}, ""},
       {"minimize", {"SCENARIO", "-o", "--max-runs"}, {"BOX", "-o", "OUT", "--max-runs", "inf"}, "--max-runs"},
       {"simulate",
-       {"INPUT", "--sweep", "--diameter", "--strategy", "--fix", "--gravity", "--young", "--poisson", "--density",
+       {"INPUT", "--sweep", "--swept", "--diameter", "--strategy", "--fix", "--gravity", "--young", "--poisson", "--density",
         "--unit", "--damping", "--dt", "--steps", "--settle", "--frames", "--frame-every", "--report"},
        {"BOX", "--diameter", "1e3x", "--sweep", "0,0,0", "1,1,1", "0.5"},
        "--diameter"},
@@ -156,6 +156,46 @@ TEST_F(Cli, CutIsTheScenarioSweepThatRunRuns) {
   EXPECT_EQ(cut_report->at("summary").at("cuts").get<int>(), 5);
   EXPECT_GT(cut_report->at("summary").at("tets_removed").get<int>(), 0);
   EXPECT_EQ(read_text(path("cut.msh")), read_text(path("run.msh")));
+}
+
+// `tetcut cut --swept` joins the cut points by capsules: one cut fewer, each from one point to the
+// next (its JSON record gives both: "centre" and "end"; a ball's record has no "end"), taking the
+// tissue the balls leave between points two diameters apart; and it is the scenario's `sweep ...
+// swept`, as `tetcut cut` is the scenario sweep.
+TEST_F(Cli, CutSweptJoinsTheCutPointsByCapsulesAndTheReportGivesBothEnds) {
+  write_box("box.msh", 5, 5, 5);
+  auto cut = [&](const std::string& name, bool swept) {
+    std::vector<std::string> args = {"cut", path("box.msh"), "--diameter", "0.15", "--from", "0.2,0.5,0.5", "--to",
+                                     "0.8,0.5,0.5", "--step", "0.3", "--out", path(name + ".msh"), "--report",
+                                     path(name + ".json")};
+    if (swept) args.push_back("--swept");
+    const ProcessResult r = tetcut(args);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;  // every cut checked locally, at its capsule
+    return report_summary(path(name + ".json")).value_or(Json{});
+  };
+  const Json balls = cut("balls", false), capsules = cut("capsules", true);
+  ASSERT_EQ(balls.at("cuts").size(), 3u);
+  ASSERT_EQ(capsules.at("cuts").size(), 2u);
+  // In the file's order: a ball's record keeps its keys, index, line, centre, ok, ...; a capsule's
+  // has its end after its centre.
+  const auto ordered = [&](const std::string& name) { return nlohmann::ordered_json::parse(read_text(path(name))); };
+  for (const auto& c : ordered("balls.json").at("cuts")) {
+    EXPECT_FALSE(c.contains("end"));
+    EXPECT_EQ(std::next(c.begin(), 3).key(), "ok");
+  }
+  for (const auto& c : ordered("capsules.json").at("cuts")) EXPECT_EQ(std::next(c.begin(), 3).key(), "end");
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Json& c = capsules.at("cuts").at(k);
+    EXPECT_EQ(c.at("centre"), balls.at("cuts").at(k).at("centre"));
+    EXPECT_EQ(c.at("end"), balls.at("cuts").at(k + 1).at("centre"));
+  }
+  EXPECT_GT(balls.at("summary").at("volume_removed").get<double>(), 0);
+  EXPECT_GT(capsules.at("summary").at("volume_removed").get<double>(),
+            1.5 * balls.at("summary").at("volume_removed").get<double>());
+  write("swept.scn", "mesh box.msh\ndiameter 0.15\nsweep 0.2,0.5,0.5 0.8,0.5,0.5 0.3 swept\n");
+  ASSERT_EQ(tetcut({"run", path("swept.scn"), "--out", path("run.msh")}).exit_code, 0);
+  EXPECT_EQ(read_text(path("run.msh")), read_text(path("capsules.msh")));
+  EXPECT_NE(read_text(path("balls.msh")), read_text(path("capsules.msh")));
 }
 
 // The graded rule reaches the engine from each place a user chooses it: `tetcut cut

@@ -1,6 +1,7 @@
 // `tetcut simulate` as a user runs it, for what a first use tripped on: a second
 // --sweep, a run that only settles, its summary, its messages' numbers, and the sweep's end,
-// which `tetcut cut`, a scenario and `simulate` place the same way (scenario::sweep_centres).
+// which `tetcut cut`, a scenario and `simulate` place the same way (scenario::sweep_centres);
+// and --swept, whose frames cut the capsules between sweep points.
 #include <cmath>
 #include <regex>
 
@@ -88,6 +89,37 @@ TEST_F(Simulate, TheEndOfASweepIsCutByCutRunAndSimulateWithinABillionthOfAStep) 
                                                       cut_report["summary"]["hash"].get<std::string>() + "\n");
   const ProcessResult run = tetcut({"run", scenario});
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+}
+
+// --swept: a frame cuts the capsule from one sweep point to the next (one frame fewer), its
+// record giving both ends; a scenario's `sweep ... swept` and `cut A B` are capsules too.
+TEST_F(Simulate, SweptFramesCutFromEachSweepPointToTheNext) {
+  const std::string mesh = box();
+  const std::vector<std::string> sweep = {mesh, "--diameter", "0.2", "--unit", "1", "--steps", "1", "--sweep", "0.1,0.5,1",
+                                          "0.9,0.5,1", "0.2"};
+  const Json balls = report_of(sweep);
+  std::vector<std::string> swept_args = sweep;
+  swept_args.push_back("--swept");
+  const Json swept = report_of(swept_args);
+  ASSERT_EQ(balls["frames"].size(), 5u);
+  ASSERT_EQ(swept["frames"].size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_FALSE(balls["frames"][k].contains("end"));
+    EXPECT_EQ(swept["frames"][k]["centre"], balls["frames"][k]["centre"]);
+    EXPECT_EQ(swept["frames"][k]["end"], balls["frames"][k + 1]["centre"]);
+  }
+  EXPECT_EQ(swept["summary"]["cuts_refused"], 0);
+  const std::string scenario = write("swept.scn", "mesh box.vtu\ndiameter 0.2\nsweep 0.1,0.5,1 0.9,0.5,1 0.2 swept\n"
+                                                  "cut 0.5,0.1,1 0.5,0.9,1\n");
+  const Json from_scenario = report_of({scenario, "--unit", "1", "--steps", "1"});
+  ASSERT_EQ(from_scenario["frames"].size(), 5u);
+  const std::vector<double> last_point = {0.9, 0.5, 1.0};  // the sweep's end, a whole number of steps away
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(from_scenario["frames"][3]["end"][i].get<double>(), last_point[i], 1e-12);
+  EXPECT_EQ(from_scenario["frames"][4]["end"], Json({0.5, 0.9, 1.0}));
+  // Nothing to join: --swept without --sweep is a usage error.
+  const ProcessResult alone = tetcut({"simulate", mesh, "--diameter", "0.2", "--swept"});
+  EXPECT_EQ(alone.exit_code, 2);
+  EXPECT_NE(alone.err.find("--swept"), std::string::npos) << alone.err;
 }
 
 }  // namespace

@@ -58,6 +58,52 @@ TEST(ScenarioParse, NamesTheLineAndTheReason) {
   }
 }
 
+// The capsule (Cutter::cut_segment): `cut A B` is one capsule cut, `sweep ... swept` joins the
+// sweep's centres by capsules; `cut A` and a plain sweep stay balls.
+TEST(ScenarioParse, ReadsTheCapsuleForms) {
+  const ParseResult r = parse(
+      "cut 1,2,3\n"
+      "cut 1,2,3 4,5,6   # a capsule\n"
+      "sweep 0,0,0 1,0,0 0.25\n"
+      "sweep 0,0,0 1,0,0 0.25 swept\n",
+      "t.scn", ".");
+  ASSERT_TRUE(r.scenario) << r.error;
+  const std::vector<Op>& ops = r.scenario->ops;
+  ASSERT_EQ(ops.size(), 4u);
+  EXPECT_EQ(ops[0].kind, OpKind::kCut);
+  EXPECT_FALSE(ops[0].swept);
+  EXPECT_EQ(ops[1].kind, OpKind::kCut);
+  EXPECT_TRUE(ops[1].swept);
+  EXPECT_EQ(ops[1].a, (Vec3{1, 2, 3}));
+  EXPECT_EQ(ops[1].b, (Vec3{4, 5, 6}));
+  EXPECT_EQ(ops[2].kind, OpKind::kSweep);
+  EXPECT_FALSE(ops[2].swept);
+  EXPECT_EQ(ops[3].kind, OpKind::kSweep);
+  EXPECT_TRUE(ops[3].swept);
+  EXPECT_EQ(ops[3].b, (Vec3{1, 0, 0}));
+  EXPECT_EQ(ops[3].step, 0.25);
+}
+
+TEST(ScenarioParse, NamesTheLineAndTheReasonOfABadCapsule) {
+  struct Case {
+    const char* text;
+    const char* expected;
+  };
+  for (const Case& c : {Case{"cut 1,2,3 4,5\n", "t.scn:1: expected: cut X,Y,Z (a ball) or cut X,Y,Z X,Y,Z (a capsule)"},
+                        Case{"\ncut 1,2,3 4,5,nan\n", "t.scn:2: expected: cut X,Y,Z (a ball) or cut X,Y,Z X,Y,Z"},
+                        Case{"cut 1,2,3 4,5,6 7,8,9\n", "t.scn:1: expected: cut X,Y,Z (a ball) or cut X,Y,Z X,Y,Z"},
+                        Case{"remove 1,2,3 4,5,6\n", "t.scn:1: expected: remove X,Y,Z with finite numbers"},
+                        Case{"sweep 0,0,0 1,0,0 0.1 swep\n", "t.scn:1: a sweep's fifth word is swept (its centres joined by capsules), not 'swep'"},
+                        Case{"sweep 0,0,0 1,0,0 0.1 swept swept\n", "t.scn:1: expected: sweep X,Y,Z X,Y,Z STEP [swept] with STEP > 0"},
+                        Case{"sweep 0,0,0 1,0 0.1 swept\n", "t.scn:1: expected: sweep X,Y,Z X,Y,Z STEP [swept]"},
+                        Case{"sweep 0,0,0 1,0,0 -1 swept\n", "t.scn:1: expected: sweep X,Y,Z X,Y,Z STEP [swept]"},
+                        Case{"sweep 0,0,0 1e9,0,0 1e-3 swept\n", "t.scn:1: sweep of more than"}}) {
+    const ParseResult r = parse(c.text, "t.scn", ".");
+    EXPECT_FALSE(r.scenario) << c.text;
+    EXPECT_EQ(r.error.rfind(c.expected, 0), 0u) << "got: " << r.error;
+  }
+}
+
 // The paper's readings (docs/usage.md): every spelling, "paper" the old name of surface-first-by-id.
 TEST(ScenarioParse, ReadsThePapersReadings) {
   for (const char* line : {"order direct-first\n", "order surface-first-by-id\n", "order paper\n", "order revisit\n",

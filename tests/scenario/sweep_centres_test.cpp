@@ -1,5 +1,6 @@
 // scenario::sweep_centres: where `tetcut cut`, a scenario's sweep, `tetcut simulate --sweep` and
-// Python's Cutter.sweep put their cuts.
+// Python's Cutter.sweep put their cuts; scenario::sweep_cuts: the balls there, or the capsules
+// joining them (swept).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,6 +49,28 @@ TEST(SweepCentres, AZeroLengthSweepIsOneCutAtItsStart) {
   ASSERT_EQ(centres.size(), 1u);
   EXPECT_EQ(centres[0].y, 2.0);
   EXPECT_EQ(sweep_centres({0, 0, 0}, {0.3, 0, 0}, 1.0).size(), 1u);  // shorter than a step: its start alone
+}
+
+TEST(SweepCuts, ASweptSweepJoinsEachCentreToTheNextAndAPlainOneIsBalls) {
+  const Vec3 from{-0.8, 0, -0.2}, to{0.6, 0, -0.2};
+  const std::vector<Vec3> centres = sweep_centres(from, to, 0.05);
+  const std::vector<CutTool> balls = sweep_cuts(from, to, 0.05, false);
+  const std::vector<CutTool> capsules = sweep_cuts(from, to, 0.05, true);
+  ASSERT_EQ(balls.size(), centres.size());
+  ASSERT_EQ(capsules.size(), centres.size() - 1);
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    EXPECT_EQ(balls[k].centre, centres[k]);
+    EXPECT_FALSE(balls[k].end);
+  }
+  for (std::size_t k = 0; k < capsules.size(); ++k) {
+    EXPECT_EQ(capsules[k].centre, centres[k]);
+    ASSERT_TRUE(capsules[k].end);
+    EXPECT_EQ(*capsules[k].end, centres[k + 1]);  // the same bits: the capsules meet end to end
+  }
+  // One centre: one ball, swept or not.
+  const std::vector<CutTool> one = sweep_cuts({1, 2, 3}, {1, 2, 3}, 0.5, true);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_FALSE(one[0].end);
 }
 
 }  // namespace

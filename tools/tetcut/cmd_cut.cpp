@@ -1,5 +1,6 @@
-// `tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [...]`: a cautery sweep, one
-// cut every S along the segment, as the paper's electric lancet (3.6).
+// `tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--swept] [...]`: a cautery
+// sweep, one cut every S along the segment, as the paper's electric lancet (3.6); with --swept
+// the cut points are joined by capsules (Cutter::cut_segment), one cut from each to the next.
 //
 // Not a second runner: the sweep is the scenario `mesh MESH` + `sweep FROM TO STEP` with the
 // command line's parameters, run by the scenario runner that `tetcut run` uses, and reported by
@@ -26,6 +27,7 @@ struct CutArgs {
   std::optional<std::string> mesh, frames;
   std::optional<double> diameter, step, dref_factor, p;
   opt::Improvement improvement;
+  bool swept = false;
   std::optional<Vec3> from, to;
   std::optional<std::uint64_t> depth, max_tets_created;
   std::optional<RemovalStrategy> strategy;
@@ -44,6 +46,10 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::point(app, "--from", a.from, "where the sweep starts")->required();
   opt::point(app, "--to", a.to, "where it ends (included when a whole number of steps away)")->required();
   opt::number(app, "--step", a.step, "the distance between two cuts (> 0)", "S")->required();
+  opt::flag(app, "--swept", a.swept,
+            "join the cut points by capsules: one cut from each point to the next by every point within the "
+            "tool's radius of that segment, so no tissue stays between two points whatever the step (a sweep of "
+            "one point is one ball)");
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
   opt::order(app, "--order", a.order,
              "which selected tet a cut requests next (default direct-first; docs/paper.md: the paper's three "
@@ -103,13 +109,14 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CutArgs a;
   CommandParser parser(
       "cut",
-      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--strategy S] [--order O] "
+      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--swept] [--strategy S] [--order O] "
       "[--neighbour-set smallest|first] [--split M] [--max-tets-created N] "
       "[--refinement auto|paper|graded] [--no-improve] [--quality-floor F] [--min-dihedral DEG] [--keep-label L ...] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
-      "each cut refined then removed without breaking the manifold (paper 3.1-3.7). The sweep is\n"
-      "the scenario `mesh MESH` + `sweep FROM TO STEP`, run as `tetcut run` runs it.\n",
+      "each cut refined then removed without breaking the manifold (paper 3.1-3.7). --swept joins\n"
+      "the cut points by capsules, one cut from each point to the next. The sweep is the scenario\n"
+      "`mesh MESH` + `sweep FROM TO STEP` (`... STEP swept`), run as `tetcut run` runs it.\n",
       "exit: 0, 1 an invariant broke or a cut was refused, 2 bad input or usage");
   add_options(parser.app(), a);
   if (const auto code = parser.parse(args, out, err)) return *code;
@@ -131,7 +138,8 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
 
   scenario::Scenario sweep{"tetcut cut", ".", {}};
   sweep.ops.push_back({.kind = scenario::OpKind::kMesh, .line = 1, .text = *a.mesh});
-  sweep.ops.push_back({.kind = scenario::OpKind::kSweep, .line = 2, .a = *a.from, .b = *a.to, .step = *a.step});
+  sweep.ops.push_back(
+      {.kind = scenario::OpKind::kSweep, .line = 2, .a = *a.from, .b = *a.to, .step = *a.step, .swept = a.swept});
   TetMesh mesh;
   const scenario::RunResult r = scenario::run(sweep, options, &mesh);
   if (!r.ok) {

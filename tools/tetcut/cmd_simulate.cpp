@@ -5,7 +5,9 @@
 //
 // The tool moves in the world: each sweep point is mapped to the rest configuration through
 // the deformed tet that holds it (TensorMassModel::rest_point), and the rest mesh is cut there
-// (a point outside the deformed tissue is cut where it is). The time step follows the tissue:
+// (a point outside the deformed tissue is cut where it is). With --swept (a scenario's `sweep
+// ... swept`, `cut A B`) a frame's cut is the capsule from one sweep point to the next, both ends
+// mapped so when the frame starts. The time step follows the tissue:
 // --dt-factor (0.5) times the stable-step estimate (StableStepEstimator: a few power iterations on
 // M^-1 K, between 2/3 of the critical step 2 / omega_max and the step itself), before the first
 // cut and again after each cut that changed the mesh (the small tets a cut makes lower the
@@ -44,6 +46,7 @@ namespace {
 struct SimulateArgs {
   std::optional<std::string> input, fix, frames, report;
   std::vector<std::string> sweeps;  // FROM TO STEP, three by three
+  bool swept = false;               // --sweep's points joined by capsules
   std::vector<std::string> materials;  // LABEL:E,NU,RHO
   std::vector<std::uint32_t> uncuttable_labels;
   std::optional<Vec3> gravity;
@@ -64,6 +67,10 @@ void add_simulate_options(CLI::App& app, SimulateArgs& a) {
       ->expected(1, CLI::detail::expected_max_vector_size)
       ->allow_extra_args(false)
       ->type_name("FROM TO STEP");
+  opt::flag(app, "--swept", a.swept,
+            "join each --sweep's points by capsules: a frame cuts from one point to the next by every point within "
+            "the tool's radius of that segment, both ends mapped to the rest shape, so no tissue stays between two "
+            "points whatever the step (a scenario's sweeps say `swept` themselves)");
   opt::number(app, "--diameter", a.diameter, "the tool's diameter (mesh units; required to cut a mesh with --sweep)", "D");
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
   opt::text(app, "--fix", a.fix, "vertices held in place: AXIS OP VALUE, e.g. \"x<10\" (mesh units)", "RULE");
@@ -124,10 +131,11 @@ std::optional<std::pair<std::uint32_t, mechanics::Material>> parse_material(cons
   return std::pair{static_cast<std::uint32_t>(*label), mechanics::Material{values->x, values->y, values->z}};
 }
 
-// The cut centres of a sweep, where `tetcut cut` and a scenario place them.
-void add_sweep(const Vec3& a, const Vec3& b, double step, std::vector<Vec3>& out) {
-  const std::vector<Vec3> centres = scenario::sweep_centres(a, b, step);
-  out.insert(out.end(), centres.begin(), centres.end());
+// The cuts of a sweep, where `tetcut cut` and a scenario place them: balls, or swept, capsules
+// from each centre to the next.
+void add_sweep(const Vec3& a, const Vec3& b, double step, bool swept, std::vector<scenario::CutTool>& out) {
+  const std::vector<scenario::CutTool> cuts = scenario::sweep_cuts(a, b, step, swept);
+  out.insert(out.end(), cuts.begin(), cuts.end());
 }
 
 // An SI value in a message: "1.338e-04 s", so that a step of microseconds or an energy of
@@ -150,11 +158,11 @@ double microseconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// What to cut: a scenario's mesh, parameters and sweeps, or the command line's.
+// What to cut: a scenario's mesh, parameters and sweeps, or the command line's. One frame a tool.
 struct CutPlan {
   CutParams params;
   std::string mesh_path;
-  std::vector<Vec3> centres;
+  std::vector<scenario::CutTool> tools;
 };
 
 // Fills `plan` (and the scenario's uncuttable labels into `a`); an exit code when the options
@@ -162,7 +170,7 @@ struct CutPlan {
 std::optional<int> plan_cuts(SimulateArgs& a, const CommandParser& parser, std::ostream& err, CutPlan& plan) {
   CutParams& params = plan.params;
   std::string& mesh_path = plan.mesh_path;
-  std::vector<Vec3>& centres = plan.centres;
+  std::vector<scenario::CutTool>& tools = plan.tools;
   mesh_path = *a.input;
   if (mesh_path.ends_with(".scn")) {
     const scenario::ParseResult parsed = scenario::parse_file(mesh_path);
@@ -185,8 +193,8 @@ std::optional<int> plan_cuts(SimulateArgs& a, const CommandParser& parser, std::
             return parser.usage_error(*a.input + ":" + std::to_string(op.line) + ": simulate runs only diameter and strategy, not " + op.text, err);
           }
           break;
-        case scenario::OpKind::kSweep: add_sweep(op.a, op.b, op.step, centres); break;
-        case scenario::OpKind::kCut: centres.push_back(op.a); break;
+        case scenario::OpKind::kSweep: add_sweep(op.a, op.b, op.step, op.swept, tools); break;
+        case scenario::OpKind::kCut: tools.push_back({op.a, op.swept ? std::optional<Vec3>(op.b) : std::nullopt}); break;
         case scenario::OpKind::kUncuttable:
           a.uncuttable_labels.insert(a.uncuttable_labels.end(), op.labels.begin(), op.labels.end());
           break;
@@ -205,10 +213,11 @@ std::optional<int> plan_cuts(SimulateArgs& a, const CommandParser& parser, std::
     if (!from || !to) return parser.usage_error("--sweep: FROM and TO expect X,Y,Z", err);
     if (!step || *step <= 0) return parser.usage_error("--sweep: STEP must be a positive number", err);
     if (norm(*to - *from) / *step > scenario::kMaxSweepCuts) return parser.usage_error("--sweep: more than 100000 cuts", err);
-    add_sweep(*from, *to, *step, centres);
+    add_sweep(*from, *to, *step, a.swept, tools);
   }
   // A diameter only matters to a cut: a mesh left to settle under gravity needs none.
-  if (!centres.empty() && !a.diameter && !from_scenario) {
+  if (a.swept && a.sweeps.empty()) return parser.usage_error("--swept: joins the points of --sweep, and there is none", err);
+  if (!tools.empty() && !a.diameter && !from_scenario) {
     return parser.usage_error("--diameter is required to cut a mesh (--sweep)", err);
   }
   if (const auto bad = validate(params)) return parser.usage_error(*bad, err);
@@ -283,12 +292,19 @@ class Simulation {
 
   enum class Frame { kDone, kStopped, kWriteFailed };
 
-  // Frame k, the tool at `centre` in the world.
-  Frame frame(std::size_t k, const Vec3& centre, std::ostream& err) {
+  // Where the tissue at world point p is at rest (p itself outside the deformed tissue).
+  Vec3 rest_of(const Vec3& p) {
+    return model_.rest_point(mesh_, p, [&](const Vec3& q) { return cutter_.tet_containing(q); }).value_or(p);
+  }
+
+  // Frame k, the tool in the world: the ball at tool.centre, or the capsule from it to tool.end.
+  Frame frame(std::size_t k, const scenario::CutTool& tool, std::ostream& err) {
+    const Vec3& centre = tool.centre;
     const auto t0 = std::chrono::steady_clock::now();
-    const auto rest = model_.rest_point(mesh_, centre, [&](const Vec3& p) { return cutter_.tet_containing(p); });
+    // Both ends of a capsule mapped before the cut: the tool's path through the tissue as it is now.
+    const scenario::CutTool rest{rest_of(centre), tool.end ? std::optional<Vec3>(rest_of(*tool.end)) : std::nullopt};
     log_.clear();
-    const CutReport r = cutter_.cut(rest.value_or(centre), &log_);
+    const CutReport r = rest.end ? cutter_.cut_segment(rest.centre, *rest.end, &log_) : cutter_.cut(rest.centre, &log_);
     cut_us_.push_back(microseconds_since(t0));
     const auto t1 = std::chrono::steady_clock::now();
     model_.apply(mesh_, log_);
@@ -298,7 +314,7 @@ class Simulation {
     // The tissue rule too (I10), at the tool where the rest mesh was cut.
     const invariants::CheckReport check =
         local_.after_operation(mesh_.raw_view(), cutter_.last_removed(), cutter_.last_created(),
-                               r.ok ? scenario::cut_check_options(cutter_, rest.value_or(centre))
+                               r.ok ? scenario::cut_check_options(cutter_, rest.centre, rest.end)
                                     : scenario::transaction_check_options(cutter_.params(),
                                                                           cutter_.last_min_dihedral_held()));
     if (!check.ok()) {
@@ -319,9 +335,9 @@ class Simulation {
     step_us_.push_back(plan_.steps ? microseconds_since(t2) / static_cast<double>(plan_.steps) : 0.0);
     energy_ = model_.energy();
     max_u_ = max_displacement(mesh_, model_);
-    frames_.push_back({{"frame", k},
-                       {"centre", {centre.x, centre.y, centre.z}},
-                       {"cut_ok", r.ok},
+    Json record{{"frame", k}, {"centre", {centre.x, centre.y, centre.z}}};
+    if (tool.end) record["end"] = {tool.end->x, tool.end->y, tool.end->z};  // a capsule's other end, in the world
+    record.update(Json{{"cut_ok", r.ok},
                        {"tets", mesh_.num_tets()},
                        {"removed", log_.removed.size()},
                        {"created", log_.created.size()},
@@ -333,6 +349,7 @@ class Simulation {
                        {"energy", {{"kinetic", energy_.kinetic}, {"elastic", energy_.elastic}, {"gravity", energy_.gravity},
                                    {"total", energy_.total()}}},
                        {"max_displacement_m", max_u_}});
+    frames_.push_back(std::move(record));
     if (a_.frames && k % plan_.frame_every == 0) {
       char name[32];
       std::snprintf(name, sizeof name, "/frame_%05zu.vtu", k);
@@ -423,14 +440,15 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   SimulateArgs a;
   CommandParser parser(
       "simulate",
-      "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--diameter D] [--strategy S] [--fix RULE] "
+      "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--swept] [--diameter D] [--strategy S] [--fix RULE] "
       "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--material LABEL:E,NU,RHO]... [--keep-label L]... [--unit M] [--damping G] [--dt S] "
       "[--steps N] [--settle N] [--frames DIR] [--frame-every N] [--report R.json]",
       "Linear-elastic tissue (tensor-mass, Cotin, Delingette and Ayache 2000) stepped at a fixed\n"
       "time step (semi-implicit Euler) while the cautery cuts it: per frame one cut, the model and\n"
       "the rendered surface updated from the cut's change log, then --steps steps. The sweep points\n"
       "are in the world: each is mapped to the rest shape through the deformed tissue before the\n"
-      "cut. A blow-up (the total energy growing over a frame's steps, or not finite) fails the run.\n",
+      "cut. --swept cuts from each sweep point to the next (a capsule, both ends mapped) per frame.\n"
+      "A blow-up (the total energy growing over a frame's steps, or not finite) fails the run.\n",
       "exit: 0, 1 a blow-up or an invariant broke, 2 bad input or usage");
   add_simulate_options(parser.app(), a);
   if (const auto code = parser.parse(args, out, err)) return *code;
@@ -462,8 +480,8 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   for (std::uint64_t s = 0; s < a.settle.value_or(0); ++s) model.step(dt);
 
   Simulation simulation(a, plan, mesh, cutter, local, model, surface, stable_step, initial.dt, dt);
-  for (std::size_t k = 0; k < cuts.centres.size(); ++k) {
-    const Simulation::Frame frame = simulation.frame(k, cuts.centres[k], err);
+  for (std::size_t k = 0; k < cuts.tools.size(); ++k) {
+    const Simulation::Frame frame = simulation.frame(k, cuts.tools[k], err);
     if (frame == Simulation::Frame::kWriteFailed) return kExitBadInput;
     if (frame == Simulation::Frame::kStopped) break;
   }

@@ -21,12 +21,13 @@ std::vector<double> cut_times_us(const std::vector<scenario::CutRecord>& cuts) {
   return t;
 }
 
+// A cut's tool and counts. "centre" is the ball's centre or the capsule's first end; a capsule
+// (Cutter::cut_segment) adds its other end, "end", after it, and a ball's record is as it was.
 Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
   const CutReport& r = c.report;
-  Json record{{"index", index},
-              {"line", c.line},
-              {"centre", {c.centre.x, c.centre.y, c.centre.z}},
-              {"ok", r.ok},
+  Json record{{"index", index}, {"line", c.line}, {"centre", {c.centre.x, c.centre.y, c.centre.z}}};
+  if (c.end) record["end"] = {c.end->x, c.end->y, c.end->z};
+  record.update(Json{{"ok", r.ok},
               {"time_us", r.time.total_us},
               {"locate_us", r.time.locate_us},
               {"refine_us", r.time.refine_us},
@@ -75,7 +76,7 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
               {"tets_removed_by_improvement", r.tets_removed_by_improvement},
               {"d_ref", r.d_ref},
               {"refinement", to_string(r.refinement)},
-              {"retries", r.retries}};
+              {"retries", r.retries}});
   if (!r.ok) {
     record["refusal"] = to_string(r.refusal);
     record["failure"] = r.failure;

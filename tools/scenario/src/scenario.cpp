@@ -98,7 +98,7 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::vector<std::string> t = tokens_of(line);
     if (t.empty()) continue;
-    Op op{OpKind::kCut, n, {}, {}, {}, {}, 0.0, 0};
+    Op op{.kind = OpKind::kCut, .line = n};
     const std::string& w = t[0];
     if (w == "mesh") {
       if (t.size() != 2) return fail("expected: mesh PATH");
@@ -110,21 +110,36 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
       op.kind = OpKind::kParam;
       op.text = w;
       op.value = t[1];
-    } else if (w == "cut" || w == "remove") {
+    } else if (w == "cut") {
+      // One point: the ball there; two: the capsule the tool sweeps from the first to the second.
+      const auto a = t.size() == 2 || t.size() == 3 ? parse_vec3(t[1]) : std::nullopt;
+      const auto b = t.size() == 3 ? parse_vec3(t[2]) : std::nullopt;
+      if (!a || (t.size() == 3 && !b)) return fail("expected: cut X,Y,Z (a ball) or cut X,Y,Z X,Y,Z (a capsule) with finite numbers");
+      op.kind = OpKind::kCut;
+      op.a = *a;
+      if (b) {
+        op.b = *b;
+        op.swept = true;
+      }
+    } else if (w == "remove") {
       const auto p = t.size() == 2 ? parse_vec3(t[1]) : std::nullopt;
-      if (!p) return fail("expected: " + w + " X,Y,Z with finite numbers");
-      op.kind = w == "cut" ? OpKind::kCut : OpKind::kRemove;
+      if (!p) return fail("expected: remove X,Y,Z with finite numbers");
+      op.kind = OpKind::kRemove;
       op.a = *p;
     } else if (w == "sweep") {
-      const auto a = t.size() == 4 ? parse_vec3(t[1]) : std::nullopt;
-      const auto b = t.size() == 4 ? parse_vec3(t[2]) : std::nullopt;
-      const auto step = t.size() == 4 ? parse_double(t[3]) : std::nullopt;
-      if (!a || !b || !step || *step <= 0) return fail("expected: sweep X,Y,Z X,Y,Z STEP with STEP > 0");
+      if (t.size() == 5 && t[4] != "swept")
+        return fail("a sweep's fifth word is swept (its centres joined by capsules), not '" + t[4] + "'");
+      const bool shape = t.size() == 4 || t.size() == 5;
+      const auto a = shape ? parse_vec3(t[1]) : std::nullopt;
+      const auto b = shape ? parse_vec3(t[2]) : std::nullopt;
+      const auto step = shape ? parse_double(t[3]) : std::nullopt;
+      if (!a || !b || !step || *step <= 0) return fail("expected: sweep X,Y,Z X,Y,Z STEP [swept] with STEP > 0");
       if (norm(*b - *a) / *step > 100000) return fail("sweep of more than 100000 cuts");
       op.kind = OpKind::kSweep;
       op.a = *a;
       op.b = *b;
       op.step = *step;
+      op.swept = t.size() == 5;
     } else if (w == "uncuttable") {
       if (t.size() < 2) return fail("expected: uncuttable LABEL... (or: uncuttable none)");
       op.kind = OpKind::kUncuttable;
@@ -199,11 +214,12 @@ invariants::CheckOptions transaction_check_options(const CutParams& params, doub
   return o;
 }
 
-invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& centre) {
+invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& centre, const std::optional<Vec3>& end) {
   const CutParams& params = cutter.params();
   invariants::CheckOptions o = transaction_check_options(params, cutter.last_min_dihedral_held());
   const std::span<const TetId> left = cutter.last_left_in_tool();
-  o.tool = invariants::ToolRule{.centre = centre, .radius = params.tool_diameter / 2, .d_ref = params.d_ref(), .left = left};
+  o.tool = invariants::ToolRule{
+      .centre = centre, .radius = params.tool_diameter / 2, .d_ref = params.d_ref(), .left = left, .end = end};
   o.moved = cutter.last_moved();
   return o;
 }
@@ -304,18 +320,23 @@ class Run {
     return true;
   }
 
+  // A `cut` line (a ball, or a capsule from a to b) or a `sweep` line (balls, or capsules joined
+  // centre to centre): each cut checked with its own tool.
   bool cut(const Op& op) {
-    const std::vector<Vec3> centres = op.kind == OpKind::kSweep ? sweep_centres(op.a, op.b, op.step) : std::vector{op.a};
-    for (const Vec3& centre : centres) {
-      const CutReport r = cutter_->cut(centre, log_if_labelled());
+    const std::vector<CutTool> tools =
+        op.kind == OpKind::kSweep ? sweep_cuts(op.a, op.b, op.step, op.swept)
+                                  : std::vector{CutTool{op.a, op.swept ? std::optional<Vec3>(op.b) : std::nullopt}};
+    for (const CutTool& tool : tools) {
+      const CutReport r = tool.end ? cutter_->cut_segment(tool.centre, *tool.end, log_if_labelled())
+                                   : cutter_->cut(tool.centre, log_if_labelled());
       if (r.ok && labelled_) labels_.apply(mesh_, log_);
-      result_.cuts.push_back({op.line, centre, r});
+      result_.cuts.push_back({op.line, tool.centre, tool.end, r});
       count(r);
       if (!r.ok) {
         stop(op, 1, "cut failed: " + r.failure);
         return false;
       }
-      if (!after(op, &centre)) return false;
+      if (!after(op, &tool)) return false;
       if (options_.after_cut) {
         if (auto bad = options_.after_cut(mesh_, result_.cuts.size() - 1, current_labels())) {
           stop(op, 2, *bad);
@@ -488,7 +509,7 @@ class Run {
 
   // After every mutating operation: the growth guard, then the local check (or none); a cut's
   // with its tool.
-  bool after(const Op& op, const Vec3* cut_centre = nullptr) {
+  bool after(const Op& op, const CutTool* cut_tool = nullptr) {
     if (options_.max_tets != 0 && mesh_.num_tets() > options_.max_tets) {
       stop(op, 1, "the mesh grew past " + std::to_string(options_.max_tets) + " tets (" +
                       std::to_string(mesh_.num_tets()) + ")");
@@ -496,8 +517,8 @@ class Run {
     }
     if (options_.check == CheckMode::kNone || !cutter_) return true;
     if (options_.check == CheckMode::kEvery) {
-      const invariants::CheckOptions o = cut_centre ? cut_check_options(*cutter_, *cut_centre)
-                                                    : transaction_check_options(params_, cutter_->last_min_dihedral_held());
+      const invariants::CheckOptions o = cut_tool ? cut_check_options(*cutter_, cut_tool->centre, cut_tool->end)
+                                                  : transaction_check_options(params_, cutter_->last_min_dihedral_held());
       const invariants::CheckReport r =
           local_->after_operation(mesh_.raw_view(), cutter_->last_removed(), cutter_->last_created(), o);
       if (!r.ok()) {

@@ -20,4 +20,17 @@ std::vector<Vec3> sweep_centres(const Vec3& from, const Vec3& to, double step) {
   return centres;
 }
 
+std::vector<CutTool> sweep_cuts(const Vec3& from, const Vec3& to, double step, bool swept) {
+  const std::vector<Vec3> centres = sweep_centres(from, to, step);
+  std::vector<CutTool> cuts;
+  if (!swept || centres.size() == 1) {
+    cuts.reserve(centres.size());
+    for (const Vec3& c : centres) cuts.push_back({c, std::nullopt});
+    return cuts;
+  }
+  cuts.reserve(centres.size() - 1);
+  for (std::size_t k = 0; k + 1 < centres.size(); ++k) cuts.push_back({centres[k], centres[k + 1]});
+  return cuts;
+}
+
 }  // namespace tetcut::scenario

@@ -20,9 +20,14 @@
 //   uncuttable LABEL...           tets with these labels (the mesh file's) are tissue no cut or
 //                                 removal takes (Cutter::set_uncuttable(): the paper's Fig. 7);
 //                                 `uncuttable none` lifts it. Needs a labelled mesh.
-//   cut X,Y,Z                     one cut with the tool centred there
+//   cut X,Y,Z                     one cut with the tool centred there (a ball: Cutter::cut)
+//   cut X,Y,Z X,Y,Z               one cut by the capsule the tool sweeps from the first point to
+//                                 the second: every point within its radius of the segment
+//                                 (Cutter::cut_segment; `cut C C` is `cut C`)
 //   sweep X,Y,Z X,Y,Z STEP        one cut every STEP along the segment, the end included when a
 //                                 whole number of steps away (sweep.hpp: sweep_centres)
+//   sweep X,Y,Z X,Y,Z STEP swept  the same centres joined by capsules: one cut from each to the
+//                                 next (sweep.hpp: sweep_cuts), so no tissue is left between them
 //   remove X,Y,Z                  remove the tet containing the point with the strategy
 //   compact                       renumber densely
 //   check [local|full|exact]      the independent checker; the scenario fails when it objects
@@ -34,8 +39,8 @@
 //                                 checker measures the tets each cut left created
 //
 // Running one: every operation is followed by the local check (or the full check, or none, as
-// asked), a cut's with the tissue rule (I10) at its tool; the first failed check or expectation
-// stops the run and names its line.
+// asked), a cut's with the tissue rule (I10) at its tool (ball or capsule); the first failed check
+// or expectation stops the run and names its line.
 #pragma once
 
 #include <cstdint>
@@ -47,6 +52,7 @@
 
 #include "tetcut/cut.hpp"
 #include "tetcut/invariants/check.hpp"
+#include "tetcut/scenario/sweep.hpp"
 #include "tetcut/scenario/values.hpp"
 #include "tetcut/vec3.hpp"
 
@@ -64,6 +70,7 @@ struct Op {
   std::string value;       // parameter value as written
   Vec3 a{}, b{};
   double step = 0.0;
+  bool swept = false;      // cut: the capsule from a to b; sweep: its centres joined by capsules
   std::uint64_t count = 0;
   double bound = 0.0;      // expect min_quality
   std::vector<std::uint32_t> labels;  // uncuttable
@@ -91,7 +98,8 @@ std::string mesh_path_from(const std::string& mesh, const std::string& dir);
 
 struct CutRecord {
   std::uint32_t line = 0;  // the scenario line that made the cut
-  Vec3 centre;
+  Vec3 centre;             // the ball's centre, or the capsule's first end
+  std::optional<Vec3> end; // the capsule's other end; none: a ball
   CutReport report;
 };
 
@@ -140,10 +148,12 @@ struct RunOptions {
 invariants::CheckOptions transaction_check_options(const CutParams& params, double min_dihedral_held_deg);
 
 // What the local checker holds the cut `cutter` just made at `centre` to: transaction_check_options()
-// with its params and held theta, and I10, the tissue rule, with the cut's tool (centred at
-// `centre`, the params' diameter and D_ref) and the tets the cut reports it left there
-// (Cutter::last_left_in_tool(), which the options view: use them before the next cut).
-invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& centre);
+// with its params and held theta, and I10, the tissue rule, with the cut's tool (the ball centred
+// at `centre`, or with `end` the capsule from `centre` to `end`: ToolRule::end; the params'
+// diameter and D_ref) and the tets the cut reports it left there (Cutter::last_left_in_tool(),
+// which the options view: use them before the next cut).
+invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& centre,
+                                           const std::optional<Vec3>& end = std::nullopt);
 
 // Runs the scenario; the final mesh is left in `mesh_out` when given (when the run stops early,
 // the mesh as it was then: after a refused cut, as before that cut).

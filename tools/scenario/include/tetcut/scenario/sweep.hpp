@@ -10,9 +10,15 @@
 // quotient's rounding (a few 1e-16 of it, times at most kMaxSweepCuts) and far below anything a
 // person means by a step. When TO is not a whole number of steps away, the sweep stops short of
 // it (it is not added as an extra, shorter step). FROM == TO: one cut, at FROM.
+//
+// A swept sweep (sweep_cuts(..., swept = true): a scenario's `sweep ... swept`, `tetcut cut
+// --swept`, `tetcut simulate --swept`, Python's Cutter.sweep(..., swept=True)) takes the same
+// centres and joins them: one capsule cut (Cutter::cut_segment) from each centre to the next,
+// so the tissue between two samples goes whatever STEP is; a sweep of one centre is one ball.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "tetcut/vec3.hpp"
@@ -27,5 +33,16 @@ inline constexpr double kMaxSweepCuts = 100000;     // a longer sweep is refused
 
 // The centres, in order.
 [[nodiscard]] std::vector<Vec3> sweep_centres(const Vec3& from, const Vec3& to, double step);
+
+// One cut's tool: the ball at `centre` (Cutter::cut), or, when `end` is set, the capsule the
+// tool sweeps from `centre` to `end` (Cutter::cut_segment).
+struct CutTool {
+  Vec3 centre;
+  std::optional<Vec3> end;
+};
+
+// The sweep's cuts, in order: a ball at each of sweep_centres(), or, swept, a capsule from each
+// centre to the next (one fewer cut; a single centre stays a ball).
+[[nodiscard]] std::vector<CutTool> sweep_cuts(const Vec3& from, const Vec3& to, double step, bool swept);
 
 }  // namespace tetcut::scenario
