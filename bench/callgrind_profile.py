@@ -35,10 +35,12 @@ STAGES = [
     ("improve", ["tetcut::Cutter::Pipeline::improve("]),
     ("finish", ["tetcut::Cutter::Pipeline::audit(", "tetcut::Cutter::Pipeline::commit(",
                 "tetcut::Cutter::Pipeline::roll_back("]),
+    # CutTimings::pieces_us: the search for the pieces the cut detached, and the debris.
+    ("pieces", ["tetcut::Cutter::Pipeline::find_pieces("]),
 ]
 # Must run in every sweep: a stage missing from the profile was inlined, not skipped.
 REQUIRED = ["tetcut::Cutter::Pipeline::" + f + "(" for f in ("locate", "refine", "select", "remove_selected",
-                                                           "improve", "audit", "commit")]
+                                                           "improve", "audit", "find_pieces", "commit")]
 
 
 class Part:

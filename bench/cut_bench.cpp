@@ -51,6 +51,9 @@ struct SweepResult {
   // improvement pass held a theta below the params' (CutReport::min_dihedral_held_deg).
   double worst_created_dihedral_deg = 180.0;
   std::uint64_t theta_lowered = 0;
+  // The search for the pieces each cut detached (CutTimings::pieces_us), and the pieces.
+  std::vector<double> pieces_us;
+  std::uint64_t fragments = 0;
 };
 
 // Writes and reads back 64 MiB, more than any cache of the CI machine holds, so that nothing of
@@ -71,15 +74,18 @@ void evict_caches() {
 // with the caches emptied, as a simulator's does after loading and rendering; without that it
 // depended on what the previous repetition left in them (5-8 us warm against 12-20 us cold in
 // one process, and the gate's median of three repetitions mixed the two).
-void run_sweep(const tetcut::TetMesh& base, double tool_diameter, SweepResult& out) {
+// With `strokes`, the passes are cut by the swept tool (gated_strokes()) instead of balls.
+void run_sweep(const tetcut::TetMesh& base, double tool_diameter, SweepResult& out, bool strokes = false) {
   static const std::vector<tetcut::Vec3> centres = tetcut::bench::gated_sweep_centres();
+  static const std::vector<tetcut::bench::Stroke> swept = tetcut::bench::gated_strokes();
   tetcut::TetMesh mesh = base;
   tetcut::Cutter cutter(mesh, {.tool_diameter = tool_diameter});
   evict_caches();
-  for (std::size_t i = 0; i < centres.size(); ++i) {
+  const std::size_t cuts = strokes ? swept.size() : centres.size();
+  for (std::size_t i = 0; i < cuts; ++i) {
     const std::uint64_t before = tetcut::bench::allocations();
     const auto t0 = std::chrono::steady_clock::now();
-    const tetcut::CutReport r = cutter.cut(centres[i]);
+    const tetcut::CutReport r = strokes ? cutter.cut_segment(swept[i].from, swept[i].to) : cutter.cut(centres[i]);
     const auto t1 = std::chrono::steady_clock::now();
     // Read before this loop's own bookkeeping allocates (the sample lists grow).
     out.allocations += tetcut::bench::allocations() - before;
@@ -93,6 +99,8 @@ void run_sweep(const tetcut::TetMesh& base, double tool_diameter, SweepResult& o
     out.left_in_tool += r.left_in_tool;
     out.beyond_reach += r.tets_removed_beyond_reach;
     if (r.ok) out.worst_created_dihedral_deg = std::min(out.worst_created_dihedral_deg, r.min_dihedral_deg);
+    out.pieces_us.push_back(r.time.pieces_us);
+    out.fragments += r.fragments;
     out.theta_lowered += r.ok && r.min_dihedral_held_deg < cutter.params().min_dihedral_deg;
     if (r.ok && r.tets_hit > 0) {
       const double radius = cutter.params().tool_diameter / 2;
@@ -104,9 +112,11 @@ void run_sweep(const tetcut::TetMesh& base, double tool_diameter, SweepResult& o
 }
 
 // The gated sweep on the liver refined `level` times, the tool scaled to its edges.
-void run_sweep(int level, SweepResult& out) {
-  run_sweep(liver_at(level), tetcut::bench::kGatedToolDiameter / (1 << level), out);
+void run_sweep(int level, SweepResult& out, bool strokes = false) {
+  run_sweep(liver_at(level), tetcut::bench::kGatedToolDiameter / (1 << level), out, strokes);
 }
+
+void report_sweep(benchmark::State& state, int level, const SweepResult& sweep);
 
 void BM_CutSweep(benchmark::State& state) {
   const int level = static_cast<int>(state.range(0));
@@ -117,6 +127,21 @@ void BM_CutSweep(benchmark::State& state) {
     state.ResumeTiming();
     run_sweep(level, sweep);
   }
+  report_sweep(state, level, sweep);
+}
+BENCHMARK(BM_CutSweep)->DenseRange(0, 2)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// The gated sweep's passes cut by the swept tool: each pass's consecutive centres joined by a
+// capsule (gated_strokes()), on the bundled liver: the capsule's per-cut figures beside the
+// ball's (BM_CutSweep/0).
+void BM_CapsuleSweep(benchmark::State& state) {
+  SweepResult sweep;
+  for (auto _ : state) run_sweep(0, sweep, true);
+  report_sweep(state, 0, sweep);
+}
+BENCHMARK(BM_CapsuleSweep)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+void report_sweep(benchmark::State& state, int level, const SweepResult& sweep) {
   const auto cuts = static_cast<double>(sweep.samples_us.size());
   state.counters["tets"] = static_cast<double>(liver_at(level).num_tets());
   state.counters["cuts"] = cuts;
@@ -142,8 +167,10 @@ void BM_CutSweep(benchmark::State& state) {
   state.counters["allocations"] = static_cast<double>(sweep.allocations);
   state.counters["allocations_per_cut"] =
       static_cast<double>(sweep.allocations) / static_cast<double>(std::max<std::uint64_t>(1, sweep.counted_cuts));
+  state.counters["pieces_p50_us"] = percentile(sweep.pieces_us, 0.50);
+  state.counters["pieces_p99_us"] = percentile(sweep.pieces_us, 0.99);
+  state.counters["fragments"] = static_cast<double>(sweep.fragments);
 }
-BENCHMARK(BM_CutSweep)->DenseRange(0, 2)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 // The scaling figure of its own: median (and p99) per-cut time on the ~1M-tet liver over the
 // ~16k one, the two sweeps interleaved cut-set by cut-set so that machine noise hits both.

@@ -121,6 +121,19 @@ OperationOutcome SequenceSession::after(const CutReport& report, const Vec3* cut
     volume_[t.value] = mesh().volume(t);
     change += volume_[t.value];
   }
+  // The pieces the operation detached, against the checker's own union-find over the raw tets.
+  pieces_bounded_ = pieces_bounded_ || report.fragment_search_bounded;
+  std::vector<invariants::RawFragment> fragments;
+  std::optional<std::uint32_t> organ;
+  for (const Fragment& f : cutter_.last_fragments()) {
+    if (f.removed) continue;
+    fragments.push_back({f.tets, f.volume, f.centroid});
+    organ = f.organ.value;
+  }
+  const invariants::FragmentCheckReport pieces = invariants::check_fragments(
+      mesh().raw_view(), {.fragments = fragments, .organ_tet = organ,
+                          .piece_count = pieces_bounded_ ? std::nullopt : std::optional<std::uint32_t>(cutter_.pieces())});
+  if (!pieces.ok()) checked_.require(false, "fragments", invariants::to_string(pieces));
   std::optional<invariants::ToolRule> tool;
   if (cut_centre)
     tool = invariants::ToolRule{.centre = *cut_centre, .radius = cutter_.params().tool_diameter / 2,

@@ -96,6 +96,7 @@ class SequenceSession {
   std::size_t fail_at_ = 0;  // TETCUT_FUZZ_FAIL_AT; 0: never
   std::size_t slow_at_ = 0;  // TETCUT_FUZZ_SLOW_AT; 0: never
   bool changed_since_full_check_ = false;
+  bool pieces_bounded_ = false;  // a search for pieces stopped at its bound: Cutter::pieces() may be short since
 };
 
 // Runs `body` as a sequence target does: the version byte (is_sequence_version), failures
