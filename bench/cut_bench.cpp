@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <map>
 #include <new>
+#include <string>
 #include <vector>
 
 #include "bench_meshes.hpp"
@@ -103,10 +104,12 @@ void run_sweep(const tetcut::TetMesh& base, double tool_diameter, SweepResult& o
     out.fragments += r.fragments;
     out.theta_lowered += r.ok && r.min_dihedral_held_deg < cutter.params().min_dihedral_deg;
     if (r.ok && r.tets_hit > 0) {
-      const double radius = cutter.params().tool_diameter / 2;
-      const double ball = 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius;
-      out.left_share.push_back(r.volume_left_in_tool / ball);
-      out.beyond_share.push_back(r.volume_removed_beyond_tool / ball);
+      // The tool's volume: the ball, and for a stroke the cylinder between its ends too.
+      const double radius = cutter.params().tool_diameter / 2, pi = 3.14159265358979323846;
+      const double length = strokes ? tetcut::norm(swept[i].to - swept[i].from) : 0.0;
+      const double tool = 4.0 / 3.0 * pi * radius * radius * radius + pi * radius * radius * length;
+      out.left_share.push_back(r.volume_left_in_tool / tool);
+      out.beyond_share.push_back(r.volume_removed_beyond_tool / tool);
     }
   }
 }
@@ -140,6 +143,35 @@ void BM_CapsuleSweep(benchmark::State& state) {
   report_sweep(state, 0, sweep);
 }
 BENCHMARK(BM_CapsuleSweep)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// One stroke across the bundled liver (the gated tool, y = 40 to 180 mm at x = 95, z = 105) cut
+// as 1, 2, 5, 10 and 20 capsules, and as balls at the same 2, 3, 6, 11 and 21 samples: the volume
+// each removes. The capsules' should not depend on the sampling (to the refinement's resolution),
+// the balls' does: coarse samples leave the tissue between them.
+void BM_StrokeSampling(benchmark::State& state) {
+  const tetcut::Vec3 from{95, 40, 105}, to{95, 180, 105};
+  for (auto _ : state) {
+    for (const int pieces : {1, 2, 5, 10, 20}) {
+      double capsules = 0.0, balls = 0.0;
+      for (const bool swept : {true, false}) {
+        tetcut::TetMesh mesh = liver_at(0);
+        tetcut::Cutter cutter(mesh, {.tool_diameter = tetcut::bench::kGatedToolDiameter});
+        double removed = 0.0;
+        for (int k = 0; k <= pieces; ++k) {
+          const tetcut::Vec3 a = from + (static_cast<double>(k) / pieces) * (to - from);
+          const tetcut::Vec3 b = from + (static_cast<double>(k + 1) / pieces) * (to - from);
+          if (swept && k == pieces) break;
+          const tetcut::CutReport r = swept ? cutter.cut_segment(a, b) : cutter.cut(a);
+          removed += r.ok ? r.volume_removed : 0.0;
+        }
+        (swept ? capsules : balls) = removed;
+      }
+      state.counters["capsules_" + std::to_string(pieces) + "_volume"] = capsules;
+      state.counters["balls_" + std::to_string(pieces + 1) + "_volume"] = balls;
+    }
+  }
+}
+BENCHMARK(BM_StrokeSampling)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 void report_sweep(benchmark::State& state, int level, const SweepResult& sweep) {
   const auto cuts = static_cast<double>(sweep.samples_us.size());

@@ -227,6 +227,43 @@ def cut_sweeps(inputs):
     return lines
 
 
+def swept_tool(inputs):
+    ball = inputs.median("BM_CutSweep/0/iterations:1")
+    capsule = inputs.median("BM_CapsuleSweep/iterations:1")
+    strokes = inputs.median("BM_StrokeSampling/iterations:1")
+    if not ball and not capsule and not strokes:
+        return None
+    lines = ["## The swept tool and the pieces a cut detaches", ""]
+    rows = []
+    for name, e in (("balls (`BM_CutSweep/0`)", ball), ("capsules (`BM_CapsuleSweep`)", capsule)):
+        if e:
+            rows.append((name, fmt(e.get("cuts"), 0), fmt(e.get("p50_us")), fmt(e.get("p99_us")), fmt(e.get("max_us")),
+                         fmt(e.get("tets_removed_per_cut")), fmt(e.get("pieces_p50_us")), fmt(e.get("pieces_p99_us")),
+                         fmt(e.get("fragments"), 0), fmt(e.get("allocations"), 0)))
+    if rows:
+        lines += ["The gated passes through the bundled liver cut by balls at their centres and by capsules joining "
+                  "each pass's consecutive centres (`Cutter::cut_segment`, 4 mm long, the same 8 mm tool). Per-cut "
+                  "times in microseconds over every cut; `search` is the search for the pieces each cut detached "
+                  "(`CutTimings::pieces_us`), part of every cut; `pieces` is how many the sweep detached.", ""]
+        lines += table(("sweep", "cuts", "p50", "p99", "max", "removed / cut", "search p50", "search p99", "pieces",
+                        "allocations"), rows)
+    p = inputs.median("instructions_per_cut/pieces")
+    if p:
+        lines += ["", f"The search's instructions per cut on the gated sweep (callgrind, the `pieces` stage): "
+                      f"{fmt(p['per_cut'], 0)} mean, {fmt(p.get('p50_cut'), 0)} at the p50 cut, "
+                      f"{fmt(p.get('p90_cut'), 0)} at the p90 cut."]
+    if strokes:
+        rows = []
+        for pieces in (1, 2, 5, 10, 20):
+            rows.append((str(pieces), fmt(strokes.get(f"capsules_{pieces}_volume"), 0), str(pieces + 1),
+                         fmt(strokes.get(f"balls_{pieces + 1}_volume"), 0)))
+        lines += ["", "One stroke across the liver (x = 95, z = 105 mm, y = 40 to 180 mm, the 8 mm tool) cut as capsules "
+                      "and as balls at the same samples (`BM_StrokeSampling`): the volume removed, mm^3. The capsules' "
+                      "does not depend on the sampling beyond the refinement's resolution; the balls' does.", ""]
+        lines += table(("capsules", "volume removed", "balls", "volume removed"), rows)
+    return lines
+
+
 def removal_requests(inputs):
     names = inputs.benchmarks("BM_RemovalByStrategy/")
     if not names:
@@ -267,7 +304,7 @@ def instructions(inputs):
     rows = [("whole cut", fmt(e["instructions_per_cut"], 0), fmt(e.get("p50_cut"), 0), fmt(e.get("p90_cut"), 0),
              fmt(e.get("p99_cut"), 0), baseline("instructions_per_cut", "instructions_per_cut") + "; p50 "
              + baseline("instructions_per_cut", "p50_cut") + "; p90 " + baseline("instructions_per_cut", "p90_cut"))]
-    for stage in ("locate", "refine", "select", "remove", "improve", "finish", "other"):
+    for stage in ("locate", "refine", "select", "remove", "improve", "finish", "pieces", "other"):
         s = inputs.median(f"instructions_per_cut/{stage}")
         if s:
             rows.append((stage, fmt(s["per_cut"], 0), fmt(s.get("p50_cut"), 0), fmt(s.get("p90_cut"), 0), "-",
@@ -583,7 +620,7 @@ def mechanics(inputs):
     return body
 
 
-SECTIONS = [machine, budget_gate, cut_sweeps, paired, removal_requests, instructions, session_memory, paper_table1,
+SECTIONS = [machine, budget_gate, cut_sweeps, swept_tool, paired, removal_requests, instructions, session_memory, paper_table1,
             paper_table2,
             paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, peers, mechanics, resection]
 

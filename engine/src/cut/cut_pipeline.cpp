@@ -86,7 +86,7 @@ void Cutter::Pipeline::prepare() {
   if (params_.order == RemovalOrder::kRevisit) reserve_revisit();
   audit_.reserve(tets);
   labels_.reserve(tets);
-  search_.reserve(tets, vertices, params_.fragment_search_bound);
+  search_.reserve(tets, params_.fragment_search_bound);
   reserve_touched(fragments_, 1024);
   transaction_.reserve();
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
@@ -127,7 +127,7 @@ std::optional<std::string> Cutter::Pipeline::set_params(const CutParams& params)
   judge_scale();
   if (removal_changed) remover_.set_options(removal_options(params_));
   if (revisit_now) reserve_revisit();  // between cuts, so that the cuts in that order do not allocate
-  search_.reserve(room_for_tets(), mesh_.vertex_capacity(), params_.fragment_search_bound);  // likewise for a larger bound
+  search_.reserve(room_for_tets(), params_.fragment_search_bound);  // likewise for a larger bound
   return std::nullopt;
 }
 

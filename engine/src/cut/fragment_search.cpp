@@ -7,11 +7,17 @@
 
 namespace tetcut::detail {
 
-void FragmentSearch::reserve(std::uint32_t tets, std::uint32_t vertices, std::uint32_t bound) {
-  for (auto* marks : {&stamp_, &group_, &next_})
-    if (marks->size() < tets) marks->resize(tets, 0);
-  for (auto* marks : {&vertex_stamp_, &vertex_group_})
-    if (marks->size() < vertices) marks->resize(vertices, 0);
+void FragmentSearch::reserve(std::uint32_t tets, std::uint32_t bound) {
+  // The marks: a tet or vertex per entry, at most half full (the search stops as bounded before
+  // that), for a search of the bound plus a large cut's seeds, never more than the mesh's ids.
+  const std::size_t entries = std::min<std::size_t>(std::size_t{bound} + 3 * 16384, std::size_t{tets} * 5) + 1024;
+  std::size_t capacity = 1024;
+  while (capacity < 2 * entries) capacity *= 2;
+  if (marks_.size() < capacity) {
+    marks_.assign(capacity, Mark{});
+    marks_used_.clear();
+  }
+  reserve_touched(marks_used_, capacity / 2);
   const std::size_t room = std::size_t{bound} + 16384;
   reserve_touched(groups_, 16384);
   reserve_touched(walking_, 16384);
@@ -21,11 +27,21 @@ void FragmentSearch::reserve(std::uint32_t tets, std::uint32_t vertices, std::ui
   reserve_touched(pieces_, 1024);
 }
 
+std::uint32_t FragmentSearch::probe(std::uint32_t key) const {
+  const auto mask = static_cast<std::uint32_t>(marks_.size() - 1);
+  std::uint32_t i = (key * 0x9E3779B1u) & mask;
+  while (marks_[i].key != kNone && marks_[i].key != key) i = (i + 1) & mask;
+  return i;
+}
+
+bool FragmentSearch::full() const { return 2 * marks_used_.size() >= marks_.size(); }
+
 void FragmentSearch::seed(TetId t) {
-  if (stamp_[t.value] == search_) return;  // already reached from another seed
+  const std::uint32_t slot = probe(t.value);
+  if (marks_[slot].key == t.value || full()) return;  // already reached from another seed
   const auto g = static_cast<std::uint32_t>(groups_.size());
   groups_.push_back({g, kNone, kNone, 0, kNone, 0, kNone, t.value, 0.0, Vec3{}});
-  visit(*mesh_, t, g);
+  visit(*mesh_, t, g, slot);
   walking_.push_back(g);
 }
 
@@ -37,7 +53,7 @@ std::uint32_t FragmentSearch::label(std::uint32_t g) {
 
 void FragmentSearch::start_measuring(const TetMesh& mesh) {
   measuring_ = true;
-  for (TetId t : visited_) measure(mesh, t, groups_[find(group_[t.value])]);
+  for (std::uint32_t slot : visited_) measure(mesh, TetId{marks_[slot].key}, groups_[find(marks_[slot].group)]);
 }
 
 void FragmentSearch::measure(const TetMesh& mesh, TetId t, Group& group) {
@@ -48,17 +64,16 @@ void FragmentSearch::measure(const TetMesh& mesh, TetId t, Group& group) {
   group.moment = group.moment + (0.25 * volume) * (a + b + c + d);
 }
 
-void FragmentSearch::visit(const TetMesh& mesh, TetId t, std::uint32_t g) {
-  stamp_[t.value] = search_;
-  group_[t.value] = g;
-  next_[t.value] = kNone;
+void FragmentSearch::visit(const TetMesh& mesh, TetId t, std::uint32_t g, std::uint32_t slot) {
+  marks_used_.push_back(slot);
+  marks_[slot] = {t.value, g, kNone};
   Group& group = groups_[g];
-  if (group.head == kNone) group.head = t.value;
-  else next_[group.tail] = t.value;
-  group.tail = t.value;
+  if (group.head == kNone) group.head = slot;
+  else marks_[group.tail].next = slot;
+  group.tail = slot;
   ++group.tets;
   if (measuring_) measure(mesh, t, group);
-  visited_.push_back(t);
+  visited_.push_back(slot);
 }
 
 std::uint32_t FragmentSearch::unite(std::uint32_t g, std::uint32_t h) {
@@ -68,7 +83,7 @@ std::uint32_t FragmentSearch::unite(std::uint32_t g, std::uint32_t h) {
   child.parent = g;
   if (child.head != kNone) {
     if (root.head == kNone) root.head = child.head;
-    else next_[root.tail] = child.head;
+    else marks_[root.tail].next = child.head;
     root.tail = child.tail;
   }
   root.tets += child.tets;
@@ -79,31 +94,40 @@ std::uint32_t FragmentSearch::unite(std::uint32_t g, std::uint32_t h) {
 }
 
 std::uint32_t FragmentSearch::expand(const TetMesh& mesh, std::uint32_t g) {
-  const TetId t{groups_[g].head};
-  groups_[g].head = next_[t.value];
+  const std::uint32_t head = groups_[g].head;
+  const TetId t{marks_[head].key};
+  groups_[g].head = marks_[head].next;
   for (int f = 0; f < 4; ++f) {
     const FaceRef n = mesh.neighbour(t, f);
     if (!n.valid()) continue;
-    if (stamp_[n.tet.value] != search_) {
-      visit(mesh, n.tet, g);
+    const std::uint32_t slot = probe(n.tet.value);
+    if (marks_[slot].key != n.tet.value) {
+      if (full()) {
+        overflow_ = true;  // a tet left unvisited: no group can be called whole any more
+        return g;
+      }
+      visit(mesh, n.tet, g, slot);
       continue;
     }
-    const std::uint32_t other = find(group_[n.tet.value]);
+    const std::uint32_t other = find(marks_[slot].group);
     if (other != g) g = unite(g, other);
   }
   return g;
 }
 
 void FragmentSearch::unite_by_shared_vertices(const TetMesh& mesh) {
-  for (TetId t : visited_) {
-    std::uint32_t root = find(group_[t.value]);
-    for (VertId v : mesh.tet(t)) {
-      if (vertex_stamp_[v.value] != search_) {
-        vertex_stamp_[v.value] = search_;
-        vertex_group_[v.value] = root;
+  for (std::uint32_t tet_slot : visited_) {
+    std::uint32_t root = find(marks_[tet_slot].group);
+    for (VertId v : mesh.tet(TetId{marks_[tet_slot].key})) {
+      const std::uint32_t key = v.value | kVertexKey;
+      const std::uint32_t slot = probe(key);
+      if (marks_[slot].key != key) {
+        if (full()) return;  // the rest stay apart: the walk merges them
+        marks_used_.push_back(slot);
+        marks_[slot] = {key, root, kNone};
         continue;
       }
-      const std::uint32_t other = find(vertex_group_[v.value]);
+      const std::uint32_t other = find(marks_[slot].group);
       if (other != root) root = unite(root, other);
     }
   }
@@ -141,19 +165,12 @@ bool FragmentSearch::resolved() {
 
 void FragmentSearch::run(TetMesh& mesh, const PieceLabels& labels, std::span<const TetId> removed,
                          std::span<const TetId> created, std::uint32_t bound) {
-  if (++search_ == 0) {  // the stamps wrapped: start them again
-    std::fill(stamp_.begin(), stamp_.end(), 0u);
-    std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0u);
-    search_ = 1;
-  }
-  // A mesh grown past what prepare() made room for (the Cutter's note: prepare() again).
-  if (stamp_.size() < mesh.tet_capacity())
-    for (auto* marks : {&stamp_, &group_, &next_}) marks->resize(mesh.tet_capacity() + mesh.tet_capacity() / 2, 0);
-  if (vertex_stamp_.size() < mesh.vertex_capacity())
-    for (auto* marks : {&vertex_stamp_, &vertex_group_}) marks->resize(mesh.vertex_capacity() + mesh.vertex_capacity() / 2, 0);
+  for (std::uint32_t i : marks_used_) marks_[i].key = kNone;  // the last search's marks, only
+  marks_used_.clear();
   mesh_ = &mesh;
   labels_ = &labels;
   measuring_ = false;
+  overflow_ = false;
   groups_.clear();
   walking_.clear();
   finished_.clear();
@@ -175,13 +192,19 @@ void FragmentSearch::run(TetMesh& mesh, const PieceLabels& labels, std::span<con
     list_roots();
     if (!finished_.empty() && !measuring_) start_measuring(mesh);
     if (walking_.empty() || resolved()) break;
-    if (visited_.size() >= bound) {
+    if (visited_.size() >= bound || full()) {
       bounded_ = true;
       break;
     }
-    for (std::size_t i = 0, n = walking_.size(); i < n; ++i) {
+    for (std::size_t i = 0, n = walking_.size(); i < n && !overflow_; ++i) {
       const std::uint32_t g = walking_[i];
       if (find(g) == g && groups_[g].head != kNone) expand(mesh, g);
+    }
+    if (overflow_) {
+      bounded_ = true;
+      finished_.clear();
+      walking_.clear();
+      break;
     }
   }
   collect();
@@ -211,11 +234,11 @@ void FragmentSearch::collect() {
   if (pieces_.empty()) return;
   // The pieces' tets from the visit order, then each piece sorted by id.
   tets_.resize(total);
-  for (TetId t : visited_) {
-    const std::uint32_t piece = groups_[find(group_[t.value])].piece;
+  for (std::uint32_t slot : visited_) {
+    const std::uint32_t piece = groups_[find(marks_[slot].group)].piece;
     if (piece == kNone) continue;
     Piece& p = pieces_[piece];
-    tets_[p.first + p.count++] = t;
+    tets_[p.first + p.count++] = TetId{marks_[slot].key};
   }
   for (Piece& p : pieces_) std::sort(tets_.begin() + p.first, tets_.begin() + p.first + p.count);
 }

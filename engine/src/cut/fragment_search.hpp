@@ -15,8 +15,10 @@
 // For the same reason seeds that share a vertex start as one group: a cut that detaches nothing
 // usually has one group before any walk.
 //
-// Per-tet marks stamped with a search number (never cleared), groups in a union-find, each
-// group's queue threaded through the tets: nothing allocates once reserved. What only a
+// The marks (a visited tet's group and its successor in the group's queue; a seed vertex's group)
+// live in an open-addressing table sized by the bound, not by the mesh, cleared entry by entry
+// after each search; groups in a union-find, each group's queue threaded through the marks:
+// nothing allocates once reserved, and the memory does not grow with the mesh. What only a
 // detaching cut needs is computed only then: a group's label when two groups are left to tell
 // apart, volumes from the first group that finishes on (most cuts end with one group walking
 // and none finished, and measure nothing).
@@ -42,8 +44,8 @@ class FragmentSearch {
     TetId organ;  // a tet of the piece it came away from: the largest of its label
   };
 
-  // Room for tet ids up to `tets`, vertex ids up to `vertices` and a search of `bound` tets.
-  void reserve(std::uint32_t tets, std::uint32_t vertices, std::uint32_t bound);
+  // Room for a search of `bound` tets on a mesh of up to `tets` tet ids.
+  void reserve(std::uint32_t tets, std::uint32_t bound);
 
   // Finds the pieces the open transaction (from `start`) detached. `removed`: the tets live at
   // the start and gone now; `created`: the tets made and still live.
@@ -58,9 +60,15 @@ class FragmentSearch {
 
  private:
   static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  static constexpr std::uint32_t kVertexKey = 0x80000000u;  // a vertex's mark: its id with the top bit
+  struct Mark {
+    std::uint32_t key = kNone;  // a tet id, or a vertex id | kVertexKey
+    std::uint32_t group = 0;
+    std::uint32_t next = 0;     // the mark of a tet's successor in its group's queue
+  };
   struct Group {
     std::uint32_t parent;      // union-find
-    std::uint32_t head, tail;  // its queue of tets to expand, threaded through next_
+    std::uint32_t head, tail;  // its queue of tets to expand: marks, threaded through Mark::next
     std::uint32_t tets;        // visited
     std::uint32_t label;       // the piece label its seed carried, one for every tet it reaches (kNone: not asked yet)
     std::uint32_t round;       // the last list_roots() that listed it
@@ -70,13 +78,18 @@ class FragmentSearch {
     Vec3 moment;               // sum of volume x centroid
   };
 
+  // The entry of `key`, or the free one where it goes.
+  [[nodiscard]] std::uint32_t probe(std::uint32_t key) const;
+  // The table is half full: the search stops (bounded) rather than let it fill.
+  [[nodiscard]] bool full() const;
   void seed(TetId t);
   // Group g's piece label (a root's), found from its seed on first use.
   std::uint32_t label(std::uint32_t g);
   // From now on volumes are summed: those of the tets visited so far, then each tet as visited.
   void start_measuring(const TetMesh& mesh);
   void measure(const TetMesh& mesh, TetId t, Group& group);
-  void visit(const TetMesh& mesh, TetId t, std::uint32_t g);
+  // t joins group g, its mark at the free entry `slot`.
+  void visit(const TetMesh& mesh, TetId t, std::uint32_t g, std::uint32_t slot);
   std::uint32_t find(std::uint32_t g) {  // inline: every neighbour and shared vertex asks it
     while (groups_[g].parent != g) {
       groups_[g].parent = groups_[groups_[g].parent].parent;  // path halving
@@ -99,13 +112,13 @@ class FragmentSearch {
   TetMesh* mesh_ = nullptr;              // the search's, for label()
   const PieceLabels* labels_ = nullptr;
   bool measuring_ = false;
-  std::uint32_t search_ = 0;
-  std::vector<std::uint32_t> stamp_, group_, next_;  // by tet id
-  std::vector<std::uint32_t> vertex_stamp_, vertex_group_;  // by vertex id: the first seed group met there
+  bool overflow_ = false;  // the marks filled in the middle of a round
+  std::vector<Mark> marks_;                 // a power of two
+  std::vector<std::uint32_t> marks_used_;   // the entries in use, for clearing
   std::uint32_t listing_ = 0;
   std::vector<Group> groups_;
   std::vector<std::uint32_t> walking_, finished_;  // root groups with tets to expand, and without
-  std::vector<TetId> visited_;
+  std::vector<std::uint32_t> visited_;  // the visited tets' marks, in visit order
   std::vector<Piece> pieces_;
   std::vector<TetId> tets_;
   bool bounded_ = false;
