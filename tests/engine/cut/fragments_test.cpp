@@ -101,9 +101,15 @@ TEST(Fragments, ASlabCutThroughThePlateDetachesTheSmallerSide) {
   EXPECT_FALSE(r.fragment_search_bounded);
   EXPECT_EQ(cutter.pieces(), 2u);
   const Fragment& left = cutter.last_fragments().front();
-  // The side x < 0.75 as built (the cut's selection takes whole tets: the edge is within a cell).
+  // The two sides as built, x < 0.75 and x > 1.25 (the cut's selection takes whole tets: each
+  // edge of the slot is within a cell, 0.1, of the tool's surface).
   EXPECT_NEAR(left.volume, 0.75 * 2 * 0.2, 0.1 * 2 * 0.2);
   EXPECT_LT(left.centroid.x, 0.75);
+  double organ = 0.0;
+  for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i)
+    if (mesh.is_live(TetId{i})) organ += tet_volume(mesh, TetId{i});
+  organ -= left.volume;
+  EXPECT_NEAR(organ, 2.75 * 2 * 0.2, 0.1 * 2 * 0.2);
   EXPECT_NEAR(left.centroid.y, 1.0, 1e-2);
   EXPECT_TRUE(fragments_are_the_meshs(cutter, mesh));
   EXPECT_TRUE(mesh_is_valid(mesh));
