@@ -128,36 +128,42 @@ void sweep(SequenceSession& session, const Context& ctx, FuzzedDataProvider& inp
   const double length = consume_in(input, 0.5, 4.0) * ctx.params.tool_diameter;
   const Vec3 b = rounded(a + (length / norm(dir)) * dir, ctx.quantum);
   const std::uint32_t pieces = input.ConsumeIntegralInRange<std::uint32_t>(1, kSweepPieces);
+  // Version 6: the samples joined by capsules.
+  const bool swept = ctx.version >= kSequenceVersionSwept && input.ConsumeBool();
   const double actual = norm(b - a);
   double step = round_to(actual / pieces, ctx.quantum);
   if (!(step > 0)) step = ctx.quantum;
   while (actual > 0 && std::floor(actual / step) > static_cast<double>(ctx.limits.max_operation_size)) step *= 2;
-  const std::string text = "sweep " + format_point(a) + " " + format_point(b) + " " + format_number(step);
+  const std::string text =
+      "sweep " + format_point(a) + " " + format_point(b) + " " + format_number(step) + (swept ? " swept" : "");
   ScenarioRecorder& recorder = session.recorder();
   const std::uint32_t line = recorder.add(text);
   const auto steps = actual > 0 ? static_cast<std::uint64_t>(std::floor(actual / step)) : 0;
+  // The scenario runner's cuts (scenario::sweep_cuts): a ball at each sample, or swept, a
+  // capsule from each sample to the next (a sweep of one sample is one ball).
+  auto sample = [&](std::uint64_t k) { return steps == 0 ? a : a + (static_cast<double>(k) * step / actual) * (b - a); };
+  const std::uint64_t cuts = swept && steps > 0 ? steps : steps + 1;
+  auto cut_text = [&](std::uint64_t k) {
+    return swept && steps > 0 ? "cut " + format_point(sample(k)) + " " + format_point(sample(k + 1)) : "cut " + format_point(sample(k));
+  };
   std::vector<std::size_t> done;  // operation indices of the cuts so far
-  std::vector<Vec3> centres;
   bool expanded = false;
-  for (std::uint64_t k = 0; k <= steps; ++k) {
-    const Vec3 c = steps == 0 ? a : a + (static_cast<double>(k) * step / actual) * (b - a);
-    const std::string name = "sweep " + std::to_string(k + 1) + "/" + std::to_string(steps + 1);
-    const std::uint32_t cut_line = expanded ? recorder.add("cut " + format_point(c)) : line;
-    const OperationOutcome outcome = session.cut_at(c, name, cut_line);
+  for (std::uint64_t k = 0; k < cuts; ++k) {
+    const std::string name = "sweep " + std::to_string(k + 1) + "/" + std::to_string(cuts);
+    const std::uint32_t cut_line = expanded ? recorder.add(cut_text(k)) : line;
+    const OperationOutcome outcome = swept && steps > 0 ? session.cut_segment_at(sample(k), sample(k + 1), name, cut_line)
+                                                        : session.cut_at(sample(k), name, cut_line);
     if (outcome.rolled_back) {
       if (!expanded) {
         recorder.replace(line, "# " + text + "   (as single cuts: cut " + std::to_string(k + 1) + " rolled back)");
-        for (std::size_t j = 0; j < done.size(); ++j)
-          recorder.map_operation(done[j], recorder.add("cut " + format_point(centres[j])));
-        recorder.add("# cut " + format_point(c) + "   rolled back (" + outcome.reason + "): the mesh is as before");
+        for (std::size_t j = 0; j < done.size(); ++j) recorder.map_operation(done[j], recorder.add(cut_text(j)));
+        recorder.add("# " + cut_text(k) + "   rolled back (" + outcome.reason + "): the mesh is as before");
         expanded = true;
       } else {
-        recorder.replace(cut_line, "# cut " + format_point(c) + "   rolled back (" + outcome.reason +
-                                       "): the mesh is as before");
+        recorder.replace(cut_line, "# " + cut_text(k) + "   rolled back (" + outcome.reason + "): the mesh is as before");
       }
     }
     done.push_back(outcome.index);
-    centres.push_back(c);
   }
 }
 

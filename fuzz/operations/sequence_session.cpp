@@ -100,7 +100,14 @@ OperationOutcome SequenceSession::cut_at(const Vec3& c, const std::string& name,
   return after(cutter_.cut(c), &c);
 }
 
-OperationOutcome SequenceSession::after(const CutReport& report, const Vec3* cut_centre) {
+OperationOutcome SequenceSession::cut_segment_at(const Vec3& a, const Vec3& b, const std::string& name, std::uint32_t line) {
+  begin(name, line);
+  if (checked_.tracing()) checked_.describe("from " + format_point(a) + " to " + format_point(b));
+  before_ = mesh();
+  return after(cutter_.cut_segment(a, b), &a, &b);
+}
+
+OperationOutcome SequenceSession::after(const CutReport& report, const Vec3* cut_centre, const Vec3* cut_end) {
   const std::size_t index = checked_.operation_index();
   if (!report.ok) {
     // Atomic: the mesh must be bit-identical to before, so its canonical hash is too.
@@ -137,7 +144,8 @@ OperationOutcome SequenceSession::after(const CutReport& report, const Vec3* cut
   std::optional<invariants::ToolRule> tool;
   if (cut_centre)
     tool = invariants::ToolRule{.centre = *cut_centre, .radius = cutter_.params().tool_diameter / 2,
-                                .d_ref = cutter_.params().d_ref(), .left = cutter_.last_left_in_tool()};
+                                .d_ref = cutter_.params().d_ref(), .left = cutter_.last_left_in_tool(),
+                                .end = cut_end ? std::optional<Vec3>(*cut_end) : std::nullopt};
   checked_.end(cutter_.last_removed(), cutter_.last_created(), change, invariants::QualityRule::kNoDegradation,
                tool ? &*tool : nullptr, std::min(cutter_.params().min_dihedral_deg, cutter_.last_min_dihedral_held()),
                cutter_.last_moved());

@@ -68,6 +68,8 @@ class SequenceSession {
   OperationOutcome remove_at(const Vec3& p, const std::string& name, std::uint32_t line);
   // One cut centred at c, from line `line`.
   OperationOutcome cut_at(const Vec3& c, const std::string& name, std::uint32_t line);
+  // The capsule from a to b (Cutter::cut_segment), held to I10 as a capsule.
+  OperationOutcome cut_segment_at(const Vec3& a, const Vec3& b, const std::string& name, std::uint32_t line);
   // "check full" as its own operation (recorded).
   void full_check();
   // The full check (recorded as "check full") unless nothing changed since the last one: the
@@ -84,7 +86,7 @@ class SequenceSession {
   void restart(const BundledMesh& bundled, ScenarioRecorder& recorder);
   void begin(const std::string& name, std::uint32_t line);
   // The checks after a cut (with its centre: the tissue rule) or a removal request.
-  OperationOutcome after(const CutReport& report, const Vec3* cut_centre = nullptr);
+  OperationOutcome after(const CutReport& report, const Vec3* cut_centre = nullptr, const Vec3* cut_end = nullptr);
   void grow_volumes();
 
   ScenarioRecorder* recorder_ = nullptr;

@@ -38,13 +38,17 @@ namespace tetcut::fuzz {
 //      parameters include the removal order (direct-first, surface-first-by-id, revisit) and
 //      3.5's set (smallest, first); removal_sequence's strategy operation draws 3.5's set after
 //      the strategy. Versions 1-4 never drew them.
-// The fuzzers run versions 2 to 5 (is_current_sequence_version); 1 only replays.
+//   6  as 5, but cut_sequence's sweeps may be swept (`sweep A B STEP swept`: the samples joined
+//      by capsules, Cutter::cut_segment), drawn after the sweep's pieces. Versions 1-5 never
+//      drew it; removal_sequence reads 6 as 5.
+// The fuzzers run versions 2 to 6 (is_current_sequence_version); 1 only replays.
 inline constexpr std::uint8_t kSequenceVersionBundled = 1;
 inline constexpr std::uint8_t kSequenceVersionSmall = 2;
 inline constexpr std::uint8_t kSequenceVersionWideParams = 3;
 inline constexpr std::uint8_t kSequenceVersionAllStrategies = 4;
 inline constexpr std::uint8_t kSequenceVersionReadings = 5;
-inline constexpr std::uint8_t kSequenceVersion = kSequenceVersionReadings;  // the newest
+inline constexpr std::uint8_t kSequenceVersionSwept = 6;
+inline constexpr std::uint8_t kSequenceVersion = kSequenceVersionSwept;  // the newest
 inline bool is_sequence_version(std::uint8_t v) { return v >= kSequenceVersionBundled && v <= kSequenceVersion; }
 inline bool is_current_sequence_version(std::uint8_t v) { return v >= kSequenceVersionSmall && v <= kSequenceVersion; }
 

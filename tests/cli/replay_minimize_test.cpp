@@ -146,9 +146,9 @@ TEST_F(ReplayMinimize, ReplayRefusesBadUsageAndUnreadableInputWithExitTwo) {
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_NE(unknown.err.find("removal_sequence"), std::string::npos) << "lists the replayable targets: " << unknown.err;
   EXPECT_EQ(tetcut({"replay", path("missing"), "--target", "cut_sequence"}).exit_code, 2);
-  const ProcessResult version = tetcut({"replay", write_bytes("v6", {0x06, 0x10, 0x20}), "--target", "cut_sequence"});
+  const ProcessResult version = tetcut({"replay", write_bytes("v7", {0x07, 0x10, 0x20}), "--target", "cut_sequence"});
   EXPECT_EQ(version.exit_code, 2);
-  EXPECT_NE(version.err.find("input version 1 to 5"), std::string::npos) << version.err;
+  EXPECT_NE(version.err.find("input version 1 to 6"), std::string::npos) << version.err;
   EXPECT_EQ(tetcut({"replay", write("empty", ""), "--target", "removal_sequence"}).exit_code, 2);
 }
 

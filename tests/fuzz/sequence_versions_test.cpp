@@ -23,7 +23,9 @@ using tetcut::fuzz::SequenceOptions;
 using tetcut::fuzz::SequenceResult;
 
 struct Tally {
-  std::size_t accepted = 0, wide = 0, readings = 0, findings = 0;
+  std::size_t accepted = 0, wide = 0, readings = 0, findings = 0, swept = 0;
+  std::size_t findings_swept = 0;  // in a scenario that swept by capsules
+  std::string first_finding_swept;
   std::size_t findings_with_readings = 0;  // in a scenario that set an order or a neighbour_set
   std::string first_finding, first_finding_with_readings;
 };
@@ -42,12 +44,15 @@ Tally run_random_inputs(const tetcut::fuzz::SequenceTarget& target, std::uint8_t
     const SequenceResult r = target.run(input.data(), input.size(), options);
     tally.accepted += r.accepted ? 1 : 0;
     if (r.scenario.find("\nstrategy wide\n") != std::string::npos) ++tally.wide;
+    const bool swept = r.scenario.find(" swept") != std::string::npos;
+    if (swept) ++tally.swept;
     const bool reading =
         r.scenario.find("\norder ") != std::string::npos || r.scenario.find("\nneighbour_set ") != std::string::npos;
     if (reading) ++tally.readings;
     if (r.finding) {
       if (tally.findings++ == 0) tally.first_finding = r.scenario;
       if (reading && tally.findings_with_readings++ == 0) tally.first_finding_with_readings = r.scenario;
+      if (swept && tally.findings_swept++ == 0) tally.first_finding_swept = r.scenario;
     }
   }
   return tally;
@@ -84,6 +89,23 @@ TEST_P(SequenceVersions, Version5DrawsThePapersReadingsAndVersion4DecodesAsFound
   if (v5.findings > v5.findings_with_readings)
     std::printf("[%s] %zu finding(s) of the default readings under version 5's decoding; first:\n%s\n",
                 std::string(name).c_str(), v5.findings - v5.findings_with_readings, v5.first_finding.c_str());
+}
+
+// Version 6: cut_sequence's sweeps may be swept (capsules), and no finding comes of one; under 5
+// no sweep is.
+TEST_P(SequenceVersions, Version6SweepsByCapsulesAndVersion5DecodesAsFound) {
+  const std::string_view name = GetParam().name;
+  constexpr std::size_t kInputs = 400;
+  const Tally v5 = run_random_inputs(GetParam(), 5, kInputs);
+  const Tally v6 = run_random_inputs(GetParam(), 6, kInputs);
+  EXPECT_EQ(v6.accepted, kInputs) << name;
+  EXPECT_EQ(v5.swept, 0u) << name << ": a version 5 input swept by capsules, so it no longer decodes as found";
+  if (name == "cut_sequence") {
+    EXPECT_GT(v6.swept, 0u) << "no version 6 input of " << kInputs << " swept by capsules";
+  } else {
+    EXPECT_EQ(v6.swept, 0u) << name;
+  }
+  EXPECT_EQ(v6.findings_swept, 0u) << name << ": first finding:\n" << v6.first_finding_swept;
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, SequenceVersions, testing::ValuesIn(tetcut::fuzz::sequence_targets()), sequence_target_name);
