@@ -121,6 +121,23 @@ class Changes:
     @property
     def moved_vertex_before(self) -> npt.NDArray[np.float64]: ...
 
+class Fragment:
+    """A piece a cut detached from the organ, copied when the cut returned."""
+
+    @property
+    def tets(self) -> npt.NDArray[np.int64]:
+        """#P: the piece's tets (engine ids, sorted), a new array on each access."""
+    @property
+    def volume(self) -> float: ...
+    @property
+    def centroid(self) -> list[float]: ...
+    @property
+    def removed(self) -> bool:
+        """Removed as debris (below the Cutter's debris_volume)."""
+    @property
+    def organ(self) -> int:
+        """A live tet of the piece it came away from."""
+
 class CutReport:
     """What one cut did; `changes` builds numpy arrays on first access."""
 
@@ -216,6 +233,18 @@ class CutReport:
     @property
     def tets_removed_by_improvement(self) -> int: ...
     @property
+    def fragments(self) -> int: ...
+    @property
+    def fragment_tets_visited(self) -> int: ...
+    @property
+    def fragment_search_bounded(self) -> bool: ...
+    @property
+    def debris_pieces_removed(self) -> int: ...
+    @property
+    def debris_tets_removed(self) -> int: ...
+    @property
+    def debris_volume_removed(self) -> float: ...
+    @property
     def d_ref(self) -> float: ...
     @property
     def refinement(self) -> str: ...
@@ -228,6 +257,9 @@ class CutReport:
     def time_us(self) -> dict[str, float]: ...
     @property
     def changes(self) -> Changes: ...
+    @property
+    def detached(self) -> list[Fragment]:
+        """The pieces this cut detached (len == fragments), those removed as debris included."""
 
 class Cutter:
     """The cautery tool on a mesh: indexes it once, then cuts in O(tool). Keeps the mesh alive."""
@@ -250,6 +282,8 @@ class Cutter:
         improve: bool = True,
         quality_floor: float = 0.1,
         min_dihedral_deg: float = 15.0,
+        debris_volume: float = 0.0,
+        fragment_search_bound: int = 65536,
         keep_labels: Sequence[int] = (),
     ) -> None: ...
     def cut(self, centre: _Point) -> CutReport:
@@ -267,6 +301,11 @@ class Cutter:
     def strategy(self) -> str: ...
     @property
     def mesh(self) -> Mesh: ...
+    def last_fragments(self) -> list[Fragment]:
+        """The pieces the last cut detached (report.detached of that cut)."""
+    @property
+    def pieces(self) -> int:
+        """The mesh's face-connected pieces, kept by every cut without a scan."""
 
 class Violation:
     """One violated invariant."""

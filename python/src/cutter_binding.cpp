@@ -1,4 +1,5 @@
-// tetcut.Cutter, its CutReport and report.changes; tetcut.stats.
+// tetcut.Cutter, its CutReport, report.changes and the pieces a cut detached (tetcut.Fragment);
+// tetcut.stats.
 //
 // A cut releases the GIL for as long as the engine works (the mesh is held in use meanwhile,
 // mesh_handle.hpp). Its net ChangeLog is always recorded, as the C++ README sweep records it,
@@ -18,6 +19,7 @@
 #include <type_traits>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,8 +44,27 @@ struct Changes {
   py::array_t<double> moved_vertex_weights, moved_vertex_before;
 };
 
+// A piece a cut detached (the engine's Fragment), copied when the cut returns: the engine's views
+// are valid only until its next cut. Copying costs nothing for a cut that detached nothing.
+struct PyFragment {
+  std::vector<TetId> tets;  // sorted by id (dead when removed as debris)
+  double volume = 0.0;
+  Vec3 centroid{};
+  bool removed = false;
+  TetId organ;
+};
+
+std::vector<PyFragment> copy_of(std::span<const Fragment> fragments) {
+  std::vector<PyFragment> out;
+  out.reserve(fragments.size());
+  for (const Fragment& f : fragments)
+    out.push_back({std::vector<TetId>(f.tets.begin(), f.tets.end()), f.volume, f.centroid, f.removed, f.organ});
+  return out;
+}
+
 struct Report {
   CutReport report;
+  std::vector<PyFragment> fragments;  // Cutter::last_fragments() when the cut returned
   double wall_us = 0;  // the engine call alone, timed by the binding: Python's overhead is the rest
   ChangeLog log;
   Vec3 centre;               // the ball's centre, or the capsule's first end
@@ -182,6 +203,7 @@ class PyCutter {
       engine_cut(r);
     }
     if (r.report.ok) seen_version_ = ++handle_->version;
+    last_fragments_ = r.fragments;
     return r;
   }
 
@@ -212,6 +234,7 @@ class PyCutter {
       }
     }
     seen_version_ = ++handle_->version;
+    last_fragments_ = reports.empty() ? std::vector<PyFragment>{} : reports.back().fragments;
     return reports;
   }
 
@@ -222,6 +245,14 @@ class PyCutter {
   }
   [[nodiscard]] RemovalReport removal_report() const { return cutter_->removal_report(); }
   [[nodiscard]] const MeshPtr& mesh() const { return handle_; }
+  // The pieces the last cut detached, as copied when it returned (Cutter.last_fragments()).
+  [[nodiscard]] const std::vector<PyFragment>& last_fragments() const { return last_fragments_; }
+  // The mesh's face-connected pieces as the engine keeps them (Cutter::pieces()): as of this
+  // Cutter's last cut or indexing (another Cutter's cuts count from this one's next cut).
+  [[nodiscard]] std::uint32_t pieces() const {
+    MeshUse use(*handle_);  // not while this Cutter's cut in another thread updates it
+    return cutter_->pieces();
+  }
 
  private:
   // The engine's cut of r's tool (the ball at r.centre, or the capsule to r.end) into r, timed
@@ -231,6 +262,7 @@ class PyCutter {
     r.report = r.end ? cutter_->cut_segment(r.centre, *r.end, &r.log) : cutter_->cut(r.centre, &r.log);
     r.wall_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
     if (r.report.ok) handle_->labels.apply(handle_->mesh, r.log);
+    if (r.report.fragments > 0) r.fragments = copy_of(cutter_->last_fragments());
   }
 
   // Another Cutter cut the mesh, or it was compacted, since this one indexed it: index it again.
@@ -282,6 +314,7 @@ class PyCutter {
   std::vector<std::uint32_t> keep_labels_;
   std::optional<Cutter> cutter_;
   std::uint64_t seen_version_ = 0;
+  std::vector<PyFragment> last_fragments_;
 };
 
 // Shared: methods take the holder, which pybind11 refuses for an instance __init__ never made.
@@ -498,7 +531,8 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   if (!mesh) throw py::type_error(where + ": mesh: expected a tetcut.Mesh, got None");
   const Keywords k(where, kwargs,
                    {"mesh", "tool_diameter", "strategy", "split", "order", "neighbour_set", "d_ref_factor", "p", "search_depth",
-                    "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "min_dihedral_deg", "refinement", "keep_labels"});
+                    "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "min_dihedral_deg", "refinement",
+                    "debris_volume", "fragment_search_bound", "keep_labels"});
   CutParams params;
   auto set = [&](const char* name, auto CutParams::*field, const char* expected) {
     using T = std::remove_reference_t<decltype(params.*field)>;
@@ -519,9 +553,11 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   set("p", &CutParams::p, "a real number");
   set("quality_floor", &CutParams::quality_floor, "a real number");
   set("min_dihedral_deg", &CutParams::min_dihedral_deg, "a real number");
+  set("debris_volume", &CutParams::debris_volume, "a real number");
   set("search_depth", &CutParams::search_depth, "a non-negative integer");
   set("max_refine_iterations", &CutParams::max_refine_iterations, "a non-negative integer");
   set("max_tets_created", &CutParams::max_tets_created, "a non-negative integer");
+  set("fragment_search_bound", &CutParams::fragment_search_bound, "a non-negative integer");
   set("improve", &CutParams::improve, "True or False");
   if (const auto s = k.get<std::string>("strategy", "a str")) {
     const auto v = parse_removal_strategy(*s);
@@ -566,7 +602,9 @@ std::string cutter_init_doc() {
       ", p=" + real(d.p) + ", search_depth=" + std::to_string(d.search_depth) +
       ", max_refine_iterations=" + std::to_string(d.max_refine_iterations) +
       ", max_tets_created=" + std::to_string(d.max_tets_created) + ", improve=" + (d.improve ? "True" : "False") +
-      ", quality_floor=" + real(d.quality_floor) + ", min_dihedral_deg=" + real(d.min_dihedral_deg) + ", keep_labels=()";
+      ", quality_floor=" + real(d.quality_floor) + ", min_dihedral_deg=" + real(d.min_dihedral_deg) +
+      ", debris_volume=" + real(d.debris_volume) + ", fragment_search_bound=" + std::to_string(d.fragment_search_bound) +
+      ", keep_labels=()";
   return signature_doc("__init__", parameters, R"doc(The cautery tool on `mesh`: indexes it (O(#T)), then cuts in O(tool).
 
 tool_diameter (required, mesh units) and the other CutParams fields (engine/include/tetcut/cut.hpp)
@@ -575,8 +613,11 @@ direct-first|paper, refinement auto|paper|graded (auto: graded for a tool fine f
 the paper's loop), d_ref_factor (D_ref = d_ref_factor x tool_diameter, paper 3.2), p (shell edge
 ratio, 3.2), search_depth (3.5), max_refine_iterations, max_tets_created, improve (the improvement
 pass), quality_floor (its radius-ratio floor F), min_dihedral_deg (its dihedral-angle floor theta,
-degrees: every created tet reaches min(F, its host's) and min(theta, its host's)). keep_labels: labels (mesh.labels)
-whose tets no cut takes (Cutter::set_uncuttable, the paper's Fig. 7), each some tet's label.
+degrees: every created tet reaches min(F, its host's) and min(theta, its host's)), debris_volume
+(mesh units cubed: the pieces a cut detaches below it are removed in that cut, as debris; 0: only
+reported), fragment_search_bound (the tets the search for detached pieces visits at most).
+keep_labels: labels (mesh.labels) whose tets no cut takes (Cutter::set_uncuttable, the paper's
+Fig. 7), each some tet's label.
 TypeError naming an unknown keyword or a value of the wrong type; ValueError naming one out of
 range or a label no tet has.)doc");
 }
@@ -629,6 +670,38 @@ report.changes, and the same arrays on every access.)doc");
       .def_readonly("moved_vertex_weights", &Changes::moved_vertex_weights, "#M by 4 float64: their weights (sum 1).")
       .def_readonly("moved_vertex_before", &Changes::moved_vertex_before, "#M by 3 float64: where it was before the cut.")
       .def("__repr__", &changes_repr);
+}
+
+std::string fragment_repr(const PyFragment& f) {
+  char text[160];
+  std::snprintf(text, sizeof text, "<tetcut.Fragment %zu tets, volume %.6g, centroid (%.6g, %.6g, %.6g)%s>",
+                f.tets.size(), f.volume, f.centroid.x, f.centroid.y, f.centroid.z, f.removed ? ", removed as debris" : "");
+  return text;
+}
+
+// tetcut.Fragment: a piece a cut detached from the organ (the engine's Fragment, copied).
+void bind_fragment(py::module_& m) {
+  py::class_<PyFragment> fragment(m, "Fragment", R"doc(A face-connected piece a cut detached from the organ (the engine's Fragment).
+
+Of the pieces a cut's new surface bounds that were one piece before it, the largest by volume is
+the organ and is not listed; the others are, each once (report.detached, Cutter.last_fragments()).
+Copied when the cut returned: its tets are the engine ids of that moment (mesh.tet_ids names them
+until a later cut or compaction changes them). A piece removed as debris (Cutter debris_volume)
+has removed True and its tets are gone from the mesh.)doc");
+  made_by_the_module_only(fragment);
+  fragment
+      .def_property_readonly("tets", [](const PyFragment& f) { return id_array(f.tets); },
+                             "#P int64: the piece's tets (engine ids, sorted), a new array on each access.")
+      .def_readonly("volume", &PyFragment::volume, "The piece's volume (mesh units cubed).")
+      .def_property_readonly(
+          "centroid", [](const PyFragment& f) { return std::array<double, 3>{f.centroid.x, f.centroid.y, f.centroid.z}; },
+          "[x, y, z]: the piece's volume-weighted centroid (mesh units).")
+      .def_readonly("removed", &PyFragment::removed,
+                    "True when the cut removed it as debris (below the Cutter's debris_volume, no uncuttable tet).")
+      .def_property_readonly(
+          "organ", [](const PyFragment& f) { return f.organ.valid() ? static_cast<std::int64_t>(f.organ.value) : -1; },
+          "A live tet (engine id) of the piece it came away from, the organ.")
+      .def("__repr__", &fragment_repr);
 }
 
 // tetcut.CutReport: the engine's CutReport field by field, the times, the changes.
@@ -731,6 +804,20 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
                "Edge splits the improvement pass made and kept (insertion at an edge's midpoint).");
   report_field(report, "tets_removed_by_improvement", &CutReport::tets_removed_by_improvement,
                "Slivers the improvement pass let go with the tissue (apart from tets_removed).");
+  report_field(report, "fragments", &CutReport::fragments,
+               "Pieces the cut detached from the organ (the largest piece its new surface bounds), those removed as "
+               "debris included: listed by report.detached.");
+  report_field(report, "fragment_tets_visited", &CutReport::fragment_tets_visited,
+               "Tets the search for detached pieces visited (a walk from the cut's new surface that stops once every "
+               "piece but the largest is walked).");
+  report_field(report, "fragment_search_bounded", &CutReport::fragment_search_bounded,
+               "True when that search stopped at the Cutter's fragment_search_bound with pieces it could not tell "
+               "apart, which are not reported (Cutter.pieces may then count short).");
+  report_field(report, "debris_pieces_removed", &CutReport::debris_pieces_removed,
+               "Detached pieces the cut removed as debris (below the Cutter's debris_volume): not tissue, so not in "
+               "tets_removed or volume_removed.");
+  report_field(report, "debris_tets_removed", &CutReport::debris_tets_removed, "The tets of those pieces.");
+  report_field(report, "debris_volume_removed", &CutReport::debris_volume_removed, "Their volume (mesh units cubed).");
   report_field(report, "d_ref", &CutReport::d_ref,
                "The D_ref the cut was refined and judged at: d_ref_factor x tool_diameter (paper 3.2).");
   report.def_property_readonly("refinement", [](const Report& r) { return std::string(to_string(r.report.refinement)); },
@@ -750,10 +837,15 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
         d["remove"] = t.remove_us;
         d["improve"] = t.improve_us;
         d["finish"] = t.finish_us;
+        d["pieces"] = t.pieces_us;
         d["total"] = t.total_us;
         return d;
       }, "{stage: microseconds} for locate, refine, select, remove, improve, finish (the tissue audit, the commit "
-         "and the change log) and total (the whole call): the engine's CutReport.time.")
+         "and the change log), pieces (the search for detached pieces and the debris removed) and total (the whole "
+         "call): the engine's CutReport.time.")
+      .def_property_readonly("detached", [](const Report& r) { return r.fragments; },
+                             "list of Fragment: the pieces this cut detached (len == fragments), copied when it "
+                             "returned; those removed as debris have removed True.")
       .def_property_readonly("changes", [](Report& r) -> const Changes& {
         if (!r.changes) r.changes = changes_of(r.log);
         return *r.changes;
@@ -775,6 +867,7 @@ removes every tet (a tool larger than the organ) is ok: the mesh is then empty (
 
 void bind_cutter(py::module_& m) {
   bind_changes(m);
+  bind_fragment(m);
   bind_report(m);
 
   py::class_<PyCutter, CutterPtr> cutter(m, "Cutter", R"doc(The cautery tool on a mesh (the engine's Cutter).
@@ -806,6 +899,16 @@ the mesh alive; several Cutters may share one mesh (each re-indexes when another
       .def_property_readonly("strategy", [](const CutterPtr& c) { return std::string(to_string(c->params().strategy)); },
                              "The removal strategy: basic, neighbours, combined or wide (paper 3.4-3.7).")
       .def_property_readonly("mesh", [](const CutterPtr& c) { return c->mesh(); }, "The Mesh this Cutter cuts.")
+      .def("last_fragments", [](const CutterPtr& c) { return c->last_fragments(); },
+           signature_doc("last_fragments", "self, /",
+                         "The pieces this Cutter's last cut detached (a sweep's: its last cut's), as a list of "
+                         "Fragment copied when the cut returned: report.detached of that cut.")
+               .c_str())
+      .def_property_readonly("pieces", [](const CutterPtr& c) { return c->pieces(); },
+                             "The mesh's face-connected pieces, kept by every cut without a scan (the engine's "
+                             "Cutter::pieces()): 1 for an organ in one piece, 2 once a cut detached a piece, and "
+                             "back to 1 when that piece went as debris. As of this Cutter's last cut or indexing; "
+                             "exact unless a cut's search for pieces was bounded (report.fragment_search_bounded).")
       .def("__repr__", [](const CutterPtr& c) {
         const CutParams& p = c->params();
         return "<tetcut.Cutter tool_diameter=" + py::repr(py::float_(p.tool_diameter)).cast<std::string>() +

@@ -19,14 +19,15 @@ README_SWEEP = dict(start=(95.0, 40.0, 100.0), end=(95.0, 180.0, 100.0), step=4.
 README_DIAMETER = 8.0
 
 
-def box_arrays(n=3, size=1.0):
-    """A cube of n^3 cells, each split into the 6 tets around its main diagonal (Kuhn), which
-    meet conformally across cells; every tet positively oriented."""
-    axis = np.linspace(0.0, size, n + 1)
-    points = np.array([(x, y, z) for x in axis for y in axis for z in axis])
-    index = lambda i, j, k: (i * (n + 1) + j) * (n + 1) + k
+def grid_arrays(cells, origin, size):
+    """A box of cells[0] x cells[1] x cells[2] cells from `origin` spanning `size`, split as
+    box_arrays splits its cells."""
+    nx, ny, nz = cells
+    axes = [np.linspace(origin[a], origin[a] + size[a], cells[a] + 1) for a in range(3)]
+    points = np.array([(x, y, z) for x in axes[0] for y in axes[1] for z in axes[2]])
+    index = lambda i, j, k: (i * (ny + 1) + j) * (nz + 1) + k
     tets = []
-    for i, j, k in itertools.product(range(n), repeat=3):
+    for i, j, k in itertools.product(range(nx), range(ny), range(nz)):
         for perm in itertools.permutations(range(3)):
             corner = [i, j, k]
             path = [index(*corner)]
@@ -40,6 +41,22 @@ def box_arrays(n=3, size=1.0):
     flip = volume < 0
     tets[flip, 0], tets[flip, 1] = tets[flip, 1].copy(), tets[flip, 0].copy()
     return points, tets
+
+
+def box_arrays(n=3, size=1.0):
+    """A cube of n^3 cells, each split into the 6 tets around its main diagonal (Kuhn), which
+    meet conformally across cells; every tet positively oriented."""
+    return grid_arrays((n, n, n), (0.0, 0.0, 0.0), (size, size, size))
+
+
+def plate_arrays():
+    """The plate of the engine's fragments test (tests/engine/cut/fragments_test.cpp), coarser:
+    4 x 2 x 0.2 from (0, 0, -0.1), in 16 x 8 x 2 cells (1,536 tets). A capsule of diameter 0.5 from
+    (1, -0.3, 0) to (1, 2.3, 0) (PLATE_CUT) cuts it through, detaching the side x < 0.75."""
+    return grid_arrays((16, 8, 2), (0.0, 0.0, -0.1), (4.0, 2.0, 0.2))
+
+
+PLATE_CUT = dict(a=(1.0, -0.3, 0.0), b=(1.0, 2.3, 0.0))
 
 
 @pytest.fixture

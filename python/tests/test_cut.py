@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import tetcut
-from conftest import CORPUS, README_DIAMETER, README_SWEEP, box_arrays
+from conftest import CORPUS, PLATE_CUT, README_DIAMETER, README_SWEEP, box_arrays, plate_arrays
 
 
 def test_the_readme_sweep_gives_the_hash_tetcut_cut_prints(cli, tmp_path):
@@ -446,3 +446,120 @@ def test_a_swept_sweep_joins_its_centres_by_capsules_as_tetcut_cut_swept(cli, tm
     # A sweep of one centre is one ball, swept or not.
     one = tetcut.Cutter(tetcut.read(path), tool_diameter=0.2).sweep(start, start, step, swept=True)
     assert len(one) == 1 and one[0].end is None
+
+
+def face_connected_pieces(mesh):
+    """The mesh's face-connected pieces recounted from its arrays: a union-find over the tets
+    that share a face, each piece as the set of its tets' engine ids."""
+    tets = mesh.tets
+    parent = list(range(len(tets)))
+
+    def root(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    first_with = {}
+    for t, corners in enumerate(tets):
+        for skip in range(4):
+            face = tuple(sorted(np.delete(corners, skip)))
+            other = first_with.setdefault(face, t)
+            if other != t:
+                parent[root(t)] = root(other)
+    pieces = {}
+    for t, tet_id in enumerate(mesh.tet_ids):
+        pieces.setdefault(root(t), set()).add(int(tet_id))
+    return list(pieces.values())
+
+
+def volumes_and_centroids(mesh, tet_ids):
+    """Each tet's volume and centroid, recounted from the mesh's arrays."""
+    rows = np.searchsorted(mesh.tet_ids, tet_ids)  # tet_ids are in id order
+    assert (mesh.tet_ids[rows] == tet_ids).all()
+    p = mesh.points[mesh.tets[rows]]  # #P by 4 by 3
+    volume = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0]) / 6
+    return volume, p.mean(axis=1)
+
+
+def test_a_cut_through_a_plate_detaches_the_piece_numpy_counts_on_the_mesh():
+    mesh = tetcut.Mesh(*plate_arrays())
+    cutter = tetcut.Cutter(mesh, tool_diameter=0.5)
+    assert cutter.pieces == 1 and cutter.last_fragments() == []
+    report = cutter.cut_segment(**PLATE_CUT)
+    assert report.ok and report.fragments == 1 and not report.fragment_search_bounded
+    assert report.fragment_tets_visited >= len(report.detached[0].tets)
+    assert (report.debris_pieces_removed, report.debris_tets_removed, report.debris_volume_removed) == (0, 0, 0.0)
+    assert cutter.pieces == 2
+    [piece] = report.detached
+    assert not piece.removed and repr(piece).startswith(f"<tetcut.Fragment {len(piece.tets)} tets, volume ")
+    # The mesh's own pieces, recounted: the smaller one is the piece, the organ tet is in the other.
+    pieces = sorted(face_connected_pieces(mesh), key=len)
+    assert len(pieces) == 2
+    assert set(piece.tets.tolist()) == pieces[0] and piece.organ in pieces[1]
+    assert piece.tets.dtype == np.int64 and (np.diff(piece.tets) > 0).all()  # sorted ids
+    volume, centroids = volumes_and_centroids(mesh, piece.tets)
+    assert piece.volume == pytest.approx(volume.sum(), rel=1e-12)
+    np.testing.assert_allclose(piece.centroid, (volume[:, None] * centroids).sum(axis=0) / volume.sum(), atol=1e-12)
+    # The side x < 0.75 as built (the tool's radius around x = 1), to within the cells the cut took.
+    assert piece.volume == pytest.approx(0.75 * 2 * 0.2, rel=0.25) and piece.centroid[0] < 0.75
+    # Copies: the Cutter's list is the report's, a new array on each access, and the report keeps its
+    # pieces after the next cut, which detaches nothing.
+    assert [f.tets.tolist() for f in cutter.last_fragments()] == [piece.tets.tolist()]
+    piece.tets[:] = -1
+    assert (report.detached[0].tets >= 0).all()
+    after = cutter.cut((3.0, 1.0, 0.0))
+    assert after.ok and after.tets_removed > 0 and after.fragments == 0 and after.detached == []
+    assert cutter.last_fragments() == [] and cutter.pieces == 2
+    assert len(report.detached) == 1 and tetcut.check(mesh) == []
+
+
+def test_debris_volume_removes_the_detached_piece_in_the_same_cut_apart_from_the_tissue():
+    points, tets = plate_arrays()
+    mesh = tetcut.Mesh(points, tets)
+    before = mesh.volume()
+    cutter = tetcut.Cutter(mesh, tool_diameter=0.5, debris_volume=0.5)
+    report = cutter.cut_segment(**PLATE_CUT)
+    assert report.ok and report.fragments == 1 and report.debris_pieces_removed == 1
+    [piece] = report.detached
+    assert piece.removed and repr(piece).endswith(", removed as debris>")
+    assert report.debris_tets_removed == len(piece.tets)
+    assert report.debris_volume_removed == pytest.approx(piece.volume)
+    assert cutter.pieces == 1 and len(face_connected_pieces(mesh)) == 1
+    # Gone, in the cut's change log, and not counted as tissue: the same cut without debris removes
+    # the same tissue.
+    assert not set(piece.tets.tolist()) & set(mesh.tet_ids.tolist())
+    assert set(piece.tets.tolist()) <= set(report.changes.removed.tolist())
+    assert mesh.volume() == pytest.approx(before - report.volume_removed - report.debris_volume_removed, rel=1e-12)
+    kept = tetcut.Cutter(tetcut.Mesh(points, tets), tool_diameter=0.5).cut_segment(**PLATE_CUT)
+    assert (kept.tets_removed, kept.volume_removed) == (report.tets_removed, report.volume_removed)
+    assert kept.debris_pieces_removed == 0 and kept.detached[0].volume == pytest.approx(piece.volume)
+    assert tetcut.check(mesh) == []
+    # A piece above the volume stays, reported.
+    large = tetcut.Cutter(tetcut.Mesh(points, tets), tool_diameter=0.5, debris_volume=0.1).cut_segment(**PLATE_CUT)
+    assert large.fragments == 1 and large.debris_pieces_removed == 0 and not large.detached[0].removed
+
+
+def test_the_pieces_parameters_are_keywords_checked_as_the_others_and_a_sweep_keeps_each_cuts_pieces():
+    points, tets = plate_arrays()
+    mesh = tetcut.Mesh(points, tets)
+    with pytest.raises(ValueError, match="debris_volume=-1.0: .*debris volume"):
+        tetcut.Cutter(mesh, tool_diameter=0.5, debris_volume=-1.0)
+    with pytest.raises(ValueError, match="fragment_search_bound=0: .*fragment search bound"):
+        tetcut.Cutter(mesh, tool_diameter=0.5, fragment_search_bound=0)
+    with pytest.raises(TypeError, match="debris_volume: expected a real number"):
+        tetcut.Cutter(mesh, tool_diameter=0.5, debris_volume="small")
+    # A bound below the smaller side: the search stops, reports no piece, and the count stays short.
+    bounded = tetcut.Cutter(mesh.copy(), tool_diameter=0.5, fragment_search_bound=10)
+    r = bounded.cut_segment(**PLATE_CUT)
+    assert r.ok and r.fragment_search_bounded and r.fragments == 0 and bounded.pieces == 1
+    # A swept sweep across the plate: the cut that completes the separation reports the piece, the
+    # others none, each report its own (copied when its cut returned).
+    cutter = tetcut.Cutter(mesh, tool_diameter=0.5, debris_volume=0.5)
+    reports = cutter.sweep(PLATE_CUT["a"], PLATE_CUT["b"], 0.65, swept=True)
+    assert len(reports) == 4 and all(r.ok for r in reports)
+    assert [r.fragments for r in reports].count(1) == 1 and sum(r.fragments for r in reports) == 1
+    detaching = next(r for r in reports if r.fragments)
+    assert detaching.debris_pieces_removed == 1 and detaching.detached[0].removed
+    assert [len(f.tets) for f in cutter.last_fragments()] == [len(f.tets) for f in reports[-1].detached]
+    assert cutter.pieces == 1 and tetcut.check(mesh) == []

@@ -8,7 +8,7 @@ import re
 import pytest
 
 import tetcut
-from conftest import CORPUS, SOURCE, box_arrays
+from conftest import CORPUS, PLATE_CUT, SOURCE, box_arrays, plate_arrays
 
 # What a name gives that pybind11 fills in by itself: no text, or its own signature line.
 PYBIND_SIGNATURE = re.compile(r"^\w*\(.*\) -> ")
@@ -34,14 +34,16 @@ def public_members():
 
 
 MEMBERS = list(public_members())
-MADE_BY_THE_MODULE = {"CutReport", "Changes", "Violation"}  # no constructor: __init__ refuses
+MADE_BY_THE_MODULE = {"CutReport", "Changes", "Fragment", "Violation"}  # no constructor: __init__ refuses
 
 
 def test_the_module_has_what_the_docs_list():
     names = {name for name, _, _ in MEMBERS}
     for expected in ["tetcut.read", "tetcut.Mesh.copy", "tetcut.Cutter.sweep", "tetcut.Cutter.cut_segment",
                      "tetcut.CutReport.end", "tetcut.CutReport.left_in_tool",
-                     "tetcut.CutReport.kept_pieces_requested", "tetcut.Changes.removed", "tetcut.check"]:
+                     "tetcut.CutReport.kept_pieces_requested", "tetcut.Changes.removed", "tetcut.check",
+                     "tetcut.CutReport.fragments", "tetcut.CutReport.detached", "tetcut.Fragment.tets",
+                     "tetcut.Cutter.last_fragments", "tetcut.Cutter.pieces"]:
         assert expected in names
     assert len(MEMBERS) > 80  # every class, method and field, not a few
 
@@ -70,6 +72,7 @@ def test_class_signatures_name_their_arguments():
     assert list(cutter)[:2] == ["mesh", "tool_diameter"]
     assert cutter["tool_diameter"].default is inspect.Parameter.empty  # required
     assert cutter["strategy"].default == "combined" and cutter["keep_labels"].default == ()
+    assert cutter["debris_volume"].default == 0.0 and cutter["fragment_search_bound"].default == 65536
     assert str(inspect.signature(tetcut.Cutter.sweep)) in ("(self, /, start, end, step, swept=False)",
                                                            "(start, end, step, swept=False)")
     mesh = tetcut.read(str(CORPUS / "cylinder.msh"))
@@ -84,12 +87,14 @@ def test_every_class_has_a_repr_that_says_what_it_holds():
     cutter = tetcut.Cutter(mesh, tool_diameter=1.5)
     report = cutter.cut((2, 2, 4))
     violation = tetcut.check(mesh, radius_ratio_floor=0.99)[0]
+    fragment = tetcut.Cutter(tetcut.Mesh(*plate_arrays()), tool_diameter=0.5).cut_segment(**PLATE_CUT).detached[0]
     expected = {
         mesh: "<tetcut.Mesh ",
         cutter: "<tetcut.Cutter tool_diameter=1.5 strategy=combined on <tetcut.Mesh ",
         report: "<tetcut.CutReport at (2, 2, 4): ok, ",
         report.changes: f"<tetcut.Changes {len(report.changes.removed)} removed, {len(report.changes.created)} created",
         violation: "I7 ",
+        fragment: "<tetcut.Fragment ",
     }
     assert {type(o).__name__ for o in expected} == {n for n, v in vars(tetcut).items()
                                                    if inspect.isclass(v) and not n.startswith("_")}

@@ -45,15 +45,15 @@ const std::vector<CommandCase>& cases() {
        "--seed"},
       {"cut",
        {"MESH", "--diameter", "--from", "--to", "--step", "--swept", "--strategy", "--split", "--refinement", "--dref-factor", "--p",
-        "--depth", "--check", "--out", "--report", "--frames"},
+        "--depth", "--debris-volume", "--check", "--out", "--report", "--frames"},
        {"BOX", "--diameter", "1e3x", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"},
        "--diameter"},
-      {"run", {"SCENARIO", "--refinement", "--check", "--out", "--report"}, {}, ""},
+      {"run", {"SCENARIO", "--refinement", "--debris-volume", "--check", "--out", "--report"}, {}, ""},
       {"stats", {"--corpus", "--mesh", "--check", "--json", "--html", "--pictures"}, {}, ""},
       {"replay", {"INPUT", "--target", "--scenario-out"}, {}, ""},
       {"minimize", {"SCENARIO", "-o", "--max-runs"}, {"BOX", "-o", "OUT", "--max-runs", "inf"}, "--max-runs"},
       {"simulate",
-       {"INPUT", "--sweep", "--swept", "--diameter", "--strategy", "--fix", "--gravity", "--young", "--poisson", "--density",
+       {"INPUT", "--sweep", "--swept", "--diameter", "--strategy", "--debris-volume", "--fix", "--gravity", "--young", "--poisson", "--density",
         "--unit", "--damping", "--dt", "--steps", "--settle", "--frames", "--frame-every", "--report"},
        {"BOX", "--diameter", "1e3x", "--sweep", "0,0,0", "1,1,1", "0.5"},
        "--diameter"},
@@ -196,6 +196,79 @@ TEST_F(Cli, CutSweptJoinsTheCutPointsByCapsulesAndTheReportGivesBothEnds) {
   ASSERT_EQ(tetcut({"run", path("swept.scn"), "--out", path("run.msh")}).exit_code, 0);
   EXPECT_EQ(read_text(path("run.msh")), read_text(path("capsules.msh")));
   EXPECT_NE(read_text(path("balls.msh")), read_text(path("capsules.msh")));
+}
+
+// A stroke through a plate detaches the side it cuts off: the cut's record says so after its other
+// keys ("fragments": 1 and the piece's size and place, never its tets' ids), and the summary and
+// stdout count it; --debris-volume removes the piece in the same cut, counted apart from the
+// tissue, as `tetcut run --debris-volume` and a scenario's `debris_volume` line do.
+TEST_F(Cli, CutThroughAPlateReportsThePieceItDetachedAndDebrisVolumeRemovesIt) {
+  // The plate of the engine's fragments test, coarser: 4 x 2 x 0.2 in 16 x 8 x 2 cells.
+  const WriteResult w = write_mesh(path("plate.msh"), make_box_mesh(16, 8, 2, {0, 0, -0.1}, {4, 2, 0.2}));
+  ASSERT_TRUE(w.ok) << w.error;
+  auto cut = [&](const std::string& name, const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"cut", path("plate.msh"), "--diameter", "0.5", "--from", "1,-0.3,0", "--to",
+                                     "1,2.3,0", "--step", "2.6", "--swept", "--out", path(name + ".msh"), "--report",
+                                     path(name + ".json")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const ProcessResult r = tetcut(args);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    return r;
+  };
+  const ProcessResult kept = cut("kept", {});
+  const auto ordered = nlohmann::ordered_json::parse(read_text(path("kept.json")));
+  ASSERT_EQ(ordered.at("cuts").size(), 1u);  // one capsule across the plate
+  const auto& record = ordered.at("cuts").at(0);
+  // The keys there before keep their places: the new ones follow "retries".
+  std::vector<std::string> keys;
+  for (auto it = record.begin(); it != record.end(); ++it) keys.push_back(it.key());
+  const auto after_retries = std::find(keys.begin(), keys.end(), "retries");
+  ASSERT_NE(after_retries, keys.end());
+  EXPECT_EQ(std::vector<std::string>(after_retries + 1, keys.end()),
+            (std::vector<std::string>{"pieces_us", "fragments", "fragment_tets_visited", "fragment_search_bounded",
+                                      "debris_pieces_removed", "debris_tets_removed", "debris_volume_removed", "pieces"}));
+  EXPECT_EQ(record.at("fragments"), 1);
+  EXPECT_EQ(record.at("fragment_search_bounded"), false);
+  EXPECT_GT(record.at("fragment_tets_visited").get<int>(), 0);
+  EXPECT_EQ(record.at("debris_pieces_removed"), 0);
+  ASSERT_EQ(record.at("pieces").size(), 1u);
+  const auto& piece = record.at("pieces").at(0);
+  std::vector<std::string> piece_keys;
+  for (auto it = piece.begin(); it != piece.end(); ++it) piece_keys.push_back(it.key());
+  EXPECT_EQ(piece_keys, (std::vector<std::string>{"tets", "volume", "centroid", "removed"}));
+  EXPECT_GT(piece.at("tets").get<int>(), 0);
+  EXPECT_NEAR(piece.at("volume").get<double>(), 0.75 * 2 * 0.2, 0.075);  // the side x < 0.75
+  EXPECT_LT(piece.at("centroid").at(0).get<double>(), 0.75);
+  EXPECT_EQ(piece.at("removed"), false);
+  EXPECT_EQ(ordered.at("summary").at("fragments"), 1);
+  EXPECT_EQ(ordered.at("summary").at("debris_pieces_removed"), 0);
+  EXPECT_NE(kept.out.find("pieces: 1 detached by 1 cuts, 0 removed as debris (0 tets, volume 0)\n"), std::string::npos)
+      << kept.out;
+
+  const ProcessResult debris = cut("debris", {"--debris-volume", "0.5"});
+  const Json report = parse_json(read_text(path("debris.json"))).value_or(Json{});
+  const Json& r = report.at("cuts").at(0);
+  EXPECT_EQ(r.at("fragments"), 1);
+  EXPECT_EQ(r.at("debris_pieces_removed"), 1);
+  EXPECT_EQ(r.at("debris_tets_removed"), piece.at("tets"));
+  EXPECT_DOUBLE_EQ(r.at("debris_volume_removed").get<double>(), piece.at("volume").get<double>());
+  EXPECT_EQ(r.at("pieces").at(0).at("removed"), true);
+  // Debris is not tissue: the cut's tissue counts are the ones it had without.
+  EXPECT_EQ(r.at("tets_removed"), record.at("tets_removed"));
+  EXPECT_EQ(report.at("summary").at("tets_removed"), ordered.at("summary").at("tets_removed"));
+  EXPECT_EQ(report.at("summary").at("debris_pieces_removed"), 1);
+  EXPECT_NE(debris.out.find("pieces: 1 detached by 1 cuts, 1 removed as debris ("), std::string::npos) << debris.out;
+  EXPECT_NE(read_text(path("debris.msh")), read_text(path("kept.msh")));
+  // The same from a scenario: `tetcut run --debris-volume` and the scenario's own line.
+  write("plate.scn", "mesh plate.msh\ndiameter 0.5\nsweep 1,-0.3,0 1,2.3,0 2.6 swept\nexpect components 1\n");
+  ASSERT_EQ(tetcut({"run", path("plate.scn"), "--debris-volume", "0.5", "--out", path("run.msh")}).exit_code, 0);
+  EXPECT_EQ(read_text(path("run.msh")), read_text(path("debris.msh")));
+  write("line.scn", "mesh plate.msh\ndiameter 0.5\ndebris_volume 0.5\nsweep 1,-0.3,0 1,2.3,0 2.6 swept\n");
+  ASSERT_EQ(tetcut({"run", path("line.scn"), "--out", path("line.msh")}).exit_code, 0);
+  EXPECT_EQ(read_text(path("line.msh")), read_text(path("debris.msh")));
+  EXPECT_TRUE(usage_error(tetcut({"cut", path("plate.msh"), "--diameter", "0.5", "--from", "1,-0.3,0", "--to", "1,2.3,0",
+                                  "--step", "2.6", "--debris-volume", "-1"}),
+                          "cut", "debris volume"));
 }
 
 // The graded rule reaches the engine from each place a user chooses it: `tetcut cut

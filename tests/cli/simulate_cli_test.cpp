@@ -1,9 +1,10 @@
 // `tetcut simulate` as a user runs it, for what a first use tripped on: a second
 // --sweep, a run that only settles, its summary, its messages' numbers, and the sweep's end,
 // which `tetcut cut`, a scenario and `simulate` place the same way (scenario::sweep_centres);
-// and --swept, whose frames cut the capsules between sweep points.
+// --swept, whose frames cut the capsules between sweep points; and --debris-volume.
 #include <cmath>
 #include <regex>
+#include <utility>
 
 #include "cli_fixture.hpp"
 
@@ -120,6 +121,29 @@ TEST_F(Simulate, SweptFramesCutFromEachSweepPointToTheNext) {
   const ProcessResult alone = tetcut({"simulate", mesh, "--diameter", "0.2", "--swept"});
   EXPECT_EQ(alone.exit_code, 2);
   EXPECT_NE(alone.err.find("--swept"), std::string::npos) << alone.err;
+}
+
+// --debris-volume (a scenario's `debris_volume` line): the piece a stroke cuts off the plate goes in
+// the frame that detached it, and the frame's record and the summary count it.
+TEST_F(Simulate, DebrisVolumeRemovesThePieceAFrameDetachesAndTheReportCountsIt) {
+  const WriteResult w = write_mesh(path("plate.msh"), make_box_mesh(16, 8, 2, {0, 0, -0.1}, {4, 2, 0.2}));
+  ASSERT_TRUE(w.ok) << w.error;
+  const std::vector<std::string> args = {path("plate.msh"), "--diameter", "0.5", "--unit", "1", "--steps", "1",
+                                         "--fix", "x>3.9", "--sweep", "1,-0.3,0", "1,2.3,0", "2.6", "--swept"};
+  auto debris_of = [](const Json& report) {
+    return std::pair{report["summary"]["fragments"].get<int>(), report["summary"]["debris_pieces_removed"].get<int>()};
+  };
+  std::vector<std::string> with_debris = args;
+  with_debris.insert(with_debris.end(), {"--debris-volume", "0.5"});
+  const Json removed = report_of(with_debris);
+  ASSERT_EQ(removed["frames"].size(), 1u);
+  EXPECT_EQ(removed["frames"][0]["fragments"], 1);
+  EXPECT_EQ(removed["frames"][0]["debris_pieces_removed"], 1);
+  EXPECT_NEAR(removed["frames"][0]["debris_volume_removed"].get<double>(), 0.75 * 2 * 0.2, 0.075);
+  EXPECT_EQ(debris_of(removed), std::pair(1, 1));
+  EXPECT_EQ(debris_of(report_of(args)), std::pair(1, 0));  // detached, reported, left
+  write("plate.scn", "mesh plate.msh\ndiameter 0.5\ndebris_volume 0.5\nsweep 1,-0.3,0 1,2.3,0 2.6 swept\n");
+  EXPECT_EQ(debris_of(report_of({path("plate.scn"), "--unit", "1", "--steps", "1", "--fix", "x>3.9"})), std::pair(1, 1));
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ constexpr double kMaxCuts = 100000;
 
 struct CutArgs {
   std::optional<std::string> mesh, frames;
-  std::optional<double> diameter, step, dref_factor, p;
+  std::optional<double> diameter, step, dref_factor, p, debris_volume;
   opt::Improvement improvement;
   bool swept = false;
   std::optional<Vec3> from, to;
@@ -67,14 +67,16 @@ void add_options(CLI::App& app, CutArgs& a) {
   opt::count(app, "--max-tets-created", a.max_tets_created,
              "the per-cut tet budget: net tets a cut may make (default 20000); a cut past it is refused", "N");
   opt::improvement(app, a.improvement, "cut");
+  opt::debris_volume(app, a.debris_volume);
   opt::labels(app, "--keep-label", a.uncuttable_labels,
               "tets with this label (the mesh file's) are tissue no cut takes, as the paper's Fig. 7 keeps the "
               "portal vein (repeatable)");
   opt::check_mode(app, a.check, "the local check after every cut (default), the full one at the end, or none");
   opt::text(app, "--out", a.outputs.mesh_path, "the final mesh", "M");
   opt::text(app, "--report", a.outputs.report_path,
-            "`cuts` (time in microseconds and counts per cut) and `summary` (cuts, first_us, p50_us, p90_us, "
-            "p99_us, max_us over all cuts, tets_removed, tets_created, unresolved, min_radius_ratio, valid, hash)",
+            "`cuts` (time in microseconds and counts per cut, the pieces it detached) and `summary` (cuts, "
+            "first_us, p50_us, p90_us, p99_us, max_us over all cuts, tets_removed, tets_created, unresolved, "
+            "min_radius_ratio, valid, hash, fragments, debris_pieces_removed)",
             "R.json");
   opt::text(app, "--frames", a.frames, "a .vtu snapshot after every cut, for ParaView (DIR must exist)", "DIR");
 }
@@ -90,6 +92,7 @@ std::optional<std::string> cut_params(const CutArgs& a, CutParams& params) {
   if (a.dref_factor) params.d_ref_factor = *a.dref_factor;
   if (a.p) params.p = *a.p;
   opt::improvement_params(a.improvement, params);
+  if (a.debris_volume) params.debris_volume = *a.debris_volume;
   if (a.depth) {
     if (*a.depth > 64) return "--depth: at most 64";
     params.search_depth = static_cast<std::uint32_t>(*a.depth);
@@ -111,7 +114,8 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
       "cut",
       "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--swept] [--strategy S] [--order O] "
       "[--neighbour-set smallest|first] [--split M] [--max-tets-created N] "
-      "[--refinement auto|paper|graded] [--no-improve] [--quality-floor F] [--min-dihedral DEG] [--keep-label L ...] "
+      "[--refinement auto|paper|graded] [--no-improve] [--quality-floor F] [--min-dihedral DEG] [--debris-volume V] "
+      "[--keep-label L ...] "
       "[--check every|end|none] [--out M] [--report R.json] [--frames DIR]",
       "A cautery sweep: one cut every STEP from --from to --to with a tool of the given diameter,\n"
       "each cut refined then removed without breaking the manifold (paper 3.1-3.7). --swept joins\n"

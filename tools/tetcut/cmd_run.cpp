@@ -1,5 +1,5 @@
-// `tetcut run SCENARIO [--refinement auto|paper|graded] [--check every|end|none] [--out M]
-// [--report R.json]`: runs a scenario file (tools/scenario) and says which line failed, if any.
+// `tetcut run SCENARIO [--refinement auto|paper|graded] [--debris-volume V] [--check every|end|none]
+// [--out M] [--report R.json]`: runs a scenario file (tools/scenario) and says which line failed, if any.
 #include <ostream>
 
 #include "command.hpp"
@@ -13,9 +13,12 @@ int cmd_run(Args args, std::ostream& out, std::ostream& err) {
   std::optional<std::string> path;
   std::optional<scenario::CheckMode> check;
   std::optional<RefinementRule> refinement;
+  std::optional<double> debris_volume;
   RunOutputs outputs;
   CommandParser parser(
-      "run", "tetcut run SCENARIO [--refinement auto|paper|graded] [--check every|end|none] [--out M] [--report R.json]",
+      "run",
+      "tetcut run SCENARIO [--refinement auto|paper|graded] [--debris-volume V] [--check every|end|none] [--out M] "
+      "[--report R.json]",
       "Runs a scenario file: one operation a line (mesh, diameter, strategy, cut, sweep, remove,\n"
       "compact, check, expect hash|tets|unresolved|components), tets and tools addressed by points\n"
       "so that scenarios survive changes of internal ids. See corpus/scenarios/ and\n"
@@ -25,6 +28,9 @@ int cmd_run(Args args, std::ostream& out, std::ostream& err) {
   opt::text(app, "SCENARIO", path, "the scenario file", "")->required();
   opt::refinement(app, refinement,
                   "the refinement rule the scenario starts with (default paper); its own `refinement` line wins");
+  opt::debris_volume(app, debris_volume)->description(
+      "the debris volume the scenario starts with (mesh units cubed; default 0: detached pieces are only reported); "
+      "its own `debris_volume` line wins");
   opt::check_mode(app, check, "the local check after every operation (default), the full one at the end, or none");
   opt::text(app, "--out", outputs.mesh_path, "the final mesh (where the run stopped, if a check failed)", "M");
   opt::text(app, "--report", outputs.report_path, "the cuts and their summary as JSON (see tetcut cut)", "R.json");
@@ -37,7 +43,12 @@ int cmd_run(Args args, std::ostream& out, std::ostream& err) {
   }
   scenario::RunOptions options;
   options.check = check.value_or(scenario::CheckMode::kEvery);
-  if (refinement) options.initial_params = CutParams{.refinement = *refinement};
+  if (refinement || debris_volume) {
+    options.initial_params.emplace();
+    if (refinement) options.initial_params->refinement = *refinement;
+    if (debris_volume) options.initial_params->debris_volume = *debris_volume;
+    if (const auto bad = validate(*options.initial_params)) return parser.usage_error(*bad, err);
+  }
   TetMesh mesh;
   const scenario::RunResult r = scenario::run(*parsed.scenario, options, &mesh);
   if (!r.ok) err << "tetcut: " << r.error << "\n";

@@ -50,7 +50,7 @@ struct SimulateArgs {
   std::vector<std::string> materials;  // LABEL:E,NU,RHO
   std::vector<std::uint32_t> uncuttable_labels;
   std::optional<Vec3> gravity;
-  std::optional<double> diameter, dt, dt_factor, young, poisson, density, unit, damping;
+  std::optional<double> diameter, dt, dt_factor, young, poisson, density, unit, damping, debris_volume;
   std::optional<std::uint64_t> steps, settle, frame_every;
   std::optional<RemovalStrategy> strategy;
 };
@@ -73,6 +73,7 @@ void add_simulate_options(CLI::App& app, SimulateArgs& a) {
             "points whatever the step (a scenario's sweeps say `swept` themselves)");
   opt::number(app, "--diameter", a.diameter, "the tool's diameter (mesh units; required to cut a mesh with --sweep)", "D");
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
+  opt::debris_volume(app, a.debris_volume);
   opt::text(app, "--fix", a.fix, "vertices held in place: AXIS OP VALUE, e.g. \"x<10\" (mesh units)", "RULE");
   opt::point(app, "--gravity", a.gravity, "m/s2 (default 0,0,0)", "X,Y,Z");
   opt::number(app, "--young", a.young, "Young's modulus in Pa (default 3000, liver-like)", "E");
@@ -189,8 +190,12 @@ std::optional<int> plan_cuts(SimulateArgs& a, const CommandParser& parser, std::
             params.tool_diameter = *scenario::parse_double(op.value);
           } else if (op.text == "strategy") {
             params.strategy = *parse_removal_strategy(op.value);
+          } else if (op.text == "debris_volume") {
+            params.debris_volume = *scenario::parse_double(op.value);
           } else {
-            return parser.usage_error(*a.input + ":" + std::to_string(op.line) + ": simulate runs only diameter and strategy, not " + op.text, err);
+            return parser.usage_error(*a.input + ":" + std::to_string(op.line) +
+                                          ": simulate runs only diameter, strategy and debris_volume, not " + op.text,
+                                      err);
           }
           break;
         case scenario::OpKind::kSweep: add_sweep(op.a, op.b, op.step, op.swept, tools); break;
@@ -206,6 +211,7 @@ std::optional<int> plan_cuts(SimulateArgs& a, const CommandParser& parser, std::
   const bool from_scenario = a.input->ends_with(".scn");  // a scenario sets the diameter (or takes the default)
   if (a.diameter) params.tool_diameter = *a.diameter;
   if (a.strategy) params.strategy = *a.strategy;
+  if (a.debris_volume) params.debris_volume = *a.debris_volume;
   if (a.sweeps.size() % 3 != 0) return parser.usage_error("--sweep: expects FROM TO STEP", err);
   for (std::size_t i = 0; i < a.sweeps.size(); i += 3) {
     const auto from = scenario::parse_vec3(a.sweeps[i]), to = scenario::parse_vec3(a.sweeps[i + 1]);
@@ -348,7 +354,12 @@ class Simulation {
                        {"stable_dt", stable_dt_},
                        {"energy", {{"kinetic", energy_.kinetic}, {"elastic", energy_.elastic}, {"gravity", energy_.gravity},
                                    {"total", energy_.total()}}},
-                       {"max_displacement_m", max_u_}});
+                       {"max_displacement_m", max_u_},
+                       {"fragments", r.fragments},
+                       {"debris_pieces_removed", r.debris_pieces_removed},
+                       {"debris_volume_removed", r.debris_volume_removed}});
+    fragments_ += r.fragments;
+    debris_pieces_ += r.debris_pieces_removed;
     frames_.push_back(std::move(record));
     if (a_.frames && k % plan_.frame_every == 0) {
       char name[32];
@@ -386,10 +397,13 @@ class Simulation {
                     {"max_displacement_m", max_u_},
                     {"frames_written", written_},
                     {"ok", failure_.empty()},
-                    {"failure", failure_}};
+                    {"failure", failure_},
+                    {"fragments", fragments_},
+                    {"debris_pieces_removed", debris_pieces_}};
     out << "simulate: " << frames_.size() << " frames of " << plan_.steps << " steps at dt " << si(dt_, "s")
         << " (stable step estimate " << si(initial_stable_dt, "s") << " before the cuts, " << si(min_stable_, "s")
-        << " at worst after), " << fixed_count << " fixed vertices, " << cuts_refused_ << " cuts refused\n"
+        << " at worst after), " << fixed_count << " fixed vertices, " << cuts_refused_ << " cuts refused, "
+        << fragments_ << " pieces detached (" << debris_pieces_ << " removed as debris)\n"
         << "  per frame: cut p50 " << p(cut_us_, 0.5) << " us, update p50 " << p(update_us_, 0.5) << " us, step p50 "
         << p(step_us_, 0.5) << " us; final energy " << si(energy_.total(), "J") << ", largest displacement "
         << si(max_u_, "m") << "\n";
@@ -427,6 +441,7 @@ class Simulation {
   std::vector<double> cut_us_, update_us_, step_us_;
   double min_stable_;
   std::uint64_t unstable_frames_ = 0, cuts_refused_ = 0, written_ = 0;
+  std::uint64_t fragments_ = 0, debris_pieces_ = 0;  // pieces the cuts detached, and of them debris removed
   ChangeLog log_;
   std::string failure_;
   mechanics::Energy energy_;
@@ -440,7 +455,8 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   SimulateArgs a;
   CommandParser parser(
       "simulate",
-      "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--swept] [--diameter D] [--strategy S] [--fix RULE] "
+      "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--swept] [--diameter D] [--strategy S] "
+      "[--debris-volume V] [--fix RULE] "
       "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--material LABEL:E,NU,RHO]... [--keep-label L]... [--unit M] [--damping G] [--dt S] "
       "[--steps N] [--settle N] [--frames DIR] [--frame-every N] [--report R.json]",
       "Linear-elastic tissue (tensor-mass, Cotin, Delingette and Ayache 2000) stepped at a fixed\n"

@@ -194,6 +194,14 @@ void improvement_params(const Improvement& options, CutParams& params) {
   if (options.min_dihedral) params.min_dihedral_deg = *options.min_dihedral;
 }
 
+CLI::Option* debris_volume(CLI::App& app, std::optional<double>& target) {
+  return number(app, "--debris-volume", target,
+                "detached pieces below this volume (mesh units cubed) are removed by the cut that detached them, "
+                "as debris, reported apart from the tissue removed; a piece with an uncuttable tet stays (default 0: "
+                "detached pieces are only reported)",
+                "V");
+}
+
 }  // namespace opt
 
 CommandParser::CommandParser(std::string name, std::string synopsis, std::string description, std::string footer)

@@ -98,6 +98,8 @@ struct Improvement {
 };
 void improvement(CLI::App& app, Improvement& target, const std::string& unit);
 void improvement_params(const Improvement& options, CutParams& params);
+// --debris-volume V (CutParams::debris_volume): `cut`, `run` and `simulate` share its words.
+CLI::Option* debris_volume(CLI::App& app, std::optional<double>& target);
 }  // namespace opt
 
 class CommandParser {

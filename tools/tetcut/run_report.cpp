@@ -21,8 +21,23 @@ std::vector<double> cut_times_us(const std::vector<scenario::CutRecord>& cuts) {
   return t;
 }
 
+// The pieces a cut detached, each its size and place: {"tets": count, "volume", "centroid",
+// "removed"}. Not its tets' ids, which are the Cutter's to give (Cutter::last_fragments(),
+// Python's report.detached).
+Json pieces_json(const std::vector<scenario::DetachedPiece>& pieces) {
+  Json out = Json::array();
+  for (const scenario::DetachedPiece& p : pieces)
+    out.push_back(Json{{"tets", p.tets},
+                       {"volume", p.volume},
+                       {"centroid", {p.centroid.x, p.centroid.y, p.centroid.z}},
+                       {"removed", p.removed}});
+  return out;
+}
+
 // A cut's tool and counts. "centre" is the ball's centre or the capsule's first end; a capsule
 // (Cutter::cut_segment) adds its other end, "end", after it, and a ball's record is as it was.
+// The pieces the cut detached come last (after a refused cut's refusal and failure), so that the
+// keys before them keep their places: "pieces" only when it detached any.
 Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
   const CutReport& r = c.report;
   Json record{{"index", index}, {"line", c.line}, {"centre", {c.centre.x, c.centre.y, c.centre.z}}};
@@ -81,6 +96,14 @@ Json cut_record_json(std::size_t index, const scenario::CutRecord& c) {
     record["refusal"] = to_string(r.refusal);
     record["failure"] = r.failure;
   }
+  record.update(Json{{"pieces_us", r.time.pieces_us},
+                     {"fragments", r.fragments},
+                     {"fragment_tets_visited", r.fragment_tets_visited},
+                     {"fragment_search_bounded", r.fragment_search_bounded},
+                     {"debris_pieces_removed", r.debris_pieces_removed},
+                     {"debris_tets_removed", r.debris_tets_removed},
+                     {"debris_volume_removed", r.debris_volume_removed}});
+  if (!c.pieces.empty()) record["pieces"] = pieces_json(c.pieces);
   return record;
 }
 
@@ -125,7 +148,13 @@ Json cut_report_json(const std::vector<scenario::CutRecord>& cuts, const std::st
                                    {"mesh_rule_retries", t.mesh_rule_retries}}},
                   {"min_radius_ratio", t.worst_created},
                   {"valid", valid},
-                  {"hash", hash}};
+                  {"hash", hash},
+                  {"fragments", t.fragments},
+                  {"cuts_detaching", t.cuts_detaching},
+                  {"debris_pieces_removed", t.debris_pieces},
+                  {"debris_tets_removed", t.debris_tets},
+                  {"debris_volume_removed", t.debris_volume},
+                  {"fragment_searches_bounded", t.fragment_searches_bounded}};
   return Json{{"cuts", std::move(records)}, {"summary", std::move(summary)}};
 }
 
@@ -146,6 +175,10 @@ int report_run(const scenario::RunResult& r, const TetMesh& mesh, const RunOutpu
         << " cuts refused";
     for (int k = 1; k < kCutRefusals; ++k)
       if (t.refusals[k]) out << " (" << t.refusals[k] << " " << to_string(static_cast<CutRefusal>(k)) << ")";
+    out << "\n";
+    out << "pieces: " << t.fragments << " detached by " << t.cuts_detaching << " cuts, " << t.debris_pieces
+        << " removed as debris (" << t.debris_tets << " tets, volume " << t.debris_volume << ")";
+    if (t.fragment_searches_bounded) out << "; " << t.fragment_searches_bounded << " searches bounded";
     out << "\n";
   }
   if (!r.cuts.empty()) {

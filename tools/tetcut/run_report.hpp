@@ -6,8 +6,10 @@
 // reason), left_in_tool and cuts_leaving_tissue, volume_left_in_tool (p50, p99, max per cut),
 // volume_removed, tets_removed_beyond_tool, volume_removed_beyond_tool (and its p50, p99, max
 // per cut), tets_removed_beyond_reach, tets_removed_by_improvement, improvement (flips,
-// collapses, moves, insertions), min_radius_ratio, valid and hash. docs/usage.md says what each
-// means.
+// collapses, moves, insertions), min_radius_ratio, valid and hash, then the detached pieces:
+// fragments, cuts_detaching, debris_pieces_removed, debris_tets_removed, debris_volume_removed
+// and fragment_searches_bounded (a cut's record has its pieces too, after its other keys).
+// docs/usage.md says what each means.
 #pragma once
 
 #include <iosfwd>

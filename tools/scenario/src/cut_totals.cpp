@@ -30,6 +30,12 @@ CutTotals cut_totals(const std::vector<CutRecord>& cuts) {
     t.mesh_rule_retries += r.mesh_rule_retries;
     t.volume_removed += r.volume_removed;
     t.volume_removed_beyond_tool += r.volume_removed_beyond_tool;
+    t.fragments += r.fragments;
+    t.cuts_detaching += r.fragments > 0 ? 1 : 0;
+    t.debris_pieces += r.debris_pieces_removed;
+    t.debris_tets += r.debris_tets_removed;
+    t.debris_volume += r.debris_volume_removed;
+    t.fragment_searches_bounded += r.fragment_search_bounded ? 1 : 0;
     if (r.tets_hit > 0) {
       t.volume_left.push_back(r.volume_left_in_tool);
       t.volume_beyond.push_back(r.volume_removed_beyond_tool);

@@ -28,7 +28,7 @@ std::vector<std::string> tokens_of(const std::string& line) {
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
          w == "order" || w == "neighbour_set" || w == "split" || w == "refinement" || w == "improve" || w == "quality_floor" ||
-         w == "min_dihedral" || w == "max_tets_created";
+         w == "min_dihedral" || w == "max_tets_created" || w == "debris_volume";
 }
 
 // Applies a parameter line to `params`; a message when the value is not acceptable.
@@ -72,6 +72,7 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
      : name == "dref_factor"   ? next.d_ref_factor
      : name == "quality_floor" ? next.quality_floor
      : name == "min_dihedral"  ? next.min_dihedral_deg
+     : name == "debris_volume" ? next.debris_volume
                                : next.p) = *v;
   }
   if (auto invalid = validate(next)) return invalid;
@@ -214,6 +215,13 @@ invariants::CheckOptions transaction_check_options(const CutParams& params, doub
   return o;
 }
 
+std::vector<DetachedPiece> detached_pieces(const Cutter& cutter) {
+  std::vector<DetachedPiece> pieces;
+  for (const Fragment& f : cutter.last_fragments())
+    pieces.push_back({static_cast<std::uint32_t>(f.tets.size()), f.volume, f.centroid, f.removed});
+  return pieces;
+}
+
 invariants::CheckOptions cut_check_options(const Cutter& cutter, const Vec3& centre, const std::optional<Vec3>& end) {
   const CutParams& params = cutter.params();
   invariants::CheckOptions o = transaction_check_options(params, cutter.last_min_dihedral_held());
@@ -285,6 +293,7 @@ class Run {
     cutter_.reset();
     mesh_ = std::move(*built.mesh);
     cutter_.emplace(mesh_, params_);
+    search_bounded_ = false;
     local_.emplace(mesh_.raw_view());
     const std::vector<std::uint32_t>& file_labels = read.mesh->labels;
     const bool one_label = read.mesh->labelled() && std::all_of(file_labels.begin(), file_labels.end(),
@@ -330,7 +339,7 @@ class Run {
       const CutReport r = tool.end ? cutter_->cut_segment(tool.centre, *tool.end, log_if_labelled())
                                    : cutter_->cut(tool.centre, log_if_labelled());
       if (r.ok && labelled_) labels_.apply(mesh_, log_);
-      result_.cuts.push_back({op.line, tool.centre, tool.end, r});
+      result_.cuts.push_back({op.line, tool.centre, tool.end, r, detached_pieces(*cutter_)});
       count(r);
       if (!r.ok) {
         stop(op, 1, "cut failed: " + r.failure);
@@ -364,6 +373,7 @@ class Run {
     result_.removal += cutter_->removal_report();
     if (const Renumbering renumbering = mesh_.compact(); labelled_) labels_.renumber(renumbering);
     cutter_.emplace(mesh_, params_);
+    search_bounded_ = false;
     local_.emplace(mesh_.raw_view());
     (void)protect();  // the same labelled tets as before: it cannot refuse now
   }
@@ -394,7 +404,15 @@ class Run {
           return "expected " + std::to_string(op.count) + " tets, got " + std::to_string(mesh_.num_tets());
         break;
       case OpKind::kExpectComponents: {
-        const std::uint64_t pieces = face_connected_pieces(mesh_).count;
+        // The count every cut keeps (Cutter::pieces()), and a scan of the mesh as its witness:
+        // exact unless a search for pieces was bounded, which may leave the kept count short.
+        const std::uint64_t kept = cutter_->pieces();
+        const std::uint64_t scanned = face_connected_pieces(mesh_).count;
+        if (search_bounded_ ? kept > scanned : kept != scanned)
+          return "the Cutter counts " + std::to_string(kept) + " connected pieces, a scan of the mesh " +
+                 std::to_string(scanned) + (search_bounded_ ? " (a search for pieces was bounded)" : "") +
+                 ": the engine's count is wrong";
+        const std::uint64_t pieces = search_bounded_ ? scanned : kept;
         if (pieces != op.count)
           return "expected " + std::to_string(op.count) + " connected pieces, got " + std::to_string(pieces);
         break;
@@ -500,6 +518,7 @@ class Run {
 
   // A cut's or a removal's counts, and what one that succeeded created, for the run's quality figures.
   void count(const CutReport& r) {
+    search_bounded_ = search_bounded_ || r.fragment_search_bounded;
     result_.removals += r.tets_removed + r.tets_removed_by_improvement;
     result_.unresolved += r.unresolved;
     if (!r.ok) return;
@@ -551,6 +570,8 @@ class Run {
   // the change logs carry): set on the cutter whenever it is made anew or the labels change.
   std::vector<std::uint32_t> uncuttable_labels_;
   std::vector<TetId> uncuttable_tets_;
+  // A search for pieces was bounded since the Cutter was made: Cutter::pieces() may be short.
+  bool search_bounded_ = false;
 };
 
 }  // namespace

@@ -204,8 +204,8 @@ std::string quality_html(const StatsReport& report) {
   return h;
 }
 
-// What the resection's cuts did beyond their counts: the tissue rule's figures and the
-// improvement pass's operations (scenario::cut_totals, as `tetcut run` prints them).
+// What the resection's cuts did beyond their counts: the tissue rule's figures, the improvement
+// pass's operations and the pieces detached (scenario::cut_totals, as `tetcut run` prints them).
 std::string cut_account_html(const std::vector<scenario::CutRecord>& cuts) {
   const scenario::CutTotals t = scenario::cut_totals(cuts);
   auto row = [](const std::string& what, const std::string& value) {
@@ -223,6 +223,10 @@ std::string cut_account_html(const std::vector<scenario::CutRecord>& cuts) {
          row("improvement: flips, collapses, moves, insertions, slivers removed",
              std::to_string(t.flips) + ", " + std::to_string(t.collapses) + ", " + std::to_string(t.moves) + ", " +
                  std::to_string(t.insertions) + ", " + std::to_string(t.removed_by_improvement)) +
+         row("pieces detached; removed as debris (tets, volume)",
+             std::to_string(t.fragments) + " by " + std::to_string(t.cuts_detaching) + " cuts; " +
+                 std::to_string(t.debris_pieces) + " (" + std::to_string(t.debris_tets) + ", " +
+                 significant(t.debris_volume, 4) + ")") +
          "</table>\n";
 }
 

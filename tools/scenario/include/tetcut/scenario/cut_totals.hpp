@@ -23,6 +23,13 @@ struct CutTotals {
   // Per ok cut that met tissue: the volume left in the tool, and removed beyond it.
   std::vector<double> volume_left, volume_beyond;
   double worst_created = 1.0;  // the worst radius ratio an ok cut created, as the engine measured it
+  // The pieces the cuts detached (CutReport::fragments), the cuts that detached any, those removed
+  // as debris (CutParams::debris_volume: not in `removed` or `volume_removed`, which are tissue),
+  // and the cuts whose search for pieces was bounded.
+  std::uint64_t fragments = 0, cuts_detaching = 0;
+  std::uint64_t debris_pieces = 0, debris_tets = 0;
+  double debris_volume = 0.0;
+  std::uint64_t fragment_searches_bounded = 0;
 };
 
 CutTotals cut_totals(const std::vector<CutRecord>& cuts);

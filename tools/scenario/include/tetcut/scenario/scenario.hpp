@@ -17,6 +17,9 @@
 //   improve on|off                the improvement pass that ends each cut (CutParams::improve)
 //   quality_floor F               the radius ratio it lifts created tets to (CutParams, I7's F)
 //   min_dihedral DEG              the smallest dihedral angle it lifts them to (I7's theta)
+//   debris_volume V               detached pieces below this volume (mesh units cubed) are removed
+//                                 by the cut that detached them (CutParams::debris_volume);
+//                                 0, the default: detached pieces are only reported
 //   uncuttable LABEL...           tets with these labels (the mesh file's) are tissue no cut or
 //                                 removal takes (Cutter::set_uncuttable(): the paper's Fig. 7);
 //                                 `uncuttable none` lifts it. Needs a labelled mesh.
@@ -34,7 +37,13 @@
 //   expect hash HEX               canonical hash of the current mesh
 //   expect tets N                 live tets
 //   expect unresolved N           tets left unresolved so far
-//   expect components N           face-connected pieces of the mesh (a resection separates one)
+//   expect components N           face-connected pieces of the mesh (a resection separates one):
+//                                 the count the Cutter keeps (Cutter::pieces()), crossed with a
+//                                 scan of the mesh (face_connected_pieces); the line fails when
+//                                 the two disagree. After a bounded search for pieces
+//                                 (CutReport::fragment_search_bounded) the kept count may be
+//                                 short: the scan is then the count, and the kept one may not
+//                                 exceed it
 //   expect min_quality X          every tet the cuts so far created has radius ratio >= X, as the
 //                                 checker measures the tets each cut left created
 //
@@ -96,11 +105,24 @@ ParseResult parse_file(const std::string& path, const std::string& name = "");
 // both lie in one tree (a checkout), so that the pair can move together; absolute otherwise.
 std::string mesh_path_from(const std::string& mesh, const std::string& dir);
 
+// A piece a cut detached (Cutter::last_fragments()) as a report gives it: its size and place,
+// not its tets' ids (the engine's views die at the next cut).
+struct DetachedPiece {
+  std::uint32_t tets = 0;
+  double volume = 0.0;
+  Vec3 centroid{};
+  bool removed = false;  // dropped as debris (CutParams::debris_volume)
+};
+
+// The pieces the Cutter's last cut or removal request detached, in the engine's order.
+std::vector<DetachedPiece> detached_pieces(const Cutter& cutter);
+
 struct CutRecord {
   std::uint32_t line = 0;  // the scenario line that made the cut
   Vec3 centre;             // the ball's centre, or the capsule's first end
   std::optional<Vec3> end; // the capsule's other end; none: a ball
   CutReport report;
+  std::vector<DetachedPiece> pieces;  // report.fragments of them, copied when the cut returned
 };
 
 struct RunResult {
