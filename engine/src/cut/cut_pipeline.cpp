@@ -270,6 +270,10 @@ void Cutter::Pipeline::attempt(const Tool& tool, RefinementRule rule, Laps& cloc
     ok = remove_selected(report);
     report.time.remove_us += clock.lap();
   }
+  conclude(ok, clock, report, log);
+}
+
+void Cutter::Pipeline::conclude(bool ok, Laps& clock, CutReport& report, ChangeLog* log) {
   if (ok) {
     ok = improve(report);
     report.time.improve_us += clock.lap();
@@ -307,22 +311,9 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
   under_mesh_rule(report, [&] {
     begin(nullptr);  // no tool: the request alone, no children join it
     selection_.select_request(t);
-    bool ok = remove_selected(report);
+    const bool ok = remove_selected(report);
     report.time.remove_us += clock.lap();
-    if (ok) {
-      ok = improve(report);
-      report.time.improve_us += clock.lap();
-    }
-    if (ok) ok = audit(report);
-    if (ok) {
-      report.time.finish_us += clock.lap();
-      find_pieces(report);
-      report.time.pieces_us += clock.lap();
-      commit(report, log);
-    } else {
-      roll_back(report);
-    }
-    report.time.finish_us += clock.lap();
+    conclude(ok, clock, report, log);
   });
   report.time.total_us = clock.total();
   return report;

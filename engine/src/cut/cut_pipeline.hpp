@@ -84,6 +84,9 @@ class Cutter::Pipeline {
   bool audit(CutReport& report);
   void find_pieces(CutReport& report);
   void commit(CutReport& report, ChangeLog* log);
+  // The end of a cut's attempt and of a removal request, after their removals (`ok`: none was
+  // refused): improve, audit, the pieces and commit, or the roll-back.
+  void conclude(bool ok, Laps& clock, CutReport& report, ChangeLog* log);
 
   // Opens the transaction a cut or a removal request is, with the tool (none for a request).
   void begin(const Tool* tool);
