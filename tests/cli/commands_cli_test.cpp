@@ -4,6 +4,7 @@
 // sweep `tetcut run` runs, `tetcut remove --at` removes the tet `remove X,Y,Z` does.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <algorithm>
 #include <fstream>
 #include <iterator>
@@ -250,7 +251,7 @@ TEST_F(Cli, CutThroughAPlateReportsThePieceItDetachedAndDebrisVolumeRemovesIt) {
   const Json& r = report.at("cuts").at(0);
   EXPECT_EQ(r.at("fragments"), 1);
   EXPECT_EQ(r.at("debris_pieces_removed"), 1);
-  EXPECT_EQ(r.at("debris_tets_removed"), piece.at("tets"));
+  EXPECT_EQ(r.at("debris_tets_removed").get<std::int64_t>(), piece.at("tets").get<std::int64_t>());
   EXPECT_DOUBLE_EQ(r.at("debris_volume_removed").get<double>(), piece.at("volume").get<double>());
   EXPECT_EQ(r.at("pieces").at(0).at("removed"), true);
   // Debris is not tissue: the cut's tissue counts are the ones it had without.
