@@ -255,8 +255,8 @@ TEST_F(Cli, CutThroughAPlateReportsThePieceItDetachedAndDebrisVolumeRemovesIt) {
   EXPECT_DOUBLE_EQ(r.at("debris_volume_removed").get<double>(), piece.at("volume").get<double>());
   EXPECT_EQ(r.at("pieces").at(0).at("removed"), true);
   // Debris is not tissue: the cut's tissue counts are the ones it had without.
-  EXPECT_EQ(r.at("tets_removed"), record.at("tets_removed"));
-  EXPECT_EQ(report.at("summary").at("tets_removed"), ordered.at("summary").at("tets_removed"));
+  EXPECT_EQ(r.at("tets_removed").get<std::int64_t>(), record.at("tets_removed").get<std::int64_t>());
+  EXPECT_EQ(report.at("summary").at("tets_removed").get<std::int64_t>(), ordered.at("summary").at("tets_removed").get<std::int64_t>());
   EXPECT_EQ(report.at("summary").at("debris_pieces_removed"), 1);
   EXPECT_NE(debris.out.find("pieces: 1 detached by 1 cuts, 1 removed as debris ("), std::string::npos) << debris.out;
   EXPECT_NE(read_text(path("debris.msh")), read_text(path("kept.msh")));
