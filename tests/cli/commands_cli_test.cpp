@@ -180,11 +180,13 @@ TEST_F(Cli, CutSweptJoinsTheCutPointsByCapsulesAndTheReportGivesBothEnds) {
   // In the file's order: a ball's record keeps its keys, index, line, centre, ok, ...; a capsule's
   // has its end after its centre.
   const auto ordered = [&](const std::string& name) { return nlohmann::ordered_json::parse(read_text(path(name))); };
-  for (const auto& c : ordered("balls.json").at("cuts")) {
+  // Named: a range-for over a temporary's member outlives the temporary.
+  const nlohmann::ordered_json ordered_balls = ordered("balls.json"), ordered_capsules = ordered("capsules.json");
+  for (const auto& c : ordered_balls.at("cuts")) {
     EXPECT_FALSE(c.contains("end"));
     EXPECT_EQ(std::next(c.begin(), 3).key(), "ok");
   }
-  for (const auto& c : ordered("capsules.json").at("cuts")) EXPECT_EQ(std::next(c.begin(), 3).key(), "end");
+  for (const auto& c : ordered_capsules.at("cuts")) EXPECT_EQ(std::next(c.begin(), 3).key(), "end");
   for (std::size_t k = 0; k < 2; ++k) {
     const Json& c = capsules.at("cuts").at(k);
     EXPECT_EQ(c.at("centre"), balls.at("cuts").at(k).at("centre"));
