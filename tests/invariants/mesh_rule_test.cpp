@@ -103,7 +103,10 @@ TEST_F(MeshRule, TheShapesAreWhatTheTestNeeds) {
   EXPECT_GT(tet_min_dihedral_deg(p[0], p[2], p[1], p[4]), 15.0);
 }
 
-TEST_F(MeshRule, ABadTetKeptInItsOwnVolumePasses) { EXPECT_TRUE(run(a).ok()); }
+TEST_F(MeshRule, ABadTetKeptInItsOwnVolumePasses) {
+  const CheckReport report = run(a);
+  EXPECT_TRUE(report.ok()) << to_string(report);
+}
 
 TEST_F(MeshRule, ABadTetSpreadIntoGoodVolumeIsNamed) {
   const CheckReport report = run(a_down);
