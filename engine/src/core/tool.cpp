@@ -133,30 +133,28 @@ namespace {
 // small as it was.
 [[gnu::noinline]] bool capsule_intersects(const Tool& tool, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const double r2 = tool.radius * tool.radius;
-  {
-    auto box_gap = [&](double end0, double end1, double p0, double p1, double p2, double p3) {
-      const double lo = std::min(std::min(p0, p1), std::min(p2, p3)), hi = std::max(std::max(p0, p1), std::max(p2, p3));
-      const double near_lo = std::max(end0, end1), near_hi = std::min(end0, end1);
-      return near_lo < lo ? lo - near_lo : near_hi > hi ? near_hi - hi : 0.0;
-    };
-    const double gx = box_gap(tool.a.x, tool.b.x, a.x, b.x, c.x, d.x), gy = box_gap(tool.a.y, tool.b.y, a.y, b.y, c.y, d.y),
-                 gz = box_gap(tool.a.z, tool.b.z, a.z, b.z, c.z, d.z);
-    if (gx * gx + gy * gy + gz * gz > r2) return false;
-    for (const Vec3* q : {&a, &b, &c, &d})
-      if (squared_distance_to_axis(tool, *q) <= r2) return true;
-    const Vec3 p[4] = {a, b, c, d};
-    return capsule_meets_tet(tool, p, r2);
-  }
+  // The gap between the tet's box and the axis's box [axis_lo, axis_hi], axis by axis.
+  auto box_gap = [&](double end0, double end1, double p0, double p1, double p2, double p3) {
+    const double lo = std::min(std::min(p0, p1), std::min(p2, p3)), hi = std::max(std::max(p0, p1), std::max(p2, p3));
+    const double axis_lo = std::min(end0, end1), axis_hi = std::max(end0, end1);
+    return axis_hi < lo ? lo - axis_hi : axis_lo > hi ? axis_lo - hi : 0.0;
+  };
+  const double gx = box_gap(tool.a.x, tool.b.x, a.x, b.x, c.x, d.x), gy = box_gap(tool.a.y, tool.b.y, a.y, b.y, c.y, d.y),
+               gz = box_gap(tool.a.z, tool.b.z, a.z, b.z, c.z, d.z);
+  if (gx * gx + gy * gy + gz * gz > r2) return false;
+  for (const Vec3* q : {&a, &b, &c, &d})
+    if (squared_distance_to_axis(tool, *q) <= r2) return true;
+  const Vec3 p[4] = {a, b, c, d};
+  return capsule_meets_tet(tool, p, r2);
 }
 
 }  // namespace
 
 bool intersects(const Tool& tool, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   if (!tool.is_ball()) return capsule_intersects(tool, a, b, c, d);
-  const double r2 = tool.radius * tool.radius;
   // A ball: the test it always had, operation for operation.
-  const Tool& ball = tool;
-  const Vec3& centre = ball.a;
+  const double r2 = tool.radius * tool.radius;
+  const Vec3& centre = tool.a;
   auto axis_gap = [&](double q, double p0, double p1, double p2, double p3) {
     const double lo = std::min(std::min(p0, p1), std::min(p2, p3)), hi = std::max(std::max(p0, p1), std::max(p2, p3));
     return q < lo ? lo - q : q > hi ? q - hi : 0.0;
@@ -169,7 +167,7 @@ bool intersects(const Tool& tool, const Vec3& a, const Vec3& b, const Vec3& c, c
     if (dot(delta, delta) <= r2) return true;
   }
   // A point (the spatial index's "which tet holds p"): exactness decides points on a face.
-  if (ball.radius <= 0.0) return distance_to_tet(centre, a, b, c, d) <= 0.0;
+  if (tool.radius <= 0.0) return distance_to_tet(centre, a, b, c, d) <= 0.0;
   // Face by face (face i opposite vertex i, outward normal n_i for a positively oriented tet):
   // the ball misses the tet when its centre lies more than r beyond one face's plane, meets it
   // when the centre is behind every plane, and otherwise the nearest point is on one of the

@@ -175,8 +175,9 @@ bool Cutter::Pipeline::refuse(CutReport& report, CutRefusal refusal, std::string
 void Cutter::Pipeline::begin(const Tool* tool) {
   transaction_.begin(mesh_, remover_);
   selection_.begin(tool);
-  // The cut's reach: the tool's ball grown by D_ref, the longest edge its refinement leaves at
-  // the ball (refine.hpp); what the cut removes beyond the tool lies within it.
+  // The cut's reach: the tool grown by D_ref, the longest edge its refinement leaves at the
+  // tool (refine.hpp); what the cut removes beyond the tool lies within it, and the improvement
+  // pass works within it (tissue_.reach()).
   tissue_.begin(tool, tool ? tool->radius + params_.d_ref() : 0.0);
 }
 
@@ -361,13 +362,12 @@ bool Cutter::Pipeline::remove_selected(CutReport& report) {
 // The improvement pass (improve/improver.hpp) over what the transaction made.
 bool Cutter::Pipeline::improve(CutReport& report) {
   const Tool* tool = selection_.tool();
-  const std::optional<Tool> reach =
-      tool ? std::optional<Tool>(tool->grown(params_.d_ref())) : std::nullopt;
+  const Tool* reach = tissue_.reach();  // begin()'s: the tool grown by D_ref
   // No operation of the pass may break the tissue rule the audit then holds the cut to.
   const detail::TissueRuleVeto veto(mesh_, selection_, uncuttable_, params_.d_ref());
   const detail::ImproveOutcome outcome =
       improver_.run(mesh_, transaction_.start(),
-                    {.floor = params_.quality_floor, .min_dihedral_deg = params_.min_dihedral_deg, .improve = params_.improve, .reach = reach ? &*reach : nullptr, .tool = tool,
+                    {.floor = params_.quality_floor, .min_dihedral_deg = params_.min_dihedral_deg, .improve = params_.improve, .reach = reach, .tool = tool,
                      .uncuttable = &uncuttable_, .tissue = &tissue_, .veto = veto,
                      .hold_plans_to_mesh_rule = hold_plans_to_mesh_rule_});
   report.tets_removed_by_improvement = outcome.removed;

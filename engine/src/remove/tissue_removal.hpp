@@ -40,6 +40,8 @@ class TissueRemoval {
  public:
   // A new transaction: the cut's tool and reach (none: a removal request), nothing removed yet.
   void begin(const Tool* tool, double reach_radius);
+  // The cut's reach (the tool grown to reach_radius), none for a removal request.
+  [[nodiscard]] const Tool* reach() const { return has_tool_ ? &reach_ : nullptr; }
   // Whether every tet of `set` lies within the cut's reach (all its corners: it is convex).
   // Always true for a removal request, which has no tool.
   [[nodiscard]] bool within_reach(const TetMesh& mesh, std::span<const TetId> set) const;
