@@ -5,10 +5,10 @@
                  [--pairs N] [--core C] [--small-only] [--seed S]
 
 BIN is bench/paired_sweep built at each side (`ci/bench --paired` builds the reference's in a tree
-of its own, bench/paired/CMakeLists.txt). Both are started once, pinned to core C (taskset; the
-last core by default), and take turns: pair i runs one round of each, head first in even pairs and
-the reference first in odd ones, so that neither side always runs into the other's caches or a
-burst of load. A round is the gated sweep on the 1M-tet refined liver, then five on the liver
+of its own, bench/paired/CMakeLists.txt). Both are started afresh for each pair, pinned to core C
+(taskset; the last core by default), and take turns: pair i runs one round of each, head first in
+even pairs and the reference first in odd ones, so that neither side always runs into the other's
+caches or a burst of load, nor keeps one process's address layout for every pair. A round is the gated sweep on the 1M-tet refined liver, then five on the liver
 (pooled, after one untimed; --small-only: the liver alone), every cut timed and every stage
 (CutTimings).
 
@@ -104,16 +104,21 @@ def main(argv):
         print("paired_gate: fewer than 10 pairs give the bootstrap too few ratios to resample", file=sys.stderr)
         return 2
 
-    head = Side("head", args.head, args.meshes, args.core, args.small_only)
-    ref = Side("reference", args.reference, args.meshes, args.core, args.small_only)
     rounds_head, rounds_ref = [], []
     for i in range(args.pairs):
+        # Each pair starts both sides afresh: a process's address layout (ASLR's bases, where the
+        # heap lands against the caches' sets) makes a stage a few percent faster or slower for
+        # its whole life, the same binary against itself included (6.6 % on `finish`, interval
+        # [1.061, 1.076], seen in CI). Over fresh processes that bias is one more draw per pair,
+        # and the interval holds it.
+        head = Side("head", args.head, args.meshes, args.core, args.small_only)
+        ref = Side("reference", args.reference, args.meshes, args.core, args.small_only)
         first, second = (head, ref) if i % 2 == 0 else (ref, head)
         a, b = first.round(), second.round()
         rounds_head.append(a if first is head else b)
         rounds_ref.append(b if first is head else a)
-    head.close()
-    ref.close()
+        head.close()
+        ref.close()
 
     results = compare(rounds_head, rounds_ref, args.seed)
     bounds = limits(args.budgets)

@@ -16,8 +16,9 @@
 //
 // It uses only the engine's public API, so that the same source builds against the engine of an
 // older commit (bench/paired/CMakeLists.txt): the reference of the comparison is that commit's
-// engine driven by this harness, with this harness's meshes and sweep. Both sides stay resident
-// and take turns, so that each round of one is next in time to a round of the other.
+// engine driven by this harness, with this harness's meshes and sweep. The comparison starts both
+// sides afresh for each pair and they take turns, so that each round of one is next in time to a
+// round of the other and no side keeps one address layout for every pair.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
