@@ -98,6 +98,11 @@ struct CutParams {
   // The tets the search for detached pieces visits at most: reached when the two sides of a cut
   // stay joined by a bridge far from it (CutReport::fragment_search_bounded).
   std::uint32_t fragment_search_bound = 65536;
+  // The cuts Cutter::undo() can take back, newest first (0: none kept). Each kept cut holds its
+  // journal (the old value of every slot it wrote: about 32 bytes a slot, a few hundred slots for
+  // a gated cut) and its net change; room for each is made once, about 0.9 MB, so that keeping
+  // one allocates nothing.
+  std::uint32_t undo_history = 0;
 
   // D_ref, the one length the refinement, the selection and the tissue rule are judged at.
   [[nodiscard]] double d_ref() const { return d_ref_factor * tool_diameter; }
@@ -275,6 +280,21 @@ class Cutter {
   // strategy, atomically, the index kept up to date. Reported like a cut with one request.
   // Refused (ok false, the mesh untouched) when t is uncuttable.
   CutReport remove(TetId t, ChangeLog* log = nullptr);
+
+  // Takes back the last cut, cut_segment or remove that changed the mesh, of the
+  // CutParams::undo_history last ones kept (a trainee retries an incision): the mesh's arrays,
+  // free lists and vertex attributes bit for bit as before it, and this Cutter's index, piece
+  // labels, removal statistics and last_min_dihedral_held() likewise, so that what follows runs
+  // as if the cut had never been made (the same cuts give the same hashes). Called again, it
+  // takes back the cut before, down to undo_depth() cuts. With `log`, appends the undo's net
+  // change (TetMesh::undo: what the cut removed comes back under its ids, marked restored).
+  // Refused, with the reason and no change, when nothing is kept: none asked for, all taken
+  // back, or the history emptied by reset(), compact(), set_uncuttable(), a change to
+  // undo_history or a change to the mesh made outside this Cutter. last_removed() and
+  // last_created() then name the undo's net change; last_fragments() and last_moved() are empty.
+  std::optional<std::string> undo(ChangeLog* log = nullptr);
+  // How many cuts undo() can take back now.
+  [[nodiscard]] std::uint32_t undo_depth() const;
 
   // Tissue every cut and removal request must leave (the paper's Fig. 7 frees the portal vein
   // from the resected liver): these live tets, and every tet later split from them, are never

@@ -20,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "tetcut/attributes.hpp"
@@ -214,9 +215,32 @@ class TetMesh {
   // live before and gone now, those live now and not before with their parents among the
   // former, the vertices made and still used with their origin among the vertices there before,
   // and the vertices gone. O(journal).
-  void commit(ChangeLog* log = nullptr);
+  //
+  // With `keep`, the transaction is also kept for undo(): see TransactionRecord below.
+  class TransactionRecord;
+  void commit(ChangeLog* log = nullptr, TransactionRecord* keep = nullptr);
   void rollback();
   [[nodiscard]] bool in_transaction() const { return journal_.active; }
+
+  // ---- undo of committed transactions (Cutter::undo) -----------------------------------------
+  // A state of the mesh: every change gives it a value it never had (a transaction that wrote
+  // something, a write outside one, compact()); an undo gives it back the value from before the
+  // transaction it takes back. What tells a kept transaction from one changed behind its back.
+  [[nodiscard]] std::uint64_t version() const { return version_; }
+  // Whether `record` keeps the last change made to this mesh (version() is the one its commit
+  // gave), so that undo() can take it back.
+  [[nodiscard]] bool is_last_change(const TransactionRecord& record) const;
+  // Takes back the transaction `record` kept, which must be the last change (is_last_change();
+  // outside a transaction): the arrays, free lists and counts bit for bit as before it began,
+  // the vertex attributes it wrote included; version() as it was then. The record is spent.
+  // With `log`, appends the undo's net change (change_log.hpp): removed and removed_vertices the
+  // tets and vertices the transaction made; created and vertices those it removed, restored
+  // under their ids, each with no parents and count 0 (restored: its values are those it had
+  // before the transaction, which per-id consumers still hold, since no later change can have
+  // reused an id freed by the last one); moved the vertices it moved, back where they were, each
+  // with count 0 too and `before` where the transaction had put them. O(the transaction's
+  // journal).
+  void undo(TransactionRecord& record, ChangeLog* log = nullptr);
 
   // A point inside the open transaction to come back to: an attempt that does not pan out is
   // undone by rollback_to() (the removal strategies' one undo), everything done since is gone
@@ -364,6 +388,9 @@ class TetMesh {
     std::uint64_t value_ = 0;
   };
   IdEpoch id_epoch_;
+  // version(): the state's value, and the last value given.
+  std::uint64_t version_ = 0, last_version_ = 0;
+  void new_version() { version_ = ++last_version_; }
 
   std::uint32_t live_tets_ = 0;
   std::uint32_t live_vertices_ = 0;
@@ -395,6 +422,7 @@ class TetMesh {
   struct Journal {
     bool active = false;
     Savepoint start;                       // the state at begin_transaction()
+    std::uint64_t start_version = 0;       // version() then
     // Elements below these indices existed at the newest savepoint: their old values are
     // recorded; elements appended since are simply truncated by a rollback.
     std::uint32_t recorded_tets = 0, recorded_vertices = 0;
@@ -417,12 +445,21 @@ class TetMesh {
   // Journals the old value of array[index], unless no transaction is open or the element was
   // appended in it (rollback truncates those): inline, since most elements a cut writes are new.
   void note(Array array, std::uint32_t index) {
-    if (!journal_.active) return;
+    if (!journal_.active) {
+      new_version();  // a write outside a transaction: no undo can come back across it
+      return;
+    }
     const bool is_tet = array == Array::kTetVerts || array == Array::kTetAdj;
     if (index >= (is_tet ? journal_.recorded_tets : journal_.recorded_vertices)) return;
     record_old_value(array, index);
   }
   void record_old_value(Array array, std::uint32_t index);
+  // Writes back the old values of `entries`, newest first, then truncates the arrays and sets the
+  // counts and list heads as `point` has them: rollback_to() and undo().
+  void restore(std::span<const JournalEntry> entries, std::span<const double> attribute_values, const Savepoint& point);
+  // undo()'s log: the ids the transaction touched, with whether each is live after it.
+  std::vector<std::pair<std::uint32_t, bool>> undo_tets_, undo_vertices_;
+  std::vector<std::pair<VertId, Vec3>> undo_moved_;
   // Origins of vertices made in the transaction (ChangeLog::vertices): composed along the edges
   // they were put on, or located in an old tet (mesh_journal.cpp).
   void compose_origin(VertId a, VertId b, double t, CreatedVertex& out) const;
@@ -455,6 +492,27 @@ class TetMesh {
                    std::span<const TetId> parent_of);
   void glue_faces();
   void reseed_vertices();
+};
+
+// What TetMesh::commit(log, &record) keeps of a transaction for TetMesh::undo(): the old value of
+// every slot it wrote and the state it began from. It takes the journal's own buffers, and gives
+// the journal its previous ones in exchange (a swap, not a copy): keeping a transaction costs
+// O(1), and records reserved once are reused with no allocation (Cutter's history of cuts).
+class TetMesh::TransactionRecord {
+ public:
+  // Room for this many journal entries, touched (the journal's working size by default).
+  void reserve(std::size_t entries = kJournalWorkingSize);
+  // Kept by a commit and not yet spent by an undo.
+  [[nodiscard]] bool kept() const { return kept_; }
+  void clear() { kept_ = false; }
+
+ private:
+  friend class TetMesh;
+  bool kept_ = false;
+  Savepoint start_;
+  std::uint64_t version_before_ = 0, version_after_ = 0;
+  std::vector<JournalEntry> entries_;
+  std::vector<double> attribute_values_;
 };
 
 }  // namespace tetcut

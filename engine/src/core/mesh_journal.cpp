@@ -13,6 +13,7 @@
 #include "tetcut/mesh.hpp"
 
 #include "core/host_location.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 
 namespace tetcut {
 
@@ -57,12 +58,29 @@ void TetMesh::begin_transaction() {
   journal_.first_verts_entry.clear();
   journal_.first_verts_indexed = 0;
   journal_.start = savepoint();
+  journal_.start_version = version_;
   journal_.active = true;
 }
 
-void TetMesh::commit(ChangeLog* log) {
+void TetMesh::commit(ChangeLog* log, TransactionRecord* keep) {
   if (journal_.active && !journal_.vertex_moves.empty() && attributes_.channel_count() > 0) interpolate_attributes_at_commit();
   if (log && journal_.active) append_change_log(*log);
+  if (journal_.active) {
+    // Nothing written and nothing appended (a rolled-back transaction, a cut that met nothing to
+    // change): the state is the one it began from.
+    const Savepoint& s = journal_.start;
+    const bool changed = !journal_.entries.empty() || tet_capacity() != s.tets || vertex_capacity() != s.vertices ||
+                         pending_tet_head_.valid() || pending_vert_head_.valid();
+    if (changed) new_version();
+    if (keep) {
+      keep->kept_ = true;
+      keep->start_ = s;
+      keep->version_before_ = journal_.start_version;
+      keep->version_after_ = version_;
+      std::swap(keep->entries_, journal_.entries);
+      std::swap(keep->attribute_values_, journal_.attribute_values);
+    }
+  }
   journal_.active = false;
   journal_.vertex_moves.clear();
   journal_.entries.clear();
@@ -100,10 +118,9 @@ void TetMesh::record_old_value(Array array, std::uint32_t index) {
   journal_.entries.push_back(e);
 }
 
-void TetMesh::rollback_to(const Savepoint& p) {
-  assert(journal_.active && p.entries <= journal_.entries.size());
-  for (std::size_t i = journal_.entries.size(); i-- > p.entries;) {
-    const JournalEntry& e = journal_.entries[i];
+void TetMesh::restore(std::span<const JournalEntry> entries, std::span<const double> attribute_values, const Savepoint& p) {
+  for (std::size_t i = entries.size(); i-- > 0;) {
+    const JournalEntry& e = entries[i];
     switch (e.array) {
       case Array::kTetVerts: std::memcpy(tet_verts_[e.index].data(), e.old.data(), 16); break;
       case Array::kTetAdj: std::memcpy(tet_adj_[e.index].data(), e.old.data(), 16); break;
@@ -114,24 +131,10 @@ void TetMesh::rollback_to(const Savepoint& p) {
       case Array::kAttributes: {
         std::size_t k = e.old[0];
         for (std::uint32_t c = 0; c < attributes_.channel_count(); ++c)
-          for (double& x : attributes_.value(c, VertId{e.index})) x = journal_.attribute_values[k++];
+          for (double& x : attributes_.value(c, VertId{e.index})) x = attribute_values[k++];
         break;
       }
     }
-  }
-  journal_.entries.resize(p.entries);
-  journal_.attribute_values.resize(p.attribute_values);
-  // Births since p are undone with the tets and vertices they name; their ids' slots in
-  // birth_of go stale (a lookup checks the birth still names the id).
-  journal_.tet_births.resize(p.tet_births);
-  journal_.parents.resize(p.parents);
-  journal_.vertex_births.resize(p.vertex_births);
-  journal_.vertex_moves.resize(p.vertex_moves);  // their slots go stale like the births'
-  journal_.births_removed = p.births_removed;
-  // Entries past p are gone: their first-entry records too (rare: only after a locate).
-  if (journal_.first_verts_indexed > p.entries) {
-    journal_.first_verts_entry.clear();
-    journal_.first_verts_indexed = 0;
   }
   tet_verts_.resize(p.tets);
   tet_adj_.resize(p.tets);
@@ -148,6 +151,25 @@ void TetMesh::rollback_to(const Savepoint& p) {
   free_vert_head_ = p.free_vert_head;
   pending_vert_head_ = p.pending_vert_head;
   pending_vert_tail_ = p.pending_vert_tail;
+}
+
+void TetMesh::rollback_to(const Savepoint& p) {
+  assert(journal_.active && p.entries <= journal_.entries.size());
+  restore(std::span<const JournalEntry>(journal_.entries).subspan(p.entries), journal_.attribute_values, p);
+  journal_.entries.resize(p.entries);
+  journal_.attribute_values.resize(p.attribute_values);
+  // Births since p are undone with the tets and vertices they name; their ids' slots in
+  // birth_of go stale (a lookup checks the birth still names the id).
+  journal_.tet_births.resize(p.tet_births);
+  journal_.parents.resize(p.parents);
+  journal_.vertex_births.resize(p.vertex_births);
+  journal_.vertex_moves.resize(p.vertex_moves);  // their slots go stale like the births'
+  journal_.births_removed = p.births_removed;
+  // Entries past p are gone: their first-entry records too (rare: only after a locate).
+  if (journal_.first_verts_indexed > p.entries) {
+    journal_.first_verts_entry.clear();
+    journal_.first_verts_indexed = 0;
+  }
   journal_.recorded_tets = p.tets;
   journal_.recorded_vertices = p.vertices;
 }
@@ -156,6 +178,82 @@ void TetMesh::rollback() {
   assert(journal_.active);
   rollback_to(journal_.start);
   commit();  // nothing is pending any more: the start had no pending ids
+}
+
+// ---- undo of a committed transaction ----------------------------------------------------------
+
+void TetMesh::TransactionRecord::reserve(std::size_t entries) {
+  detail::reserve_touched(entries_, entries);
+  detail::reserve_touched(attribute_values_, entries);
+}
+
+bool TetMesh::is_last_change(const TransactionRecord& record) const {
+  return record.kept_ && !journal_.active && version_ == record.version_after_;
+}
+
+void TetMesh::undo(TransactionRecord& record, ChangeLog* log) {
+  assert(is_last_change(record));
+  if (!is_last_change(record)) return;
+  const Savepoint& start = record.start_;
+  if (log) {
+    // What the ids the transaction touched are after it: the slots it wrote that were there
+    // before, and every slot it appended. Which of them are live once it is undone is read below.
+    undo_tets_.clear();
+    undo_vertices_.clear();
+    undo_moved_.clear();
+    ancestor_seen_.clear();
+    vertex_seen_.clear();
+    for (const JournalEntry& e : record.entries_) {
+      if (e.array == Array::kTetVerts && ancestor_seen_.insert(TetId{e.index}))
+        undo_tets_.emplace_back(e.index, is_live(TetId{e.index}));
+      if (e.array == Array::kVertTet && vertex_seen_.insert(VertId{e.index}))
+        undo_vertices_.emplace_back(e.index, is_live(VertId{e.index}));
+      if (e.array == Array::kPositions && is_live(VertId{e.index})) undo_moved_.emplace_back(VertId{e.index}, positions_[e.index]);
+    }
+    for (std::uint32_t t = start.tets; t < tet_capacity(); ++t) undo_tets_.emplace_back(t, is_live(TetId{t}));
+    for (std::uint32_t v = start.vertices; v < vertex_capacity(); ++v) undo_vertices_.emplace_back(v, is_live(VertId{v}));
+  }
+  restore(record.entries_, record.attribute_values_, start);
+  version_ = record.version_before_;
+  record.kept_ = false;
+  if (!log) return;
+  const auto first_created = static_cast<std::ptrdiff_t>(log->created.size());
+  const auto first_removed = static_cast<std::ptrdiff_t>(log->removed.size());
+  for (const auto& [id, live_after] : undo_tets_) {
+    const TetId t{id};
+    const bool live_before = is_live(t);
+    if (live_after && !live_before) log->removed.push_back(t);
+    if (!live_after && live_before)
+      log->created.push_back(CreatedTet{t, kNoTet, static_cast<std::uint32_t>(log->parents.size()), 0});
+  }
+  std::sort(log->removed.begin() + first_removed, log->removed.end());
+  std::sort(log->created.begin() + first_created, log->created.end(),
+            [](const CreatedTet& x, const CreatedTet& y) { return x.tet < y.tet; });
+  const auto first_vertex = static_cast<std::ptrdiff_t>(log->vertices.size());
+  const auto first_gone = static_cast<std::ptrdiff_t>(log->removed_vertices.size());
+  for (const auto& [id, live_after] : undo_vertices_) {
+    const VertId v{id};
+    const bool live_before = is_live(v);
+    if (live_after && !live_before) log->removed_vertices.push_back(v);
+    if (!live_after && live_before) log->vertices.push_back(CreatedVertex{v, {}, {}, 0});
+  }
+  std::sort(log->vertices.begin() + first_vertex, log->vertices.end(),
+            [](const CreatedVertex& x, const CreatedVertex& y) { return x.vertex < y.vertex; });
+  std::sort(log->removed_vertices.begin() + first_gone, log->removed_vertices.end());
+  // A slot written several times is listed once per write: the position after is the same.
+  const auto first_moved = static_cast<std::ptrdiff_t>(log->moved.size());
+  for (const auto& [v, after] : undo_moved_) {
+    if (!is_live(v) || positions_[v.value] == after) continue;
+    MovedVertex m;
+    m.vertex = v;
+    m.before = after;
+    log->moved.push_back(m);
+  }
+  std::sort(log->moved.begin() + first_moved, log->moved.end(),
+            [](const MovedVertex& x, const MovedVertex& y) { return x.vertex < y.vertex; });
+  log->moved.erase(std::unique(log->moved.begin() + first_moved, log->moved.end(),
+                               [](const MovedVertex& x, const MovedVertex& y) { return x.vertex == y.vertex; }),
+                   log->moved.end());
 }
 
 // ---- the record of change -------------------------------------------------------------------

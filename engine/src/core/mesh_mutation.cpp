@@ -332,6 +332,7 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
 
 Renumbering TetMesh::compact() {
   assert(!journal_.active && "compact() inside a transaction");
+  new_version();  // every id may mean another tet now: no undo comes back across this
   Renumbering map;
   map.tet_old_to_new.assign(tet_capacity(), kNoTet);
   map.vert_old_to_new.assign(vertex_capacity(), kNoVert);

@@ -1,6 +1,7 @@
 // The walk of one cut (cut.hpp): each stage entered once, in order, from cut().
 #include "cut/cut_pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -89,13 +90,59 @@ void Cutter::Pipeline::prepare() {
   search_.reserve(tets, params_.fragment_search_bound);
   reserve_touched(fragments_, 1024);
   transaction_.reserve();
+  reserve_history();
   // The working size of a cut's lists; a larger cut grows them once (allocations per cut are
   // gated by ci/bench).
   constexpr std::size_t kCutScratch = 16384;
   for (auto* list : {&hit_, &region_, &removed_, &created_}) reserve_touched(*list, kCutScratch);
 }
 
+void Cutter::Pipeline::reserve_history() {
+  if (history_.size() != params_.undo_history) {
+    history_.clear();  // a ring of another size: its order means nothing in the new one
+    history_.resize(params_.undo_history);
+    history_top_ = 0;
+    if (kept_cuts_ > 0) empty_history("a change of CutParams::undo_history");
+  }
+  for (KeptCut& k : history_) {
+    k.mesh.reserve();
+    constexpr std::size_t kCutScratch = 16384;
+    detail::reserve_touched(k.removed, kCutScratch);
+    detail::reserve_touched(k.created, kCutScratch);
+    detail::reserve_touched(k.labels.relabelled, 4096);
+  }
+}
+
+std::optional<std::string> Cutter::Pipeline::undo(ChangeLog* log) {
+  if (auto invalid = stale()) return invalid;
+  if (kept_cuts_ == 0) {
+    if (params_.undo_history == 0) return "no cut is kept for undo: CutParams::undo_history is 0";
+    if (history_emptied_by_) return std::string("no cut to undo: ") + history_emptied_by_ + " emptied the undo history";
+    return "no cut to undo: every cut kept (CutParams::undo_history = " + std::to_string(params_.undo_history) +
+           ") was taken back, or none changed the mesh";
+  }
+  KeptCut& k = history_[history_top_];
+  if (!mesh_.is_last_change(k.mesh)) {
+    empty_history("a change to the mesh made outside this Cutter");
+    return "no cut to undo: the mesh was changed outside this Cutter since its last cut";
+  }
+  // The labels first: they read the made tets' labels while those are still the live ones.
+  labels_.take_back(k.labels, k.removed, k.created);
+  mesh_.undo(k.mesh, log);
+  for (TetId t : k.created) index_.erase(t);
+  for (TetId t : k.removed) index_.insert(mesh_, t);
+  remover_.restore_report(k.removal_before);
+  last_min_dihedral_held_ = k.min_dihedral_held_before;
+  transaction_.undone(k.created, k.removed);
+  audit_.clear();
+  fragments_.clear();
+  history_top_ = (history_top_ + params_.undo_history - 1) % params_.undo_history;
+  if (--kept_cuts_ == 0) history_emptied_by_ = nullptr;
+  return std::nullopt;
+}
+
 void Cutter::Pipeline::reset() {
+  empty_history("reset()");
   index_.build(mesh_, mesh_.mean_edge_length());
   labels_.build(mesh_);
   epoch_ = mesh_.id_epoch();
@@ -112,6 +159,7 @@ Renumbering Cutter::Pipeline::compact() {
   Renumbering map = mesh_.compact();
   detail::UncuttableTets uncuttable = std::move(uncuttable_);
   reset();
+  empty_history("compact()");
   uncuttable.renumber(map);
   uncuttable_ = std::move(uncuttable);
   return map;
@@ -128,6 +176,7 @@ std::optional<std::string> Cutter::Pipeline::set_params(const CutParams& params)
   if (removal_changed) remover_.set_options(removal_options(params_));
   if (revisit_now) reserve_revisit();  // between cuts, so that the cuts in that order do not allocate
   search_.reserve(room_for_tets(), params_.fragment_search_bound);  // likewise for a larger bound
+  reserve_history();
   return std::nullopt;
 }
 
@@ -141,6 +190,8 @@ std::optional<std::string> Cutter::Pipeline::set_uncuttable(std::span<const TetI
   for (TetId t : tets)
     if (t.value >= mesh_.tet_capacity() || !mesh_.is_live(t)) return "tet " + std::to_string(t.value) + " is not live";
   uncuttable_.assign(mesh_, tets);
+  // A cut taken back would restore tets whose marks were written before this set.
+  empty_history("set_uncuttable()");
   return std::nullopt;
 }
 
@@ -174,6 +225,7 @@ bool Cutter::Pipeline::refuse(CutReport& report, CutRefusal refusal, std::string
 
 void Cutter::Pipeline::begin(const Tool* tool) {
   transaction_.begin(mesh_, remover_);
+  version_at_begin_ = mesh_.version();
   selection_.begin(tool);
   // The cut's reach: the tool grown by D_ref, the longest edge its refinement leaves at the
   // tool (refine.hpp); what the cut removes beyond the tool lies within it, and the improvement
@@ -196,6 +248,7 @@ CutReport Cutter::Pipeline::cut(const Vec3& a, const Vec3& b, ChangeLog* log) {
   transaction_.forget();
   audit_.clear();
   fragments_.clear();
+  min_dihedral_held_at_begin_ = last_min_dihedral_held_;  // before any attempt's improvement pass
   if (auto invalid = stale()) {
     refuse(report, CutRefusal::kStaleIndex, *invalid);
     return report;
@@ -296,6 +349,7 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
   transaction_.forget();
   audit_.clear();
   fragments_.clear();
+  min_dihedral_held_at_begin_ = last_min_dihedral_held_;  // before any attempt's improvement pass
   if (auto invalid = stale()) {
     refuse(report, CutRefusal::kStaleIndex, *invalid);
     return report;
@@ -442,14 +496,32 @@ void Cutter::Pipeline::find_pieces(CutReport& report) {
 // Commits the transaction, brings the index and the piece labels up to date with the net changes
 // and hands the caller the net change (the journal derives it).
 void Cutter::Pipeline::commit(CutReport& report, ChangeLog* log) {
+  // Kept for undo() in the ring's next record, unless no history is asked for.
+  KeptCut* kept = history_.empty() ? nullptr : &history_[(history_top_ + 1) % history_.size()];
+  if (kept) labels_.keep(kept->labels);
   labels_.before_commit(mesh_, transaction_.start(), removed_);
   // The search's net change is the transaction's unless debris went since.
   const detail::CutTransaction::NetChange known{removed_, created_};
-  report.tets_created = transaction_.commit(mesh_, uncuttable_, index_, log, report.debris_pieces_removed == 0 ? &known : nullptr);
+  report.tets_created = transaction_.commit(mesh_, uncuttable_, index_, log, report.debris_pieces_removed == 0 ? &known : nullptr,
+                                            kept ? &kept->mesh : nullptr);
   report.vertices_moved = static_cast<std::uint32_t>(transaction_.net_moved().size());
   labels_.after_commit(transaction_.net_removed());
   for (const Fragment& f : fragments_)
-    if (!f.removed) labels_.detach(f.tets);
+    if (!f.removed) labels_.detach(f.tets, kept ? &kept->labels : nullptr);
+  if (!kept) return;
+  if (mesh_.version() == version_at_begin_) {  // nothing changed: nothing to take back
+    kept->mesh.clear();
+    // The record was the oldest kept when the ring is full: it is spent.
+    if (kept_cuts_ == history_.size()) --kept_cuts_;
+    return;
+  }
+  kept->removal_before = transaction_.removal_at_start();
+  kept->min_dihedral_held_before = min_dihedral_held_at_begin_;
+  kept->removed.assign(transaction_.net_removed().begin(), transaction_.net_removed().end());
+  kept->created.assign(transaction_.net_created().begin(), transaction_.net_created().end());
+  history_top_ = static_cast<std::uint32_t>((history_top_ + 1) % history_.size());
+  kept_cuts_ = std::min<std::uint32_t>(kept_cuts_ + 1, params_.undo_history);
+  history_emptied_by_ = nullptr;
 }
 
 }  // namespace tetcut

@@ -46,6 +46,8 @@ class Cutter::Pipeline {
   // A cut by the capsule a-b (a ball when a == b), of the tool's diameter.
   CutReport cut(const Vec3& a, const Vec3& b, ChangeLog* log);
   CutReport remove(TetId t, ChangeLog* log);
+  std::optional<std::string> undo(ChangeLog* log);
+  [[nodiscard]] std::uint32_t undo_depth() const { return kept_cuts_; }
   TetId tet_containing(const Vec3& p);
   // The mesh's ids are the ones the index was built on (TetMesh::id_epoch() unchanged since).
   [[nodiscard]] bool indexes_current_mesh() const { return epoch_ == mesh_.id_epoch(); }
@@ -129,6 +131,27 @@ class Cutter::Pipeline {
   std::vector<TetId> hit_, region_;  // T_hit, and the refined region
   // Where the removal stage began and ended in the journal: what it made, for the audit.
   TetMesh::Savepoint removal_start_, removal_end_;
+
+  // A committed cut kept for undo(): the mesh's record of it, and what this pipeline changed.
+  struct KeptCut {
+    TetMesh::TransactionRecord mesh;
+    RemovalReport removal_before;
+    double min_dihedral_held_before = 180.0;
+    std::vector<TetId> removed, created;  // its net change
+    detail::PieceLabels::Undo labels;
+  };
+  // A ring of params_.undo_history, the newest kept_cuts_ of them at history_top_ and below it.
+  std::vector<KeptCut> history_;
+  std::uint32_t history_top_ = 0, kept_cuts_ = 0;
+  const char* history_emptied_by_ = nullptr;  // why nothing is kept, for undo()'s refusal
+  std::uint64_t version_at_begin_ = 0;
+  double min_dihedral_held_at_begin_ = 180.0;
+  // The ring sized by params_.undo_history, every record with room to be kept without allocating.
+  void reserve_history();
+  void empty_history(const char* why) {
+    kept_cuts_ = 0;
+    history_emptied_by_ = why;
+  }
 };
 
 }  // namespace tetcut

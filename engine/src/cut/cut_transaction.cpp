@@ -30,11 +30,11 @@ void CutTransaction::roll_back(TetMesh& mesh, Remover& remover) {
 }
 
 std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log,
-                                     const NetChange* known) {
+                                     const NetChange* known, TetMesh::TransactionRecord* keep) {
   uncuttable.before_commit(mesh, start_);
   if (log) {
     changes_.clear();
-    mesh.commit(&changes_);
+    mesh.commit(&changes_, keep);
     net_removed_.assign(changes_.removed.begin(), changes_.removed.end());
     net_created_.clear();
     for (const CreatedTet& c : changes_.created) net_created_.push_back(c.tet);
@@ -51,7 +51,7 @@ std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, 
     }
     mesh.moved_vertices(moved_);
     keep_moved(moved_);
-    mesh.commit();
+    mesh.commit(nullptr, keep);
   }
   uncuttable.after_commit(mesh);
   for (TetId t : net_removed_) index.erase(t);

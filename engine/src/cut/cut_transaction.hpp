@@ -30,8 +30,17 @@ class CutTransaction {
   struct NetChange {
     std::span<const TetId> removed, created;
   };
+  // `keep`: the mesh's record of the transaction, for an undo (TetMesh::commit).
   std::uint32_t commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log,
-                       const NetChange* known = nullptr);
+                       const NetChange* known = nullptr, TetMesh::TransactionRecord* keep = nullptr);
+  // An undo's net change, as the last one's (Cutter::last_removed(), last_created()): no moves.
+  void undone(std::span<const TetId> removed, std::span<const TetId> created) {
+    forget();
+    net_removed_.assign(removed.begin(), removed.end());
+    net_created_.assign(created.begin(), created.end());
+  }
+  // The Remover's statistics when the open (or last) transaction began.
+  [[nodiscard]] const RemovalReport& removal_at_start() const { return removal_at_start_; }
   // A new call: no net change yet (a refused or empty cut reports none).
   void forget() {
     net_removed_.clear();

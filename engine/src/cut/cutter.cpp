@@ -23,6 +23,7 @@ std::optional<std::string> validate(const CutParams& p) {
   if (!(p.debris_volume >= 0.0 && std::isfinite(p.debris_volume)))
     return "the debris volume must be a finite volume, 0 or more (0: detached pieces are only reported)";
   if (p.fragment_search_bound == 0) return "the fragment search bound must be at least one tet";
+  if (p.undo_history > 4096) return "the undo history must be at most 4096 cuts";
   return std::nullopt;
 }
 
@@ -42,6 +43,8 @@ const CutParams& Cutter::params() const { return pipeline_->params(); }
 CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) { return pipeline_->cut(centre, centre, log); }
 CutReport Cutter::cut_segment(const Vec3& a, const Vec3& b, ChangeLog* log) { return pipeline_->cut(a, b, log); }
 CutReport Cutter::remove(TetId t, ChangeLog* log) { return pipeline_->remove(t, log); }
+std::optional<std::string> Cutter::undo(ChangeLog* log) { return pipeline_->undo(log); }
+std::uint32_t Cutter::undo_depth() const { return pipeline_->undo_depth(); }
 TetId Cutter::tet_containing(const Vec3& p) { return pipeline_->tet_containing(p); }
 const RemovalReport& Cutter::removal_report() const { return pipeline_->removal_report(); }
 TetMesh& Cutter::mesh() { return pipeline_->mesh(); }

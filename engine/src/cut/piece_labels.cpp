@@ -57,10 +57,32 @@ void PieceLabels::after_commit(std::span<const TetId> removed) {
   made_.clear();
 }
 
-void PieceLabels::detach(std::span<const TetId> piece) {
+void PieceLabels::keep(Undo& undo) const {
+  undo.pieces = pieces_;
+  undo.sole = sole_;
+  undo.labels = static_cast<std::uint32_t>(tets_of_.size());
+  undo.relabelled.clear();
+}
+
+void PieceLabels::take_back(const Undo& undo, std::span<const TetId> restored, std::span<const TetId> made) {
+  for (auto it = undo.relabelled.rbegin(); it != undo.relabelled.rend(); ++it) {
+    count(label_[it->first.value], -1);
+    label_[it->first.value] = it->second;
+    count(it->second, +1);
+  }
+  for (TetId t : made) count(label_[t.value], -1);
+  for (TetId t : restored) count(label_[t.value], +1);
+  // The labels the transaction opened are empty again: gone, and the counts as they were.
+  tets_of_.resize(undo.labels);
+  pieces_ = undo.pieces;
+  sole_ = undo.sole;
+}
+
+void PieceLabels::detach(std::span<const TetId> piece, Undo* undo) {
   const auto fresh = static_cast<std::uint32_t>(tets_of_.size());
   tets_of_.push_back(0);
   for (TetId t : piece) {
+    if (undo) undo->relabelled.emplace_back(t, label_[t.value]);
     count(label_[t.value], -1);
     label_[t.value] = fresh;
     count(fresh, +1);

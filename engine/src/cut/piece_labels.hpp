@@ -43,7 +43,20 @@ class PieceLabels {
   // labels' counts, and then each detached piece (its tets, live) moved to a new label.
   void before_commit(TetMesh& mesh, const TetMesh::Savepoint& start, std::span<const TetId> replaced);
   void after_commit(std::span<const TetId> removed);
-  void detach(std::span<const TetId> piece);
+
+  // What a committed transaction changed here, for Cutter::undo(): the counts before it and the
+  // label each detached tet had.
+  struct Undo {
+    std::uint32_t pieces = 0, sole = 0, labels = 0;
+    std::vector<std::pair<TetId, std::uint32_t>> relabelled;
+  };
+  // Before a commit that may be undone: the counts as they are.
+  void keep(Undo& undo) const;
+  // Moves a detached piece to a label of its own; with `undo`, notes the labels it had.
+  void detach(std::span<const TetId> piece, Undo* undo = nullptr);
+  // Takes back the committed transaction `undo` kept, while its made tets (`made`) are still
+  // live and before the tets it removed (`restored`, whose labels are still here) are back.
+  void take_back(const Undo& undo, std::span<const TetId> restored, std::span<const TetId> made);
 
  private:
   void count(std::uint32_t label, int delta);
