@@ -27,6 +27,7 @@ std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
     tets_.resize(mesh.tet_capacity(), {kDead, kDead, kDead, kDead});
     labels_.resize(mesh.tet_capacity(), kNoLabel);
   }
+  if (log.undo) return restore(mesh, log);
   // The created tets' labels first, while their parents are still here.
   std::uint32_t orphans = 0;
   created_labels_.clear();
@@ -51,6 +52,13 @@ std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
     if (label == kNoLabel) ++orphans;
     created_labels_.push_back(label);
   }
+  const bool changed = !log.removed.empty() || !log.created.empty() || !log.moved.empty();
+  if (history_limit_ > 0 && changed) {  // a log that changes nothing is not kept, as the Cutter keeps no such cut
+    if (history_.size() == history_limit_) history_.erase(history_.begin());  // the oldest goes
+    history_.emplace_back();
+    for (TetId t : log.removed)
+      if (has(t)) history_.back().emplace_back(t, labels_[t.value]);
+  }
   for (TetId t : log.removed) {
     if (!has(t)) continue;
     tets_[t.value] = {kDead, kDead, kDead, kDead};
@@ -61,6 +69,39 @@ std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
     const auto v = mesh.tet(t);
     tets_[t.value] = {v[0].value, v[1].value, v[2].value, v[3].value};
     labels_[t.value] = created_labels_[k];
+  }
+  return orphans;
+}
+
+void TetLabels::keep_history(std::uint32_t logs) {
+  history_limit_ = logs;
+  while (history_.size() > logs) history_.erase(history_.begin());
+}
+
+std::uint32_t TetLabels::restore(const TetMesh& mesh, const ChangeLog& log) {
+  for (TetId t : log.removed) {
+    if (!has(t)) continue;
+    tets_[t.value] = {kDead, kDead, kDead, kDead};
+    labels_[t.value] = kNoLabel;
+  }
+  std::vector<std::pair<TetId, std::uint32_t>> taken;
+  if (!history_.empty()) {
+    taken = std::move(history_.back());
+    history_.pop_back();
+  }
+  if (mesh.tet_capacity() > tets_.size()) {
+    tets_.resize(mesh.tet_capacity(), {kDead, kDead, kDead, kDead});
+    labels_.resize(mesh.tet_capacity(), kNoLabel);
+  }
+  std::uint32_t orphans = 0;
+  for (const CreatedTet& c : log.created) {
+    const auto it = std::lower_bound(taken.begin(), taken.end(), c.tet,
+                                     [](const std::pair<TetId, std::uint32_t>& x, TetId id) { return x.first < id; });
+    const std::uint32_t label = it != taken.end() && it->first == c.tet ? it->second : kNoLabel;
+    if (label == kNoLabel) ++orphans;
+    const auto v = mesh.tet(c.tet);
+    tets_[c.tet.value] = {v[0].value, v[1].value, v[2].value, v[3].value};
+    labels_[c.tet.value] = label;
   }
   return orphans;
 }
@@ -78,6 +119,7 @@ void TetLabels::renumber(const Renumbering& renumbering) {
   }
   tets_ = std::move(tets);
   labels_ = std::move(labels);
+  history_.clear();  // kept under the old ids (and no Cutter undoes across a compaction)
 }
 
 }  // namespace tetcut::mechanics

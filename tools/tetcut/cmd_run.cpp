@@ -20,7 +20,7 @@ int cmd_run(Args args, std::ostream& out, std::ostream& err) {
       "tetcut run SCENARIO [--refinement auto|paper|graded] [--debris-volume V] [--check every|end|none] [--out M] "
       "[--report R.json]",
       "Runs a scenario file: one operation a line (mesh, diameter, strategy, cut, sweep, remove,\n"
-      "compact, check, expect hash|tets|unresolved|components), tets and tools addressed by points\n"
+      "compact, undo, check, expect hash|tets|unresolved|components), tets and tools addressed by points\n"
       "so that scenarios survive changes of internal ids. See corpus/scenarios/ and\n"
       "tools/scenario/include/tetcut/scenario/scenario.hpp.\n",
       "exit: 0 passed, 1 a check or expectation failed (its line is named), 2 unusable input");

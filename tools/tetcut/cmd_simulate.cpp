@@ -203,6 +203,10 @@ std::optional<int> plan_cuts(SimulateArgs& a, const CommandParser& parser, std::
         case scenario::OpKind::kUncuttable:
           a.uncuttable_labels.insert(a.uncuttable_labels.end(), op.labels.begin(), op.labels.end());
           break;
+        case scenario::OpKind::kUndo:
+          return parser.usage_error(*a.input + ":" + std::to_string(op.line) +
+                                        ": simulate plans its cuts before it runs them and takes none back: `undo` is `tetcut run`'s",
+                                    err);
         default: break;  // checks and expectations are `tetcut run`'s
       }
     }

@@ -16,6 +16,15 @@
 //                     `created` (a tet's shape changed, so it is a new tet);
 //   removed_vertices  vertices live before and gone after (no tet uses them any more).
 //
+// An undo (Cutter::undo(), TetMesh::undo()) gives a log with `undo` set: it takes back the last
+// operation that changed the mesh. Its removed tets and vertices are those the operation made;
+// its created tets (no parents) and vertices (count 0) are those it removed, restored under the
+// same ids with the same vertices and positions; its moved vertices (count 0, `before` where the
+// operation had put them) are back where they were. A restored entity's values are those it had
+// before the undone operation: a consumer that keeps per-entity values keeps, per operation it
+// applied, what that operation took away, and gives it back on the undo (newest first, as the
+// Cutter takes cuts back; mechanics::TetLabels does so for labels).
+//
 // Net means intermediate steps are invisible: a tet a refinement made and a later step split or
 // removed again appears nowhere, and its children's parents are the tets that were there before.
 // Apply removals first, then creations. Compute the values of created and moved vertices from
@@ -81,6 +90,7 @@ struct ChangeLog {
   std::vector<CreatedVertex> vertices;
   std::vector<MovedVertex> moved;
   std::vector<VertId> removed_vertices;
+  bool undo = false;  // takes back the last operation: restored entities (see above)
 
   [[nodiscard]] std::span<const TetId> parents_of(const CreatedTet& c) const {
     return std::span<const TetId>(parents).subspan(c.parents_begin, c.parents_count);
@@ -103,6 +113,7 @@ struct ChangeLog {
     vertices.clear();
     moved.clear();
     removed_vertices.clear();
+    undo = false;
   }
 };
 
@@ -118,6 +129,7 @@ inline void append(ChangeLog& to, const ChangeLog& from) {
   to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
   to.moved.insert(to.moved.end(), from.moved.begin(), from.moved.end());
   to.removed_vertices.insert(to.removed_vertices.end(), from.removed_vertices.begin(), from.removed_vertices.end());
+  to.undo = to.undo || from.undo;
 }
 
 }  // namespace tetcut

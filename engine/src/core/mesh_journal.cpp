@@ -217,6 +217,7 @@ void TetMesh::undo(TransactionRecord& record, ChangeLog* log) {
   version_ = record.version_before_;
   record.kept_ = false;
   if (!log) return;
+  log->undo = true;
   const auto first_created = static_cast<std::ptrdiff_t>(log->created.size());
   const auto first_removed = static_cast<std::ptrdiff_t>(log->removed.size());
   for (const auto& [id, live_after] : undo_tets_) {

@@ -28,7 +28,7 @@ std::vector<std::string> tokens_of(const std::string& line) {
 bool is_param(const std::string& w) {
   return w == "diameter" || w == "dref_factor" || w == "p" || w == "depth" || w == "iterations" || w == "strategy" ||
          w == "order" || w == "neighbour_set" || w == "split" || w == "refinement" || w == "improve" || w == "quality_floor" ||
-         w == "min_dihedral" || w == "max_tets_created" || w == "debris_volume";
+         w == "min_dihedral" || w == "max_tets_created" || w == "debris_volume" || w == "undo_history";
 }
 
 // Applies a parameter line to `params`; a message when the value is not acceptable.
@@ -61,6 +61,10 @@ std::optional<std::string> set_param(CutParams& params, const std::string& name,
     const auto n = parse_uint(value);
     if (!n || *n < 1 || *n > 0xFFFFFFFFull) return std::string("max_tets_created must be a positive integer");
     next.max_tets_created = static_cast<std::uint32_t>(*n);
+  } else if (name == "undo_history") {
+    const auto n = parse_uint(value);
+    if (!n || *n > 4096) return std::string("undo_history must be an integer between 0 and 4096");
+    next.undo_history = static_cast<std::uint32_t>(*n);
   } else if (name == "depth" || name == "iterations") {
     const auto n = parse_uint(value);
     if (!n || *n > 64) return name + " must be an integer between 1 and 64";
@@ -153,6 +157,9 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
     } else if (w == "compact") {
       if (t.size() != 1) return fail("expected: compact");
       op.kind = OpKind::kCompact;
+    } else if (w == "undo") {
+      if (t.size() != 1) return fail("expected: undo");
+      op.kind = OpKind::kUndo;
     } else if (w == "check") {
       if (t.size() > 2) return fail("expected: check [local|full|exact]");
       op.kind = OpKind::kCheck;
@@ -267,6 +274,7 @@ class Run {
       case OpKind::kSweep: return cut(op);
       case OpKind::kRemove: return remove(op);
       case OpKind::kCompact: compact(); return true;
+      case OpKind::kUndo: return undo(op);
       case OpKind::kCheck: return check(op);
       case OpKind::kExpectHash:
       case OpKind::kExpectTets:
@@ -302,6 +310,7 @@ class Run {
     labelled_ = read.mesh->labelled() && !one_label;
     if (labelled_) {
       labels_ = mechanics::TetLabels(mesh_, read.mesh->labels);  // the builder keeps the file's tet order: TetId = index
+      labels_.keep_history(params_.undo_history);
       log_.reserve(4096);
     }
     if (auto bad = protect()) {
@@ -326,6 +335,30 @@ class Run {
       return false;
     }
     if (cutter_) cutter_->set_params(params_);
+    if (labelled_) labels_.keep_history(params_.undo_history);
+    return true;
+  }
+
+  // An `undo` line: the last cut or removal taken back, the labels with it (their own history),
+  // then the local check around what came back. Quality is reported, not judged: the tets that
+  // come back are the ones that were there, held to the floors when they were made.
+  bool undo(const Op& op) {
+    if (auto refused = cutter_->undo(log_if_labelled())) {
+      stop(op, 1, "undo refused: " + *refused);
+      return false;
+    }
+    if (labelled_) labels_.apply(mesh_, log_);
+    ++result_.undos;
+    if (options_.check == CheckMode::kEvery) {
+      invariants::CheckOptions o = transaction_check_options(params_, cutter_->last_min_dihedral_held());
+      o.quality_rule = invariants::QualityRule::kReportOnly;
+      const invariants::CheckReport r =
+          local_->after_operation(mesh_.raw_view(), cutter_->last_removed(), cutter_->last_created(), o);
+      if (!r.ok()) {
+        stop(op, 1, "invariant violated after the undo: " + violations(r));
+        return false;
+      }
+    }
     return true;
   }
 

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "tetcut/change_log.hpp"
@@ -36,7 +37,13 @@ class TetLabels {
   // use are still where they were: a cut moves only the vertices it creates). Returns the number
   // of created tets none of whose parents this tracker had (0 for the mesh's own log): they get
   // kNoLabel.
+  // An undo's log (ChangeLog::undo) gives its restored tets the labels the operation it takes
+  // back found them with, from the history below; with none kept for it, they get kNoLabel and
+  // count as orphans.
   std::uint32_t apply(const TetMesh& mesh, const ChangeLog& log);
+  // How many applied logs keep the labels of the tets they removed, for their undo (newest
+  // first; CutParams::undo_history, the Cutter's). 0, the default: none.
+  void keep_history(std::uint32_t logs);
   // After TetMesh::compact() (or Cutter::compact()): the labels follow their tets.
   void renumber(const Renumbering& renumbering);
 
@@ -47,11 +54,15 @@ class TetLabels {
 
  private:
   static constexpr std::uint32_t kDead = 0xFFFFFFFFu;
+  std::uint32_t restore(const TetMesh& mesh, const ChangeLog& log);  // apply() of an undo's log
   [[nodiscard]] bool has(TetId t) const { return t.value < tets_.size() && tets_[t.value][0] != kDead; }
 
   std::vector<std::array<std::uint32_t, 4>> tets_;  // the vertices of each tet it has (kDead: none)
   std::vector<std::uint32_t> labels_;
   std::vector<std::uint32_t> created_labels_;      // scratch
+  // Per applied log, newest last: the tets it removed with their labels, sorted by id.
+  std::vector<std::vector<std::pair<TetId, std::uint32_t>>> history_;
+  std::uint32_t history_limit_ = 0;
 };
 
 }  // namespace tetcut::mechanics

@@ -20,6 +20,8 @@
 //   debris_volume V               detached pieces below this volume (mesh units cubed) are removed
 //                                 by the cut that detached them (CutParams::debris_volume);
 //                                 0, the default: detached pieces are only reported
+//   undo_history N                the cuts `undo` can take back (CutParams::undo_history); 0, the
+//                                 default: none kept
 //   uncuttable LABEL...           tets with these labels (the mesh file's) are tissue no cut or
 //                                 removal takes (Cutter::set_uncuttable(): the paper's Fig. 7);
 //                                 `uncuttable none` lifts it. Needs a labelled mesh.
@@ -32,6 +34,9 @@
 //   sweep X,Y,Z X,Y,Z STEP swept  the same centres joined by capsules: one cut from each to the
 //                                 next (sweep.hpp: sweep_cuts), so no tissue is left between them
 //   remove X,Y,Z                  remove the tet containing the point with the strategy
+//   undo                          take back the last cut or removal that changed the mesh
+//                                 (Cutter::undo()): the mesh bit for bit as before it, the labels
+//                                 too; the run fails when nothing is kept to take back
 //   compact                       renumber densely
 //   check [local|full|exact]      the independent checker; the scenario fails when it objects
 //   expect hash HEX               canonical hash of the current mesh
@@ -69,7 +74,7 @@ namespace tetcut::scenario {
 
 enum class OpKind : std::uint8_t {
   kMesh, kParam, kCut, kSweep, kRemove, kCompact, kCheck, kExpectHash, kExpectTets, kExpectUnresolved,
-  kExpectComponents, kExpectMinQuality, kUncuttable
+  kExpectComponents, kExpectMinQuality, kUncuttable, kUndo
 };
 
 struct Op {
@@ -134,6 +139,7 @@ struct RunResult {
   std::vector<CutRecord> cuts;
   std::uint64_t removals = 0;
   std::uint64_t unresolved = 0;
+  std::uint32_t undos = 0;  // `undo` lines that took a cut back
   double min_created_radius_ratio = 1.0;  // the worst tet any cut or removal created (1: none)
   // Of every tet a cut or a removal created and left live, measured by the checker's geometry.
   invariants::QualityStats created_quality;
