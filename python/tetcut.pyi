@@ -120,6 +120,9 @@ class Changes:
     def moved_vertex_weights(self) -> npt.NDArray[np.float64]: ...
     @property
     def moved_vertex_before(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def undo(self) -> bool:
+        """True for Cutter.undo()'s: removed are the tets the cut made, created the tets it took, back."""
 
 class Fragment:
     """A piece a cut detached from the organ, copied when the cut returned."""
@@ -285,6 +288,7 @@ class Cutter:
         debris_volume: float = 0.0,
         fragment_search_bound: int = 65536,
         keep_labels: Sequence[int] = (),
+        undo_history: int = 0,
     ) -> None: ...
     def cut(self, centre: _Point) -> CutReport:
         """One atomic cut (ok False: refused, the mesh untouched). Releases the GIL."""
@@ -306,6 +310,14 @@ class Cutter:
     @property
     def pieces(self) -> int:
         """The mesh's face-connected pieces, kept by every cut without a scan."""
+    def undo(self) -> Changes:
+        """Takes back the last cut kept (undo_history), the mesh bit for bit; RuntimeError when none is kept."""
+    @property
+    def undo_depth(self) -> int: ...
+    @property
+    def undo_history(self) -> int: ...
+    @undo_history.setter
+    def undo_history(self, value: int) -> None: ...
 
 class Violation:
     """One violated invariant."""

@@ -42,6 +42,7 @@ struct Changes {
   py::array_t<double> new_vertex_t, new_vertex_weights;
   py::array_t<std::int64_t> moved_vertices, moved_vertex_from;
   py::array_t<double> moved_vertex_weights, moved_vertex_before;
+  bool undo = false;  // ChangeLog::undo: Cutter.undo()'s, restoring what a cut took
 };
 
 // A piece a cut detached (the engine's Fragment), copied when the cut returns: the engine's views
@@ -88,6 +89,7 @@ void make_read_only(py::array& a) {
 
 Changes changes_of(const ChangeLog& log) {
   Changes c;
+  c.undo = log.undo;
   const auto n = static_cast<py::ssize_t>(log.created.size());
   const auto nv = static_cast<py::ssize_t>(log.vertices.size());
   c.removed = id_array(log.removed);
@@ -186,6 +188,7 @@ class PyCutter {
     MeshUse use(*handle_);
     require_known_labels();
     cutter_.emplace(handle_->mesh, params);
+    handle_->labels.keep_history(params.undo_history);
     protect();
     seen_version_ = handle_->version;
   }
@@ -242,6 +245,30 @@ class PyCutter {
   void set_params(const CutParams& params) {
     MeshUse use(*handle_);
     if (const auto bad = cutter_->set_params(params)) throw py::value_error("tetcut: " + *bad);
+    handle_->labels.keep_history(params.undo_history);
+  }
+
+  // Cutter::undo(): the last cut this Cutter kept taken back, the labels with it; its net change
+  // (changes.undo True). RuntimeError with the engine's reason when there is none to take back
+  // (another Cutter's cut or a compaction since counts as a change made outside this Cutter).
+  Changes undo() {
+    MeshUse use(*handle_);
+    require_no_slot_views(*handle_);
+    ChangeLog log;
+    std::optional<std::string> refused;
+    {
+      py::gil_scoped_release release;
+      refused = cutter_->undo(&log);
+    }
+    if (refused) throw std::runtime_error("tetcut: Cutter.undo: " + *refused);
+    handle_->labels.apply(handle_->mesh, log);
+    seen_version_ = ++handle_->version;
+    last_fragments_.clear();
+    return changes_of(log);
+  }
+  [[nodiscard]] std::uint32_t undo_depth() const {
+    MeshUse use(*handle_);
+    return cutter_->undo_depth();
   }
   [[nodiscard]] RemovalReport removal_report() const { return cutter_->removal_report(); }
   [[nodiscard]] const MeshPtr& mesh() const { return handle_; }
@@ -532,7 +559,7 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   const Keywords k(where, kwargs,
                    {"mesh", "tool_diameter", "strategy", "split", "order", "neighbour_set", "d_ref_factor", "p", "search_depth",
                     "max_refine_iterations", "max_tets_created", "improve", "quality_floor", "min_dihedral_deg", "refinement",
-                    "debris_volume", "fragment_search_bound", "keep_labels"});
+                    "debris_volume", "fragment_search_bound", "keep_labels", "undo_history"});
   CutParams params;
   auto set = [&](const char* name, auto CutParams::*field, const char* expected) {
     using T = std::remove_reference_t<decltype(params.*field)>;
@@ -558,6 +585,7 @@ CutterPtr make_cutter(const py::args& args, const py::kwargs& kwargs) {
   set("max_refine_iterations", &CutParams::max_refine_iterations, "a non-negative integer");
   set("max_tets_created", &CutParams::max_tets_created, "a non-negative integer");
   set("fragment_search_bound", &CutParams::fragment_search_bound, "a non-negative integer");
+  set("undo_history", &CutParams::undo_history, "a non-negative integer");
   set("improve", &CutParams::improve, "True or False");
   if (const auto s = k.get<std::string>("strategy", "a str")) {
     const auto v = parse_removal_strategy(*s);
@@ -604,7 +632,7 @@ std::string cutter_init_doc() {
       ", max_tets_created=" + std::to_string(d.max_tets_created) + ", improve=" + (d.improve ? "True" : "False") +
       ", quality_floor=" + real(d.quality_floor) + ", min_dihedral_deg=" + real(d.min_dihedral_deg) +
       ", debris_volume=" + real(d.debris_volume) + ", fragment_search_bound=" + std::to_string(d.fragment_search_bound) +
-      ", keep_labels=()";
+      ", keep_labels=(), undo_history=" + std::to_string(d.undo_history);
   return signature_doc("__init__", parameters, R"doc(The cautery tool on `mesh`: indexes it (O(#T)), then cuts in O(tool).
 
 tool_diameter (required, mesh units) and the other CutParams fields (engine/include/tetcut/cut.hpp)
@@ -617,7 +645,8 @@ degrees: every created tet reaches min(F, its host's) and min(theta, its host's)
 (mesh units cubed: the pieces a cut detaches below it are removed in that cut, as debris; 0: only
 reported), fragment_search_bound (the tets the search for detached pieces visits at most).
 keep_labels: labels (mesh.labels) whose tets no cut takes (Cutter::set_uncuttable, the paper's
-Fig. 7), each some tet's label.
+Fig. 7), each some tet's label. undo_history: the cuts Cutter.undo() can take back (0: none
+kept; at most 4096; each costs about 0.9 MB reserved once).
 TypeError naming an unknown keyword or a value of the wrong type; ValueError naming one out of
 range or a label no tet has.)doc");
 }
@@ -669,6 +698,10 @@ report.changes, and the same arrays on every access.)doc");
                     "compute every new and moved vertex's values from the old ones before writing any.")
       .def_readonly("moved_vertex_weights", &Changes::moved_vertex_weights, "#M by 4 float64: their weights (sum 1).")
       .def_readonly("moved_vertex_before", &Changes::moved_vertex_before, "#M by 3 float64: where it was before the cut.")
+      .def_readonly("undo", &Changes::undo,
+                    "True for Cutter.undo()'s: `removed` are the tets the cut made, `created` (no parents) the tets it "
+                    "took, back under their ids, `moved_vertices` back where they were (moved_vertex_before: where the "
+                    "cut had put them), `new_vertices` (no origin) the vertices it took.")
       .def("__repr__", &changes_repr);
 }
 
@@ -896,6 +929,25 @@ the mesh alive; several Cutters may share one mesh (each re-indexes when another
                       c->set_params(p);
                     },
                     "The tool's diameter (mesh units); settable between cuts (ValueError when not positive).")
+      .def("undo", [](const CutterPtr& c) { return c->undo(); },
+           signature_doc("undo", "self, /",
+                         "Takes back the last cut (cut, cut_segment, a sweep's last) this Cutter kept "
+                         "(undo_history): the mesh bit for bit as before it, labels included, and this Cutter "
+                         "as if it had never been made, so the same cuts give the same hashes. Called again, "
+                         "the cut before. Returns its Changes (undo True). RuntimeError, nothing changed, when "
+                         "none is kept: undo_history 0, all taken back, or the history emptied by "
+                         "mesh.compact(), another Cutter's cut or a change of undo_history. Releases the GIL.")
+               .c_str())
+      .def_property_readonly("undo_depth", [](const CutterPtr& c) { return c->undo_depth(); },
+                             "How many cuts undo() can take back now (at most undo_history).")
+      .def_property("undo_history", [](const CutterPtr& c) { return c->params().undo_history; },
+                    [](const CutterPtr& c, std::uint32_t n) {
+                      CutParams p = c->params();
+                      p.undo_history = n;
+                      c->set_params(p);
+                    },
+                    "The cuts undo() can keep (0: none); settable between cuts, which empties the history "
+                    "when it changes (ValueError above 4096).")
       .def_property_readonly("strategy", [](const CutterPtr& c) { return std::string(to_string(c->params().strategy)); },
                              "The removal strategy: basic, neighbours, combined or wide (paper 3.4-3.7).")
       .def_property_readonly("mesh", [](const CutterPtr& c) { return c->mesh(); }, "The Mesh this Cutter cuts.")

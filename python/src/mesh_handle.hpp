@@ -15,6 +15,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -46,7 +47,14 @@ class MeshLabels {
       return;
     }
     tracker_ = mechanics::TetLabels(mesh, labels);
+    tracker_.keep_history(history_);
     tracked_ = true;
+  }
+  // The labels of the tets each of the last `logs` cuts took, for their undo (Cutter.undo()):
+  // the most any Cutter on this mesh keeps (its undo_history).
+  void keep_history(std::uint32_t logs) {
+    history_ = std::max(history_, logs);
+    tracker_.keep_history(history_);
   }
   [[nodiscard]] bool labelled() const { return tracked_ || one_.has_value(); }
   // After a cut that succeeded, with its log.
@@ -61,6 +69,7 @@ class MeshLabels {
  private:
   std::optional<std::uint32_t> one_;
   bool tracked_ = false;
+  std::uint32_t history_ = 0;
   mechanics::TetLabels tracker_;
 };
 

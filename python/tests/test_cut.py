@@ -563,3 +563,42 @@ def test_the_pieces_parameters_are_keywords_checked_as_the_others_and_a_sweep_ke
     assert detaching.debris_pieces_removed == 1 and detaching.detached[0].removed
     assert [len(f.tets) for f in cutter.last_fragments()] == [len(f.tets) for f in reports[-1].detached]
     assert cutter.pieces == 1 and tetcut.check(mesh) == []
+
+
+def test_undo_takes_cuts_back_bit_for_bit_and_says_why_when_it_cannot(box):
+    none = box.hash()
+    cutter = tetcut.Cutter(box, tool_diameter=1.5, undo_history=2)
+    assert cutter.undo_history == 2 and cutter.undo_depth == 0
+    with pytest.raises(RuntimeError, match="no cut to undo"):
+        cutter.undo()
+    a = cutter.cut((1.0, 1.0, 4.0))
+    after_a = box.hash()
+    b = cutter.cut_segment((3.0, 1.0, 4.0), (3.0, 3.0, 3.5))
+    assert a.ok and b.ok and a.tets_removed > 0 and b.tets_removed > 0
+    after_b = box.hash()
+    assert cutter.undo_depth == 2
+    changes = cutter.undo()
+    assert changes.undo and not a.changes.undo
+    assert box.hash() == after_a and cutter.undo_depth == 1
+    # What came back is what b took, under its ids; what went is what b made.
+    np.testing.assert_array_equal(changes.created, b.changes.removed)
+    np.testing.assert_array_equal(changes.removed, b.changes.created)
+    assert tetcut.check(box) == []
+    # b again: the same mesh as the first time.
+    assert cutter.cut_segment((3.0, 1.0, 4.0), (3.0, 3.0, 3.5)).tets_removed == b.tets_removed
+    assert box.hash() == after_b
+    cutter.undo()
+    cutter.undo()
+    assert box.hash() == none and cutter.undo_depth == 0
+    with pytest.raises(RuntimeError, match="every cut kept .* was taken back"):
+        cutter.undo()
+    # Nothing kept by default; a compaction empties the history, and the message says so.
+    assert tetcut.Cutter(box, tool_diameter=1.5).undo_history == 0
+    cutter.cut((1.0, 1.0, 4.0))
+    box.compact()
+    with pytest.raises(RuntimeError, match="undo"):
+        cutter.undo()
+    with pytest.raises(ValueError, match="undo_history"):
+        tetcut.Cutter(box, tool_diameter=1.5, undo_history=5000)
+    with pytest.raises(ValueError, match="undo_history"):
+        cutter.undo_history = 5000

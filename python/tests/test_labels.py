@@ -170,3 +170,16 @@ def test_keep_labels_names_a_label_no_tet_has():
         tetcut.Cutter(mesh, tool_diameter=1.2, keep_labels=[-2])
     reports = tetcut.Cutter(mesh, tool_diameter=1.2, keep_labels=np.array([2])).sweep((0.4, 2.0, 2.9), (3.6, 2.0, 2.9), 0.4)
     assert sum(r.uncuttable_in_tool for r in reports) > 0  # a numpy array of labels works as well
+
+
+def test_undo_gives_the_tets_back_their_labels(regions):
+    before = regions.labels.copy()
+    cutter = tetcut.Cutter(regions, tool_diameter=1.5, undo_history=3)
+    for centre in [(1.5, 2.0, 4.0), (5.0, 5.0, 5.0), (2.5, 2.0, 4.0)]:  # the middle one misses the box
+        cutter.cut(centre)
+    assert cutter.undo_depth == 2
+    cutter.undo()
+    assert_labels_follow_the_sides(regions)
+    cutter.undo()
+    np.testing.assert_array_equal(regions.labels, before)
+    assert_labels_follow_the_sides(regions)

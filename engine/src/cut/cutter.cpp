@@ -23,7 +23,7 @@ std::optional<std::string> validate(const CutParams& p) {
   if (!(p.debris_volume >= 0.0 && std::isfinite(p.debris_volume)))
     return "the debris volume must be a finite volume, 0 or more (0: detached pieces are only reported)";
   if (p.fragment_search_bound == 0) return "the fragment search bound must be at least one tet";
-  if (p.undo_history > 4096) return "the undo history must be at most 4096 cuts";
+  if (p.undo_history > 4096) return "the undo history undo_history must be at most 4096 cuts";
   return std::nullopt;
 }
 
