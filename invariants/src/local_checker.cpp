@@ -330,13 +330,14 @@ struct LocalChecker::Operation {
     auto move_text = [&] { return "vertex " + str(v) + " moved from " + text(was) + " to " + text(is); };
     if (entry == nullptr)
       report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] { return move_text() + " and the operation did not report it"; });
-    if (!options.tool) {
+    const std::optional<ToolRule>& tool = options.tool ? options.tool : options.reach;
+    if (!tool) {
       report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
         return "an operation without a tool moved vertex " + str(v) + " from " + text(was) + " to " + text(is);
       });
     } else {
-      const double reach = options.tool->radius + options.tool->d_ref;
-      const double distance = std::max(detail::distance_to_axis(*options.tool, was), detail::distance_to_axis(*options.tool, is));
+      const double reach = tool->radius + tool->d_ref;
+      const double distance = std::max(detail::distance_to_axis(*tool, was), detail::distance_to_axis(*tool, is));
       if (!(distance <= reach * (1.0 + kReachTolerance)))
         report.add(Invariant::kI8Bookkeeping, {}, {v}, [&] {
           return move_text() + ", " + detail::num(distance) + " from the tool's axis: beyond the cut's reach " +

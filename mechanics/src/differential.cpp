@@ -214,7 +214,23 @@ std::optional<std::string> DifferentialCheck::label_from_parents(const ChangeLog
   return std::nullopt;
 }
 
+void DifferentialCheck::keep_history(std::uint32_t logs) {
+  model_.keep_history(logs);
+  history_limit_ = logs;
+  witness_history_.clear();
+}
+
 std::optional<std::string> DifferentialCheck::after(const TetMesh& mesh, const ChangeLog& log) {
+  // An undo's witness is the snapshot before the cut it takes back; any other log that changed
+  // something is kept for its own undo, as the model keeps it.
+  std::optional<Witness> undone;
+  if (log.undo && !witness_history_.empty()) {
+    undone = std::move(witness_history_.back());
+    witness_history_.pop_back();
+  } else if (!log.undo && history_limit_ > 0 && (!log.removed.empty() || !log.created.empty() || !log.moved.empty())) {
+    if (witness_history_.size() == history_limit_) witness_history_.erase(witness_history_.begin());
+    witness_history_.push_back({before_tets_, before_labels_});
+  }
   const ApplyProblems problems = model_.apply(mesh, log);
   const std::uint32_t unknown = surface_.apply(mesh, log);
   // The witness's labels: a tet there before keeps its own; another takes the label of the
@@ -230,6 +246,10 @@ std::optional<std::string> DifferentialCheck::after(const TetMesh& mesh, const C
     const auto& now = mesh.raw_tets()[t];
     if (t < before_tets_.size() && before_tets_[t] == now) {
       labels_[t] = before_labels_[t];
+      continue;
+    }
+    if (undone && t < undone->tets.size() && undone->tets[t] == now) {  // restored: its label before the cut
+      labels_[t] = undone->labels[t];
       continue;
     }
     labels_[t] = locate_label(tet_centroid(mesh.position(VertId{now[0]}), mesh.position(VertId{now[1]}),

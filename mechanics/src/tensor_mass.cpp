@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <utility>
 #include <cmath>
 #include <limits>
 
@@ -275,13 +276,61 @@ std::uint32_t TensorMassModel::inherited_label(const TetMesh& mesh, const Change
       });
 }
 
+void TensorMassModel::keep_history(std::uint32_t logs) {
+  if (logs == history_.size()) return;
+  history_.assign(logs, Taken{});  // a ring of another size: what it held is forgotten
+  history_top_ = history_count_ = 0;
+}
+
+// Before `log` is applied: the labels of the tets it removes and the state of the vertices it
+// removes or moves, in the ring's next slot.
+void TensorMassModel::keep(const ChangeLog& log) {
+  if (history_.empty() || (log.removed.empty() && log.created.empty() && log.moved.empty())) return;
+  history_top_ = static_cast<std::uint32_t>((history_top_ + 1) % history_.size());
+  history_count_ = std::min<std::uint32_t>(history_count_ + 1, static_cast<std::uint32_t>(history_.size()));
+  Taken& k = history_[history_top_];
+  k.tets.clear();
+  k.vertices.clear();
+  for (TetId t : log.removed)
+    if (has_tet(t)) k.tets.emplace_back(t, labels_[t.value]);
+  std::sort(k.tets.begin(), k.tets.end());
+  auto state = [&](VertId v) {
+    if (v.value < u_.size()) k.vertices.push_back({v.value, u_[v.value], v_[v.value], fixed_[v.value] != 0});
+  };
+  for (VertId v : log.removed_vertices) state(v);
+  for (const MovedVertex& mv : log.moved) state(mv.vertex);
+  std::sort(k.vertices.begin(), k.vertices.end(),
+            [](const Interpolated& a, const Interpolated& b) { return a.vertex < b.vertex; });
+}
+
+const TensorMassModel::Interpolated* TensorMassModel::taken_state(const Taken* taken, VertId v) const {
+  if (!taken) return nullptr;
+  const auto it = std::lower_bound(taken->vertices.begin(), taken->vertices.end(), v.value,
+                                   [](const Interpolated& x, std::uint32_t id) { return x.vertex < id; });
+  return it != taken->vertices.end() && it->vertex == v.value ? &*it : nullptr;
+}
+
 ApplyProblems TensorMassModel::apply(const TetMesh& mesh, const ChangeLog& log) {
   ApplyProblems problems;
   grow(mesh.tet_capacity(), mesh.vertex_capacity());
+  // An undo takes the newest kept slot; any other log keeps what it takes.
+  const Taken* taken = nullptr;
+  if (log.undo && history_count_ > 0) {
+    taken = &history_[history_top_];
+    history_top_ = static_cast<std::uint32_t>((history_top_ + history_.size() - 1) % history_.size());
+    --history_count_;
+  } else if (!log.undo) {
+    keep(log);
+  }
   // Created and moved vertices: their origins are vertices from before, whose values are still
   // here. All are computed before any is written: a moved vertex is the origin of others.
   interpolated_.clear();
   auto interpolate = [&](const CreatedVertex& cv) {
+    if (log.undo) {  // restored (count 0): the state kept, else at rest and free
+      const Interpolated* kept = taken_state(taken, cv.vertex);
+      interpolated_.push_back(kept ? *kept : Interpolated{cv.vertex.value, {}, {}, false});
+      return;
+    }
     Interpolated out{cv.vertex.value, {}, {}, cv.count > 0};
     for (std::uint8_t i = 0; i < cv.count; ++i) {
       const std::uint32_t f = cv.from[i].value;
@@ -297,14 +346,29 @@ ApplyProblems TensorMassModel::apply(const TetMesh& mesh, const ChangeLog& log) 
     interpolated_.push_back(out);
   };
   for (const CreatedVertex& cv : log.vertices) interpolate(cv);
-  for (const MovedVertex& mv : log.moved) interpolate(mv);
+  for (const MovedVertex& mv : log.moved) {
+    if (!log.undo) {
+      interpolate(mv);
+    } else if (const Interpolated* kept = taken_state(taken, mv.vertex)) {  // moved back: its state then
+      interpolated_.push_back(*kept);
+    }
+  }
   for (const Interpolated& x : interpolated_) {
     fixed_[x.vertex] = x.fixed ? 1 : 0;
     u_[x.vertex] = x.fixed ? Vec3{} : x.u;
     v_[x.vertex] = x.fixed ? Vec3{} : x.v;
   }
   created_labels_.clear();
-  for (const CreatedTet& c : log.created) created_labels_.push_back(inherited_label(mesh, log, c, problems));
+  for (const CreatedTet& c : log.created) {
+    if (taken) {  // restored: its label when the undone cut took it
+      const auto it = std::lower_bound(taken->tets.begin(), taken->tets.end(), std::pair<TetId, std::uint32_t>{c.tet, 0});
+      if (it != taken->tets.end() && it->first == c.tet) {
+        created_labels_.push_back(it->second);
+        continue;
+      }
+    }
+    created_labels_.push_back(inherited_label(mesh, log, c, problems));
+  }
   for (TetId t : log.removed) {
     if (!has_tet(t)) {
       ++problems.removed_not_live;

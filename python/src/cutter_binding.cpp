@@ -701,7 +701,8 @@ report.changes, and the same arrays on every access.)doc");
       .def_readonly("undo", &Changes::undo,
                     "True for Cutter.undo()'s: `removed` are the tets the cut made, `created` (no parents) the tets it "
                     "took, back under their ids, `moved_vertices` back where they were (moved_vertex_before: where the "
-                    "cut had put them), `new_vertices` (no origin) the vertices it took.")
+                    "cut had put them; moved_vertex_from / _weights: where they are now in a tet around them before "
+                    "the undo), `new_vertices` (no origin) the vertices it took.")
       .def("__repr__", &changes_repr);
 }
 

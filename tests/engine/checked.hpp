@@ -40,4 +40,15 @@ inline invariants::CheckOptions cut_check(const Cutter& cutter, const Vec3& cent
   return options;
 }
 
+// After Cutter::undo(): its moves back held to the undone cut's reach, quality reported and not
+// judged (the tets that come back were held to the floors when they were made).
+inline invariants::CheckOptions undo_check(const Cutter& cutter) {
+  invariants::CheckOptions options;
+  options.quality_rule = invariants::QualityRule::kReportOnly;
+  options.moved = cutter.last_moved();
+  if (const auto r = cutter.last_undone_reach())
+    options.reach = invariants::ToolRule{.centre = r->a, .radius = r->radius, .d_ref = r->d_ref, .left = {}, .end = r->b};
+  return options;
+}
+
 }  // namespace tetcut::testing

@@ -19,8 +19,9 @@
 // An undo (Cutter::undo(), TetMesh::undo()) gives a log with `undo` set: it takes back the last
 // operation that changed the mesh. Its removed tets and vertices are those the operation made;
 // its created tets (no parents) and vertices (count 0) are those it removed, restored under the
-// same ids with the same vertices and positions; its moved vertices (count 0, `before` where the
-// operation had put them) are back where they were. A restored entity's values are those it had
+// same ids with the same vertices and positions; its moved vertices are back where they were
+// (`before`: where the operation had put them; `from`/`weight`: where they are now, in a tet
+// around them before the undo, some weights possibly negative). A restored entity's values are those it had
 // before the undone operation: a consumer that keeps per-entity values keeps, per operation it
 // applied, what that operation took away, and gives it back on the undo (newest first, as the
 // Cutter takes cuts back; mechanics::TetLabels does so for labels).

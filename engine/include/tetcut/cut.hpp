@@ -291,10 +291,20 @@ class Cutter {
   // Refused, with the reason and no change, when nothing is kept: none asked for, all taken
   // back, or the history emptied by reset(), compact(), set_uncuttable(), a change to
   // undo_history or a change to the mesh made outside this Cutter. last_removed() and
-  // last_created() then name the undo's net change; last_fragments() and last_moved() are empty.
+  // last_created() and last_moved() then name the undo's net change (a vertex moved back: where
+  // it goes as barycentric coordinates in a tet around it before the undo); last_fragments() is
+  // empty, and last_undone_reach() says where the undone cut worked.
   std::optional<std::string> undo(ChangeLog* log = nullptr);
   // How many cuts undo() can take back now.
   [[nodiscard]] std::uint32_t undo_depth() const;
+  // After undo(): the tool of the cut it took back (the segment a-b, a ball when a == b) and the
+  // D_ref it had, within whose sum the cut moved the vertices the undo moves back (the checker's
+  // I8 holds an undo to it); none for a removal by id.
+  struct CutReach {
+    Vec3 a, b;
+    double radius = 0.0, d_ref = 0.0;
+  };
+  [[nodiscard]] std::optional<CutReach> last_undone_reach() const;
 
   // Tissue every cut and removal request must leave (the paper's Fig. 7 frees the portal vein
   // from the resected liver): these live tets, and every tet later split from them, are never

@@ -459,7 +459,16 @@ class TetMesh {
   void restore(std::span<const JournalEntry> entries, std::span<const double> attribute_values, const Savepoint& point);
   // undo()'s log: the ids the transaction touched, with whether each is live after it.
   std::vector<std::pair<std::uint32_t, bool>> undo_tets_, undo_vertices_;
-  std::vector<std::pair<VertId, Vec3>> undo_moved_;
+  // A vertex the transaction moved, where it is before the undo, and a tet around it then with
+  // its corners' positions: where the undo puts it back is given as a combination of those.
+  struct UndoMove {
+    VertId vertex;
+    Vec3 after;
+    TetId tet;
+    TetVerts corners;
+    std::array<Vec3, 4> at;
+  };
+  std::vector<UndoMove> undo_moved_;
   // Origins of vertices made in the transaction (ChangeLog::vertices): composed along the edges
   // they were put on, or located in an old tet (mesh_journal.cpp).
   void compose_origin(VertId a, VertId b, double t, CreatedVertex& out) const;

@@ -203,12 +203,18 @@ void TetMesh::undo(TransactionRecord& record, ChangeLog* log) {
     undo_moved_.clear();
     ancestor_seen_.clear();
     vertex_seen_.clear();
+    vertex_noted_.clear();  // replace_tets()' scratch, free between operations: the moved, once each
     for (const JournalEntry& e : record.entries_) {
       if (e.array == Array::kTetVerts && ancestor_seen_.insert(TetId{e.index}))
         undo_tets_.emplace_back(e.index, is_live(TetId{e.index}));
       if (e.array == Array::kVertTet && vertex_seen_.insert(VertId{e.index}))
         undo_vertices_.emplace_back(e.index, is_live(VertId{e.index}));
-      if (e.array == Array::kPositions && is_live(VertId{e.index})) undo_moved_.emplace_back(VertId{e.index}, positions_[e.index]);
+      if (e.array == Array::kPositions && is_live(VertId{e.index}) && vertex_noted_.insert(VertId{e.index})) {
+        const TetId around = vertex_tet(VertId{e.index});
+        UndoMove m{VertId{e.index}, positions_[e.index], around, tet(around), {}};
+        for (int i = 0; i < 4; ++i) m.at[i] = positions_[m.corners[i].value];
+        undo_moved_.push_back(m);
+      }
     }
     for (std::uint32_t t = start.tets; t < tet_capacity(); ++t) undo_tets_.emplace_back(t, is_live(TetId{t}));
     for (std::uint32_t v = start.vertices; v < vertex_capacity(); ++v) undo_vertices_.emplace_back(v, is_live(VertId{v}));
@@ -243,18 +249,25 @@ void TetMesh::undo(TransactionRecord& record, ChangeLog* log) {
   std::sort(log->removed_vertices.begin() + first_gone, log->removed_vertices.end());
   // A slot written several times is listed once per write: the position after is the same.
   const auto first_moved = static_cast<std::ptrdiff_t>(log->moved.size());
-  for (const auto& [v, after] : undo_moved_) {
-    if (!is_live(v) || positions_[v.value] == after) continue;
+  // Where a vertex goes back to, as barycentric coordinates in a tet around it before the undo
+  // (its corners there then, all live before the undo): possibly outside it, so some weights may
+  // be negative, but the combination is exact, which is what the checker's I8 holds it to.
+  for (const UndoMove& u : undo_moved_) {
+    if (!is_live(u.vertex) || positions_[u.vertex.value] == u.after) continue;
     MovedVertex m;
-    m.vertex = v;
-    m.before = after;
+    m.vertex = u.vertex;
+    m.before = u.after;
+    detail::DeepestTet back(positions_[u.vertex.value]);
+    back.offer(u.tet, u.corners, u.at);
+    if (back.found()) {  // a live tet is positively oriented: always
+      m.from = u.corners;
+      m.weight = back.weights();
+      m.count = 4;
+    }
     log->moved.push_back(m);
   }
   std::sort(log->moved.begin() + first_moved, log->moved.end(),
             [](const MovedVertex& x, const MovedVertex& y) { return x.vertex < y.vertex; });
-  log->moved.erase(std::unique(log->moved.begin() + first_moved, log->moved.end(),
-                               [](const MovedVertex& x, const MovedVertex& y) { return x.vertex == y.vertex; }),
-                   log->moved.end());
 }
 
 // ---- the record of change -------------------------------------------------------------------

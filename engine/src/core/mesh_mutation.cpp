@@ -318,6 +318,10 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
   reserve_touched(journal_.tet_births, kJournalWorkingSize / 4);
   reserve_touched(journal_.parents, kJournalWorkingSize / 4);
   reserve_touched(journal_.vertex_births, kJournalWorkingSize / 16);
+  // undo()'s scratch: the slots one operation wrote.
+  undo_tets_.reserve(kJournalWorkingSize / 4);
+  undo_vertices_.reserve(kJournalWorkingSize / 16);
+  undo_moved_.reserve(kJournalWorkingSize / 16);
   reserve_touched(journal_.vertex_moves, kJournalWorkingSize / 64);
   reserve_touched(ancestor_stack_, 64);
   reserve_touched(move_star_, 128);

@@ -104,6 +104,7 @@ void Cutter::Pipeline::reserve_history() {
     history_top_ = 0;
     if (kept_cuts_ > 0) empty_history("a change of CutParams::undo_history");
   }
+  if (!history_.empty()) undo_log_.reserve(4096);
   for (KeptCut& k : history_) {
     k.mesh.reserve();
     constexpr std::size_t kCutScratch = 16384;
@@ -128,12 +129,17 @@ std::optional<std::string> Cutter::Pipeline::undo(ChangeLog* log) {
   }
   // The labels first: they read the made tets' labels while those are still the live ones.
   labels_.take_back(k.labels, k.removed, k.created);
-  mesh_.undo(k.mesh, log);
+  // The net change always: its moves are last_moved(), for the checker.
+  undo_log_.clear();
+  ChangeLog& net = log ? *log : undo_log_;
+  const std::size_t first_moved = net.moved.size();
+  mesh_.undo(k.mesh, &net);
   for (TetId t : k.created) index_.erase(t);
   for (TetId t : k.removed) index_.insert(mesh_, t);
   remover_.restore_report(k.removal_before);
   last_min_dihedral_held_ = k.min_dihedral_held_before;
-  transaction_.undone(k.created, k.removed);
+  transaction_.undone(k.created, k.removed, std::span<const MovedVertex>(net.moved).subspan(first_moved));
+  last_undone_reach_ = k.reach;
   audit_.clear();
   fragments_.clear();
   history_top_ = (history_top_ + params_.undo_history - 1) % params_.undo_history;
@@ -227,6 +233,8 @@ void Cutter::Pipeline::begin(const Tool* tool) {
   transaction_.begin(mesh_, remover_);
   version_at_begin_ = mesh_.version();
   selection_.begin(tool);
+  reach_at_begin_.reset();
+  if (tool) reach_at_begin_ = CutReach{tool->a, tool->b, tool->radius, params_.d_ref()};
   // The cut's reach: the tool grown by D_ref, the longest edge its refinement leaves at the
   // tool (refine.hpp); what the cut removes beyond the tool lies within it, and the improvement
   // pass works within it (tissue_.reach()).
@@ -517,6 +525,7 @@ void Cutter::Pipeline::commit(CutReport& report, ChangeLog* log) {
   }
   kept->removal_before = transaction_.removal_at_start();
   kept->min_dihedral_held_before = min_dihedral_held_at_begin_;
+  kept->reach = reach_at_begin_;
   kept->removed.assign(transaction_.net_removed().begin(), transaction_.net_removed().end());
   kept->created.assign(transaction_.net_created().begin(), transaction_.net_created().end());
   history_top_ = static_cast<std::uint32_t>((history_top_ + 1) % history_.size());

@@ -48,6 +48,7 @@ class Cutter::Pipeline {
   CutReport remove(TetId t, ChangeLog* log);
   std::optional<std::string> undo(ChangeLog* log);
   [[nodiscard]] std::uint32_t undo_depth() const { return kept_cuts_; }
+  [[nodiscard]] const std::optional<CutReach>& last_undone_reach() const { return last_undone_reach_; }
   TetId tet_containing(const Vec3& p);
   // The mesh's ids are the ones the index was built on (TetMesh::id_epoch() unchanged since).
   [[nodiscard]] bool indexes_current_mesh() const { return epoch_ == mesh_.id_epoch(); }
@@ -139,6 +140,7 @@ class Cutter::Pipeline {
     double min_dihedral_held_before = 180.0;
     std::vector<TetId> removed, created;  // its net change
     detail::PieceLabels::Undo labels;
+    std::optional<CutReach> reach;  // its tool and D_ref (none: a removal by id)
   };
   // A ring of params_.undo_history, the newest kept_cuts_ of them at history_top_ and below it.
   std::vector<KeptCut> history_;
@@ -146,6 +148,8 @@ class Cutter::Pipeline {
   const char* history_emptied_by_ = nullptr;  // why nothing is kept, for undo()'s refusal
   std::uint64_t version_at_begin_ = 0;
   double min_dihedral_held_at_begin_ = 180.0;
+  std::optional<CutReach> reach_at_begin_, last_undone_reach_;
+  ChangeLog undo_log_;  // undo()'s net change when the caller asks for none (the moves, for last_moved())
   // The ring sized by params_.undo_history, every record with room to be kept without allocating.
   void reserve_history();
   void empty_history(const char* why) {

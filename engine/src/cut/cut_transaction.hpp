@@ -33,11 +33,12 @@ class CutTransaction {
   // `keep`: the mesh's record of the transaction, for an undo (TetMesh::commit).
   std::uint32_t commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log,
                        const NetChange* known = nullptr, TetMesh::TransactionRecord* keep = nullptr);
-  // An undo's net change, as the last one's (Cutter::last_removed(), last_created()): no moves.
-  void undone(std::span<const TetId> removed, std::span<const TetId> created) {
+  // An undo's net change, as the last one's (Cutter::last_removed(), last_created(), last_moved()).
+  void undone(std::span<const TetId> removed, std::span<const TetId> created, std::span<const MovedVertex> moved) {
     forget();
     net_removed_.assign(removed.begin(), removed.end());
     net_created_.assign(created.begin(), created.end());
+    keep_moved(moved);
   }
   // The Remover's statistics when the open (or last) transaction began.
   [[nodiscard]] const RemovalReport& removal_at_start() const { return removal_at_start_; }

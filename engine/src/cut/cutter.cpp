@@ -45,6 +45,7 @@ CutReport Cutter::cut_segment(const Vec3& a, const Vec3& b, ChangeLog* log) { re
 CutReport Cutter::remove(TetId t, ChangeLog* log) { return pipeline_->remove(t, log); }
 std::optional<std::string> Cutter::undo(ChangeLog* log) { return pipeline_->undo(log); }
 std::uint32_t Cutter::undo_depth() const { return pipeline_->undo_depth(); }
+std::optional<Cutter::CutReach> Cutter::last_undone_reach() const { return pipeline_->last_undone_reach(); }
 TetId Cutter::tet_containing(const Vec3& p) { return pipeline_->tet_containing(p); }
 const RemovalReport& Cutter::removal_report() const { return pipeline_->removal_report(); }
 TetMesh& Cutter::mesh() { return pipeline_->mesh(); }

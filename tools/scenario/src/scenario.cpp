@@ -352,6 +352,10 @@ class Run {
     if (options_.check == CheckMode::kEvery) {
       invariants::CheckOptions o = transaction_check_options(params_, cutter_->last_min_dihedral_held());
       o.quality_rule = invariants::QualityRule::kReportOnly;
+      o.moved = cutter_->last_moved();  // moved back within the undone cut's reach
+      if (const auto reach = cutter_->last_undone_reach())
+        o.reach = invariants::ToolRule{
+            .centre = reach->a, .radius = reach->radius, .d_ref = reach->d_ref, .left = {}, .end = reach->b};
       const invariants::CheckReport r =
           local_->after_operation(mesh_.raw_view(), cutter_->last_removed(), cutter_->last_created(), o);
       if (!r.ok()) {

@@ -141,6 +141,10 @@ struct CheckOptions {
   // here, within the tool's reach, to where its entry's weights put it, and when every tet
   // around it is one the operation created.
   std::span<const RawMovedVertex> moved;
+  // I8, when `tool` is not set: the reach the moves must lie within for an operation that is
+  // not a cut: an undo moves vertices back within the reach of the cut it takes back
+  // (Cutter::last_undone_reach()). Its radius + d_ref is the reach; its `left` is not read.
+  std::optional<ToolRule> reach;
   double volume_rel_tolerance = 1e-9;
   // Names the operation in the report ("remove tet 12", "cut 3"), for people triaging.
   std::string operation;

@@ -69,6 +69,10 @@ class DifferentialCheck {
   // After it: applies `log` (the cut's, or a corrupted copy) to both consumers, rebuilds both
   // from the mesh, compares. The first problem found, or nullopt.
   std::optional<std::string> after(const TetMesh& mesh, const ChangeLog& log);
+  // Undo logs (ChangeLog::undo): the model keeps `logs` cuts' worth of what they took
+  // (TensorMassModel::keep_history), and the witness its own snapshot of the tets and labels
+  // before each of as many cuts, from which a restored tet must get the label it had then.
+  void keep_history(std::uint32_t logs);
 
   [[nodiscard]] const TensorMassModel& model() const { return model_; }
   [[nodiscard]] const RenderedSurface& surface() const { return surface_; }
@@ -93,7 +97,13 @@ class DifferentialCheck {
   std::vector<Vec3> before_positions_;
   std::vector<std::array<Vec3, 2>> before_boxes_;
   std::vector<std::uint32_t> before_labels_;
-  std::vector<std::uint8_t> gone_;  // per pre-cut tet: live before, not there unchanged after
+  std::vector<std::uint8_t> gone_;
+  struct Witness {
+    std::vector<std::array<std::uint32_t, 4>> tets;
+    std::vector<std::uint32_t> labels;
+  };
+  std::vector<Witness> witness_history_;  // before each kept cut, newest last
+  std::uint32_t history_limit_ = 0;  // per pre-cut tet: live before, not there unchanged after
   std::uint32_t channel_u_ = 0, channel_v_ = 0;
   Vec3 origin_{};
   double field_scale_ = 1.0;

@@ -100,7 +100,17 @@ class TensorMassModel {
   // The cut's net change (change_log.hpp), the mesh as it is after it: O(tets and vertices in
   // the log, times their shells). Vertices first (their origins are values from before), then
   // the created tets' labels (their parents are still here), then removals, then creations.
+  // An undo's log (ChangeLog::undo, Cutter::undo()) gives the tets it restores the labels the
+  // undone cut found them with, and the vertices it restores or moves back the displacement,
+  // velocity and fixing they had when that cut was applied, from the history below (the state
+  // at the cut: a step since moved their neighbours, not them). With none kept for it, restored
+  // tets take the label of the tet the undo removes that holds their centroid (label_rule.hpp),
+  // restored vertices start at rest and free, and moved-back ones keep their state.
   ApplyProblems apply(const TetMesh& mesh, const ChangeLog& log);
+  // How many applied logs keep what they took, for their undo (newest first; the Cutter's
+  // CutParams::undo_history). 0, the default: none. Reused slots: no allocation once each has
+  // held a cut as large.
+  void keep_history(std::uint32_t logs);
 
   // ---- boundary conditions and state -----------------------------------------------------
   void set_fixed(VertId v, bool fixed);
@@ -205,6 +215,16 @@ class TensorMassModel {
     bool fixed;
   };
   std::vector<Interpolated> interpolated_;
+  // What each applied log took, for its undo: a ring of history_limit_ slots, the newest
+  // history_count_ of them ending at history_top_.
+  struct Taken {
+    std::vector<std::pair<TetId, std::uint32_t>> tets;  // removed tets and their labels, sorted by id
+    std::vector<Interpolated> vertices;                 // removed and moved vertices' state before
+  };
+  void keep(const ChangeLog& log);
+  [[nodiscard]] const Interpolated* taken_state(const Taken* taken, VertId v) const;
+  std::vector<Taken> history_;
+  std::uint32_t history_top_ = 0, history_count_ = 0;
 };
 
 }  // namespace tetcut::mechanics
