@@ -165,6 +165,7 @@ Vec3 RenderedSurface::normal(VertId v) const {
 }
 
 std::uint32_t RenderedSurface::apply(const TetMesh& mesh, const ChangeLog& log) {
+  const MeshReadScope reading(mesh, "RenderedSurface::apply()");
   grow(mesh.tet_capacity(), mesh.vertex_capacity());
   std::uint32_t unknown = 0;
   candidates_.clear();

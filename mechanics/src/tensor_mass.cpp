@@ -311,6 +311,7 @@ const TensorMassModel::Interpolated* TensorMassModel::taken_state(const Taken* t
 }
 
 ApplyProblems TensorMassModel::apply(const TetMesh& mesh, const ChangeLog& log) {
+  const MeshReadScope reading(mesh, "TensorMassModel::apply()");
   ApplyProblems problems;
   grow(mesh.tet_capacity(), mesh.vertex_capacity());
   // An undo takes the newest kept slot; any other log keeps what it takes.

@@ -23,6 +23,7 @@ void TetLabels::reserve(std::uint32_t tets) {
 }
 
 std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
+  const MeshReadScope reading(mesh, "TetLabels::apply()");
   if (mesh.tet_capacity() > tets_.size()) {
     tets_.resize(mesh.tet_capacity(), {kDead, kDead, kDead, kDead});
     labels_.resize(mesh.tet_capacity(), kNoLabel);

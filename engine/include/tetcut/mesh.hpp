@@ -30,6 +30,7 @@
 #include "tetcut/ids.hpp"
 #include "tetcut/raw_mesh.hpp"
 #include "tetcut/raw_mesh_view.hpp"
+#include "tetcut/thread_contract.hpp"
 #include "tetcut/vec3.hpp"
 
 namespace tetcut {
@@ -349,7 +350,12 @@ class TetMesh {
 
   static constexpr std::uint32_t kNoNeighbour = 0xFFFFFFFFu;
 
+  // Who uses the mesh now, for the threading contract's check (thread_contract.hpp): taken by
+  // MeshWriteScope and MeshReadScope. A copy of the mesh starts unused.
+  [[nodiscard]] const detail::MeshUse& use() const { return use_; }
+
  private:
+  detail::MeshUse use_;
   // The one seam under this interface, for the builder and for the checker's tests (who need the
   // arrays themselves); declared in an internal header, so no user of this class can name it.
   friend struct detail::MeshInternals;

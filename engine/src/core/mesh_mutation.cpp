@@ -335,6 +335,7 @@ void TetMesh::reserve(std::uint32_t tets, std::uint32_t vertices) {
 }
 
 Renumbering TetMesh::compact() {
+  const MeshWriteScope writing(*this, "TetMesh::compact()");
   assert(!journal_.active && "compact() inside a transaction");
   new_version();  // every id may mean another tet now: no undo comes back across this
   Renumbering map;

@@ -27,26 +27,59 @@ std::optional<std::string> validate(const CutParams& p) {
   return std::nullopt;
 }
 
-Cutter::Cutter(TetMesh& mesh, const CutParams& params) : pipeline_(std::make_unique<Pipeline>(mesh, params)) {}
+// Every call that changes the mesh holds it for writing (thread_contract.hpp); tet_containing()
+// only reads it.
+Cutter::Cutter(TetMesh& mesh, const CutParams& params)
+    : pipeline_([&] {
+        const MeshWriteScope writing(mesh, "Cutter's constructor");
+        return std::make_unique<Pipeline>(mesh, params);
+      }()) {}
 Cutter::~Cutter() = default;
 Cutter::Cutter(Cutter&&) noexcept = default;
 Cutter& Cutter::operator=(Cutter&&) noexcept = default;
 
-void Cutter::prepare() { pipeline_->prepare(); }
-void Cutter::reset() { pipeline_->reset(); }
-Renumbering Cutter::compact() { return pipeline_->compact(); }
-std::optional<std::string> Cutter::set_uncuttable(std::span<const TetId> tets) { return pipeline_->set_uncuttable(tets); }
+void Cutter::prepare() {
+  const MeshWriteScope writing(pipeline_->mesh(), "Cutter::prepare()");
+  pipeline_->prepare();
+}
+void Cutter::reset() {
+  const MeshWriteScope writing(pipeline_->mesh(), "Cutter::reset()");
+  pipeline_->reset();
+}
+Renumbering Cutter::compact() {
+  const MeshWriteScope writing(pipeline_->mesh(), "Cutter::compact()");
+  return pipeline_->compact();
+}
+std::optional<std::string> Cutter::set_uncuttable(std::span<const TetId> tets) {
+  const MeshWriteScope writing(pipeline_->mesh(), "Cutter::set_uncuttable()");
+  return pipeline_->set_uncuttable(tets);
+}
 bool Cutter::uncuttable(TetId t) const { return pipeline_->uncuttable(t); }
 bool Cutter::indexes_current_mesh() const { return pipeline_->indexes_current_mesh(); }
 std::optional<std::string> Cutter::set_params(const CutParams& params) { return pipeline_->set_params(params); }
 const CutParams& Cutter::params() const { return pipeline_->params(); }
-CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) { return pipeline_->cut(centre, centre, log); }
-CutReport Cutter::cut_segment(const Vec3& a, const Vec3& b, ChangeLog* log) { return pipeline_->cut(a, b, log); }
-CutReport Cutter::remove(TetId t, ChangeLog* log) { return pipeline_->remove(t, log); }
-std::optional<std::string> Cutter::undo(ChangeLog* log) { return pipeline_->undo(log); }
+CutReport Cutter::cut(const Vec3& centre, ChangeLog* log) {
+  const MeshWriteScope writing(pipeline_->mesh(), "Cutter::cut()");
+  return pipeline_->cut(centre, centre, log);
+}
+CutReport Cutter::cut_segment(const Vec3& a, const Vec3& b, ChangeLog* log) {
+  const MeshWriteScope writing(pipeline_->mesh(), "Cutter::cut_segment()");
+  return pipeline_->cut(a, b, log);
+}
+CutReport Cutter::remove(TetId t, ChangeLog* log) {
+  const MeshWriteScope writing(pipeline_->mesh(), "Cutter::remove()");
+  return pipeline_->remove(t, log);
+}
+std::optional<std::string> Cutter::undo(ChangeLog* log) {
+  const MeshWriteScope writing(pipeline_->mesh(), "Cutter::undo()");
+  return pipeline_->undo(log);
+}
 std::uint32_t Cutter::undo_depth() const { return pipeline_->undo_depth(); }
 std::optional<Cutter::CutReach> Cutter::last_undone_reach() const { return pipeline_->last_undone_reach(); }
-TetId Cutter::tet_containing(const Vec3& p) { return pipeline_->tet_containing(p); }
+TetId Cutter::tet_containing(const Vec3& p) {
+  const MeshReadScope reading(pipeline_->mesh(), "Cutter::tet_containing()");
+  return pipeline_->tet_containing(p);
+}
 const RemovalReport& Cutter::removal_report() const { return pipeline_->removal_report(); }
 TetMesh& Cutter::mesh() { return pipeline_->mesh(); }
 const std::vector<TetId>& Cutter::last_removed() const { return pipeline_->last_removed(); }
