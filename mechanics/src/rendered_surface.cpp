@@ -39,6 +39,8 @@ RenderedSurface::RenderedSurface(const TetMesh& mesh) {
     for (int f = 0; f < 4; ++f)
       if (mesh.is_boundary_face(id, f)) insert(mesh, id, f);
   }
+  changed_triangles_.clear();  // a copy starts from the whole surface, not from these
+  changed_vertices_.clear();
 }
 
 void RenderedSurface::reserve(std::uint32_t tets, std::uint32_t vertices) {
@@ -50,6 +52,8 @@ void RenderedSurface::reserve(std::uint32_t tets, std::uint32_t vertices) {
   triangles_.reserve(triangles);
   free_triangles_.reserve(triangles);
   candidates_.reserve(4096);
+  changed_triangles_.reserve(4096);
+  changed_vertices_.reserve(4096);
   created_faces_.reserve(4096);
   shell_.reserve(256);
   const std::size_t slots = std::bit_ceil(std::max(2 * triangles, std::size_t{vertices} << kWindowShift));
@@ -89,6 +93,7 @@ std::uint32_t RenderedSurface::find(const Key& key) const {
 void RenderedSurface::account(const Triangle& t, double sign) {
   const double scale = norm(t.area_vector);
   for (VertId v : t.v) {
+    changed_vertices_.push_back(v);
     normal_sum_[v.value] = normal_sum_[v.value] + sign * t.area_vector;
     normal_scale_[v.value] += sign * scale;
     if (sign > 0) {
@@ -116,6 +121,7 @@ void RenderedSurface::insert(const TetMesh& mesh, TetId tet, int face) {
     triangles_.push_back({});
   }
   triangles_[slot] = t;
+  changed_triangles_.push_back(slot);
   const std::size_t mask = index_.size() - 1;
   std::size_t h = triangle_home(sorted_key(t.v[0].value, t.v[1].value, t.v[2].value)) & mask;
   while (index_[h] != kEmpty) h = (h + 1) & mask;
@@ -145,6 +151,7 @@ void RenderedSurface::erase(std::uint32_t slot) {
   }
   index_[hole] = kEmpty;
   triangles_[slot] = Triangle{{kNoVert, kNoVert, kNoVert}, Vec3{}};
+  changed_triangles_.push_back(slot);
   free_triangles_.push_back(slot);
   --live_triangles_;
 }
@@ -166,6 +173,8 @@ Vec3 RenderedSurface::normal(VertId v) const {
 
 std::uint32_t RenderedSurface::apply(const TetMesh& mesh, const ChangeLog& log) {
   const MeshReadScope reading(mesh, "RenderedSurface::apply()");
+  changed_triangles_.clear();
+  changed_vertices_.clear();
   grow(mesh.tet_capacity(), mesh.vertex_capacity());
   std::uint32_t unknown = 0;
   candidates_.clear();

@@ -51,6 +51,11 @@ class RenderedSurface {
   [[nodiscard]] std::uint32_t triangles_at(VertId v) const { return vertex_triangles_[v.value]; }
   [[nodiscard]] double normal_scale(VertId v) const { return normal_scale_[v.value]; }
   [[nodiscard]] std::uint32_t vertex_capacity() const { return static_cast<std::uint32_t>(normal_sum_.size()); }
+  // What the last apply() wrote: triangle slots (filled or freed) and vertices whose normal sum
+  // changed, each possibly more than once, in no order; what a copy kept by another thread
+  // (snapshot.hpp) must take to be current again, in O(changed).
+  [[nodiscard]] std::span<const std::uint32_t> last_changed_triangles() const { return changed_triangles_; }
+  [[nodiscard]] std::span<const VertId> last_changed_vertices() const { return changed_vertices_; }
 
  private:
   static constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
@@ -74,6 +79,8 @@ class RenderedSurface {
   std::uint32_t live_triangles_ = 0;
   std::vector<Key> candidates_, created_faces_;
   std::vector<TetId> shell_;
+  std::vector<std::uint32_t> changed_triangles_;
+  std::vector<VertId> changed_vertices_;
 };
 
 }  // namespace tetcut::mechanics

@@ -1,0 +1,131 @@
+#include "tetcut/mechanics/snapshot.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace tetcut::mechanics {
+namespace {
+
+template <class T>
+void fnv(std::uint64_t& h, std::span<const T> values) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+  for (std::size_t i = 0; i < values.size_bytes(); ++i) {
+    h ^= bytes[i];
+    h *= 0x100000001b3ull;
+  }
+}
+
+}  // namespace
+
+SnapshotPublisher::SnapshotPublisher(Options options) : options_(options) {
+  buffers_.reserve(options_.readers + 2);
+  for (std::uint32_t i = 0; i < options_.readers + 2; ++i) buffers_.push_back(std::make_unique<Buffer>());
+}
+
+SnapshotPublisher::~SnapshotPublisher() = default;
+
+std::uint64_t SnapshotPublisher::checksum_of(const Frame& f) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  fnv(h, std::span<const std::uint64_t>(&f.sequence, 1));
+  fnv(h, std::span<const Vec3>(f.positions));
+  fnv(h, std::span<const Vec3>(f.velocities));
+  fnv(h, std::span<const Vec3>(f.normals));
+  fnv(h, std::span<const std::array<VertId, 3>>(f.triangles));
+  fnv(h, std::span<const Vec3>(&f.reaction_force, 1));
+  return h;
+}
+
+void SnapshotPublisher::publish(const TetMesh& mesh, const TensorMassModel& model, const RenderedSurface& surface,
+                                const ChangeLog* cut, bool stepped, const Vec3& reaction_force) {
+  ++sequence_;
+  Changes& now = changes_[sequence_ % kKeptChanges];
+  now.all_vertices = stepped;
+  now.vertices.clear();
+  now.triangles.clear();
+  if (cut) {
+    for (const CreatedVertex& v : cut->vertices) now.vertices.push_back(v.vertex.value);
+    for (const MovedVertex& v : cut->moved) now.vertices.push_back(v.vertex.value);
+    for (VertId v : surface.last_changed_vertices()) now.vertices.push_back(v.value);
+    now.triangles.assign(surface.last_changed_triangles().begin(), surface.last_changed_triangles().end());
+  }
+  // A buffer no lease holds and not the latest: with `readers` leases at most, there is one.
+  const std::uint32_t latest = latest_.load(std::memory_order_seq_cst);
+  Buffer* target = nullptr;
+  std::uint32_t index = 0;
+  for (std::uint32_t i = 0; i < buffers_.size() && !target; ++i) {
+    if (i == latest || buffers_[i]->leases.load(std::memory_order_seq_cst) != 0) continue;
+    target = buffers_[i].get();
+    index = i;
+  }
+  if (!target) {  // more leases than Options::readers: this publish is skipped, its changes kept
+    ++stats_.skipped;
+    return;
+  }
+  if (target->id_epoch != mesh.id_epoch()) target->frame.sequence = 0;  // renumbered since: all of it
+  bring_up_to_date(target->frame, mesh, model, surface);
+  target->id_epoch = mesh.id_epoch();
+  target->frame.reaction_force = reaction_force;
+  target->frame.sequence = sequence_;
+  if (options_.checksums) target->frame.checksum = checksum_of(target->frame);
+  latest_.store(index, std::memory_order_seq_cst);
+  ++stats_.publishes;
+}
+
+void SnapshotPublisher::bring_up_to_date(Frame& f, const TetMesh& mesh, const TensorMassModel& model,
+                                         const RenderedSurface& surface) {
+  const std::uint32_t vertices = mesh.vertex_capacity();
+  const auto slots = surface.triangle_slots();
+  f.positions.resize(vertices);
+  f.velocities.resize(vertices);
+  f.normals.resize(vertices);
+  f.triangles.resize(slots.size());
+  const double to_mesh = 1.0 / model.params().length_unit;
+  auto vertex = [&](std::uint32_t v) {
+    if (v >= vertices) return;
+    const VertId id{v};
+    const bool modelled = v < model.vertex_capacity();
+    f.positions[v] = mesh.position(id) + (modelled ? to_mesh * model.displacement(id) : Vec3{});
+    f.velocities[v] = modelled ? model.velocity(id) : Vec3{};
+    f.normals[v] = v < surface.vertex_capacity() ? surface.normal(id) : Vec3{};
+    ++stats_.vertices_copied;
+  };
+  auto triangle = [&](std::uint32_t s) {
+    if (s >= slots.size()) return;
+    f.triangles[s] = slots[s].v;
+    ++stats_.triangles_copied;
+  };
+  if (f.sequence == 0 || sequence_ - f.sequence >= kKeptChanges) {
+    ++stats_.full_copies;
+    for (std::uint32_t v = 0; v < vertices; ++v) vertex(v);
+    for (std::uint32_t s = 0; s < slots.size(); ++s) triangle(s);
+    return;
+  }
+  bool all = false;
+  for (std::uint64_t q = f.sequence + 1; q <= sequence_ && !all; ++q) all = changes_[q % kKeptChanges].all_vertices;
+  if (all)
+    for (std::uint32_t v = 0; v < vertices; ++v) vertex(v);
+  for (std::uint64_t q = f.sequence + 1; q <= sequence_; ++q) {
+    const Changes& c = changes_[q % kKeptChanges];
+    if (!all)
+      for (std::uint32_t v : c.vertices) vertex(v);
+    for (std::uint32_t s : c.triangles) triangle(s);
+  }
+}
+
+SnapshotPublisher::Lease SnapshotPublisher::latest() const {
+  for (;;) {
+    const std::uint32_t i = latest_.load(std::memory_order_seq_cst);
+    buffers_[i]->leases.fetch_add(1, std::memory_order_seq_cst);
+    if (latest_.load(std::memory_order_seq_cst) == i) return Lease(this, i);
+    buffers_[i]->leases.fetch_sub(1, std::memory_order_seq_cst);  // a publish moved it: again
+  }
+}
+
+SnapshotPublisher::Lease::Lease(const SnapshotPublisher* owner, std::uint32_t buffer)
+    : owner_(owner), buffer_(buffer), frame_(&owner->buffers_[buffer]->frame) {}
+
+SnapshotPublisher::Lease::~Lease() {
+  if (owner_) owner_->buffers_[buffer_]->leases.fetch_sub(1, std::memory_order_seq_cst);
+}
+
+}  // namespace tetcut::mechanics
