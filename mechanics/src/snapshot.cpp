@@ -19,7 +19,11 @@ void fnv(std::uint64_t& h, std::span<const T> values) {
 
 SnapshotPublisher::SnapshotPublisher(Options options) : options_(options) {
   buffers_.reserve(options_.readers + 2);
-  for (std::uint32_t i = 0; i < options_.readers + 2; ++i) buffers_.push_back(std::make_unique<Buffer>());
+  for (std::uint32_t i = 0; i < options_.readers + 2; ++i) {
+    buffers_.push_back(std::make_unique<Buffer>());
+    // Even the empty frame a reader sees before the first publish carries its checksum.
+    if (options_.checksums) buffers_.back()->frame.checksum = checksum_of(buffers_.back()->frame);
+  }
 }
 
 SnapshotPublisher::~SnapshotPublisher() = default;
@@ -61,9 +65,11 @@ void SnapshotPublisher::publish(const TetMesh& mesh, const TensorMassModel& mode
     ++stats_.skipped;
     return;
   }
-  if (target->id_epoch != mesh.id_epoch()) target->frame.sequence = 0;  // renumbered since: all of it
+  // Renumbered or another mesh since this buffer was written: all of it.
+  if (target->id_epoch != mesh.id_epoch() || target->generation != generation_) target->frame.sequence = 0;
   bring_up_to_date(target->frame, mesh, model, surface);
   target->id_epoch = mesh.id_epoch();
+  target->generation = generation_;
   target->frame.reaction_force = reaction_force;
   target->frame.sequence = sequence_;
   if (options_.checksums) target->frame.checksum = checksum_of(target->frame);

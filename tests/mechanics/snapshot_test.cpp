@@ -140,6 +140,38 @@ TEST(Snapshot, ACompactionMakesTheNextPublishAFullCopy) {
   expect_frame_equals(*publisher.latest(), direct_frame(sim.mesh, model, surface), sim.mesh);
 }
 
+// Another mesh through the same publisher (a simulation reset): after restart() every buffer is
+// written whole, so no frame mixes the old mesh's triangles with the new one's. Without it, the
+// buffers written before would only take the new mesh's changes. And the empty frame a reader sees
+// before the first publish is whole too.
+TEST(Snapshot, ARestartMakesEveryBufferTheNewMeshWhole) {
+  SnapshotPublisher publisher({.readers = 2, .checksums = true});
+  const SnapshotPublisher::Frame& empty = *publisher.latest();
+  EXPECT_EQ(SnapshotPublisher::checksum_of(empty), empty.checksum);
+  {
+    Simulation first;
+    publisher.publish(first.mesh, first.model, first.surface, nullptr, true, {});
+    ChangeLog log;
+    std::size_t triangles_changed = 0;
+    for (int k = 0; k < 6; ++k) {
+      ASSERT_TRUE(first.cut({-0.8 + 0.13 * k, -0.3, 3.0}, log)) << "cut " << k;
+      triangles_changed += first.surface.last_changed_triangles().size();
+      publisher.publish(first.mesh, first.model, first.surface, &log, false, {});
+    }
+    ASSERT_GT(triangles_changed, 0u);  // the old mesh's surface is not the new one's
+  }
+  Simulation second;
+  publisher.restart();
+  const std::uint64_t full = publisher.stats().full_copies;
+  for (int k = 0; k < 5; ++k) {
+    second.model.step(second.dt);
+    publisher.publish(second.mesh, second.model, second.surface, nullptr, true, {});
+    expect_frame_equals(*publisher.latest(), direct_frame(second.mesh, second.model, second.surface), second.mesh);
+  }
+  // With no lease held, publishes alternate between two buffers: each is written whole once.
+  EXPECT_EQ(publisher.stats().full_copies, full + 2);
+}
+
 // Two readers (a haptic loop spinning, a renderer pausing) while the cutting thread sweeps,
 // steps and publishes with checksums: every frame either reads is whole.
 TEST(Snapshot, ReadersOnOtherThreadsOnlyEverSeeWholeFrames) {
