@@ -40,9 +40,10 @@ LIBRARIES = ["libc6", "libstdc++6", "libtet1.5-dev", "libcgal-dev", "zlib1g-dev"
 
 class Inputs:
     def __init__(self, bench, confirmations, budgets, stats, build_dir, how, peer_on=None, peer_off=None,
-                 sweeps=None, mechanics=None):
+                 sweeps=None, mechanics=None, haptic=None):
         self.bench, self.confirmations, self.budgets, self.stats = bench, confirmations, budgets, stats
         self.mechanics = mechanics  # bench/mechanics_bench's Google Benchmark JSON
+        self.haptic = haptic  # bench/haptic_stress --json
         self.build_dir, self.how = build_dir, how
         self.peer_on, self.peer_off = peer_on, peer_off  # tetcut_quality_peer --json, pass on and off
         self.sweeps = sweeps  # tetcut_quality_sweeps --json
@@ -620,9 +621,37 @@ def mechanics(inputs):
     return body
 
 
+def haptic_stress(inputs):
+    h = inputs.haptic
+    if not h:
+        return None
+
+    def spread(f):
+        return f"p50 {f['p50']:.2f} us, p99 {f['p99']:.2f} us, max {f['max']:.2f} us ({f['n']} reads)"
+
+    slower = 100.0 * (h["cut_with_readers_us"] / h["cut_alone_us"] - 1.0)
+    return ["## Readers on other threads: the haptic stress harness", "",
+            "`bench/haptic_stress.cpp` (issue 47, [mechanics.md](mechanics.md#snapshots-for-other-threads)): the "
+            "gated sweep on the bundled liver, each cut followed by the model's and the surface's update, one "
+            "step, the reaction force and a `SnapshotPublisher` publish with checksums; a haptic thread reads the "
+            "latest frame every millisecond and a render thread every 1/60 s (`sleep_until` on `steady_clock`, "
+            "default scheduling, no real-time priority), checking each frame's checksum. A read is the checksum "
+            "over the whole frame, which a real haptic loop would not compute. Not gated: wall times that the "
+            f"machine's load moves, on {h['hardware_threads']} hardware threads for three threads.", "",
+            "| figure | goal | measured |", "|---|---|---|",
+            f"| haptic reader's wait for a frame (the lease) | p99 <= 1 us | {spread(h['haptic']['wait_us'])} |",
+            f"| render reader's wait for a frame | p99 <= 1 us | {spread(h['render']['wait_us'])} |",
+            f"| haptic loop's lateness against its 1 ms schedule | p99 <= 100 us where the scheduling allows | "
+            f"{spread(h['haptic']['late_us'])} |",
+            f"| haptic reader's read of a whole frame (checksum) | - | {spread(h['haptic']['read_us'])} |",
+            f"| cutter per cut (cut + update + step + reaction + publish with checksum), alone / with the readers "
+            f"| <= 10 % slower | {h['cut_alone_us']:.0f} us / {h['cut_with_readers_us']:.0f} us ({slower:+.1f} %) |",
+            f"| torn or backward frames read | 0 | {h['torn'] + h['backwards']} |"]
+
+
 SECTIONS = [machine, budget_gate, cut_sweeps, swept_tool, paired, removal_requests, instructions, session_memory, paper_table1,
             paper_table2,
-            paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, peers, mechanics, resection]
+            paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, peers, mechanics, haptic_stress, resection]
 
 
 def page(inputs):
@@ -659,6 +688,7 @@ def main(argv):
     parser.add_argument("--peer-without-improvement", help="the same with --improve off")
     parser.add_argument("--sweeps", help="tetcut_quality_sweeps --json output")
     parser.add_argument("--mechanics", help="bench/mechanics_bench's JSON output")
+    parser.add_argument("--haptic", help="bench/haptic_stress --json output")
     parser.add_argument("--build-dir", help="the build the figures came from")
     parser.add_argument("--how", help="how the benchmarks were run")
     parser.add_argument("--out", help="the page (default: stdout)")
@@ -667,7 +697,8 @@ def main(argv):
                     load(args.budgets, "budgets"),
                     load(args.stats, "tetcut stats output"), args.build_dir, args.how,
                     load(args.peer, "quality peer output"), load(args.peer_without_improvement, "quality peer output"),
-                    load(args.sweeps, "quality sweeps output"), load(args.mechanics, "mechanics benchmark output"))
+                    load(args.sweeps, "quality sweeps output"), load(args.mechanics, "mechanics benchmark output"),
+                    load(args.haptic, "haptic stress output"))
     text = page(inputs)
     if not args.out:
         sys.stdout.write(text)
