@@ -36,7 +36,8 @@ class Mesh:
     def num_vertices(self) -> int: ...
     @property
     def points(self) -> npt.NDArray[np.float64]:
-        """#V by 3: the live vertices in id order (a copy)."""
+        """#V by 3: the live vertices in id order (a copy), as the last change that returned left them:
+        never refused while another thread cuts."""
     @property
     def vertex_ids(self) -> npt.NDArray[np.int64]:
         """#V: the engine id of each row of `points`."""

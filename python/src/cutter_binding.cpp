@@ -205,7 +205,10 @@ class PyCutter {
       py::gil_scoped_release release;
       engine_cut(r);
     }
-    if (r.report.ok) seen_version_ = ++handle_->version;
+    if (r.report.ok) {
+      handle_->published.publish(handle_->mesh, r.log);  // the GIL back: no reader mid-copy
+      seen_version_ = ++handle_->version;
+    }
     last_fragments_ = r.fragments;
     return r;
   }
@@ -236,6 +239,8 @@ class PyCutter {
         }
       }
     }
+    for (const Report& r : reports)  // the GIL back: no reader mid-copy
+      if (r.report.ok) handle_->published.publish(handle_->mesh, r.log);
     seen_version_ = ++handle_->version;
     last_fragments_ = reports.empty() ? std::vector<PyFragment>{} : reports.back().fragments;
     return reports;
@@ -262,6 +267,7 @@ class PyCutter {
     }
     if (refused) throw std::runtime_error("tetcut: Cutter.undo: " + *refused);
     handle_->labels.apply(handle_->mesh, log);
+    handle_->published.publish(handle_->mesh, log);
     seen_version_ = ++handle_->version;
     last_fragments_.clear();
     return changes_of(log);

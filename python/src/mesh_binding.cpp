@@ -58,6 +58,16 @@ std::vector<std::int64_t> vertex_rows(const TetMesh& mesh, std::int64_t& live) {
   return row;
 }
 
+// The same rows, of the published mesh.
+std::vector<std::int64_t> vertex_rows(const PublishedMesh& mesh) {
+  std::vector<std::int64_t> row(mesh.vertex_capacity(), -1);
+  std::int64_t live = 0;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (mesh.vertex_live(v)) row[v] = live++;
+  }
+  return row;
+}
+
 std::string shape_text(const py::array& a) {
   std::string s = "(";
   for (py::ssize_t i = 0; i < a.ndim(); ++i) s += (i ? ", " : "") + std::to_string(a.shape(i));
@@ -136,6 +146,7 @@ MeshPtr build(const RawMesh& raw, const std::string& where) {
   }
   auto handle = std::make_shared<MeshHandle>();
   handle->mesh = std::move(*built.mesh);
+  handle->published.publish_all(handle->mesh);
   return handle;
 }
 
@@ -240,6 +251,7 @@ MeshPtr copy_of(const MeshPtr& held) {
   MeshUse use(h);
   auto copy = std::make_shared<MeshHandle>();
   copy->mesh = h.mesh;
+  copy->published.publish_all(copy->mesh);
   copy->labels = h.labels;
   copy->flat_attributes = h.flat_attributes;
   return copy;
@@ -285,54 +297,55 @@ using MeshClass = py::class_<MeshHandle, MeshPtr>;
 
 // Counts and the live mesh as arrays: copies, the zero-copy slot views, the masks.
 void bind_mesh_arrays(MeshClass& mesh) {
+  // The copies read the published mesh (published_mesh.hpp), never refused: during another
+  // thread's cut they give the mesh as it was before it.
   mesh.def_property_readonly("num_tets", [](const MeshPtr& held) {
-        MeshHandle& h = *held; return h.mesh.num_tets(); },
+        MeshHandle& h = *held; return h.published.num_tets(); },
                              "Live tets (0 once a cut removed them all).");
   mesh.def_property_readonly("num_vertices", [](const MeshPtr& held) {
-        MeshHandle& h = *held; return h.mesh.num_vertices(); },
+        MeshHandle& h = *held; return h.published.num_vertices(); },
                              "Live vertices (used by a live tet).");
 
   mesh.def_property_readonly(
       "points",
       [](const MeshPtr& held) {
-        MeshHandle& h = *held;
-        MeshUse use(h);
-        py::array_t<double> a({static_cast<py::ssize_t>(h.mesh.num_vertices()), py::ssize_t{3}});
+        const PublishedMesh& m = held->published;
+        py::array_t<double> a({static_cast<py::ssize_t>(m.num_vertices()), py::ssize_t{3}});
         auto w = a.mutable_unchecked<2>();
         py::ssize_t row = 0;
-        for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v) {
-          if (!h.mesh.is_live(VertId{v})) continue;
-          const Vec3& p = h.mesh.position(VertId{v});
+        for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) {
+          if (!m.vertex_live(v)) continue;
+          if (row == a.shape(0)) throw std::logic_error("tetcut: the published mesh miscounts its vertices");
+          const Vec3& p = m.positions()[v];
           w(row, 0) = p.x, w(row, 1) = p.y, w(row, 2) = p.z;
           ++row;
         }
         return a;
       },
-      "#V by 3 float64: the live vertices in id order (a copy).");
+      "#V by 3 float64: the live vertices in id order (a copy), as the last change that returned left "
+      "them: never refused while another thread cuts.");
   mesh.def_property_readonly(
       "vertex_ids",
       [](const MeshPtr& held) {
-        MeshHandle& h = *held;
-        MeshUse use(h);
+        const PublishedMesh& m = held->published;
         std::vector<std::int64_t> ids;
-        ids.reserve(h.mesh.num_vertices());
-        for (std::uint32_t v = 0; v < h.mesh.vertex_capacity(); ++v)
-          if (h.mesh.is_live(VertId{v})) ids.push_back(v);
+        ids.reserve(m.num_vertices());
+        for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v)
+          if (m.vertex_live(v)) ids.push_back(v);
         return ids_array(ids);
       },
       "#V int64: the engine id of each row of `points` (the ids report.changes speaks of).");
   mesh.def_property_readonly(
       "tets",
       [](const MeshPtr& held) {
-        MeshHandle& h = *held;
-        MeshUse use(h);
-        std::int64_t live = 0;
-        const std::vector<std::int64_t> row = vertex_rows(h.mesh, live);
-        py::array_t<std::int64_t> a({static_cast<py::ssize_t>(h.mesh.num_tets()), py::ssize_t{4}});
+        const PublishedMesh& m = held->published;
+        const std::vector<std::int64_t> row = vertex_rows(m);
+        py::array_t<std::int64_t> a({static_cast<py::ssize_t>(m.num_tets()), py::ssize_t{4}});
         auto w = a.mutable_unchecked<2>();
         py::ssize_t r = 0;
-        for (const auto& t : h.mesh.raw_tets()) {
+        for (const auto& t : m.tets()) {
           if (t[0] == kDeadTetMarker) continue;
+          if (r == a.shape(0)) throw std::logic_error("tetcut: the published mesh miscounts its tets");
           for (int k = 0; k < 4; ++k) w(r, k) = row[t[k]];
           ++r;
         }
@@ -342,11 +355,10 @@ void bind_mesh_arrays(MeshClass& mesh) {
   mesh.def_property_readonly(
       "tet_ids",
       [](const MeshPtr& held) {
-        MeshHandle& h = *held;
-        MeshUse use(h);
+        const PublishedMesh& m = held->published;
         std::vector<std::int64_t> ids;
-        ids.reserve(h.mesh.num_tets());
-        const auto tets = h.mesh.raw_tets();
+        ids.reserve(m.num_tets());
+        const auto tets = m.tets();
         for (std::uint32_t t = 0; t < tets.size(); ++t)
           if (tets[t][0] != kDeadTetMarker) ids.push_back(t);
         return ids_array(ids);
@@ -567,6 +579,7 @@ void bind_mesh_files_and_copies(MeshClass& mesh) {
         require_no_slot_views(h);
         const Renumbering r = h.mesh.compact();
         h.labels.renumber(r);
+        h.published.publish_all(h.mesh);
         ++h.version;
         std::vector<std::int64_t> tets(r.tet_old_to_new.size()), verts(r.vert_old_to_new.size());
         // int64 before the choice: `valid() ? value : -1` would make the -1 a uint32 (4294967295).
@@ -613,7 +626,8 @@ void bind_mesh_files_and_copies(MeshClass& mesh) {
       }));
   mesh.def("__repr__", [](const MeshPtr& held) {
         MeshHandle& h = *held;
-    return "<tetcut.Mesh " + std::to_string(h.mesh.num_vertices()) + " vertices, " + std::to_string(h.mesh.num_tets()) +
+    return "<tetcut.Mesh " + std::to_string(h.published.num_vertices()) + " vertices, " +
+           std::to_string(h.published.num_tets()) +
            " tets>";
   });
 

@@ -3,7 +3,9 @@
 //
 //   - a cut runs with the GIL released (design: the simulator's other threads keep running), so
 //     nothing else may touch the mesh meanwhile: every method takes the mesh's Use, and a second
-//     user (another thread's cut, a read of mesh.points) gets RuntimeError instead of a race;
+//     user (another thread's cut, a read of mesh.labels) gets RuntimeError instead of a race;
+//     except the copies of the mesh itself (points, vertex_ids, tets, tet_ids, the counts), which
+//     read the state each change publishes when it returns (PublishedMesh) and never wait;
 //   - several Cutters may share one mesh: each remembers the mesh's version when it last
 //     indexed or cut it, and re-indexes (Cutter::reset) when another one has cut since;
 //   - slot views (mesh.slot_tets, mesh.slot_points) point into the engine's own arrays, which a
@@ -27,6 +29,7 @@
 #include "tetcut/change_log.hpp"
 #include "tetcut/mechanics/tet_labels.hpp"
 #include "tetcut/mesh.hpp"
+#include "published_mesh.hpp"
 
 namespace tetcut::python {
 
@@ -76,6 +79,9 @@ class MeshLabels {
 struct MeshHandle {
   TetMesh mesh;
   MeshLabels labels;
+  // mesh as the last change that returned left it: what the copies (points, tets, ...) read, so
+  // that a reader is never refused while a cut in another thread runs (published_mesh.hpp).
+  PublishedMesh published;
   // Width-1 attribute channels set from a 1-D array: vertex_attribute() gives them back 1-D, as
   // meshio's point_data has them; the others come back #V by width.
   std::set<std::string> flat_attributes;

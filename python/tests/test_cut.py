@@ -165,25 +165,74 @@ def test_two_cutters_on_one_mesh_stay_consistent(box):
     assert tetcut.check(box, level="full") == []
 
 
-def test_the_cut_releases_the_gil_and_the_mesh_stays_locked():
-    # Were the GIL held, this thread could not run while the sweep does, and would never find the
-    # mesh in use. A sweep lasts milliseconds: a few attempts make a busy machine's scheduling moot.
+def live_copies(mesh):
+    """points, vertex_ids, tets and tet_ids as the live engine arrays give them (the slot views)."""
+    alive_v, alive_t = mesh.live_vertex_mask, mesh.live_tet_mask
+    slot_points, slot_tets = mesh.slot_points, mesh.slot_tets
+    rows = np.cumsum(alive_v) - 1
+    copies = (slot_points[alive_v].copy(), np.flatnonzero(alive_v), rows[slot_tets[alive_t]].astype(np.int64),
+              np.flatnonzero(alive_t))
+    del slot_points, slot_tets  # the views lock the mesh against the next cut
+    return copies
+
+
+def expect_published_is_live(mesh):
+    points, vertex_ids, tets, tet_ids = live_copies(mesh)
+    assert np.array_equal(mesh.points, points) and np.array_equal(mesh.vertex_ids, vertex_ids)
+    assert np.array_equal(mesh.tets, tets) and np.array_equal(mesh.tet_ids, tet_ids)
+    assert (mesh.num_vertices, mesh.num_tets) == (len(points), len(tets))
+
+
+def test_the_copies_read_the_mesh_each_change_published():
+    # The copies read what each change published when it returned (O(changed) a cut), not the
+    # engine's arrays: after every kind of change they must equal what those arrays hold.
+    liver = tetcut.read(str(CORPUS / "liver.msh"))
+    expect_published_is_live(liver)
+    cutter = tetcut.Cutter(liver, tool_diameter=README_DIAMETER, undo_history=4)
+    s, e = np.array(README_SWEEP["start"]), np.array(README_SWEEP["end"])
+    for k in range(6):
+        cutter.cut(tuple(s + (e - s) * k / 12))
+        expect_published_is_live(liver)
+    cutter.cut_segment(tuple(s), tuple(s + (e - s) / 6))
+    expect_published_is_live(liver)
+    for _ in range(3):
+        cutter.undo()
+        expect_published_is_live(liver)
+    cutter.sweep(**README_SWEEP)
+    expect_published_is_live(liver)
+    liver.compact()
+    expect_published_is_live(liver)
+    expect_published_is_live(liver.copy())
+    expect_published_is_live(pickle.loads(pickle.dumps(liver)))
+
+
+def test_the_cut_releases_the_gil_and_the_copies_never_wait():
+    # Were the GIL held, this thread could not run while the sweep does. It reads mesh.points all
+    # along, never refused: each read is the mesh before the sweep or after it (a sweep publishes
+    # when it returns). mesh.surface() reads the live mesh, so the sweep holding it refuses it:
+    # proof that the reads ran during the sweep. A sweep lasts milliseconds: a few attempts make
+    # a busy machine's scheduling moot.
     for attempt in range(5):
         liver = tetcut.read(str(CORPUS / "liver.msh"))
+        before = liver.points
         cutter = tetcut.Cutter(liver, tool_diameter=README_DIAMETER)
-        seen_busy, done = [], []
+        seen_busy, done, reads = [], [], []
         worker = threading.Thread(target=lambda: done.append(cutter.sweep(README_SWEEP["start"], README_SWEEP["end"], 1.0)))
         worker.start()
         while worker.is_alive():
+            reads.append(liver.points)  # never raises
             try:
-                liver.points
-            except RuntimeError as e:  # the sweep holds the mesh while the GIL is free
+                liver.surface()
+            except RuntimeError as e:  # the sweep holds the live mesh while the GIL is free
                 seen_busy.append(str(e))
         worker.join()
         assert len(done[0]) == 141 and tetcut.check(liver) == []
+        after = liver.points
+        assert all(np.array_equal(r, before) or np.array_equal(r, after) for r in reads)
         if seen_busy:
             break
     assert seen_busy and "in use by a cut in another thread" in seen_busy[0]
+    assert len(reads) > 0
 
 
 def test_stats_are_the_papers_tables_of_the_requests(liver):
