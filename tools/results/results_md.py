@@ -635,7 +635,7 @@ def haptic_stress(inputs):
             "gated sweep on the bundled liver, each cut followed by the model's and the surface's update, one "
             "step, the reaction force and a `SnapshotPublisher` publish with checksums; a haptic thread reads the "
             "latest frame every millisecond and a render thread every 1/60 s (`sleep_until` on `steady_clock`, "
-            "default scheduling, no real-time priority), checking each frame's checksum. A read is the checksum "
+            "default scheduling, no real-time priority, timer slack 1 ns), checking each frame's checksum. A read is the checksum "
             "over the whole frame, which a real haptic loop would not compute. Not gated: wall times that the "
             f"machine's load moves, on {h['hardware_threads']} hardware threads for three threads.", "",
             "| figure | goal | measured |", "|---|---|---|",
