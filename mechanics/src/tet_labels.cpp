@@ -55,10 +55,15 @@ std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
   }
   const bool changed = !log.removed.empty() || !log.created.empty() || !log.moved.empty();
   if (history_limit_ > 0 && changed) {  // a log that changes nothing is not kept, as the Cutter keeps no such cut
-    if (history_.size() == history_limit_) history_.erase(history_.begin());  // the oldest goes
-    history_.emplace_back();
+    // The ring's next slot, the oldest when it is full: cleared, its capacity kept, so that a
+    // session that keeps history stops allocating once each slot has held its largest cut.
+    if (history_.size() < history_limit_) history_.resize(history_limit_);
+    newest_ = kept_ == 0 ? 0 : (newest_ + 1) % history_limit_;
+    kept_ = std::min(kept_ + 1, history_limit_);
+    auto& taken = history_[newest_];
+    taken.clear();
     for (TetId t : log.removed)
-      if (has(t)) history_.back().emplace_back(t, labels_[t.value]);
+      if (has(t)) taken.emplace_back(t, labels_[t.value]);
   }
   for (TetId t : log.removed) {
     if (!has(t)) continue;
@@ -75,8 +80,17 @@ std::uint32_t TetLabels::apply(const TetMesh& mesh, const ChangeLog& log) {
 }
 
 void TetLabels::keep_history(std::uint32_t logs) {
+  if (logs == history_limit_) return;
+  // The newest min(kept, logs) entries, oldest first from slot 0 (a change of the limit, between
+  // cuts: the one place the ring is laid out again).
+  const std::uint32_t keep = std::min(kept_, logs);
+  std::vector<std::vector<std::pair<TetId, std::uint32_t>>> ring(logs);
+  for (std::uint32_t k = 0; k < keep; ++k)
+    ring[k] = std::move(history_[(newest_ + history_limit_ - (keep - 1 - k)) % history_limit_]);
+  history_ = std::move(ring);
   history_limit_ = logs;
-  while (history_.size() > logs) history_.erase(history_.begin());
+  kept_ = keep;
+  newest_ = keep == 0 ? 0 : keep - 1;
 }
 
 std::uint32_t TetLabels::restore(const TetMesh& mesh, const ChangeLog& log) {
@@ -85,11 +99,15 @@ std::uint32_t TetLabels::restore(const TetMesh& mesh, const ChangeLog& log) {
     tets_[t.value] = {kDead, kDead, kDead, kDead};
     labels_[t.value] = kNoLabel;
   }
-  std::vector<std::pair<TetId, std::uint32_t>> taken;
-  if (!history_.empty()) {
-    taken = std::move(history_.back());
-    history_.pop_back();
+  // The newest kept entry (none: every restored tet is an orphan), cleared once read.
+  static const std::vector<std::pair<TetId, std::uint32_t>> kNone;
+  std::vector<std::pair<TetId, std::uint32_t>>* kept = nullptr;
+  if (kept_ > 0) {
+    kept = &history_[newest_];
+    newest_ = (newest_ + history_limit_ - 1) % history_limit_;
+    --kept_;
   }
+  const std::vector<std::pair<TetId, std::uint32_t>>& taken = kept ? *kept : kNone;
   if (mesh.tet_capacity() > tets_.size()) {
     tets_.resize(mesh.tet_capacity(), {kDead, kDead, kDead, kDead});
     labels_.resize(mesh.tet_capacity(), kNoLabel);
@@ -104,6 +122,7 @@ std::uint32_t TetLabels::restore(const TetMesh& mesh, const ChangeLog& log) {
     tets_[c.tet.value] = {v[0].value, v[1].value, v[2].value, v[3].value};
     labels_[c.tet.value] = label;
   }
+  if (kept) kept->clear();
   return orphans;
 }
 
@@ -120,7 +139,10 @@ void TetLabels::renumber(const Renumbering& renumbering) {
   }
   tets_ = std::move(tets);
   labels_ = std::move(labels);
-  history_.clear();  // kept under the old ids (and no Cutter undoes across a compaction)
+  // Kept under the old ids (and no Cutter undoes across a compaction).
+  for (auto& taken : history_) taken.clear();
+  kept_ = 0;
+  newest_ = 0;
 }
 
 }  // namespace tetcut::mechanics

@@ -60,9 +60,10 @@ class TetLabels {
   std::vector<std::array<std::uint32_t, 4>> tets_;  // the vertices of each tet it has (kDead: none)
   std::vector<std::uint32_t> labels_;
   std::vector<std::uint32_t> created_labels_;      // scratch
-  // Per applied log, newest last: the tets it removed with their labels, sorted by id.
+  // A ring of history_limit_ entries, kept_ of them in use, the newest at newest_: per applied
+  // log, the tets it removed with their labels, sorted by id.
   std::vector<std::vector<std::pair<TetId, std::uint32_t>>> history_;
-  std::uint32_t history_limit_ = 0;
+  std::uint32_t history_limit_ = 0, kept_ = 0, newest_ = 0;
 };
 
 }  // namespace tetcut::mechanics
