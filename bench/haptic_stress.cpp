@@ -85,7 +85,6 @@ double cut_and_publish(SnapshotPublisher& publisher, int sweeps) {
     std::vector<Vec3> forces;
     ChangeLog log;
     log.reserve(4096);
-    publisher.restart();  // a fresh copy of the liver: the buffers' old contents are another mesh's
     publisher.publish(mesh, model, surface, nullptr, true, {});
     const Clock::time_point start = Clock::now();
     for (const Vec3& centre : bench::gated_sweep_centres()) {

@@ -65,11 +65,10 @@ void SnapshotPublisher::publish(const TetMesh& mesh, const TensorMassModel& mode
     ++stats_.skipped;
     return;
   }
-  // Renumbered or another mesh since this buffer was written: all of it.
-  if (target->id_epoch != mesh.id_epoch() || target->generation != generation_) target->frame.sequence = 0;
+  // Renumbered, or another mesh, since this buffer was written (TetMesh::id_epoch()): all of it.
+  if (target->id_epoch != mesh.id_epoch()) target->frame.sequence = 0;
   bring_up_to_date(target->frame, mesh, model, surface);
   target->id_epoch = mesh.id_epoch();
-  target->generation = generation_;
   target->frame.reaction_force = reaction_force;
   target->frame.sequence = sequence_;
   if (options_.checksums) target->frame.checksum = checksum_of(target->frame);

@@ -195,8 +195,8 @@ class TetMesh {
   // Not allowed inside a transaction. A Cutter holding this mesh must do it (Cutter::compact()):
   // its index would hold the old ids, so it refuses to cut a mesh compacted behind its back.
   Renumbering compact();
-  // Advanced by compact() and by every assignment to this object (see IdEpoch below): a Cutter
-  // compares it with the value it indexed.
+  // Moves on at compact() and at every assignment to this object, and differs between mesh
+  // objects (see IdEpoch below): a Cutter compares it with the value it indexed.
   [[nodiscard]] std::uint64_t id_epoch() const { return id_epoch_.value(); }
 
   // ---- transactions: atomic operations (design: a cut completes or leaves no trace) --------
@@ -374,24 +374,27 @@ class TetMesh {
   std::vector<TetId> vert_tet_;
   std::vector<std::uint32_t> vert_boundary_faces_;
   VertexAttributes attributes_;
-  // Counts the events after which a mesh's ids no longer mean what they meant to whoever indexed
-  // them (a Cutter): compact(), and assigning another mesh into the object. A copy starts from its
-  // source's count (no Cutter holds a new object yet); an assignment counts one more whatever it
-  // copies, so a mesh replaced in place never looks like the one that was indexed.
+  // Names the numbering of a mesh object's ids: a value no other mesh object and no other state
+  // of this one has had in this process (a process-wide count). It moves on at the events after
+  // which the ids no longer mean what they meant to whoever indexed them (a Cutter: compact(),
+  // assigning another mesh into the object), and a new object (a copy included) starts with a
+  // value of its own, so a consumer that kept another mesh's state (SnapshotPublisher's buffers)
+  // sees that it did.
   class IdEpoch {
    public:
-    IdEpoch() = default;
-    IdEpoch(const IdEpoch&) = default;
+    IdEpoch() : value_(next()) {}
+    IdEpoch(const IdEpoch&) : value_(next()) {}
     IdEpoch& operator=(const IdEpoch&) {
-      ++value_;
+      value_ = next();
       return *this;
     }
     ~IdEpoch() = default;
-    void advance() { ++value_; }
+    void advance() { value_ = next(); }
     [[nodiscard]] std::uint64_t value() const { return value_; }
 
    private:
-    std::uint64_t value_ = 0;
+    static std::uint64_t next();  // mesh_mutation.cpp
+    std::uint64_t value_;
   };
   IdEpoch id_epoch_;
   // version(): the state's value, and the last value given.

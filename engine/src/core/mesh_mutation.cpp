@@ -3,6 +3,7 @@
 // reserve() and compact(). Every write goes through note(), so that a transaction can roll it back
 // (mesh_journal.cpp).
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cstring>
 
@@ -383,6 +384,11 @@ Renumbering TetMesh::compact() {
   free_vert_head_ = kNoVert;
   id_epoch_.advance();
   return map;
+}
+
+std::uint64_t TetMesh::IdEpoch::next() {
+  static std::atomic<std::uint64_t> count{0};
+  return count.fetch_add(1, std::memory_order_relaxed) + 1;
 }
 
 }  // namespace tetcut

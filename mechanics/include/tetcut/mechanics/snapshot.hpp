@@ -69,14 +69,11 @@ class SnapshotPublisher {
   // The cutting thread only, the consumers up to date. `cut`: the log of the cut (or undo) since
   // the last publish, which the model and the surface have applied (its vertices and the
   // surface's last changes are what a publish copies); null when none. `stepped`: the model
-  // stepped since the last publish (every vertex moved: all are copied). A compaction since
-  // (TetMesh::id_epoch()) makes every buffer a full copy.
+  // stepped since the last publish (every vertex moved: all are copied). A compaction since, or
+  // another mesh (TetMesh::id_epoch()), makes every buffer's next write a full copy.
   void publish(const TetMesh& mesh, const TensorMassModel& model, const RenderedSurface& surface, const ChangeLog* cut,
                bool stepped, const Vec3& reaction_force);
   [[nodiscard]] const Stats& stats() const { return stats_; }  // the cutting thread
-  // The cutting thread: the next publishes come from another mesh (or this one rebuilt), so each
-  // buffer's next write is a full copy rather than the changes since it was last written.
-  void restart() { ++generation_; }
 
   // A held frame: valid until the lease ends. Any thread; never blocks.
   class Lease {
@@ -105,8 +102,7 @@ class SnapshotPublisher {
  private:
   struct alignas(64) Buffer {
     Frame frame;
-    std::uint64_t id_epoch = 0;    // the mesh's when the frame was written (the cutting thread's)
-    std::uint64_t generation = 0;  // restart()s before it was written (the cutting thread's)
+    std::uint64_t id_epoch = 0;  // the mesh's when the frame was written (the cutting thread's)
     std::atomic<std::uint32_t> leases{0};
   };
   // The changes of one publish, for bringing older buffers up to date.
@@ -122,7 +118,6 @@ class SnapshotPublisher {
   std::vector<std::unique_ptr<Buffer>> buffers_;
   alignas(64) std::atomic<std::uint32_t> latest_{0};
   std::uint64_t sequence_ = 0;
-  std::uint64_t generation_ = 0;
   std::array<Changes, kKeptChanges> changes_;  // by sequence % kKeptChanges
   Stats stats_;
 };
