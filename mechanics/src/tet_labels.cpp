@@ -100,14 +100,14 @@ std::uint32_t TetLabels::restore(const TetMesh& mesh, const ChangeLog& log) {
     labels_[t.value] = kNoLabel;
   }
   // The newest kept entry (none: every restored tet is an orphan), cleared once read.
-  static const std::vector<std::pair<TetId, std::uint32_t>> kNone;
-  std::vector<std::pair<TetId, std::uint32_t>>* kept = nullptr;
+  using Taken = std::pair<TetId, std::uint32_t>;
+  std::vector<Taken>* kept = nullptr;
   if (kept_ > 0) {
     kept = &history_[newest_];
     newest_ = (newest_ + history_limit_ - 1) % history_limit_;
     --kept_;
   }
-  const std::vector<std::pair<TetId, std::uint32_t>>& taken = kept ? *kept : kNone;
+  const std::span<const Taken> taken = kept ? std::span<const Taken>(*kept) : std::span<const Taken>{};
   if (mesh.tet_capacity() > tets_.size()) {
     tets_.resize(mesh.tet_capacity(), {kDead, kDead, kDead, kDead});
     labels_.resize(mesh.tet_capacity(), kNoLabel);
@@ -115,7 +115,7 @@ std::uint32_t TetLabels::restore(const TetMesh& mesh, const ChangeLog& log) {
   std::uint32_t orphans = 0;
   for (const CreatedTet& c : log.created) {
     const auto it = std::lower_bound(taken.begin(), taken.end(), c.tet,
-                                     [](const std::pair<TetId, std::uint32_t>& x, TetId id) { return x.first < id; });
+                                     [](const Taken& x, TetId id) { return x.first < id; });
     const std::uint32_t label = it != taken.end() && it->first == c.tet ? it->second : kNoLabel;
     if (label == kNoLabel) ++orphans;
     const auto v = mesh.tet(c.tet);

@@ -48,22 +48,14 @@ void require_no_slot_views(const MeshHandle& handle) {
 
 namespace {
 
-// The engine id -> row of `points` for every vertex slot (-1: not live), in id order.
-std::vector<std::int64_t> vertex_rows(const TetMesh& mesh, std::int64_t& live) {
-  std::vector<std::int64_t> row(mesh.vertex_capacity(), -1);
-  live = 0;
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (mesh.is_live(VertId{v})) row[v] = live++;
-  }
-  return row;
-}
-
-// The same rows, of the published mesh.
-std::vector<std::int64_t> vertex_rows(const PublishedMesh& mesh) {
+// The engine id -> row of `points` for every vertex slot (-1: not live), in id order, of the
+// live mesh (a TetMesh) or the published one.
+template <class Mesh>
+std::vector<std::int64_t> vertex_rows(const Mesh& mesh) {
   std::vector<std::int64_t> row(mesh.vertex_capacity(), -1);
   std::int64_t live = 0;
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (mesh.vertex_live(v)) row[v] = live++;
+    if (mesh.is_live(VertId{v})) row[v] = live++;
   }
   return row;
 }
@@ -314,7 +306,7 @@ void bind_mesh_arrays(MeshClass& mesh) {
         auto w = a.mutable_unchecked<2>();
         py::ssize_t row = 0;
         for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) {
-          if (!m.vertex_live(v)) continue;
+          if (!m.is_live(VertId{v})) continue;
           if (row == a.shape(0)) throw std::logic_error("tetcut: the published mesh miscounts its vertices");
           const Vec3& p = m.positions()[v];
           w(row, 0) = p.x, w(row, 1) = p.y, w(row, 2) = p.z;
@@ -331,7 +323,7 @@ void bind_mesh_arrays(MeshClass& mesh) {
         std::vector<std::int64_t> ids;
         ids.reserve(m.num_vertices());
         for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v)
-          if (m.vertex_live(v)) ids.push_back(v);
+          if (m.is_live(VertId{v})) ids.push_back(v);
         return ids_array(ids);
       },
       "#V int64: the engine id of each row of `points` (the ids report.changes speaks of).");
@@ -434,8 +426,7 @@ void bind_mesh_measures(MeshClass& mesh) {
       [](const MeshPtr& held) {
         MeshHandle& h = *held;
         MeshUse use(h);
-        std::int64_t live = 0;
-        const std::vector<std::int64_t> row = vertex_rows(h.mesh, live);
+        const std::vector<std::int64_t> row = vertex_rows(h.mesh);
         std::vector<FaceRef> faces;
         h.mesh.boundary_faces(faces);
         py::array_t<std::int64_t> a({static_cast<py::ssize_t>(faces.size()), py::ssize_t{3}});

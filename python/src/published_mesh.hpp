@@ -53,10 +53,11 @@ class PublishedMesh {
     num_vertices_ = mesh.num_vertices();
   }
 
-  // By slot, as the mesh's own arrays (a dead tet: kDeadTetMarker in column 0).
+  // By slot, as the mesh's own arrays and named as TetMesh names them (a dead tet:
+  // kDeadTetMarker in column 0).
   [[nodiscard]] std::span<const std::array<std::uint32_t, 4>> tets() const { return tets_; }
   [[nodiscard]] std::span<const Vec3> positions() const { return positions_; }
-  [[nodiscard]] bool vertex_live(std::uint32_t v) const { return vertex_live_[v] != 0; }
+  [[nodiscard]] bool is_live(VertId v) const { return vertex_live_[v.value] != 0; }
   [[nodiscard]] std::uint32_t vertex_capacity() const { return static_cast<std::uint32_t>(positions_.size()); }
   [[nodiscard]] std::uint32_t num_tets() const { return num_tets_; }
   [[nodiscard]] std::uint32_t num_vertices() const { return num_vertices_; }
