@@ -46,12 +46,14 @@ void SnapshotPublisher::publish(const TetMesh& mesh, const TensorMassModel& mode
   now.all_vertices = stepped;
   now.vertices.clear();
   now.triangles.clear();
+  now.normals.clear();
   if (cut) {
     for (const CreatedVertex& v : cut->vertices) now.vertices.push_back(v.vertex.value);
     for (const MovedVertex& v : cut->moved) now.vertices.push_back(v.vertex.value);
     for (VertId v : surface.last_changed_vertices()) now.vertices.push_back(v.value);
     now.triangles.assign(surface.last_changed_triangles().begin(), surface.last_changed_triangles().end());
   }
+  follow_surface(mesh, surface, cut, now);
   // A buffer no lease holds and not the latest: with `readers` leases at most, there is one.
   const std::uint32_t latest = latest_.load(std::memory_order_seq_cst);
   Buffer* target = nullptr;
@@ -76,6 +78,74 @@ void SnapshotPublisher::publish(const TetMesh& mesh, const TensorMassModel& mode
   ++stats_.publishes;
 }
 
+void SnapshotPublisher::follow_surface(const TetMesh& mesh, const RenderedSurface& surface, const ChangeLog* cut,
+                                       Changes& now) {
+  const auto slots = surface.triangle_slots();
+  if (incident_.size() < mesh.vertex_capacity()) incident_.resize(mesh.vertex_capacity());
+  if (followed_epoch_ != mesh.id_epoch()) {
+    // The first publish, or another numbering: every buffer's next write is a full copy, whose
+    // normals are all summed again, so only the followed surface is rebuilt here.
+    for (auto& list : incident_) list.clear();
+    slots_.assign(slots.size(), {kNoVert, kNoVert, kNoVert});
+    for (std::uint32_t s = 0; s < slots.size(); ++s) add_slot(s, slots[s].v, now.normals);
+    followed_epoch_ = mesh.id_epoch();
+    now.normals.clear();
+    return;
+  }
+  if (!cut) return;
+  if (slots_.size() < slots.size()) slots_.resize(slots.size(), {kNoVert, kNoVert, kNoVert});
+  for (std::uint32_t s : surface.last_changed_triangles()) {
+    drop_slot(s, now.normals);
+    add_slot(s, slots[s].v, now.normals);
+  }
+  // A vertex the cut made or moved changes the normals of every vertex of its triangles.
+  auto moved = [&](std::uint32_t v) {
+    if (v >= incident_.size()) return;
+    for (std::uint32_t s : incident_[v])
+      for (VertId w : slots_[s]) now.normals.push_back(w.value);
+  };
+  for (const CreatedVertex& v : cut->vertices) moved(v.vertex.value);
+  for (const MovedVertex& v : cut->moved) moved(v.vertex.value);
+  std::sort(now.normals.begin(), now.normals.end());
+  now.normals.erase(std::unique(now.normals.begin(), now.normals.end()), now.normals.end());
+}
+
+void SnapshotPublisher::add_slot(std::uint32_t slot, const std::array<VertId, 3>& triangle,
+                                 std::vector<std::uint32_t>& touched) {
+  slots_[slot] = triangle;
+  if (triangle[0] == kNoVert) return;
+  for (VertId v : triangle) {
+    if (v.value >= incident_.size()) incident_.resize(v.value + 1);
+    auto& list = incident_[v.value];
+    list.insert(std::lower_bound(list.begin(), list.end(), slot), slot);
+    touched.push_back(v.value);
+  }
+}
+
+void SnapshotPublisher::drop_slot(std::uint32_t slot, std::vector<std::uint32_t>& touched) {
+  const std::array<VertId, 3> old = slots_[slot];
+  if (old[0] == kNoVert) return;
+  for (VertId v : old) {
+    auto& list = incident_[v.value];
+    const auto at = std::lower_bound(list.begin(), list.end(), slot);
+    if (at != list.end() && *at == slot) list.erase(at);
+    touched.push_back(v.value);
+  }
+  slots_[slot] = {kNoVert, kNoVert, kNoVert};
+}
+
+Vec3 SnapshotPublisher::deformed_normal(const Frame& f, std::uint32_t v) const {
+  Vec3 sum{};
+  if (v < incident_.size())
+    for (std::uint32_t s : incident_[v]) {
+      const std::array<VertId, 3>& t = slots_[s];
+      const Vec3& p0 = f.positions[t[0].value];
+      sum = sum + cross(f.positions[t[1].value] - p0, f.positions[t[2].value] - p0);
+    }
+  const double n = norm(sum);
+  return n > 0 ? (1.0 / n) * sum : Vec3{};
+}
+
 void SnapshotPublisher::bring_up_to_date(Frame& f, const TetMesh& mesh, const TensorMassModel& model,
                                          const RenderedSurface& surface) {
   const std::uint32_t vertices = mesh.vertex_capacity();
@@ -91,8 +161,13 @@ void SnapshotPublisher::bring_up_to_date(Frame& f, const TetMesh& mesh, const Te
     const bool modelled = v < model.vertex_capacity();
     f.positions[v] = mesh.position(id) + (modelled ? to_mesh * model.displacement(id) : Vec3{});
     f.velocities[v] = modelled ? model.velocity(id) : Vec3{};
-    f.normals[v] = v < surface.vertex_capacity() ? surface.normal(id) : Vec3{};
     ++stats_.vertices_copied;
+  };
+  // After the positions and triangles: a normal sums its triangles at the frame's positions.
+  auto normal = [&](std::uint32_t v) {
+    if (v >= vertices) return;
+    f.normals[v] = deformed_normal(f, v);
+    ++stats_.normals_computed;
   };
   auto triangle = [&](std::uint32_t s) {
     if (s >= slots.size()) return;
@@ -103,6 +178,7 @@ void SnapshotPublisher::bring_up_to_date(Frame& f, const TetMesh& mesh, const Te
     ++stats_.full_copies;
     for (std::uint32_t v = 0; v < vertices; ++v) vertex(v);
     for (std::uint32_t s = 0; s < slots.size(); ++s) triangle(s);
+    for (std::uint32_t v = 0; v < vertices; ++v) normal(v);
     return;
   }
   bool all = false;
@@ -115,6 +191,11 @@ void SnapshotPublisher::bring_up_to_date(Frame& f, const TetMesh& mesh, const Te
       for (std::uint32_t v : c.vertices) vertex(v);
     for (std::uint32_t s : c.triangles) triangle(s);
   }
+  if (all)
+    for (std::uint32_t v = 0; v < vertices; ++v) normal(v);
+  else
+    for (std::uint64_t q = f.sequence + 1; q <= sequence_; ++q)
+      for (std::uint32_t v : changes_[q % kKeptChanges].normals) normal(v);
 }
 
 SnapshotPublisher::Lease SnapshotPublisher::latest() const {

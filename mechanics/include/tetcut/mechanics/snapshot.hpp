@@ -42,7 +42,10 @@ class SnapshotPublisher {
     // By VertId, vertex_capacity() long (a dead vertex's entries mean nothing):
     std::vector<Vec3> positions;   // deformed: rest + displacement, in mesh units
     std::vector<Vec3> velocities;  // m/s
-    std::vector<Vec3> normals;     // the surface's unit normal (zero off it), of the rest shape
+    // The surface's unit normal of the deformed shape (zero off it): the normalised sum of
+    // cross(p1 - p0, p2 - p0) over the vertex's triangles in slot order, the p the positions
+    // above, so that a frame's normals are a function of its positions and triangles alone.
+    std::vector<Vec3> normals;
     // By slot, as RenderedSurface::triangle_slots() has them (all kNoVert: a free slot).
     std::vector<std::array<VertId, 3>> triangles;
     Vec3 reaction_force{};         // N, as the publisher was handed it
@@ -58,6 +61,7 @@ class SnapshotPublisher {
     std::uint64_t full_copies = 0;      // a buffer further behind than the kept changes
     std::uint64_t vertices_copied = 0;  // entries written by publishes
     std::uint64_t triangles_copied = 0;
+    std::uint64_t normals_computed = 0;  // vertices whose deformed normal a publish summed again
   };
 
   explicit SnapshotPublisher(Options options);
@@ -108,17 +112,27 @@ class SnapshotPublisher {
   // The changes of one publish, for bringing older buffers up to date.
   struct Changes {
     bool all_vertices = false;
-    std::vector<std::uint32_t> vertices, triangles;
+    // `normals`: the vertices one of whose triangles changed or moved (a vertex of it did).
+    std::vector<std::uint32_t> vertices, triangles, normals;
   };
   static constexpr std::uint32_t kKeptChanges = 64;
 
   void bring_up_to_date(Frame& frame, const TetMesh& mesh, const TensorMassModel& model, const RenderedSurface& surface);
+  // The surface's triangles by vertex as the publisher last saw them (the cutting thread's):
+  // what a vertex's normal sums, and whose normals a moved vertex changes.
+  void follow_surface(const TetMesh& mesh, const RenderedSurface& surface, const ChangeLog* cut, Changes& now);
+  void add_slot(std::uint32_t slot, const std::array<VertId, 3>& triangle, std::vector<std::uint32_t>& touched);
+  void drop_slot(std::uint32_t slot, std::vector<std::uint32_t>& touched);
+  [[nodiscard]] Vec3 deformed_normal(const Frame& frame, std::uint32_t vertex) const;
 
   Options options_;
   std::vector<std::unique_ptr<Buffer>> buffers_;
   alignas(64) std::atomic<std::uint32_t> latest_{0};
   std::uint64_t sequence_ = 0;
   std::array<Changes, kKeptChanges> changes_;  // by sequence % kKeptChanges
+  std::vector<std::array<VertId, 3>> slots_;           // the surface's triangle slots, as followed
+  std::vector<std::vector<std::uint32_t>> incident_;   // by vertex: its slots, ascending
+  std::uint64_t followed_epoch_ = 0;                   // the mesh's when slots_ was rebuilt (0: never)
   Stats stats_;
 };
 
