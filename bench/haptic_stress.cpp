@@ -12,8 +12,6 @@
 // each). Timings are meaningful from Release. Exit 1 on a torn or backward frame, 2 on bad arguments.
 //
 //   haptic_stress [--rounds N] [--sweeps N] [--json FILE]
-#include <sys/prctl.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -28,6 +26,8 @@
 #include "bench_meshes.hpp"
 #include "gated_sweep.hpp"
 #include "tetcut/cut.hpp"
+#include "tetcut/mechanics/periodic_reader.hpp"
+#include "tetcut/mechanics/reaction_force.hpp"
 #include "tetcut/mechanics/rendered_surface.hpp"
 #include "tetcut/mechanics/snapshot.hpp"
 #include "tetcut/mechanics/tensor_mass.hpp"
@@ -39,35 +39,8 @@ using namespace tetcut;
 using Clock = std::chrono::steady_clock;
 using mechanics::SnapshotPublisher;
 
-double us_since(Clock::time_point t) { return std::chrono::duration<double, std::micro>(Clock::now() - t).count(); }
 
-struct ReaderFigures {
-  std::vector<double> wait_us, read_us, late_us;
-  std::uint64_t torn = 0, backwards = 0;
-};
-
-// One reader thread at `period`: lease, check, release, sleep until the next tick.
-void read_loop(const SnapshotPublisher& publisher, std::chrono::microseconds period, const std::atomic<bool>& done,
-               ReaderFigures& out) {
-  // Linux lets a sleeping thread's wake-up slip by its timer slack (50 us by default) to batch
-  // wake-ups; a haptic loop asks for none, as a real one would (no privilege needed).
-  prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
-  std::uint64_t last = 0;
-  Clock::time_point next = Clock::now() + period;
-  while (!done.load(std::memory_order_relaxed)) {
-    std::this_thread::sleep_until(next);
-    out.late_us.push_back(us_since(next));
-    next += period;
-    const Clock::time_point t0 = Clock::now();
-    const SnapshotPublisher::Lease frame = publisher.latest();
-    out.wait_us.push_back(us_since(t0));
-    const Clock::time_point t1 = Clock::now();
-    if (SnapshotPublisher::checksum_of(*frame) != frame->checksum) ++out.torn;
-    if (frame->sequence < last) ++out.backwards;
-    last = frame->sequence;
-    out.read_us.push_back(us_since(t1));
-  }
-}
+using ReaderFigures = mechanics::PeriodicReader::Figures;
 
 // The cutting thread's work: `sweeps` times the gated sweep on a fresh copy of the liver, each
 // cut applied, stepped and published. Returns the seconds it took.
@@ -95,16 +68,21 @@ double cut_and_publish(SnapshotPublisher& publisher, int sweeps) {
       }
       model.step(dt);
       // The tool's reaction: the elastic forces on the vertices within the tool (paper 4).
-      model.elastic_forces(forces);
-      Vec3 reaction{};
-      const double r = bench::kGatedToolDiameter / 2;
-      for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
-        if (mesh.is_live(VertId{v}) && norm(mesh.position(VertId{v}) - centre) <= r) reaction = reaction - forces[v];
+      const Vec3 reaction = mechanics::reaction_force(mesh, model, centre, centre, bench::kGatedToolDiameter / 2, forces);
       publisher.publish(mesh, model, surface, &log, true, reaction);
     }
     seconds += std::chrono::duration<double>(Clock::now() - start).count();
   }
   return seconds;
+}
+
+// Each round's figures after the earlier rounds'.
+void append(ReaderFigures& all, const ReaderFigures& round) {
+  all.wait_us.insert(all.wait_us.end(), round.wait_us.begin(), round.wait_us.end());
+  all.read_us.insert(all.read_us.end(), round.read_us.begin(), round.read_us.end());
+  all.late_us.insert(all.late_us.end(), round.late_us.begin(), round.late_us.end());
+  all.torn += round.torn;
+  all.backwards += round.backwards;
 }
 
 std::string figures_json(const char* name, std::vector<double> v) {
@@ -146,13 +124,11 @@ int main(int argc, char** argv) {
       alone_s.push_back(cut_and_publish(publisher, sweeps));
     }
     SnapshotPublisher publisher({.readers = 2, .checksums = true});
-    std::atomic<bool> done{false};
-    std::thread h(read_loop, std::cref(publisher), std::chrono::microseconds(1000), std::cref(done), std::ref(haptic));
-    std::thread r(read_loop, std::cref(publisher), std::chrono::microseconds(16667), std::cref(done), std::ref(render));
+    mechanics::PeriodicReader h(publisher, {.period = std::chrono::microseconds(1000)});
+    mechanics::PeriodicReader r(publisher, {.period = std::chrono::microseconds(16667)});
     read_s.push_back(cut_and_publish(publisher, sweeps));
-    done = true;
-    h.join();
-    r.join();
+    append(haptic, h.stop());
+    append(render, r.stop());
     publishes += publisher.stats().publishes;
     skipped += publisher.stats().skipped;
   }
