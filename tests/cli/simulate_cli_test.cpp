@@ -1,7 +1,8 @@
 // `tetcut simulate` as a user runs it, for what a first use tripped on: a second
 // --sweep, a run that only settles, its summary, its messages' numbers, and the sweep's end,
 // which `tetcut cut`, a scenario and `simulate` place the same way (scenario::sweep_centres);
-// --swept, whose frames cut the capsules between sweep points; and --debris-volume.
+// --swept, whose frames cut the capsules between sweep points; --debris-volume; and --haptic,
+// a reader thread on the frames published, with each frame's reaction force.
 #include <cmath>
 #include <regex>
 #include <utility>
@@ -144,6 +145,36 @@ TEST_F(Simulate, DebrisVolumeRemovesThePieceAFrameDetachesAndTheReportCountsIt) 
   EXPECT_EQ(debris_of(report_of(args)), std::pair(1, 0));  // detached, reported, left
   write("plate.scn", "mesh plate.msh\ndiameter 0.5\ndebris_volume 0.5\nsweep 1,-0.3,0 1,2.3,0 2.6 swept\n");
   EXPECT_EQ(debris_of(report_of({path("plate.scn"), "--unit", "1", "--steps", "1", "--fix", "x>3.9"})), std::pair(1, 1));
+}
+
+TEST_F(Simulate, AHapticThreadReadsWholeFramesWhileTheToolCutsAndEachFrameSaysTheToolsReaction) {
+  // The cantilever sagging under gravity while the tool cuts across it: 2,000 steps a frame, so
+  // that the run lasts tens of milliseconds and the reader, every millisecond, reads many frames.
+  const std::vector<std::string> run = {box(),  "--diameter", "0.3",        "--unit",     "0.01",       "--fix", "x<0.01",
+                                        "--gravity", "0,0,-9.81", "--steps", "2000", "--sweep", "0.3,0.5,1", "0.9,0.5,1",
+                                        "0.15"};
+  std::vector<std::string> with_reader = run;
+  with_reader.push_back("--haptic");
+  const Json r = report_of(with_reader);
+  ASSERT_TRUE(r["summary"].contains("haptic")) << r.dump();
+  const Json& haptic = r["summary"]["haptic"];
+  EXPECT_GE(haptic["reads"].get<int>(), 1);
+  EXPECT_EQ(haptic["torn"], 0);
+  EXPECT_EQ(haptic["backwards"], 0);
+  EXPECT_EQ(haptic["publishes"].get<std::size_t>(), r["frames"].size() + 1) << "the state before the first frame, then each";
+  // The tissue pushes on the tool where the tool holds sagging tissue, and the figures do not
+  // depend on the reader: the run without one gives the same forces.
+  const Json alone = report_of(run);
+  EXPECT_FALSE(alone["summary"].contains("haptic"));
+  ASSERT_EQ(alone["frames"].size(), r["frames"].size());
+  double largest = 0;
+  for (std::size_t k = 0; k < r["frames"].size(); ++k) {
+    const Json& f = r["frames"][k]["reaction_force_n"];
+    ASSERT_EQ(f.size(), 3u);
+    EXPECT_EQ(f, alone["frames"][k]["reaction_force_n"]) << "frame " << k;
+    largest = std::max(largest, std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>()));
+  }
+  EXPECT_GT(largest, 0.0);
 }
 
 }  // namespace

@@ -31,7 +31,10 @@
 #include "mesh_input.hpp"
 #include "simulation_frame.hpp"
 #include "tetcut/invariants/check.hpp"
+#include "tetcut/mechanics/periodic_reader.hpp"
+#include "tetcut/mechanics/reaction_force.hpp"
 #include "tetcut/mechanics/rendered_surface.hpp"
+#include "tetcut/mechanics/snapshot.hpp"
 #include "tetcut/mechanics/stable_step.hpp"
 #include "tetcut/mechanics/tensor_mass.hpp"
 #include "tetcut/mesh_builder.hpp"
@@ -47,6 +50,7 @@ struct SimulateArgs {
   std::optional<std::string> input, fix, frames, report;
   std::vector<std::string> sweeps;  // FROM TO STEP, three by three
   bool swept = false;               // --sweep's points joined by capsules
+  bool haptic = false;              // a reader thread on published snapshots
   std::vector<std::string> materials;  // LABEL:E,NU,RHO
   std::vector<std::uint32_t> uncuttable_labels;
   std::optional<Vec3> gravity;
@@ -98,6 +102,11 @@ void add_simulate_options(CLI::App& app, SimulateArgs& a) {
   opt::count(app, "--settle", a.settle, "steps before the first cut (default 0)");
   opt::text(app, "--frames", a.frames, "a .vtu per frame with the displacement, for ParaView (DIR must exist)", "DIR");
   opt::count(app, "--frame-every", a.frame_every, "write every Nth frame (default 1)");
+  opt::flag(app, "--haptic", a.haptic,
+            "a haptic thread beside the simulation: each frame is published as a snapshot (deformed positions, "
+            "surface, reaction force; mechanics::SnapshotPublisher) and a thread reads the latest every millisecond, "
+            "checking each whole; the summary gives its reads, waits and lateness (a torn or backward frame fails "
+            "the run)");
   opt::text(app, "--report", a.report,
             "`frames` (cut_us, update_us, step_us, stable_dt, energy, max_displacement_m per frame) and `summary`",
             "R.json");
@@ -345,6 +354,10 @@ class Simulation {
     step_us_.push_back(plan_.steps ? microseconds_since(t2) / static_cast<double>(plan_.steps) : 0.0);
     energy_ = model_.energy();
     max_u_ = max_displacement(mesh_, model_);
+    // What a haptic device renders: the tissue's push on the tool where it is in the world.
+    const Vec3 reaction = mechanics::reaction_force(mesh_, model_, centre, tool.end.value_or(centre),
+                                                    cutter_.params().tool_diameter / 2, forces_);
+    if (publisher_) publisher_->publish(mesh_, model_, surface_, &log_, plan_.steps > 0, reaction);
     Json record{{"frame", k}, {"centre", {centre.x, centre.y, centre.z}}};
     if (tool.end) record["end"] = {tool.end->x, tool.end->y, tool.end->z};  // a capsule's other end, in the world
     record.update(Json{{"cut_ok", r.ok},
@@ -359,6 +372,7 @@ class Simulation {
                        {"energy", {{"kinetic", energy_.kinetic}, {"elastic", energy_.elastic}, {"gravity", energy_.gravity},
                                    {"total", energy_.total()}}},
                        {"max_displacement_m", max_u_},
+                       {"reaction_force_n", {reaction.x, reaction.y, reaction.z}},
                        {"fragments", r.fragments},
                        {"debris_pieces_removed", r.debris_pieces_removed},
                        {"debris_volume_removed", r.debris_volume_removed}});
@@ -378,9 +392,16 @@ class Simulation {
     return Frame::kDone;
   }
 
-  // The summary, printed and in the report; the command's exit code.
-  int finish(const std::string& mesh_path, std::uint32_t fixed_count, double initial_stable_dt, std::ostream& out,
-             std::ostream& err) const {
+  // Each frame published for a reader thread (--haptic), from the state before the first.
+  void publish_to(mechanics::SnapshotPublisher& publisher) {
+    publisher_ = &publisher;
+    publisher.publish(mesh_, model_, surface_, nullptr, true, {});
+  }
+
+  // The summary, printed and in the report; the command's exit code. `haptic`: what the reader
+  // thread measured (--haptic), else null.
+  int finish(const std::string& mesh_path, std::uint32_t fixed_count, double initial_stable_dt,
+             const mechanics::PeriodicReader::Figures* haptic, std::ostream& out, std::ostream& err) {
     auto p = [](const std::vector<double>& v, double q) { return v.empty() ? 0.0 : percentile(v, q); };
     Json summary = {{"mesh", mesh_path},
                     {"frames", frames_.size()},
@@ -411,6 +432,26 @@ class Simulation {
         << "  per frame: cut p50 " << p(cut_us_, 0.5) << " us, update p50 " << p(update_us_, 0.5) << " us, step p50 "
         << p(step_us_, 0.5) << " us; final energy " << si(energy_.total(), "J") << ", largest displacement "
         << si(max_u_, "m") << "\n";
+    if (haptic) {
+      summary["haptic"] = {{"period_us", 1000},
+                           {"reads", haptic->wait_us.size()},
+                           {"publishes", publisher_->stats().publishes},
+                           {"wait_us_p50", p(haptic->wait_us, 0.5)},
+                           {"wait_us_p99", p(haptic->wait_us, 0.99)},
+                           {"read_us_p99", p(haptic->read_us, 0.99)},
+                           {"late_us_p50", p(haptic->late_us, 0.5)},
+                           {"late_us_p99", p(haptic->late_us, 0.99)},
+                           {"torn", haptic->torn},
+                           {"backwards", haptic->backwards}};
+      out << "  haptic thread: " << haptic->wait_us.size() << " reads of " << publisher_->stats().publishes
+          << " frames published, wait p99 " << p(haptic->wait_us, 0.99) << " us, late p99 " << p(haptic->late_us, 0.99)
+          << " us, " << haptic->torn << " torn, " << haptic->backwards << " backwards\n";
+      if ((haptic->torn || haptic->backwards) && failure_.empty())
+        failure_ = "the haptic thread read " + std::to_string(haptic->torn) + " torn and " +
+                   std::to_string(haptic->backwards) + " backward frames";
+      summary["ok"] = failure_.empty();
+      summary["failure"] = failure_;
+    }
     if (a_.report && !write_json_file(*a_.report, Json{{"summary", summary}, {"frames", frames_}}, err)) return kExitBadInput;
     if (!failure_.empty()) {
       err << "tetcut simulate: " << failure_ << "\n";
@@ -447,6 +488,8 @@ class Simulation {
   std::uint64_t unstable_frames_ = 0, cuts_refused_ = 0, written_ = 0;
   std::uint64_t fragments_ = 0, debris_pieces_ = 0;  // pieces the cuts detached, and of them debris removed
   ChangeLog log_;
+  std::vector<Vec3> forces_;  // the elastic forces, scratch of reaction_force()
+  mechanics::SnapshotPublisher* publisher_ = nullptr;
   std::string failure_;
   mechanics::Energy energy_;
   double max_u_ = 0;
@@ -462,7 +505,7 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
       "tetcut simulate MESH|SCENARIO.scn [--sweep FROM TO STEP]... [--swept] [--diameter D] [--strategy S] "
       "[--debris-volume V] [--fix RULE] "
       "[--gravity X,Y,Z] [--young E] [--poisson NU] [--density RHO] [--material LABEL:E,NU,RHO]... [--keep-label L]... [--unit M] [--damping G] [--dt S] "
-      "[--steps N] [--settle N] [--frames DIR] [--frame-every N] [--report R.json]",
+      "[--steps N] [--settle N] [--frames DIR] [--frame-every N] [--haptic] [--report R.json]",
       "Linear-elastic tissue (tensor-mass, Cotin, Delingette and Ayache 2000) stepped at a fixed\n"
       "time step (semi-implicit Euler) while the cautery cuts it: per frame one cut, the model and\n"
       "the rendered surface updated from the cut's change log, then --steps steps. The sweep points\n"
@@ -500,12 +543,23 @@ int cmd_simulate(Args args, std::ostream& out, std::ostream& err) {
   for (std::uint64_t s = 0; s < a.settle.value_or(0); ++s) model.step(dt);
 
   Simulation simulation(a, plan, mesh, cutter, local, model, surface, stable_step, initial.dt, dt);
+  // --haptic: one reader, so two buffers besides the one it holds; checksums, so that it can
+  // tell a torn frame.
+  std::optional<mechanics::SnapshotPublisher> publisher;
+  std::optional<mechanics::PeriodicReader> reader;
+  if (a.haptic) {
+    publisher.emplace(mechanics::SnapshotPublisher::Options{.readers = 1, .checksums = true});
+    simulation.publish_to(*publisher);
+    reader.emplace(*publisher, mechanics::PeriodicReader::Options{.period = std::chrono::microseconds(1000)});
+  }
   for (std::size_t k = 0; k < cuts.tools.size(); ++k) {
     const Simulation::Frame frame = simulation.frame(k, cuts.tools[k], err);
     if (frame == Simulation::Frame::kWriteFailed) return kExitBadInput;
     if (frame == Simulation::Frame::kStopped) break;
   }
-  return simulation.finish(cuts.mesh_path, fixed_count, initial.dt, out, err);
+  std::optional<mechanics::PeriodicReader::Figures> haptic;
+  if (reader) haptic = reader->stop();
+  return simulation.finish(cuts.mesh_path, fixed_count, initial.dt, haptic ? &*haptic : nullptr, out, err);
 }
 
 }  // namespace tetcut::cli
