@@ -49,7 +49,7 @@ class Mesh:
         """#T: the engine id of each row of `tets`."""
     @property
     def labels(self) -> npt.NDArray[np.int64] | None:
-        """#T: each tet's label, rows as `tets` (a copy), carried through cuts; None if unlabelled."""
+        """#T: each tet's label, rows as `tets` (a copy), carried through cuts; None if unlabelled; never refused during another thread's cut."""
     @property
     def slot_tets(self) -> npt.NDArray[np.uint32]:
         """Slots by 4 uint32 (0xFFFFFFFF in column 0: a removed tet), read-only, no copy; locks the mesh while alive."""

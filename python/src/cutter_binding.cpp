@@ -206,7 +206,7 @@ class PyCutter {
       engine_cut(r);
     }
     if (r.report.ok) {
-      handle_->published.publish(handle_->mesh, r.log);  // the GIL back: no reader mid-copy
+      handle_->published.publish(handle_->mesh, handle_->labels, r.log);  // the GIL back: no reader mid-copy
       seen_version_ = ++handle_->version;
     }
     last_fragments_ = r.fragments;
@@ -240,7 +240,7 @@ class PyCutter {
       }
     }
     for (const Report& r : reports)  // the GIL back: no reader mid-copy
-      if (r.report.ok) handle_->published.publish(handle_->mesh, r.log);
+      if (r.report.ok) handle_->published.publish(handle_->mesh, handle_->labels, r.log);
     seen_version_ = ++handle_->version;
     last_fragments_ = reports.empty() ? std::vector<PyFragment>{} : reports.back().fragments;
     return reports;
@@ -267,7 +267,7 @@ class PyCutter {
     }
     if (refused) throw std::runtime_error("tetcut: Cutter.undo: " + *refused);
     handle_->labels.apply(handle_->mesh, log);
-    handle_->published.publish(handle_->mesh, log);
+    handle_->published.publish(handle_->mesh, handle_->labels, log);
     seen_version_ = ++handle_->version;
     last_fragments_.clear();
     return changes_of(log);

@@ -138,7 +138,7 @@ MeshPtr build(const RawMesh& raw, const std::string& where) {
   }
   auto handle = std::make_shared<MeshHandle>();
   handle->mesh = std::move(*built.mesh);
-  handle->published.publish_all(handle->mesh);
+  handle->published.publish_all(handle->mesh, handle->labels);
   return handle;
 }
 
@@ -197,6 +197,7 @@ MeshPtr from_arrays(py::handle points, py::handle tets, py::handle labels, bool 
   MeshPtr h = build(raw, "");  // first: a dangling index is the builder's to name
   require_every_point_used(raw, drop_unused_points);
   h->labels.set(h->mesh, raw.labels);  // the builder keeps the tet order: TetId = row
+  h->published.publish_all(h->mesh, h->labels);
   return h;
 }
 
@@ -226,6 +227,7 @@ MeshPtr read(const std::string& path) {
   if (!raw) throw py::value_error(failure.empty() ? "tetcut: " + path + ": unreadable mesh" : failure);
   MeshPtr h = build(*raw, path + ": ");
   h->labels.set(h->mesh, raw->labels);  // the builder keeps the file's tet order
+  h->published.publish_all(h->mesh, h->labels);
   // As `tetcut` reads a file, its points no tet uses are not vertices: said, not silent.
   if (const std::size_t unused = raw->positions.size() - h->mesh.num_vertices(); unused > 0) {
     const std::string note = "tetcut: " + path + ": note: " + std::to_string(unused) + " of " +
@@ -243,8 +245,8 @@ MeshPtr copy_of(const MeshPtr& held) {
   MeshUse use(h);
   auto copy = std::make_shared<MeshHandle>();
   copy->mesh = h.mesh;
-  copy->published.publish_all(copy->mesh);
   copy->labels = h.labels;
+  copy->published.publish_all(copy->mesh, copy->labels);
   copy->flat_attributes = h.flat_attributes;
   return copy;
 }
@@ -360,17 +362,21 @@ void bind_mesh_arrays(MeshClass& mesh) {
   mesh.def_property_readonly(
       "labels",
       [](const MeshPtr& held) -> py::object {
-        MeshHandle& h = *held;
-        MeshUse use(h);
-        if (!h.labels.labelled()) return py::none();
-        const std::vector<std::uint32_t> labels = live_labels(h);
-        py::array_t<std::int64_t> a(static_cast<py::ssize_t>(labels.size()));
-        std::copy(labels.begin(), labels.end(), a.mutable_data());
+        const PublishedMesh& m = held->published;
+        if (!m.labelled()) return py::none();
+        py::array_t<std::int64_t> a(static_cast<py::ssize_t>(m.num_tets()));
+        std::int64_t* out = a.mutable_data();
+        py::ssize_t row = 0;
+        for (std::uint32_t t = 0; t < m.tets().size(); ++t) {
+          if (m.tets()[t][0] == kDeadTetMarker) continue;
+          if (row == a.shape(0)) throw std::logic_error("tetcut: the published mesh miscounts its tets");
+          out[row++] = m.labels()[t];
+        }
         return py::object(std::move(a));
       },
       "#T int64, rows as `tets` (a copy): each tet's label (region, material) as the file or Mesh() gave "
       "them, carried through every cut (a tet a cut makes takes its parent's) and compaction; None when "
-      "the mesh has none.");
+      "the mesh has none. As the last change that returned left them: never refused while another thread cuts.");
 
   mesh.def_property_readonly(
       "slot_tets",
@@ -570,7 +576,7 @@ void bind_mesh_files_and_copies(MeshClass& mesh) {
         require_no_slot_views(h);
         const Renumbering r = h.mesh.compact();
         h.labels.renumber(r);
-        h.published.publish_all(h.mesh);
+        h.published.publish_all(h.mesh, h.labels);
         ++h.version;
         std::vector<std::int64_t> tets(r.tet_old_to_new.size()), verts(r.vert_old_to_new.size());
         // int64 before the choice: `valid() ? value : -1` would make the -1 a uint32 (4294967295).

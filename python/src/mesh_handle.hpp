@@ -3,8 +3,8 @@
 //
 //   - a cut runs with the GIL released (design: the simulator's other threads keep running), so
 //     nothing else may touch the mesh meanwhile: every method takes the mesh's Use, and a second
-//     user (another thread's cut, a read of mesh.labels) gets RuntimeError instead of a race;
-//     except the copies of the mesh itself (points, vertex_ids, tets, tet_ids, the counts), which
+//     user (another thread's cut, mesh.surface()) gets RuntimeError instead of a race; except
+//     the copies of the mesh itself (points, vertex_ids, tets, tet_ids, labels, the counts), which
 //     read the state each change publishes when it returns (PublishedMesh) and never wait;
 //   - several Cutters may share one mesh: each remembers the mesh's version when it last
 //     indexed or cut it, and re-indexes (Cutter::reset) when another one has cut since;

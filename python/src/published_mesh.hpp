@@ -1,4 +1,4 @@
-// What mesh.points, mesh.vertex_ids, mesh.tets, mesh.tet_ids and the counts read: the mesh as the
+// What mesh.points, mesh.vertex_ids, mesh.tets, mesh.tet_ids, mesh.labels and the counts read: the mesh as the
 // last change that returned left it, kept beside the live one so that a reader on another Python
 // thread never waits for a cut and is never refused (docs/python.md, "Threads").
 //
@@ -8,8 +8,10 @@
 // NumPy array, never releasing it), and a change publishes here only once it has taken the GIL
 // back, before it returns to Python: the GIL alone orders the two, so one copy is enough and no
 // reader ever sees half a publish. A publish copies the slots the change log names (the tets it
-// removed and created, the vertices it created, moved and removed), as they now are in the mesh:
-// O(what changed), not O(#T). A build, a copy or a compaction copies it all.
+// removed and created, the vertices it created, moved and removed), as they now are in the mesh,
+// and the labels of the tets it created: O(what changed), not O(#T). A build, a copy or a
+// compaction copies it all. The labels are `Labels` (mesh_handle.hpp's MeshLabels: labelled(),
+// label(TetId)), applied to the change before it publishes.
 #pragma once
 
 #include <array>
@@ -24,22 +26,30 @@ namespace tetcut::python {
 
 class PublishedMesh {
  public:
-  // All of it: after a build, a copy, a compaction.
-  void publish_all(const TetMesh& mesh) {
+  // All of it: after a build, a copy, a compaction, a change of the labels.
+  template <class Labels>
+  void publish_all(const TetMesh& mesh, const Labels& labels) {
     resize_to(mesh);
     const auto tets = mesh.raw_tets();
     std::copy(tets.begin(), tets.end(), tets_.begin());
     for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) copy_vertex(mesh, v);
+    labelled_ = labels.labelled();
+    if (labelled_)
+      for (std::uint32_t t = 0; t < tets.size(); ++t)
+        if (tets[t][0] != kDeadTetMarker) labels_[t] = labels.label(TetId{t});
     num_tets_ = mesh.num_tets();
     num_vertices_ = mesh.num_vertices();
   }
   // What `log` changed (a cut's or an undo's net log, already applied to `mesh`). An undo gives
   // the arrays back their length from before the cut, so the slots past the end are gone.
-  void publish(const TetMesh& mesh, const ChangeLog& log) {
+  template <class Labels>
+  void publish(const TetMesh& mesh, const Labels& labels, const ChangeLog& log) {
     resize_to(mesh);
     const auto tets = mesh.raw_tets();
     auto tet = [&](TetId t) {
-      if (t.value < tets_.size()) tets_[t.value] = tets[t.value];
+      if (t.value >= tets_.size()) return;
+      tets_[t.value] = tets[t.value];
+      if (labelled_ && tets[t.value][0] != kDeadTetMarker) labels_[t.value] = labels.label(t);
     };
     auto vertex = [&](VertId v) {
       if (v.value < positions_.size()) copy_vertex(mesh, v.value);
@@ -57,6 +67,9 @@ class PublishedMesh {
   // kDeadTetMarker in column 0).
   [[nodiscard]] std::span<const std::array<std::uint32_t, 4>> tets() const { return tets_; }
   [[nodiscard]] std::span<const Vec3> positions() const { return positions_; }
+  // By slot as tets(); meaningful for a live slot of a labelled mesh only.
+  [[nodiscard]] bool labelled() const { return labelled_; }
+  [[nodiscard]] std::span<const std::uint32_t> labels() const { return labels_; }
   [[nodiscard]] bool is_live(VertId v) const { return vertex_live_[v.value] != 0; }
   [[nodiscard]] std::uint32_t vertex_capacity() const { return static_cast<std::uint32_t>(positions_.size()); }
   [[nodiscard]] std::uint32_t num_tets() const { return num_tets_; }
@@ -67,6 +80,7 @@ class PublishedMesh {
   // dead until the log names it: a tet a cut made and removed again is in no log.
   void resize_to(const TetMesh& mesh) {
     tets_.resize(mesh.raw_tets().size(), {kDeadTetMarker, kDeadTetMarker, kDeadTetMarker, kDeadTetMarker});
+    labels_.resize(mesh.raw_tets().size());
     positions_.resize(mesh.vertex_capacity());
     vertex_live_.resize(mesh.vertex_capacity());
   }
@@ -78,6 +92,8 @@ class PublishedMesh {
   std::vector<std::array<std::uint32_t, 4>> tets_;
   std::vector<Vec3> positions_;
   std::vector<std::uint8_t> vertex_live_;
+  std::vector<std::uint32_t> labels_;
+  bool labelled_ = false;
   std::uint32_t num_tets_ = 0, num_vertices_ = 0;
 };
 
