@@ -129,7 +129,8 @@ std::vector<std::array<std::uint32_t, 4>> tets_from(py::handle obj) {
   return kind == 'i' ? tet_rows<std::int64_t>(a) : tet_rows<std::uint64_t>(a);
 }
 
-// The builder's verdict, with the words `tetcut cut` and `tetcut remove` use.
+// The builder's verdict, with the words `tetcut cut` and `tetcut remove` use; the mesh with its
+// labels (the builder keeps the tet order: TetId = row of raw.tets), published once.
 MeshPtr build(const RawMesh& raw, const std::string& where) {
   BuildResult built = build_mesh(raw);
   if (!built.ok()) {
@@ -138,6 +139,7 @@ MeshPtr build(const RawMesh& raw, const std::string& where) {
   }
   auto handle = std::make_shared<MeshHandle>();
   handle->mesh = std::move(*built.mesh);
+  handle->labels.set(handle->mesh, raw.labels);
   handle->published.publish_all(handle->mesh, handle->labels);
   return handle;
 }
@@ -196,8 +198,6 @@ MeshPtr from_arrays(py::handle points, py::handle tets, py::handle labels, bool 
   raw.labels = labels_from(labels, raw.tets.size());
   MeshPtr h = build(raw, "");  // first: a dangling index is the builder's to name
   require_every_point_used(raw, drop_unused_points);
-  h->labels.set(h->mesh, raw.labels);  // the builder keeps the tet order: TetId = row
-  h->published.publish_all(h->mesh, h->labels);
   return h;
 }
 
@@ -226,8 +226,6 @@ MeshPtr read(const std::string& path) {
   }
   if (!raw) throw py::value_error(failure.empty() ? "tetcut: " + path + ": unreadable mesh" : failure);
   MeshPtr h = build(*raw, path + ": ");
-  h->labels.set(h->mesh, raw->labels);  // the builder keeps the file's tet order
-  h->published.publish_all(h->mesh, h->labels);
   // As `tetcut` reads a file, its points no tet uses are not vertices: said, not silent.
   if (const std::size_t unused = raw->positions.size() - h->mesh.num_vertices(); unused > 0) {
     const std::string note = "tetcut: " + path + ": note: " + std::to_string(unused) + " of " +
