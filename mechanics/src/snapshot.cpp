@@ -50,7 +50,6 @@ void SnapshotPublisher::publish(const TetMesh& mesh, const TensorMassModel& mode
   if (cut) {
     for (const CreatedVertex& v : cut->vertices) now.vertices.push_back(v.vertex.value);
     for (const MovedVertex& v : cut->moved) now.vertices.push_back(v.vertex.value);
-    for (VertId v : surface.last_changed_vertices()) now.vertices.push_back(v.value);
     now.triangles.assign(surface.last_changed_triangles().begin(), surface.last_changed_triangles().end());
   }
   follow_surface(mesh, surface, cut, now);

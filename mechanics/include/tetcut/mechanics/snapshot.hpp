@@ -13,9 +13,9 @@
 // during it (a renderer's read of a large surface would rarely finish at 1 kHz of publishes), and
 // a fresh shared_ptr per publish is an O(#V) copy and an allocation per cut. Here a publish writes
 // into a buffer no reader holds, bringing it up to date with only what changed since that buffer
-// was last written (the surface's changed slots and vertices, kept per publish; after a step
-// every vertex moved, and the step itself is O(#V + #E)), then makes it the latest with one atomic
-// store. A reader takes a lease with two atomic operations and a check that the latest did not
+// was last written (the cut's vertices, the surface's changed slots and the normals they change,
+// kept per publish; after a step every vertex moved, and the step itself is O(#V + #E)), then
+// makes it the latest with one atomic store. A reader takes a lease with two atomic operations and a check that the latest did not
 // move meanwhile (a retry only when a publish landed in those few nanoseconds). With at most
 // `readers` leases held at once, some buffer is always free: a publish never waits either.
 #pragma once
@@ -71,8 +71,8 @@ class SnapshotPublisher {
   SnapshotPublisher& operator=(const SnapshotPublisher&) = delete;
 
   // The cutting thread only, the consumers up to date. `cut`: the log of the cut (or undo) since
-  // the last publish, which the model and the surface have applied (its vertices and the
-  // surface's last changes are what a publish copies); null when none. `stepped`: the model
+  // the last publish, which the model and the surface have applied (its vertices, the surface's
+  // last changed slots and the normals around both are what a publish writes); null when none. `stepped`: the model
   // stepped since the last publish (every vertex moved: all are copied). A compaction since, or
   // another mesh (TetMesh::id_epoch()), makes every buffer's next write a full copy.
   void publish(const TetMesh& mesh, const TensorMassModel& model, const RenderedSurface& surface, const ChangeLog* cut,
