@@ -13,7 +13,6 @@
 //
 //   haptic_stress [--rounds N] [--sweeps N] [--json FILE]
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -38,8 +37,6 @@ namespace {
 using namespace tetcut;
 using Clock = std::chrono::steady_clock;
 using mechanics::SnapshotPublisher;
-
-
 using ReaderFigures = mechanics::PeriodicReader::Figures;
 
 // The cutting thread's work: `sweeps` times the gated sweep on a fresh copy of the liver, each

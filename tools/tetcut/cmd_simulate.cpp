@@ -403,6 +403,9 @@ class Simulation {
   int finish(const std::string& mesh_path, std::uint32_t fixed_count, double initial_stable_dt,
              const mechanics::PeriodicReader::Figures* haptic, std::ostream& out, std::ostream& err) {
     auto p = [](const std::vector<double>& v, double q) { return v.empty() ? 0.0 : percentile(v, q); };
+    if (haptic && (haptic->torn || haptic->backwards) && failure_.empty())
+      failure_ = "the haptic thread read " + std::to_string(haptic->torn) + " torn and " +
+                 std::to_string(haptic->backwards) + " backward frames";
     Json summary = {{"mesh", mesh_path},
                     {"frames", frames_.size()},
                     {"cuts_refused", cuts_refused_},
@@ -446,11 +449,6 @@ class Simulation {
       out << "  haptic thread: " << haptic->wait_us.size() << " reads of " << publisher_->stats().publishes
           << " frames published, wait p99 " << p(haptic->wait_us, 0.99) << " us, late p99 " << p(haptic->late_us, 0.99)
           << " us, " << haptic->torn << " torn, " << haptic->backwards << " backwards\n";
-      if ((haptic->torn || haptic->backwards) && failure_.empty())
-        failure_ = "the haptic thread read " + std::to_string(haptic->torn) + " torn and " +
-                   std::to_string(haptic->backwards) + " backward frames";
-      summary["ok"] = failure_.empty();
-      summary["failure"] = failure_;
     }
     if (a_.report && !write_json_file(*a_.report, Json{{"summary", summary}, {"frames", frames_}}, err)) return kExitBadInput;
     if (!failure_.empty()) {
