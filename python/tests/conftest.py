@@ -78,3 +78,25 @@ def cli():
 def liver():
     import tetcut
     return tetcut.read(str(CORPUS / "liver.msh"))
+
+
+def read_during_sweep(mesh, read):
+    """The README's line swept at 1 mm steps (141 cuts) on `mesh` by another thread, while this one
+    calls read(mesh) in a loop and tries mesh.surface(), which reads the live mesh: refused while
+    the sweep holds it, which proves the reads ran during the sweep. Returns the sweep's reports,
+    the reads, and the refusals' messages."""
+    import threading
+
+    import tetcut
+    cutter = tetcut.Cutter(mesh, tool_diameter=README_DIAMETER)
+    done, reads, refusals = [], [], []
+    worker = threading.Thread(target=lambda: done.append(cutter.sweep(README_SWEEP["start"], README_SWEEP["end"], 1.0)))
+    worker.start()
+    while worker.is_alive():
+        reads.append(read(mesh))
+        try:
+            mesh.surface()
+        except RuntimeError as e:  # the sweep holds the live mesh while the GIL is free
+            refusals.append(str(e))
+    worker.join()
+    return done[0], reads, refusals

@@ -3,13 +3,12 @@ import json
 import pickle
 import re
 import subprocess
-import threading
 
 import numpy as np
 import pytest
 
 import tetcut
-from conftest import CORPUS, PLATE_CUT, README_DIAMETER, README_SWEEP, box_arrays, plate_arrays
+from conftest import CORPUS, PLATE_CUT, README_DIAMETER, README_SWEEP, box_arrays, plate_arrays, read_during_sweep
 
 
 def test_the_readme_sweep_gives_the_hash_tetcut_cut_prints(cli, tmp_path):
@@ -215,18 +214,8 @@ def test_the_cut_releases_the_gil_and_the_copies_never_wait():
     for attempt in range(5):
         liver = tetcut.read(str(CORPUS / "liver.msh"))
         before = liver.points
-        cutter = tetcut.Cutter(liver, tool_diameter=README_DIAMETER)
-        seen_busy, done, reads = [], [], []
-        worker = threading.Thread(target=lambda: done.append(cutter.sweep(README_SWEEP["start"], README_SWEEP["end"], 1.0)))
-        worker.start()
-        while worker.is_alive():
-            reads.append(liver.points)  # never raises
-            try:
-                liver.surface()
-            except RuntimeError as e:  # the sweep holds the live mesh while the GIL is free
-                seen_busy.append(str(e))
-        worker.join()
-        assert len(done[0]) == 141 and tetcut.check(liver) == []
+        reports, reads, seen_busy = read_during_sweep(liver, lambda m: m.points)  # the reads never raise
+        assert len(reports) == 141 and tetcut.check(liver) == []
         after = liver.points
         assert all(np.array_equal(r, before) or np.array_equal(r, after) for r in reads)
         if seen_busy:

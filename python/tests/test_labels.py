@@ -4,13 +4,12 @@ from_meshio's cell_data give mesh.labels, carried through cuts, sweeps and compa
 mesh; bad labels raise."""
 import re
 import subprocess
-import threading
 
 import numpy as np
 import pytest
 
 import tetcut
-from conftest import CORPUS, README_DIAMETER, README_SWEEP, box_arrays
+from conftest import CORPUS, box_arrays, read_during_sweep
 
 
 def side_labels(points, tets):
@@ -189,27 +188,16 @@ def test_undo_gives_the_tets_back_their_labels(regions):
 def test_labels_are_read_during_another_threads_sweep_never_refused():
     # mesh.labels reads the labels each change published with the tets (published_mesh.hpp), as
     # mesh.tets does: a read during a sweep in another thread gives the labels before the sweep or
-    # after it, rows as mesh.tets then, and is never refused. mesh.surface() reads the live mesh,
-    # which the sweep holds: refused, it proves the reads ran during the sweep.
+    # after it, rows as mesh.tets then, and is never refused.
     liver = tetcut.read(str(CORPUS / "liver.msh"))
     points, tets = liver.points, liver.tets
     halves = np.where(points[tets].mean(axis=1)[:, 1] < np.median(points[:, 1]), 3, 7)
     for attempt in range(5):
         mesh = tetcut.Mesh(points, tets, labels=halves)
         before = mesh.labels
-        cutter = tetcut.Cutter(mesh, tool_diameter=README_DIAMETER)
-        seen_busy, done, reads = [], [], []
-        worker = threading.Thread(target=lambda: done.append(cutter.sweep(README_SWEEP["start"], README_SWEEP["end"], 1.0)))
-        worker.start()
-        while worker.is_alive():
-            reads.append(mesh.labels)  # never raises
-            try:
-                mesh.surface()
-            except RuntimeError as e:
-                seen_busy.append(str(e))
-        worker.join()
+        reports, reads, seen_busy = read_during_sweep(mesh, lambda m: m.labels)  # the reads never raise
         after = mesh.labels
-        assert len(done[0]) == 141 and not np.array_equal(before, after)
+        assert len(reports) == 141 and not np.array_equal(before, after)
         assert set(after.tolist()) == {3, 7}
         assert all(np.array_equal(r, before) or np.array_equal(r, after) for r in reads)
         if seen_busy:
