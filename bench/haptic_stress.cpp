@@ -78,6 +78,7 @@ void append(ReaderFigures& all, const ReaderFigures& round) {
   all.wait_us.insert(all.wait_us.end(), round.wait_us.begin(), round.wait_us.end());
   all.read_us.insert(all.read_us.end(), round.read_us.begin(), round.read_us.end());
   all.late_us.insert(all.late_us.end(), round.late_us.begin(), round.late_us.end());
+  all.reads += round.reads;
   all.torn += round.torn;
   all.backwards += round.backwards;
 }
@@ -136,7 +137,7 @@ int main(int argc, char** argv) {
   auto line = [](const char* who, const ReaderFigures& f) {
     std::printf("%s: %zu reads, wait p50 %.3f us p99 %.3f us max %.3f us; read p50 %.1f us p99 %.1f us; "
                 "late p50 %.1f us p99 %.1f us max %.1f us; %llu torn, %llu backwards\n",
-                who, f.wait_us.size(), percentile(f.wait_us, 0.5), percentile(f.wait_us, 0.99),
+                who, static_cast<std::size_t>(f.reads), percentile(f.wait_us, 0.5), percentile(f.wait_us, 0.99),
                 *std::max_element(f.wait_us.begin(), f.wait_us.end()), percentile(f.read_us, 0.5),
                 percentile(f.read_us, 0.99), percentile(f.late_us, 0.5), percentile(f.late_us, 0.99),
                 *std::max_element(f.late_us.begin(), f.late_us.end()), static_cast<unsigned long long>(f.torn),

@@ -36,17 +36,22 @@ void PeriodicReader::run() {
   Clock::time_point next = Clock::now() + options_.period;
   while (!done_.load(std::memory_order_relaxed)) {
     std::this_thread::sleep_until(next);
-    figures_.late_us.push_back(us_since(next));
+    const double late = us_since(next);
     next += options_.period;
     const Clock::time_point t0 = Clock::now();
     const SnapshotPublisher::Lease frame = publisher_.latest();
-    figures_.wait_us.push_back(us_since(t0));
+    const double wait = us_since(t0);
     const Clock::time_point t1 = Clock::now();
     if (options_.check_checksums && SnapshotPublisher::checksum_of(*frame) != frame->checksum) ++figures_.torn;
     if (frame->sequence < figures_.last_sequence) ++figures_.backwards;
     figures_.last_sequence = frame->sequence;
     if (on_frame_) on_frame_(*frame);
-    figures_.read_us.push_back(us_since(t1));
+    const double read = us_since(t1);
+    if (figures_.reads++ < options_.max_timed) {
+      figures_.late_us.push_back(late);
+      figures_.wait_us.push_back(wait);
+      figures_.read_us.push_back(read);
+    }
   }
 }
 

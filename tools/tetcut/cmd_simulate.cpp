@@ -437,7 +437,7 @@ class Simulation {
         << si(max_u_, "m") << "\n";
     if (haptic) {
       summary["haptic"] = {{"period_us", 1000},
-                           {"reads", haptic->wait_us.size()},
+                           {"reads", haptic->reads},
                            {"publishes", publisher_->stats().publishes},
                            {"wait_us_p50", p(haptic->wait_us, 0.5)},
                            {"wait_us_p99", p(haptic->wait_us, 0.99)},
@@ -446,7 +446,7 @@ class Simulation {
                            {"late_us_p99", p(haptic->late_us, 0.99)},
                            {"torn", haptic->torn},
                            {"backwards", haptic->backwards}};
-      out << "  haptic thread: " << haptic->wait_us.size() << " reads of " << publisher_->stats().publishes
+      out << "  haptic thread: " << haptic->reads << " reads of " << publisher_->stats().publishes
           << " frames published, wait p99 " << p(haptic->wait_us, 0.99) << " us, late p99 " << p(haptic->late_us, 0.99)
           << " us, " << haptic->torn << " torn, " << haptic->backwards << " backwards\n";
     }

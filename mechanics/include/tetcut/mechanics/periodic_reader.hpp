@@ -12,6 +12,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <thread>
@@ -24,7 +25,8 @@ namespace tetcut::mechanics {
 class PeriodicReader {
  public:
   struct Figures {
-    std::vector<double> wait_us, read_us, late_us;  // one entry a read
+    std::uint64_t reads = 0;
+    std::vector<double> wait_us, read_us, late_us;  // one entry a read, for the first max_timed reads
     std::uint64_t torn = 0;       // frames whose checksum was not the one published with them
     std::uint64_t backwards = 0;  // frames older than one read before
     std::uint64_t last_sequence = 0;
@@ -32,6 +34,9 @@ class PeriodicReader {
   struct Options {
     std::chrono::microseconds period{1000};
     bool check_checksums = true;  // the publisher's Options::checksums must be on
+    // Reads timed at most: 24 bytes each, so that a loop left running for hours does not grow
+    // without bound (2^20: about 17 minutes at 1 kHz, 25 MB). Later reads are still checked.
+    std::size_t max_timed = std::size_t{1} << 20;
   };
 
   // Starts the thread. `on_frame`, when given, runs on it for every frame read, the lease held
