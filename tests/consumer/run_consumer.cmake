@@ -41,3 +41,21 @@ if(NOT last_output MATCHES "tets 48 hash [0-9a-f]+ valid 1\ncut ok 1 removed [1-
   message(FATAL_ERROR "unexpected consumer output: ${last_output}")
 endif()
 message(STATUS "consumer ran: ${last_output}")
+
+# The template engine adapter (examples/engine_adapter), built as an outside project would build
+# its own: against the same package, into a shared library of its own, then loaded and driven by
+# this build's `tetcut check-engine`, which must find blind removal's singular vertices (exit 1).
+if(TETCUT_EXE STREQUAL "")
+  return()
+endif()
+run(${CMAKE_COMMAND} -S "${ADAPTER_SOURCE_DIR}" -B "${WORK_DIR}/adapter" -G Ninja
+    "${find_tetcut}" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}"
+    "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+run(${CMAKE_COMMAND} --build "${WORK_DIR}/adapter")
+execute_process(COMMAND "${TETCUT_EXE}" check-engine --engine "${WORK_DIR}/adapter/libtetcut_engine_blind.so"
+                        --mesh "${CORPUS_DIR}/meshes/cylinder.msh" --cuts 8
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 1 OR NOT out MATCHES "adapter 'blind'" OR NOT out MATCHES "I5 manifold vertex shells")
+  message(FATAL_ERROR "check-engine on the outside adapter: exit ${rc}\n${out}\n${err}")
+endif()
+message(STATUS "outside adapter checked: ${out}")

@@ -31,6 +31,7 @@ int cmd_stats(Args args, std::ostream& out, std::ostream& err);
 int cmd_replay(Args args, std::ostream& out, std::ostream& err);
 int cmd_minimize(Args args, std::ostream& out, std::ostream& err);
 int cmd_simulate(Args args, std::ostream& out, std::ostream& err);
+int cmd_check_engine(Args args, std::ostream& out, std::ostream& err);
 
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitViolated = 1;

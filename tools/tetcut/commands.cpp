@@ -22,6 +22,8 @@ constexpr std::array kCommands = {
     CommandInfo{"stats", "the paper's Tables 1 and 2, a strategy comparison and an HTML report", &cmd_stats},
     CommandInfo{"replay", "decodes a fuzz input into a scenario and runs it", &cmd_replay},
     CommandInfo{"minimize", "shrinks a failing scenario while it still fails", &cmd_minimize},
+    CommandInfo{"check-engine", "drives any engine's adapter (engine.h) with the checker after every operation",
+                &cmd_check_engine},
 };
 
 }  // namespace
