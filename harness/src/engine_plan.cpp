@@ -39,6 +39,8 @@ std::string mesh_path(const scenario::Scenario& s, const std::string& path) {
   return s.base_dir.empty() ? path : s.base_dir + "/" + path;
 }
 
+}  // namespace
+
 double median_edge_length(const RawMesh& mesh) {
   std::vector<double> lengths;
   lengths.reserve(6 * mesh.tets.size());
@@ -53,7 +55,16 @@ double median_edge_length(const RawMesh& mesh) {
   return *middle;
 }
 
-}  // namespace
+MeshBox bounding_box(const RawMesh& mesh) {
+  MeshBox box;
+  if (mesh.positions.empty()) return box;
+  box.low = box.high = mesh.positions.front();
+  for (const Vec3& p : mesh.positions) {
+    box.low = {std::min(box.low.x, p.x), std::min(box.low.y, p.y), std::min(box.low.z, p.z)};
+    box.high = {std::max(box.high.x, p.x), std::max(box.high.y, p.y), std::max(box.high.z, p.z)};
+  }
+  return box;
+}
 
 std::string point_text(const Vec3& p) {
   char text[96];
@@ -82,7 +93,8 @@ EnginePlan plan_from_scenario(const std::string& path) {
     switch (op.kind) {
       case OpKind::kMesh:
         if (have_mesh) throw std::runtime_error(where(s, op) + ": a second mesh; the harness runs scenarios of one mesh");
-        plan.mesh = read_plan_mesh(mesh_path(s, op.text), where(s, op));
+        plan.mesh_path = mesh_path(s, op.text);
+        plan.mesh = read_plan_mesh(plan.mesh_path, where(s, op));
         have_mesh = true;
         break;
       case OpKind::kParam:
@@ -133,12 +145,7 @@ EnginePlan random_sweep_plan(const std::string& mesh_name, RawMesh mesh, std::ui
   char name[160];
   std::snprintf(name, sizeof name, "sweep %s seed %llu", mesh_name.c_str(), static_cast<unsigned long long>(seed));
   plan.name = name;
-  Vec3 low = mesh.positions.empty() ? Vec3{} : mesh.positions.front();
-  Vec3 high = low;
-  for (const Vec3& p : mesh.positions) {
-    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
-    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
-  }
+  const auto [low, high] = bounding_box(mesh);
   const double diameter = diameter_in_edges * median_edge_length(mesh);
   SplitMix64 random(seed);
   auto in_middle_third = [&](double a, double b) { return a + (b - a) * (1.0 + random.unit()) / 3.0; };

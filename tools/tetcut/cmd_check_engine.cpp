@@ -3,6 +3,8 @@
 // through scenarios and random sweeps, with the independent checker after every operation
 // (harness/, docs/engines.md). Each plan runs in a child process: a crash is reported with its
 // signal, the adapter and the operation, and the other plans still run.
+// `--fuzz cut_sequence|removal_sequence --runs N [--seed S] [--regressions DIR]` fuzzes the engine
+// instead (engine_fuzz.hpp): each new kind of failure minimized and written as a regression.
 #include <algorithm>
 #include <filesystem>
 #include <ostream>
@@ -14,6 +16,7 @@
 #include "json_output.hpp"
 #include "mesh_input.hpp"
 #include "tetcut/harness/engine_check.hpp"
+#include "tetcut/harness/engine_fuzz.hpp"
 
 namespace tetcut::cli {
 
@@ -96,6 +99,43 @@ void print_plan(const PlanCheck& p, std::ostream& out) {
   if (!p.engine_error.empty()) out << "       engine: " << p.engine_error << "\n";
 }
 
+void print_adapter(const harness::AdapterInfo& adapter, std::ostream& out) {
+  out << "adapter '" << adapter.name << "' " << adapter.version << " (" << adapter.path << "): abi "
+      << adapter.abi_version << ", capabilities: " << harness::capability_names(adapter.capabilities) << "\n";
+}
+
+Json adapter_json(const harness::AdapterInfo& adapter) {
+  return {{"name", adapter.name}, {"version", adapter.version}, {"path", adapter.path},
+          {"abi_version", adapter.abi_version}, {"capabilities", harness::capability_names(adapter.capabilities)}};
+}
+
+int report_fuzz(const harness::AdapterInfo& adapter, const std::string& target, std::uint64_t seed,
+                const harness::EngineFuzzResult& result, bool json, std::ostream& out) {
+  if (json) {
+    Json doc = {{"adapter", adapter_json(adapter)}, {"target", target}, {"seed", seed}, {"runs", result.runs},
+                {"failing", result.failing}, {"seconds", result.seconds}};
+    doc["findings"] = Json::array();
+    for (const harness::EngineFinding& f : result.findings) {
+      doc["findings"].push_back({{"run", f.run}, {"signature", f.signature}, {"first_operation", f.first_operation},
+                                 {"operations", f.operations}, {"minimized_operations", f.minimized_operations},
+                                 {"minimize_checks", f.minimize_checks}, {"path", f.path},
+                                 {"scenario", f.scenario}});
+    }
+    out << json_text(doc) << "\n";
+  } else {
+    print_adapter(adapter, out);
+    out << "fuzz " << target << ", seed " << seed << ": " << result.runs << " inputs in " << result.seconds << " s, "
+        << result.failing << " failing, " << result.findings.size() << " kinds of failure\n";
+    for (const harness::EngineFinding& f : result.findings) {
+      out << "  " << f.signature << " at input " << f.run << " (" << f.first_operation << "): minimized from "
+          << f.operations << " to " << f.minimized_operations << " operations in " << f.minimize_checks << " checks";
+      if (!f.path.empty()) out << " -> " << f.path;
+      out << "\n";
+    }
+  }
+  return result.findings.empty() ? kExitOk : kExitViolated;
+}
+
 }  // namespace
 
 int cmd_check_engine(Args args, std::ostream& out, std::ostream& err) {
@@ -106,15 +146,23 @@ int cmd_check_engine(Args args, std::ostream& out, std::ostream& err) {
   std::optional<std::uint64_t> seed;
   std::optional<double> diameter_edges;
   bool json = false;
+  std::optional<std::string> fuzz_target, regressions;
+  std::optional<std::uint64_t> runs;
+  bool no_write = false;
   CommandParser parser(
       "check-engine",
       "tetcut check-engine --engine LIB [--scenario S]... [--mesh M]... [--sweeps N] [--cuts N] [--seed S] "
-      "[--diameter-edges X] [--timeout SECONDS] [--corpus DIR] [--json]",
+      "[--diameter-edges X] [--timeout SECONDS] [--corpus DIR] [--json]\n"
+      "       tetcut check-engine --engine LIB --fuzz cut_sequence|removal_sequence [--runs N] [--seed S] "
+      "[--regressions DIR | --no-write] [--json]",
       "Drives a cutting engine through tetcut/harness/engine.h (an adapter, a shared library loaded at\n"
       "run time; see docs/engines.md) with the independent checker after every operation: the local\n"
       "check of what each operation changed when the adapter gives a change log, else the full check.\n"
       "Without --scenario or --mesh: the bundled scenarios and one random sweep per bundled mesh.\n"
-      "Each plan runs in a child process; a crash is reported with its signal and operation.\n",
+      "Each plan runs in a child process; a crash is reported with its signal and operation.\n"
+      "--fuzz mutates the target's seeds (corpus/fuzz/engines/TARGET) with a seeded generator, checks each\n"
+      "input so, and minimizes each new kind of failure into a scenario under\n"
+      "DIR/ENGINE/TARGET/ (default DIR: the corpus's regressions/engines).\n",
       "exit: 0 every plan passed, 1 the checker objected or the engine failed or crashed, 2 unusable input");
   CLI::App& app = parser.app();
   opt::text(app, "--engine", engine, "the adapter: a shared library exporting tetcut_engine_adapter()", "LIB")
@@ -131,7 +179,22 @@ int cmd_check_engine(Args args, std::ostream& out, std::ostream& err) {
   opt::text(app, "--corpus", corpus,
             "the corpus folder of the bundled scenarios and meshes (default: " TETCUT_DEFAULT_CORPUS_DIR ")", "DIR");
   opt::flag(app, "--json", json, "one JSON document on stdout instead of text");
+  opt::text(app, "--fuzz", fuzz_target, "fuzz the engine with this target's inputs instead of running plans",
+            "cut_sequence|removal_sequence");
+  opt::count(app, "--runs", runs, "--fuzz: inputs to try, the seeds first (default 100)");
+  opt::text(app, "--regressions", regressions,
+            "--fuzz: where findings go, as DIR/ENGINE/TARGET/NAME.scn (default: CORPUS/regressions/engines)", "DIR");
+  opt::flag(app, "--no-write", no_write, "--fuzz: report findings without writing them");
   if (const auto code = parser.parse(args, out, err)) return *code;
+  if (fuzz_target && !harness::engine_target(*fuzz_target)) {
+    return parser.usage_error("--fuzz: expects cut_sequence or removal_sequence, not '" + *fuzz_target + "'", err);
+  }
+  if (!fuzz_target && (runs || regressions || no_write)) {
+    return parser.usage_error("--runs, --regressions and --no-write go with --fuzz", err);
+  }
+  if (fuzz_target && (!scenarios.empty() || !meshes.empty())) {
+    return parser.usage_error("--fuzz runs the target's own inputs: no --scenario or --mesh", err);
+  }
   if (diameter_edges && !(*diameter_edges > 0)) return parser.usage_error("--diameter-edges: expects a positive number", err);
 
   harness::AdapterInfo adapter;
@@ -143,6 +206,23 @@ int cmd_check_engine(Args args, std::ostream& out, std::ostream& err) {
   }
 
   const std::string corpus_dir = corpus.value_or(TETCUT_DEFAULT_CORPUS_DIR);
+  if (fuzz_target) {
+    harness::EngineFuzzOptions options;
+    options.target = *harness::engine_target(*fuzz_target);
+    options.seed = seed.value_or(1);
+    options.runs = runs.value_or(100);
+    options.corpus_dir = corpus_dir;
+    options.regressions_dir = no_write ? "" : regressions.value_or(corpus_dir + "/regressions/engines");
+    options.check.timeout_seconds = timeout;
+    harness::EngineFuzzResult result;
+    try {
+      result = harness::fuzz_engine(adapter, options);
+    } catch (const std::exception& e) {
+      err << "tetcut: " << e.what() << "\n";
+      return kExitBadInput;
+    }
+    return report_fuzz(adapter, *fuzz_target, options.seed, result, json, out);
+  }
   const bool bundled = scenarios.empty() && meshes.empty();
   if (bundled) {
     scenarios = bundled_scenarios(corpus_dir);
@@ -169,6 +249,7 @@ int cmd_check_engine(Args args, std::ostream& out, std::ostream& err) {
     for (std::uint32_t k = 0; k < sweeps; ++k) {
       plans.push_back(harness::random_sweep_plan(fs::path(path).filename().string(), *mesh, seed.value_or(1) + k,
                                                  cuts, diameter_edges.value_or(1.0)));
+      plans.back().mesh_path = path;
     }
   }
 
@@ -177,8 +258,7 @@ int cmd_check_engine(Args args, std::ostream& out, std::ostream& err) {
   std::vector<PlanCheck> checks;
   bool all_ok = true;
   if (!json) {
-    out << "adapter '" << adapter.name << "' " << adapter.version << " (" << adapter.path << "): abi "
-        << adapter.abi_version << ", capabilities: " << harness::capability_names(adapter.capabilities) << "\n";
+    print_adapter(adapter, out);
     for (const std::string& why : not_run) out << "  not run: " << why << "\n";
   }
   for (const EnginePlan& plan : plans) {
@@ -188,11 +268,7 @@ int cmd_check_engine(Args args, std::ostream& out, std::ostream& err) {
   }
   const auto passed = std::count_if(checks.begin(), checks.end(), [](const PlanCheck& p) { return p.ok(); });
   if (json) {
-    Json doc = {{"adapter",
-                 {{"name", adapter.name}, {"version", adapter.version}, {"path", adapter.path},
-                  {"abi_version", adapter.abi_version},
-                  {"capabilities", harness::capability_names(adapter.capabilities)}}},
-                {"ok", all_ok}, {"plans_passed", passed}, {"not_run", not_run}};
+    Json doc = {{"adapter", adapter_json(adapter)}, {"ok", all_ok}, {"plans_passed", passed}, {"not_run", not_run}};
     doc["plans"] = Json::array();
     for (const PlanCheck& p : checks) doc["plans"].push_back(plan_json(p));
     out << json_text(doc) << "\n";

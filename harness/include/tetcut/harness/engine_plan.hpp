@@ -24,7 +24,8 @@ struct EngineOperation {
 };
 
 struct EnginePlan {
-  std::string name;  // the scenario file, or "sweep MESH seed S"
+  std::string name;       // the scenario file, or "sweep MESH seed S"
+  std::string mesh_path;  // where the mesh was read (a finding's scenario names it)
   RawMesh mesh;
   std::vector<EngineOperation> operations;
   // The scenario lines no engine interface carries (tetcut's own parameters, undo, expectations),
@@ -48,5 +49,13 @@ EnginePlan random_sweep_plan(const std::string& mesh_name, RawMesh mesh, std::ui
 
 // "(x, y, z)" with 6 significant digits: how operation names show points.
 std::string point_text(const Vec3& p);
+
+// The median length of the tets' edges (an edge counted once per tet holding it); 1 for no tet.
+double median_edge_length(const RawMesh& mesh);
+
+struct MeshBox {
+  Vec3 low, high;
+};
+MeshBox bounding_box(const RawMesh& mesh);
 
 }  // namespace tetcut::harness
