@@ -168,6 +168,28 @@ TEST(EngineCheck, TetcutPassesWhatBlindRemovalBreaks) {
   EXPECT_TRUE(blind.engine_error.empty()) << blind.engine_error;
 }
 
+TEST(EngineCheck, ThePeersAreCheckedAsTheyAre) {
+  const EnginePlan plan = random_sweep_plan("cylinder.msh", corpus_mesh("cylinder.msh"), 1, 24);
+  // Blind removal as iMSTK and SOFA do it: singular vertices or edges; SOFA renumbers (no
+  // change log), so it is checked whole after every cut.
+  for (const char* path : {TETCUT_ADAPTER_IMSTK_STYLE, TETCUT_ADAPTER_SOFA_STYLE}) {
+    const PlanCheck check = check_plan(adapter(path), plan);
+    ASSERT_TRUE(check.failed_operation.has_value()) << path;
+    EXPECT_TRUE(check.invariants.front() == "I5" || check.invariants.front() == "I6") << check.objection;
+    EXPECT_TRUE(check.engine_error.empty()) << check.engine_error;
+  }
+  EXPECT_EQ(check_plan(adapter(TETCUT_ADAPTER_SOFA_STYLE), plan).level, "full");
+  // The same cuts remove the same tets in both: the first objection comes at the same cut.
+  EXPECT_EQ(check_plan(adapter(TETCUT_ADAPTER_IMSTK_STYLE), plan).failed_operation,
+            check_plan(adapter(TETCUT_ADAPTER_BLIND), plan).failed_operation);
+#ifdef TETCUT_ADAPTER_CGAL
+  // CGAL's classification keeps the mesh manifold by refusing removals.
+  const PlanCheck cgal = check_plan(adapter(TETCUT_ADAPTER_CGAL), plan);
+  EXPECT_TRUE(cgal.ok()) << cgal.objection << cgal.engine_error;
+  EXPECT_GT(cgal.refused, 0u);
+#endif
+}
+
 TEST(EngineCheck, TheSameOutcomeInTheChildAndInThisProcess) {
   const EnginePlan plan = random_sweep_plan("sheet.msh", corpus_mesh("sheet.msh"), 3, 12);
   const EngineLibrary library(TETCUT_ADAPTER_TETCUT);
