@@ -339,5 +339,17 @@ class Violation:
 def check(mesh: Mesh, *, level: str = "full", radius_ratio_floor: float = 0.0) -> list[Violation]:
     """The independent checker's violations (empty: valid); level local|full|exact."""
 
+def check_engine(
+    engine: str,
+    *,
+    scenarios: Sequence[str] | None = None,
+    meshes: Sequence[str] | None = None,
+    sweeps: int = 1,
+    cuts: int = 24,
+    seed: int = 1,
+    timeout: int = 600,
+) -> list[dict[str, Any]]:
+    """Any engine's adapter (engine.h) under the checker: one dict per plan, each run in a child."""
+
 def stats(cutter: Cutter) -> dict[str, dict[str, float]]:
     """The paper's Tables 1 and 2 over a Cutter's removal requests."""

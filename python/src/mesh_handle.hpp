@@ -126,5 +126,6 @@ void require_no_slot_views(const MeshHandle& handle);
 void bind_mesh(pybind11::module_& m);
 void bind_cutter(pybind11::module_& m);
 void bind_check(pybind11::module_& m);
+void bind_engine_check(pybind11::module_& m);
 
 }  // namespace tetcut::python

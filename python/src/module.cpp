@@ -18,4 +18,5 @@ docs/python.md has the whole API.)doc";
   tetcut::python::bind_mesh(m);
   tetcut::python::bind_cutter(m);
   tetcut::python::bind_check(m);
+  tetcut::python::bind_engine_check(m);
 }
