@@ -8,7 +8,8 @@
 // any, the approach that goes first rotating with k, so that a slow stretch of the machine falls
 // on all of them alike. Per approach:
 //   - the time of the adapter's cut call alone (steady_clock), p50 and p99 over the cuts;
-//   - tets removed and created per cut (its change log; without one, the drop in live tets);
+//   - tets removed and created per cut (its change log; without one, only the net change of the
+//     live tets is known);
 //   - volume removed per cut, and the part of it outside the tool: the drop of the mesh's volume,
 //     less the drop of its volume inside the tool's ball (each tet's share of the ball measured on
 //     its 64 equal children of two midpoint subdivisions: a resolution of 1/64 of a tet that
@@ -17,7 +18,8 @@
 //     for (a refusal leaves it all);
 //   - the full check after every cut, the same for every approach: the cuts that left more
 //     singular vertices (I5), singular edges (I6) or flat or inverted tets (I4) than there were
-//     before them, and how many of each are left at the end;
+//     before them, and how many of each are left at the end, with the worst tet's smallest
+//     dihedral angle and radius ratio then;
 //   - the ratios tetcut / approach: per cut (p50 over p50) and per volume removed (p50 per mm3
 //     removed, over the same of the approach).
 // The checks and measurements are outside the timed call.
@@ -120,7 +122,8 @@ struct Approach {
   std::unique_ptr<EngineInstance> engine;
   std::uint64_t broken = 0;  // count_broken() after the last cut
   std::vector<double> times_us;
-  std::uint64_t removed = 0, created = 0, refused = 0, objections = 0;
+  std::uint64_t removed = 0, created = 0, refused = 0, objections = 0;  // removed, created: change log only
+  double net_tets = 0;  // live tets after the cuts less before, whatever the log
   std::optional<std::size_t> first_objection;
   double volume_removed = 0, volume_outside = 0, volume_left = 0;
   inv::CheckReport final_check;
@@ -188,9 +191,8 @@ int main(int argc, char** argv) {
           const EngineChanges changes = ap.engine->changes(tets_before, name);
           ap.removed += changes.removed.size();
           ap.created += changes.created.size();
-        } else {
-          ap.removed += live_before - mesh.live_tets;
         }
+        ap.net_tets += static_cast<double>(mesh.live_tets) - static_cast<double>(live_before);
         // The full check for every approach, so that "objected" means the same for all: the cut
         // made more singular vertices, singular edges or flat tets than the mesh had before it.
         inv::CheckOptions options;
@@ -219,13 +221,14 @@ int main(int argc, char** argv) {
   }
   auto p50 = [](const Approach& ap) { return tetcut::percentile(ap.times_us, 0.5); };
   std::printf("%-12s %9s %9s %8s %8s %10s %10s %10s %6s %6s %6s %8s %8s\n", "approach", "p50 us", "p99 us",
-              "rem/cut", "new/cut", "mm3/cut", "out mm3", "left mm3", "objec", "sing V", "sing E", "x/cut", "x/mm3");
+              "rem/cut", "net/cut", "mm3/cut", "out mm3", "left mm3", "objec", "sing V", "sing E", "x/cut", "x/mm3");
   for (const Approach& ap : approaches) {
     auto count = [&](inv::Invariant id) {
       const inv::Violation* v = ap.final_check.find(id);
       return v != nullptr ? v->count : 0;
     };
     const double per_cut = p50(ap);
+    const bool has_log = ap.library->has(TETCUT_ENGINE_CHANGE_LOG);
     const double per_volume = per_cut / std::max(ap.volume_removed / cuts, 1e-300);
     nlohmann::ordered_json j = {
         {"name", ap.library->name()},
@@ -233,8 +236,9 @@ int main(int argc, char** argv) {
         {"capabilities", tetcut::harness::capability_names(ap.library->api().capabilities)},
         {"p50_us", per_cut},
         {"p99_us", tetcut::percentile(ap.times_us, 0.99)},
-        {"tets_removed_per_cut", ap.removed / cuts},
-        {"tets_created_per_cut", ap.created / cuts},
+        {"tets_removed_per_cut", has_log ? nlohmann::ordered_json(ap.removed / cuts) : nullptr},
+        {"tets_created_per_cut", has_log ? nlohmann::ordered_json(ap.created / cuts) : nullptr},
+        {"net_tets_per_cut", ap.net_tets / cuts},
         {"volume_removed_per_cut", ap.volume_removed / cuts},
         {"volume_outside_tool_per_cut", ap.volume_outside / cuts},
         {"volume_left_in_tool_per_cut", ap.volume_left / cuts},
@@ -243,14 +247,17 @@ int main(int argc, char** argv) {
         {"first_objection", ap.first_objection ? nlohmann::ordered_json(*ap.first_objection) : nullptr},
         {"singular_vertices", count(inv::Invariant::kI5VertexShell)},
         {"singular_edges", count(inv::Invariant::kI6EdgeShell)},
-        {"inverted_tets", count(inv::Invariant::kI4Orientation)}};
+        {"inverted_tets", count(inv::Invariant::kI4Orientation)},
+        {"final_min_dihedral_deg", ap.final_check.quality.min_dihedral_deg},
+        {"final_min_radius_ratio", ap.final_check.quality.min_radius_ratio}};
     if (tetcut != nullptr) {
       const double tetcut_per_volume = p50(*tetcut) / std::max(tetcut->volume_removed / cuts, 1e-300);
       j["ratio_per_cut"] = p50(*tetcut) / per_cut;
       j["ratio_per_volume"] = tetcut_per_volume / per_volume;
     }
     std::printf("%-12s %9.1f %9.1f %8.2f %8.2f %10.1f %10.1f %10.1f %6llu %6llu %6llu %8.3g %8.3g\n",
-                ap.library->name().c_str(), per_cut, j["p99_us"].get<double>(), ap.removed / cuts, ap.created / cuts,
+                ap.library->name().c_str(), per_cut, j["p99_us"].get<double>(), has_log ? ap.removed / cuts : NAN,
+                ap.net_tets / cuts,
                 ap.volume_removed / cuts, ap.volume_outside / cuts, ap.volume_left / cuts,
                 static_cast<unsigned long long>(ap.objections),
                 static_cast<unsigned long long>(count(inv::Invariant::kI5VertexShell)),

@@ -187,6 +187,12 @@ TEST(EngineCheck, ThePeersAreCheckedAsTheyAre) {
   const PlanCheck cgal = check_plan(adapter(TETCUT_ADAPTER_CGAL), plan);
   EXPECT_TRUE(cgal.ok()) << cgal.objection << cgal.engine_error;
   EXPECT_GT(cgal.refused, 0u);
+  // Remeshing the tool's neighbourhood first, then the same classification: manifold too, and
+  // with no change log, checked whole after every cut.
+  const PlanCheck remesh = check_plan(adapter(TETCUT_ADAPTER_CGAL_REMESH), plan);
+  EXPECT_TRUE(remesh.ok()) << remesh.objection << remesh.engine_error;
+  EXPECT_EQ(remesh.level, "full");
+  EXPECT_EQ(remesh.run, 24u);
 #endif
 }
 
