@@ -2,14 +2,15 @@
 // tetcut's refine-then-remove, locally. A cut
 //   1. selects the tets that meet the tool's ball (a corner inside it, or the centroid within the
 //      radius plus the tet's own reach);
-//   2. hands CGAL that selection and two rings of tets around it (grown until the part's
-//      boundary is a 2-manifold, neighbourhood.hpp), and remeshes the selection with
-//      CGAL::tetrahedral_isotropic_remeshing towards an edge of half the tool's diameter, the
-//      selection's boundary and the mesh surface kept (cgal_peer.hpp);
+//   2. hands CGAL that selection (grown until its boundary is a 2-manifold, neighbourhood.hpp:
+//      CGAL's remeshing passes over whatever it is given, so it is given no more, as
+//      tetcut_quality_peer does) and remeshes it with CGAL::tetrahedral_isotropic_remeshing towards
+//      an edge of half the tool's diameter, the selection's boundary and the mesh surface kept
+//      (cgal_peer.hpp);
 //   3. puts the remeshed cells in the selection's place;
-//   4. hands CGAL the new cells whose centroid is in the ball, with two rings again, and removes
-//      them one by one, each removal undone when C3T3::face_status finds a vertex or an edge
-//      SINGULAR (the star of every vertex of a removed cell lies inside the part, so the
+//   4. hands CGAL the new cells whose centroid is in the ball with a ring of tets around them,
+//      and removes them one by one, each removal undone when C3T3::face_status finds a vertex or
+//      an edge SINGULAR (the star of every vertex of a removed cell lies inside that part, so the
 //      classification is the whole mesh's).
 // The mesh's bookkeeping between cuts (adjacency, rings) is a tetcut::TetMesh, the remeshing
 // and the classification are CGAL's. No change log: the remeshing replaces vertices and the
@@ -84,8 +85,10 @@ std::vector<std::uint32_t> places(const std::vector<TetId>& part, const std::vec
   return out;
 }
 
-std::vector<TetId> part_around(const TetMesh& mesh, const std::vector<TetId>& tets) {
-  std::optional<std::vector<TetId>> part = tetcut::peers::manifold_neighbourhood(mesh, tets, 2);
+// `tets` and `rings` rings of tets around them, grown until the part's boundary is a 2-manifold
+// (CGAL's loading needs it); the whole mesh if the growth does not settle.
+std::vector<TetId> part_around(const TetMesh& mesh, const std::vector<TetId>& tets, int rings) {
+  std::optional<std::vector<TetId>> part = tetcut::peers::manifold_neighbourhood(mesh, tets, rings);
   if (!part) part = tetcut::peers::manifold_neighbourhood(mesh, tets, -1);
   return *part;
 }
@@ -106,7 +109,7 @@ int cut_tool(RemeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   }
   if (selection.empty()) return TETCUT_ENGINE_OK;
   // 2. CGAL remeshes the selection inside its neighbourhood.
-  const std::vector<TetId> part = part_around(e.mesh, selection);
+  const std::vector<TetId> part = part_around(e.mesh, selection, 0);
   tetcut::peers::CgalTetMesh cgal;
   const tetcut::peers::CgalLoadResult loaded = cgal.load(positions, corners_of(e.mesh, part));
   if (!loaded.ok) {
@@ -143,7 +146,7 @@ int cut_tool(RemeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   }
   if (in_tool.empty()) return TETCUT_ENGINE_OK;
   std::sort(in_tool.begin(), in_tool.end(), [](TetId x, TetId y) { return x.value < y.value; });
-  const std::vector<TetId> around = part_around(e.mesh, in_tool);
+  const std::vector<TetId> around = part_around(e.mesh, in_tool, 1);
   tetcut::peers::CgalTetMesh classify;
   const tetcut::peers::CgalLoadResult reloaded = classify.load(e.mesh.positions(), corners_of(e.mesh, around));
   if (!reloaded.ok) {
@@ -190,7 +193,7 @@ int remove_tet(tetcut_engine* engine, std::uint32_t tet) {
   const TetId t{tet};
   if (!e.mesh.is_live(t)) return TETCUT_ENGINE_REFUSED;
   const std::vector<TetId> one{t};
-  const std::vector<TetId> around = part_around(e.mesh, one);
+  const std::vector<TetId> around = part_around(e.mesh, one, 1);
   tetcut::peers::CgalTetMesh classify;
   if (!classify.load(e.mesh.positions(), corners_of(e.mesh, around)).ok) return TETCUT_ENGINE_REFUSED;
   std::vector<std::uint32_t> removed_places;

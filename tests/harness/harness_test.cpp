@@ -193,6 +193,12 @@ TEST(EngineCheck, ThePeersAreCheckedAsTheyAre) {
   EXPECT_TRUE(remesh.ok()) << remesh.objection << remesh.engine_error;
   EXPECT_EQ(remesh.level, "full");
   EXPECT_EQ(remesh.run, 24u);
+  // TetGen refining the neighbourhood, then the blind removal: its boundary splices back (no
+  // engine error), and the removal leaves what blind removal leaves.
+  const PlanCheck tetgen = check_plan(adapter(TETCUT_ADAPTER_TETGEN_LOCAL), plan);
+  EXPECT_TRUE(tetgen.engine_error.empty()) << tetgen.engine_error;
+  ASSERT_TRUE(tetgen.failed_operation.has_value());
+  EXPECT_TRUE(tetgen.invariants.front() == "I5" || tetgen.invariants.front() == "I6") << tetgen.objection;
 #endif
 }
 

@@ -597,6 +597,7 @@ ENGINE_STANDS_FOR = {
     "sofa-style": "blind removal, SOFA's algorithm (our model)",
     "cgal": "CGAL 5.5 C3T3: remove, classify, undo",
     "cgal-remesh": "CGAL 5.5: remesh the tool's neighbourhood, then remove, classify, undo",
+    "tetgen-local": "TetGen 1.5 -r on the tool's neighbourhood, then blind removal",
     "blind": "blind removal, a scan (the template)",
 }
 
@@ -639,7 +640,7 @@ def engines(inputs):
             "tool' is the tissue still inside the ball after the cut. 'Broke the mesh': cuts after which the full "
             "check found more singular vertices, singular edges or flat tets than before. Ratios are tetcut's p50 "
             "over the approach's, per cut and per mm3 removed. 'Tets removed / made' comes from the change log; an "
-            "approach without one (SOFA's arrays are dense, CGAL's remeshing replaces vertices) shows the net change "
+            "approach without one (SOFA's arrays are dense, CGAL's and TetGen's remeshing replace vertices) shows the net change "
             "of the live tets. The iMSTK and SOFA rows are our models of those "
             "libraries' algorithms, not the libraries.", ""] + engines_table(e)
 

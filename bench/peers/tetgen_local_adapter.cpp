@@ -1,0 +1,262 @@
+// TetGen 1.5 on the tool's neighbourhood only, behind engine.h: the fair form of the remeshing
+// peer (peers_bench's TetGen remeshes the whole mesh at every cut). A cut
+//   1. selects the tets that meet the tool's ball (the centroid within the radius plus the tet's
+//      own reach), grown until the part's boundary is a 2-manifold (neighbourhood.hpp), which
+//      TetGen's reconstruction of the input mesh needs;
+//   2. hands TetGen that part alone with `-rYQ` and a volume bound on the selected tets (a regular
+//      tet of edge D_ref = 1.5 x the tool's diameter, tetcut's own refinement bound; -1 on the
+//      tets the growth added): TetGen refines and may flip inside the part, and keeps its boundary
+//      faces as they are (-Y), so the part's surface is still the rest of the mesh's;
+//   3. puts TetGen's tets in the part's place, after checking that its boundary faces are the
+//      part's own;
+//   4. removes the new tets whose centroid is in the tool, blindly, as peers_bench's TetGen peer
+//      does: refinement by remeshing, removal without a manifold test.
+// The bookkeeping between cuts is a tetcut::TetMesh. No change log (TetGen's output replaces the
+// part's tets and may drop none of its points, but is not told apart here): the harness checks the
+// whole mesh after every cut. A TetGen failure or a boundary it changed is TETCUT_ENGINE_ERROR,
+// the mesh as it was.
+#include <tetcut/harness/engine.h>
+#include <tetgen.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <optional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "neighbourhood.hpp"
+#include "tetcut/mesh.hpp"
+#include "tetcut/mesh_builder.hpp"
+
+namespace {
+
+using tetcut::TetId;
+using tetcut::TetMesh;
+using tetcut::Vec3;
+using tetcut::VertId;
+using Face = std::array<std::uint32_t, 3>;
+
+struct TetgenEngine {
+  TetMesh mesh;
+  std::vector<double> points;
+  std::vector<std::uint32_t> tets;
+  std::string error;
+};
+
+TetgenEngine* engine_of(tetcut_engine* engine) { return reinterpret_cast<TetgenEngine*>(engine); }
+
+Vec3 centroid(const TetMesh& mesh, const TetMesh::TetVerts& v) {
+  const auto p = mesh.positions();
+  return 0.25 * (p[v[0].value] + p[v[1].value] + p[v[2].value] + p[v[3].value]);
+}
+
+double squared_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length2 = dot(ab, ab);
+  const double t = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  const Vec3 d = p - (a + t * ab);
+  return dot(d, d);
+}
+
+// The boundary faces of a set of tets (vertex ids sorted), each once, in order: every face
+// sorted, and those that occur once kept.
+std::vector<Face> boundary_faces(const std::vector<TetMesh::TetVerts>& tets) {
+  std::vector<Face> faces;
+  faces.reserve(4 * tets.size());
+  for (const auto& t : tets) {
+    for (int f = 0; f < 4; ++f) {
+      Face face{};
+      int n = 0;
+      for (int i = 0; i < 4; ++i) {
+        if (i != f) face[n++] = t[i].value;
+      }
+      std::sort(face.begin(), face.end());
+      faces.push_back(face);
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+  std::vector<Face> out;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i;
+    while (j < faces.size() && faces[j] == faces[i]) ++j;
+    if (j - i == 1) out.push_back(faces[i]);
+    i = j;
+  }
+  return out;
+}
+
+int cut_tool(TetgenEngine& e, const Vec3& a, const Vec3& b, double diameter) {
+  const double radius = diameter / 2;
+  const auto positions = e.mesh.positions();
+  std::vector<TetId> selection;
+  for (std::uint32_t i = 0; i < e.mesh.tet_capacity(); ++i) {
+    const TetId t{i};
+    if (!e.mesh.is_live(t)) continue;
+    const TetMesh::TetVerts v = e.mesh.tet(t);
+    const Vec3 c = centroid(e.mesh, v);
+    double reach2 = 0;
+    for (VertId u : v) reach2 = std::max(reach2, dot(positions[u.value] - c, positions[u.value] - c));
+    const double reach = radius + std::sqrt(reach2);
+    if (squared_distance_to_segment(c, a, b) <= reach * reach) selection.push_back(t);
+  }
+  if (selection.empty()) return TETCUT_ENGINE_OK;
+  std::optional<std::vector<TetId>> grown = tetcut::peers::manifold_neighbourhood(e.mesh, selection, 0);
+  if (!grown) grown = tetcut::peers::manifold_neighbourhood(e.mesh, selection, -1);
+  const std::vector<TetId>& part = *grown;
+
+  // The part as TetGen's input, its vertices numbered locally.
+  std::map<std::uint32_t, int> local;
+  std::vector<VertId> global;
+  std::vector<TetMesh::TetVerts> part_tets;
+  for (TetId t : part) {
+    part_tets.push_back(e.mesh.tet(t));
+    for (VertId v : part_tets.back()) {
+      if (local.emplace(v.value, static_cast<int>(global.size())).second) global.push_back(v);
+    }
+  }
+  const double d_ref = 1.5 * diameter;
+  const double max_volume = d_ref * d_ref * d_ref / (6.0 * std::sqrt(2.0));
+  tetgenio in, result;
+  in.numberofpoints = static_cast<int>(global.size());
+  in.pointlist = new REAL[3 * global.size()];
+  for (std::size_t i = 0; i < global.size(); ++i) {
+    const Vec3& p = positions[global[i].value];
+    in.pointlist[3 * i] = p.x;
+    in.pointlist[3 * i + 1] = p.y;
+    in.pointlist[3 * i + 2] = p.z;
+  }
+  in.numberoftetrahedra = static_cast<int>(part.size());
+  in.numberofcorners = 4;
+  in.tetrahedronlist = new int[4 * part.size()];
+  in.tetrahedronvolumelist = new REAL[part.size()];
+  for (std::size_t t = 0; t < part.size(); ++t) {
+    for (int k = 0; k < 4; ++k) in.tetrahedronlist[4 * t + k] = local.at(part_tets[t][k].value);
+    in.tetrahedronvolumelist[t] = std::binary_search(selection.begin(), selection.end(), part[t],
+                                                     [](TetId x, TetId y) { return x.value < y.value; })
+                                      ? max_volume
+                                      : -1.0;
+  }
+  char switches[] = "raYQ";
+  try {
+    tetrahedralize(switches, &in, &result);
+  } catch (...) {
+    e.error = "TetGen failed on the tool's neighbourhood (" + std::to_string(part.size()) + " tets)";
+    return TETCUT_ENGINE_ERROR;
+  }
+  if (result.numberoftetrahedra <= 0 || result.numberofpoints < in.numberofpoints) {
+    e.error = "TetGen returned " + std::to_string(result.numberoftetrahedra) + " tets and " +
+              std::to_string(result.numberofpoints) + " points for a part of " + std::to_string(part.size()) + " tets";
+    return TETCUT_ENGINE_ERROR;
+  }
+  // TetGen keeps the input points first, in order; the rest are new.
+  std::vector<VertId> vertex_of(static_cast<std::size_t>(result.numberofpoints));
+  for (int i = 0; i < in.numberofpoints; ++i) {
+    const Vec3 p{result.pointlist[3 * i], result.pointlist[3 * i + 1], result.pointlist[3 * i + 2]};
+    if (!(p == positions[global[static_cast<std::size_t>(i)].value])) {
+      e.error = "TetGen moved input point " + std::to_string(i);
+      return TETCUT_ENGINE_ERROR;
+    }
+    vertex_of[static_cast<std::size_t>(i)] = global[static_cast<std::size_t>(i)];
+  }
+  std::vector<TetMesh::TetVerts> added(static_cast<std::size_t>(result.numberoftetrahedra));
+  std::vector<std::size_t> new_points;
+  for (std::size_t t = 0; t < added.size(); ++t) {
+    for (int k = 0; k < 4; ++k) {
+      const auto i = static_cast<std::size_t>(result.tetrahedronlist[4 * t + static_cast<std::size_t>(k)]);
+      if (i >= static_cast<std::size_t>(in.numberofpoints) && !vertex_of[i].valid()) {
+        vertex_of[i] = e.mesh.add_vertex({result.pointlist[3 * i], result.pointlist[3 * i + 1], result.pointlist[3 * i + 2]});
+      }
+      added[t][k] = vertex_of[i];
+    }
+  }
+  if (boundary_faces(added) != boundary_faces(part_tets)) {
+    e.error = "TetGen changed the boundary of the tool's neighbourhood";
+    return TETCUT_ENGINE_ERROR;
+  }
+  std::vector<TetId> created;
+  e.mesh.replace_tets(part, added, &created);
+  // Blind removal of the new tets in the tool.
+  std::vector<TetId> in_tool;
+  for (TetId t : created) {
+    if (squared_distance_to_segment(centroid(e.mesh, e.mesh.tet(t)), a, b) <= radius * radius) in_tool.push_back(t);
+  }
+  e.mesh.remove_tets(in_tool);
+  return TETCUT_ENGINE_OK;
+}
+
+tetcut_engine* create(const tetcut_engine_mesh* input, char* error, std::size_t error_size) {
+  try {
+    tetcut::RawMesh raw;
+    raw.positions.resize(input->point_count);
+    for (std::uint32_t v = 0; v < input->point_count; ++v) {
+      raw.positions[v] = {input->points[3 * v], input->points[3 * v + 1], input->points[3 * v + 2]};
+    }
+    raw.tets.resize(input->tet_count);
+    for (std::uint32_t t = 0; t < input->tet_count; ++t) {
+      for (int i = 0; i < 4; ++i) raw.tets[t][i] = input->tets[4 * t + i];
+    }
+    tetcut::BuildResult built = tetcut::build_mesh(raw);
+    if (!built.ok()) {
+      std::snprintf(error, error_size, "%s", built.problems.front().message.c_str());
+      return nullptr;
+    }
+    auto e = std::make_unique<TetgenEngine>();
+    e->mesh = std::move(*built.mesh);
+    return reinterpret_cast<tetcut_engine*>(e.release());
+  } catch (const std::exception& failure) {
+    std::snprintf(error, error_size, "%s", failure.what());
+    return nullptr;
+  }
+}
+
+void destroy(tetcut_engine* engine) { delete engine_of(engine); }
+
+int remove_tet(tetcut_engine* engine, std::uint32_t tet) {
+  TetgenEngine& e = *engine_of(engine);
+  const TetId t{tet};
+  if (!e.mesh.is_live(t)) return TETCUT_ENGINE_REFUSED;
+  const std::vector<TetId> one{t};
+  e.mesh.remove_tets(one);
+  return TETCUT_ENGINE_OK;
+}
+
+int cut_capsule(tetcut_engine* engine, const double* a, const double* b, double diameter) {
+  TetgenEngine& e = *engine_of(engine);
+  try {
+    return cut_tool(e, {a[0], a[1], a[2]}, {b[0], b[1], b[2]}, diameter);
+  } catch (const std::exception& failure) {
+    e.error = failure.what();
+    return TETCUT_ENGINE_ERROR;
+  }
+}
+
+int cut_ball(tetcut_engine* engine, const double* centre, double diameter) {
+  return cut_capsule(engine, centre, centre, diameter);
+}
+
+int mesh(tetcut_engine* engine, tetcut_engine_mesh* out) {
+  TetgenEngine& e = *engine_of(engine);
+  const tetcut::RawMeshView view = e.mesh.raw_view();
+  e.points.clear();
+  for (const Vec3& p : view.positions) e.points.insert(e.points.end(), {p.x, p.y, p.z});
+  e.tets.clear();
+  for (const auto& t : view.tets) e.tets.insert(e.tets.end(), t.begin(), t.end());
+  *out = {e.points.data(), static_cast<std::uint32_t>(view.positions.size()), e.tets.data(),
+          static_cast<std::uint32_t>(view.tets.size())};
+  return TETCUT_ENGINE_OK;
+}
+
+const char* last_error(tetcut_engine* engine) { return engine_of(engine)->error.c_str(); }
+
+const tetcut_engine_api kApi = {TETCUT_ENGINE_ABI_VERSION, TETCUT_ENGINE_CAPSULE, "tetgen-local",
+                                "TetGen 1.5 -rYQ on the tool's neighbourhood, then blind removal",
+                                create, destroy, remove_tet, cut_ball, cut_capsule, mesh, nullptr, last_error};
+
+}  // namespace
+
+extern "C" const tetcut_engine_api* tetcut_engine_adapter(void) { return &kApi; }
