@@ -28,8 +28,10 @@
 // edges (I6) and flat or inverted tets (I4), summed over the cuts' local reports (a singularity a
 // later cut touches again is counted again), the first cut after which one is reported, and the
 // distinct singular vertices and edges in the final mesh (a full check). The ratios tetcut / peer
-// are the figures bench/peers/peers_table.py prints and bench/budgets.json gates: measured in one
-// process on interleaved work, they do not move with the machine's speed.
+// are the figures bench/peers/peers_table.py prints and bench/budgets.json gates. They are measured
+// in one process, but one approach's whole sweep after another, not interleaved cut by cut: a
+// machine's steady speed cancels out of them, a load spike during one sweep does not.
+// engines_compare.cpp interleaves the engine adapters cut by cut.
 //
 // Locating is the same for the three peers: a grid of the tets' centroids built once (they never
 // change for blind and CGAL; TetGen's renumbered mesh is scanned whole, which is nothing beside
