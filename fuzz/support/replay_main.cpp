@@ -5,7 +5,8 @@
 //   <target> [-flag ...] PATH...
 // Each PATH is a file, or a folder whose files (not sub-folders) are run in name order, so a
 // failure always happens on the same input. Arguments starting with '-' are libFuzzer flags and
-// are ignored, so one command line (`<target> -runs=0 corpus/`) replays with either build.
+// are ignored, so one command line (`<target> -runs=0 corpus/`) replays with either build; a
+// target's LLVMFuzzerInitialize, when it has one, sees them first, as libFuzzer calls it.
 // A failing input aborts inside the target; the driver prints each input's name first so that
 // the log names it.
 #include <algorithm>
@@ -19,6 +20,9 @@
 #include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+// Optional, as in libFuzzer: a target that defines it reads its own arguments first (the
+// sequence targets' -engine=LIB).
+extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) __attribute__((weak));
 
 namespace {
 
@@ -42,6 +46,7 @@ bool run_file(const fs::path& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (LLVMFuzzerInitialize != nullptr) LLVMFuzzerInitialize(&argc, &argv);
   std::size_t inputs = 0;
   bool ok = true;
   for (int i = 1; i < argc; ++i) {
