@@ -1,7 +1,11 @@
 // Every engine adapter (tetcut/harness/engine.h) on the same cuts, interleaved cut by cut in one
 // process: the fair side-by-side figures of docs/engines.md and docs/results.md.
 //
-//   engines_compare [--mesh M] [--cuts N] [--json FILE] ADAPTER.so...
+//   engines_compare [--mesh M] [--cuts N] [--json FILE] [--gate FILE] ADAPTER.so...
+//
+// --gate FILE writes the same figures as Google Benchmark runs named engines/<adapter> (ci/bench
+// merges them into its results, and bench/budgets.json bounds tetcut's ratios and its own
+// correctness on them).
 //
 // The cuts are the gated sweep (bench/gated_sweep.hpp: 252 balls of 8 mm across the 16k liver),
 // the first N of them with --cuts. Cut k is made by every approach before cut k + 1 is made by
@@ -134,7 +138,7 @@ struct Approach {
 int main(int argc, char** argv) {
   std::string mesh_path = std::string(TETCUT_CORPUS_DIR) + "/meshes/liver.msh";
   std::size_t max_cuts = 0;
-  std::string json_path;
+  std::string json_path, gate_path;
   std::vector<std::string> adapters;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -144,10 +148,12 @@ int main(int argc, char** argv) {
       max_cuts = std::stoul(argv[++i]);
     } else if (arg == "--json" && i + 1 < argc) {
       json_path = argv[++i];
+    } else if (arg == "--gate" && i + 1 < argc) {
+      gate_path = argv[++i];
     } else if (!arg.empty() && arg[0] != '-') {
       adapters.push_back(arg);
     } else {
-      std::fprintf(stderr, "usage: engines_compare [--mesh M] [--cuts N] [--json FILE] ADAPTER.so...\n");
+      std::fprintf(stderr, "usage: engines_compare [--mesh M] [--cuts N] [--json FILE] [--gate FILE] ADAPTER.so...\n");
       return 2;
     }
   }
@@ -265,11 +271,23 @@ int main(int argc, char** argv) {
                 j.value("ratio_per_cut", 0.0), j.value("ratio_per_volume", 0.0));
     doc["approaches"].push_back(j);
   }
-  if (!json_path.empty()) {
-    const std::string temporary = json_path + ".tmp";
-    std::ofstream(temporary) << doc.dump(2) << "\n";
-    if (std::rename(temporary.c_str(), json_path.c_str()) != 0) {
-      std::fprintf(stderr, "engines_compare: cannot write %s\n", json_path.c_str());
+  // As Google Benchmark runs, for the gate: one per approach, its figures as fields.
+  nlohmann::ordered_json gate = {{"benchmarks", nlohmann::ordered_json::array()}};
+  for (const auto& a : doc["approaches"]) {
+    nlohmann::ordered_json run = {{"name", "engines/" + a["name"].get<std::string>()},
+                                  {"run_name", "engines/" + a["name"].get<std::string>()},
+                                  {"run_type", "iteration"}};
+    for (const auto& [field, value] : a.items()) {
+      if (value.is_number()) run[field] = value;
+    }
+    gate["benchmarks"].push_back(run);
+  }
+  for (const auto& [path, content] : {std::pair{json_path, &doc}, std::pair{gate_path, &gate}}) {
+    if (path.empty()) continue;
+    const std::string temporary = path + ".tmp";
+    std::ofstream(temporary) << content->dump(2) << "\n";
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+      std::fprintf(stderr, "engines_compare: cannot write %s\n", path.c_str());
       return 1;
     }
   }

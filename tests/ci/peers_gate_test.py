@@ -39,6 +39,7 @@ def main(src):
     check("peers_bench" in bench and "peers_table.py" in bench, "ci/bench does not run peers_bench and print the table")
 
     others = sorted({g["benchmark"] for g in budgets["figures"]} - {g["benchmark"] for g in peers})
+    bench = open(os.path.join(src, "ci/bench"), encoding="utf-8").read()
 
     def gate(values):
         run = {"name": peers[0]["benchmark"], "run_name": peers[0]["benchmark"], "run_type": "iteration", **values}
@@ -61,6 +62,18 @@ def main(src):
     check(bool(counts), "no count figure holds tetcut to no singularity on the peers' sweep")
     for g in counts:
         check(gate(dict(within, **{g["field"]: g["max"] + 1})) == 1, f"the gate passes {g['field']} over {g['max']}")
+    # The engine adapters' figures (bench/peers/engines_compare.cpp --gate, runs engines/<adapter>):
+    # each field one engines_compare reports, ci/bench running it, and tetcut held to no broken cut.
+    engines = [g for g in budgets["figures"] if g["benchmark"].startswith("engines/")]
+    with open(os.path.join(src, "bench/peers/engines_compare.cpp"), encoding="utf-8") as f:
+        compare = f.read()
+    engine_fields = set(re.findall(r'\{"([a-z0-9_]+)", ', compare)) | {"ratio_per_cut", "ratio_per_volume"}
+    check(any(g["benchmark"] == "engines/tetcut" and g["field"] == "cuts_objected" and g["max"] == 0 for g in engines),
+          "bench/budgets.json does not hold tetcut to no broken cut through its adapter")
+    check(any(g["field"] == "ratio_per_volume" for g in engines), "no engines figure bounds a ratio per mm3 removed")
+    for g in engines:
+        check(g["field"] in engine_fields, f"budget '{g['name']}' reads {g['field']}, which engines_compare does not report")
+    check("engines_compare --gate" in bench, "ci/bench does not run engines_compare --gate")
     return verdict("the gate bounds tetcut's ratio to each peer, and fails a change that loses ground")
 
 
