@@ -32,8 +32,8 @@
 
 #include "cgal_peer.hpp"
 #include "neighbourhood.hpp"
+#include "adapters/tet_mesh_adapter.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/mesh_builder.hpp"
 
 namespace {
 
@@ -41,6 +41,8 @@ using tetcut::TetId;
 using tetcut::TetMesh;
 using tetcut::Vec3;
 using tetcut::VertId;
+using tetcut::adapters::centroid;
+using tetcut::adapters::squared_distance_to_segment;
 
 struct RemeshEngine {
   TetMesh mesh;
@@ -61,19 +63,7 @@ std::vector<std::array<std::uint32_t, 4>> corners_of(const TetMesh& mesh, const 
   return out;
 }
 
-Vec3 centroid(const TetMesh& mesh, TetId t) {
-  const TetMesh::TetVerts v = mesh.tet(t);
-  const auto p = mesh.positions();
-  return 0.25 * (p[v[0].value] + p[v[1].value] + p[v[2].value] + p[v[3].value]);
-}
 
-double squared_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double length2 = dot(ab, ab);
-  const double t = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  const Vec3 d = p - (a + t * ab);
-  return dot(d, d);
-}
 
 // The indices of `subset` in the sorted `part`.
 std::vector<std::uint32_t> places(const std::vector<TetId>& part, const std::vector<TetId>& subset) {
@@ -97,16 +87,7 @@ int cut_tool(RemeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   const double radius = diameter / 2;
   const auto positions = e.mesh.positions();
   // 1. The tets meeting the ball (or capsule), conservatively.
-  std::vector<TetId> selection;
-  for (std::uint32_t i = 0; i < e.mesh.tet_capacity(); ++i) {
-    const TetId t{i};
-    if (!e.mesh.is_live(t)) continue;
-    const Vec3 c = centroid(e.mesh, t);
-    double reach2 = 0;
-    for (VertId v : e.mesh.tet(t)) reach2 = std::max(reach2, dot(positions[v.value] - c, positions[v.value] - c));
-    const double reach = radius + std::sqrt(reach2);
-    if (squared_distance_to_segment(c, a, b) <= reach * reach) selection.push_back(t);
-  }
+  const std::vector<TetId> selection = tetcut::adapters::tets_meeting_tool(e.mesh, a, b, radius);
   if (selection.empty()) return TETCUT_ENGINE_OK;
   // 2. CGAL remeshes the selection inside its neighbourhood.
   const std::vector<TetId> part = part_around(e.mesh, selection, 0);
@@ -162,28 +143,11 @@ int cut_tool(RemeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
 }
 
 tetcut_engine* create(const tetcut_engine_mesh* input, char* error, std::size_t error_size) {
-  try {
-    tetcut::RawMesh raw;
-    raw.positions.resize(input->point_count);
-    for (std::uint32_t v = 0; v < input->point_count; ++v) {
-      raw.positions[v] = {input->points[3 * v], input->points[3 * v + 1], input->points[3 * v + 2]};
-    }
-    raw.tets.resize(input->tet_count);
-    for (std::uint32_t t = 0; t < input->tet_count; ++t) {
-      for (int i = 0; i < 4; ++i) raw.tets[t][i] = input->tets[4 * t + i];
-    }
-    tetcut::BuildResult built = tetcut::build_mesh(raw);
-    if (!built.ok()) {
-      std::snprintf(error, error_size, "%s", built.problems.front().message.c_str());
-      return nullptr;
-    }
-    auto e = std::make_unique<RemeshEngine>();
-    e->mesh = std::move(*built.mesh);
-    return reinterpret_cast<tetcut_engine*>(e.release());
-  } catch (const std::exception& failure) {
-    std::snprintf(error, error_size, "%s", failure.what());
-    return nullptr;
-  }
+  std::optional<TetMesh> mesh = tetcut::adapters::build_from(input, error, error_size);
+  if (!mesh) return nullptr;
+  auto e = std::make_unique<RemeshEngine>();
+  e->mesh = std::move(*mesh);
+  return reinterpret_cast<tetcut_engine*>(e.release());
 }
 
 void destroy(tetcut_engine* engine) { delete engine_of(engine); }
@@ -219,13 +183,7 @@ int cut_ball(tetcut_engine* engine, const double* centre, double diameter) {
 
 int mesh(tetcut_engine* engine, tetcut_engine_mesh* out) {
   RemeshEngine& e = *engine_of(engine);
-  const tetcut::RawMeshView view = e.mesh.raw_view();
-  e.points.clear();
-  for (const Vec3& p : view.positions) e.points.insert(e.points.end(), {p.x, p.y, p.z});
-  e.tets.clear();
-  for (const auto& t : view.tets) e.tets.insert(e.tets.end(), t.begin(), t.end());
-  *out = {e.points.data(), static_cast<std::uint32_t>(view.positions.size()), e.tets.data(),
-          static_cast<std::uint32_t>(view.tets.size())};
+  tetcut::adapters::export_mesh(e.mesh, e.points, e.tets, out);
   return TETCUT_ENGINE_OK;
 }
 

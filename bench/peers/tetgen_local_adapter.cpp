@@ -30,8 +30,8 @@
 #include <vector>
 
 #include "neighbourhood.hpp"
+#include "adapters/tet_mesh_adapter.hpp"
 #include "tetcut/mesh.hpp"
-#include "tetcut/mesh_builder.hpp"
 
 namespace {
 
@@ -39,6 +39,8 @@ using tetcut::TetId;
 using tetcut::TetMesh;
 using tetcut::Vec3;
 using tetcut::VertId;
+using tetcut::adapters::centroid;
+using tetcut::adapters::squared_distance_to_segment;
 using Face = std::array<std::uint32_t, 3>;
 
 struct TetgenEngine {
@@ -50,18 +52,7 @@ struct TetgenEngine {
 
 TetgenEngine* engine_of(tetcut_engine* engine) { return reinterpret_cast<TetgenEngine*>(engine); }
 
-Vec3 centroid(const TetMesh& mesh, const TetMesh::TetVerts& v) {
-  const auto p = mesh.positions();
-  return 0.25 * (p[v[0].value] + p[v[1].value] + p[v[2].value] + p[v[3].value]);
-}
 
-double squared_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double length2 = dot(ab, ab);
-  const double t = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  const Vec3 d = p - (a + t * ab);
-  return dot(d, d);
-}
 
 // The boundary faces of a set of tets (vertex ids sorted), each once, in order: every face
 // sorted, and those that occur once kept.
@@ -93,17 +84,7 @@ std::vector<Face> boundary_faces(const std::vector<TetMesh::TetVerts>& tets) {
 int cut_tool(TetgenEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   const double radius = diameter / 2;
   const auto positions = e.mesh.positions();
-  std::vector<TetId> selection;
-  for (std::uint32_t i = 0; i < e.mesh.tet_capacity(); ++i) {
-    const TetId t{i};
-    if (!e.mesh.is_live(t)) continue;
-    const TetMesh::TetVerts v = e.mesh.tet(t);
-    const Vec3 c = centroid(e.mesh, v);
-    double reach2 = 0;
-    for (VertId u : v) reach2 = std::max(reach2, dot(positions[u.value] - c, positions[u.value] - c));
-    const double reach = radius + std::sqrt(reach2);
-    if (squared_distance_to_segment(c, a, b) <= reach * reach) selection.push_back(t);
-  }
+  const std::vector<TetId> selection = tetcut::adapters::tets_meeting_tool(e.mesh, a, b, radius);
   if (selection.empty()) return TETCUT_ENGINE_OK;
   std::optional<std::vector<TetId>> grown = tetcut::peers::manifold_neighbourhood(e.mesh, selection, 0);
   if (!grown) grown = tetcut::peers::manifold_neighbourhood(e.mesh, selection, -1);
@@ -183,35 +164,18 @@ int cut_tool(TetgenEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   // Blind removal of the new tets in the tool.
   std::vector<TetId> in_tool;
   for (TetId t : created) {
-    if (squared_distance_to_segment(centroid(e.mesh, e.mesh.tet(t)), a, b) <= radius * radius) in_tool.push_back(t);
+    if (squared_distance_to_segment(centroid(e.mesh, t), a, b) <= radius * radius) in_tool.push_back(t);
   }
   e.mesh.remove_tets(in_tool);
   return TETCUT_ENGINE_OK;
 }
 
 tetcut_engine* create(const tetcut_engine_mesh* input, char* error, std::size_t error_size) {
-  try {
-    tetcut::RawMesh raw;
-    raw.positions.resize(input->point_count);
-    for (std::uint32_t v = 0; v < input->point_count; ++v) {
-      raw.positions[v] = {input->points[3 * v], input->points[3 * v + 1], input->points[3 * v + 2]};
-    }
-    raw.tets.resize(input->tet_count);
-    for (std::uint32_t t = 0; t < input->tet_count; ++t) {
-      for (int i = 0; i < 4; ++i) raw.tets[t][i] = input->tets[4 * t + i];
-    }
-    tetcut::BuildResult built = tetcut::build_mesh(raw);
-    if (!built.ok()) {
-      std::snprintf(error, error_size, "%s", built.problems.front().message.c_str());
-      return nullptr;
-    }
-    auto e = std::make_unique<TetgenEngine>();
-    e->mesh = std::move(*built.mesh);
-    return reinterpret_cast<tetcut_engine*>(e.release());
-  } catch (const std::exception& failure) {
-    std::snprintf(error, error_size, "%s", failure.what());
-    return nullptr;
-  }
+  std::optional<TetMesh> mesh = tetcut::adapters::build_from(input, error, error_size);
+  if (!mesh) return nullptr;
+  auto e = std::make_unique<TetgenEngine>();
+  e->mesh = std::move(*mesh);
+  return reinterpret_cast<tetcut_engine*>(e.release());
 }
 
 void destroy(tetcut_engine* engine) { delete engine_of(engine); }
@@ -241,13 +205,7 @@ int cut_ball(tetcut_engine* engine, const double* centre, double diameter) {
 
 int mesh(tetcut_engine* engine, tetcut_engine_mesh* out) {
   TetgenEngine& e = *engine_of(engine);
-  const tetcut::RawMeshView view = e.mesh.raw_view();
-  e.points.clear();
-  for (const Vec3& p : view.positions) e.points.insert(e.points.end(), {p.x, p.y, p.z});
-  e.tets.clear();
-  for (const auto& t : view.tets) e.tets.insert(e.tets.end(), t.begin(), t.end());
-  *out = {e.points.data(), static_cast<std::uint32_t>(view.positions.size()), e.tets.data(),
-          static_cast<std::uint32_t>(view.tets.size())};
+  tetcut::adapters::export_mesh(e.mesh, e.points, e.tets, out);
   return TETCUT_ENGINE_OK;
 }
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "tet_mesh_adapter.hpp"
 #include "tetcut/cut.hpp"
-#include "tetcut/mesh_builder.hpp"
 
 namespace {
 
@@ -82,29 +82,12 @@ bool set_diameter(TetcutEngine& e, double diameter) {
 }
 
 tetcut_engine* create(const tetcut_engine_mesh* input, char* error, std::size_t error_size) {
-  try {
-    tetcut::RawMesh raw;
-    raw.positions.resize(input->point_count);
-    for (std::uint32_t v = 0; v < input->point_count; ++v) {
-      raw.positions[v] = {input->points[3 * v], input->points[3 * v + 1], input->points[3 * v + 2]};
-    }
-    raw.tets.resize(input->tet_count);
-    for (std::uint32_t t = 0; t < input->tet_count; ++t) {
-      for (int i = 0; i < 4; ++i) raw.tets[t][i] = input->tets[4 * t + i];
-    }
-    tetcut::BuildResult built = tetcut::build_mesh(raw);
-    if (!built.ok()) {
-      std::snprintf(error, error_size, "%s", built.problems.front().message.c_str());
-      return nullptr;
-    }
-    auto e = std::make_unique<TetcutEngine>();
-    e->mesh = std::move(*built.mesh);
-    e->cutter.emplace(e->mesh, tetcut::CutParams{});
-    return reinterpret_cast<tetcut_engine*>(e.release());
-  } catch (const std::exception& failure) {
-    std::snprintf(error, error_size, "%s", failure.what());
-    return nullptr;
-  }
+  std::optional<tetcut::TetMesh> mesh = tetcut::adapters::build_from(input, error, error_size);
+  if (!mesh) return nullptr;
+  auto e = std::make_unique<TetcutEngine>();
+  e->mesh = std::move(*mesh);
+  e->cutter.emplace(e->mesh, tetcut::CutParams{});
+  return reinterpret_cast<tetcut_engine*>(e.release());
 }
 
 void destroy(tetcut_engine* engine) { delete engine_of(engine); }
@@ -128,13 +111,7 @@ int cut_ball(tetcut_engine* engine, const double* centre, double diameter) {
 
 int mesh(tetcut_engine* engine, tetcut_engine_mesh* out) {
   TetcutEngine& e = *engine_of(engine);
-  const tetcut::RawMeshView view = e.mesh.raw_view();
-  e.points.clear();
-  for (const Vec3& p : view.positions) e.points.insert(e.points.end(), {p.x, p.y, p.z});
-  e.tets.clear();
-  for (const auto& t : view.tets) e.tets.insert(e.tets.end(), t.begin(), t.end());
-  *out = {e.points.data(), static_cast<std::uint32_t>(view.positions.size()), e.tets.data(),
-          static_cast<std::uint32_t>(view.tets.size())};
+  tetcut::adapters::export_mesh(e.mesh, e.points, e.tets, out);
   return TETCUT_ENGINE_OK;
 }
 
