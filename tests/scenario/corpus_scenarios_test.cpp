@@ -11,14 +11,18 @@
 namespace tetcut::scenario {
 namespace {
 
-// corpus/scenarios/*.scn and the minimized regressions, corpus/regressions/<target>/*.scn.
+// corpus/scenarios/*.scn and the minimized regressions, corpus/regressions/<target>/*.scn. Not
+// corpus/regressions/engines/: other engines' findings, a single removal among them, which
+// tests/harness/engine_regressions_test.cpp replays on their engine and on tetcut.
 std::vector<std::string> scenario_files() {
   std::vector<std::string> out;
   const std::filesystem::path corpus = TETCUT_CORPUS_DIR;
   for (const auto& e : std::filesystem::recursive_directory_iterator(corpus / "scenarios"))
     if (e.path().extension() == ".scn") out.push_back(std::filesystem::relative(e.path(), corpus).string());
-  for (const auto& e : std::filesystem::recursive_directory_iterator(corpus / "regressions"))
-    if (e.path().extension() == ".scn") out.push_back(std::filesystem::relative(e.path(), corpus).string());
+  for (const auto& e : std::filesystem::recursive_directory_iterator(corpus / "regressions")) {
+    const std::string relative = std::filesystem::relative(e.path(), corpus).string();
+    if (e.path().extension() == ".scn" && !relative.starts_with("regressions/engines/")) out.push_back(relative);
+  }
   std::sort(out.begin(), out.end());
   return out;
 }
