@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "tetcut/scenario/delta_debugging.hpp"
 #include "tetcut/scenario/scenario.hpp"
 
 namespace tetcut::harness {
@@ -42,35 +43,13 @@ std::string signature_of(const PlanCheck& check) {
 Minimized minimize_plan(const AdapterInfo& adapter, const EnginePlan& plan, const std::string& signature,
                         const EngineCheckOptions& options, std::uint64_t max_checks) {
   Minimized result{plan, 0};
-  std::vector<EngineOperation>& ops = result.plan.operations;
+  EnginePlan trial = plan;  // the mesh copied once; each candidate's operations put into it
   auto reproduces = [&](const std::vector<EngineOperation>& candidate) {
-    if (result.checks >= max_checks) return false;
     ++result.checks;
-    EnginePlan trial = result.plan;
     trial.operations = candidate;
     return signature_of(check_plan(adapter, trial, options)) == signature;
   };
-  // ddmin (Zeller and Hildebrandt): drop ever smaller chunks while the failure stays the same.
-  std::size_t parts = 2;
-  while (ops.size() >= 2) {
-    const std::size_t chunk = (ops.size() + parts - 1) / parts;
-    bool reduced = false;
-    for (std::size_t start = 0; start < ops.size(); start += chunk) {
-      std::vector<EngineOperation> candidate(ops.begin(), ops.begin() + static_cast<std::ptrdiff_t>(start));
-      candidate.insert(candidate.end(), ops.begin() + static_cast<std::ptrdiff_t>(std::min(start + chunk, ops.size())),
-                       ops.end());
-      if (reproduces(candidate)) {
-        ops = std::move(candidate);
-        parts = std::max<std::size_t>(parts - 1, 2);
-        reduced = true;
-        break;
-      }
-    }
-    if (!reduced) {
-      if (parts >= ops.size() || result.checks >= max_checks) break;
-      parts = std::min(ops.size(), 2 * parts);
-    }
-  }
+  scenario::delta_debug(result.plan.operations, reproduces, [&] { return result.checks >= max_checks; });
   return result;
 }
 

@@ -21,6 +21,7 @@
 #include "command.hpp"
 #include "command_parser.hpp"
 #include "tetcut/io.hpp"
+#include "tetcut/scenario/delta_debugging.hpp"
 #include "tetcut/scenario/scenario.hpp"
 
 namespace tetcut::cli {
@@ -88,31 +89,8 @@ struct Minimizer {
 
   // ddmin over the lines (1-minimal with respect to deleting single lines at the end).
   void delete_lines(std::vector<std::string>& lines) {
-    std::size_t n = 2;
-    while (lines.size() >= 2 && runs < max_runs) {
-      const std::size_t chunk = (lines.size() + n - 1) / n;
-      bool reduced = false;
-      for (std::size_t start = 0; start < lines.size(); start += chunk) {
-        std::vector<std::string> candidate(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(start));
-        candidate.insert(candidate.end(), lines.begin() + static_cast<std::ptrdiff_t>(std::min(start + chunk, lines.size())),
-                         lines.end());
-        if (fails(candidate)) {
-          lines = std::move(candidate);
-          n = std::max<std::size_t>(n - 1, 2);
-          reduced = true;
-          break;
-        }
-      }
-      if (!reduced) {
-        if (chunk == 1) break;
-        n = std::min(n * 2, lines.size());
-      }
-    }
-    for (std::size_t i = lines.size(); i-- > 0 && runs < max_runs;) {
-      std::vector<std::string> candidate = lines;
-      candidate.erase(candidate.begin() + static_cast<std::ptrdiff_t>(i));
-      if (fails(candidate)) lines = std::move(candidate);
-    }
+    scenario::delta_debug(lines, [this](const std::vector<std::string>& candidate) { return fails(candidate); },
+                          [this] { return runs >= max_runs; });
   }
 
   // Replaces line i by the first of `options` that still fails.
