@@ -10,6 +10,7 @@
 #include "tetcut/io.hpp"
 #include "tetcut/scenario/scenario.hpp"
 #include "tetcut/scenario/sweep.hpp"
+#include "tetcut/scenario/values.hpp"
 
 namespace tetcut::harness {
 
@@ -99,7 +100,7 @@ EnginePlan plan_from_scenario(const std::string& path) {
         break;
       case OpKind::kParam:
         if (op.text == "diameter") {
-          diameter = std::stod(op.value);
+          diameter = *scenario::parse_double(op.value);  // the parser has read it already
         } else {
           plan.notes.push_back(where(s, op) + ": skipped: '" + op.text + "' tunes tetcut, not the engine interface");
         }

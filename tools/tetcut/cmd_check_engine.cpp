@@ -26,22 +26,18 @@ namespace fs = std::filesystem;
 using harness::EnginePlan;
 using harness::PlanCheck;
 
-// The bundled scenarios, in path order (corpus/scenarios and its folders).
-std::vector<std::string> bundled_scenarios(const std::string& corpus) {
+// The files with `extension` under corpus/`folder` (its sub-folders too when `recursive`), in
+// path order: the bundled scenarios and meshes.
+std::vector<std::string> corpus_files(const std::string& corpus, const char* folder, const char* extension, bool recursive) {
   std::vector<std::string> paths;
   std::error_code ec;
-  for (const auto& entry : fs::recursive_directory_iterator(fs::path(corpus) / "scenarios", ec)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".scn") paths.push_back(entry.path().string());
-  }
-  std::sort(paths.begin(), paths.end());
-  return paths;
-}
-
-std::vector<std::string> bundled_meshes(const std::string& corpus) {
-  std::vector<std::string> paths;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(fs::path(corpus) / "meshes", ec)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".msh") paths.push_back(entry.path().string());
+  auto take = [&](const fs::directory_entry& entry) {
+    if (entry.is_regular_file() && entry.path().extension() == extension) paths.push_back(entry.path().string());
+  };
+  if (recursive) {
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(corpus) / folder, ec)) take(entry);
+  } else {
+    for (const auto& entry : fs::directory_iterator(fs::path(corpus) / folder, ec)) take(entry);
   }
   std::sort(paths.begin(), paths.end());
   return paths;
@@ -225,8 +221,8 @@ int cmd_check_engine(Args args, std::ostream& out, std::ostream& err) {
   }
   const bool bundled = scenarios.empty() && meshes.empty();
   if (bundled) {
-    scenarios = bundled_scenarios(corpus_dir);
-    meshes = bundled_meshes(corpus_dir);
+    scenarios = corpus_files(corpus_dir, "scenarios", ".scn", true);
+    meshes = corpus_files(corpus_dir, "meshes", ".msh", false);
   }
   std::vector<EnginePlan> plans;
   std::vector<std::string> not_run;  // scenarios the engine interface cannot carry
