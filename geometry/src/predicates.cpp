@@ -17,7 +17,7 @@ void init_predicates_once() {
 
 }  // namespace
 
-int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+int detail::orientation_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   init_predicates_once();
   double pa[3] = {a.x, a.y, a.z};
   double pb[3] = {b.x, b.y, b.z};
