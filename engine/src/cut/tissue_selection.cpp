@@ -1,6 +1,7 @@
 #include "cut/tissue_selection.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "tetcut/detail/local_tables.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
@@ -34,9 +35,17 @@ bool TissueSelection::selectable(const TetMesh& mesh, TetId t) const {
   Vec3 centroid{};
   for (VertId x : v) centroid = centroid + 0.25 * mesh.position(x);
   if (distance_to_axis(*tool_, centroid) > tool_->radius) return false;
-  const double d_ref = params_.d_ref();
-  for (int e = 0; e < 6; ++e)
-    if (norm(mesh.position(v[kEdgeVerts[e][1]]) - mesh.position(v[kEdgeVerts[e][0]])) > d_ref) return false;
+  // |e| > D_ref by the squares, without a square root, where they decide it with a margin far
+  // above their rounding (1e-12 relative, against a few 2^-53): between the two the root does,
+  // so the answer is norm()'s to the bit.
+  const double d_ref = params_.d_ref(), d_ref2 = d_ref * d_ref;
+  const double longer = d_ref2 * (1.0 + 1e-12), shorter = d_ref2 * (1.0 - 1e-12);
+  for (int e = 0; e < 6; ++e) {
+    const Vec3 edge = mesh.position(v[kEdgeVerts[e][1]]) - mesh.position(v[kEdgeVerts[e][0]]);
+    const double length2 = dot(edge, edge);
+    if (length2 > longer) return false;
+    if (!(length2 < shorter) && std::sqrt(length2) > d_ref) return false;
+  }
   return true;
 }
 

@@ -58,6 +58,7 @@ void Improver::reserve(std::uint32_t tets) {
   reserve_touched(star_, 128);
   reserve_touched(neighbours_, 128);
   for (auto* v : {&made_, &created_}) reserve_touched(*v, 4096);
+  reserve_touched(made_shapes_, 4096);
   reserve_touched(bad_, 4096);
   reserve_touched(made_quality_, 4096);
   reserve_touched(ancestors_, 64);
@@ -66,20 +67,23 @@ void Improver::reserve(std::uint32_t tets) {
 
 std::pair<double, double> Improver::collect_made(TetMesh& mesh, const TetMesh::Savepoint& start) {
   made_.clear();
+  made_shapes_.clear();
   double worst = 1.0, cosine = -1.0;
   for (const TetMesh::TetBirth& b : mesh.tets_made_since(start))
     if (mesh.is_live(b.tet)) {
       made_.push_back(b.tet);
       // Measured directly: most cuts' made tets all meet F and theta here, and the pass never
-      // asks again (the memo would only cost them its look-ups).
+      // asks again (the memo would only cost them its look-ups). Kept beside made_ for judge(),
+      // which comes next when one is below, so that no made tet is measured twice.
       const TetShape s = shape_now(mesh, b.tet);
+      made_shapes_.push_back(s);
       worst = std::min(worst, s.ratio);
       cosine = std::max(cosine, s.max_cosine);
     }
   return {worst, cosine};
 }
 
-TetShape Improver::shape_of(const TetMesh& mesh, TetId t) {
+TetShape Improver::shape_of(const TetMesh& mesh, TetId t, const TetShape* measured) {
   const std::uint32_t birth = mesh.birth_index(t);
   MadeTet entry;
   if (birth != TetMesh::kNoBirth)
@@ -87,7 +91,7 @@ TetShape Improver::shape_of(const TetMesh& mesh, TetId t) {
       if (known->shape.ratio >= 0.0) return known->shape;
       entry = *known;
     }
-  entry.shape = shape_now(mesh, t);
+  entry.shape = measured ? *measured : shape_now(mesh, t);
   if (birth != TetMesh::kNoBirth) made_tets_.set(birth, entry);
   return entry.shape;
 }
@@ -130,11 +134,11 @@ Improver::Floors Improver::shape_at_start(TetMesh& mesh, TetId old) {
   return h;
 }
 
-bool Improver::below_floor(TetMesh& mesh, TetId t, Floors* floors) {
+bool Improver::below_floor(TetMesh& mesh, TetId t, Floors* floors, const TetShape* measured) {
   // The checker compares with its own formulas: aim a rounding above the ratio's floor. An angle
   // equal to its floor is not below it: a split child keeps its parent's dihedral angles at the
   // parent's edges exactly, to rounding, which the checker allows for (no_degradation.hpp).
-  const TetShape shape = shape_of(mesh, t);
+  const TetShape shape = shape_of(mesh, t, measured);
   auto below = [&](const Floors& f) { return shape.ratio < f.ratio * (1.0 + 1e-9) || shape.max_cosine > f.cosine + 1e-12; };
   const Floors global{floor_f_, cos_theta_};
   if (!below(global)) {
@@ -152,9 +156,11 @@ void Improver::judge(TetMesh& mesh, ImproveOutcome& out) {
   double lowest_cosine = cos_theta_;
   // The tets below their floors, worst quality() first: the first is the shortfall.
   made_quality_.clear();
-  for (TetId t : made_) {
+  // Every call follows a collect_made() with no operation between: its shapes are the mesh's.
+  for (std::size_t i = 0; i < made_.size(); ++i) {
+    const TetId t = made_[i];
     Floors f;
-    const bool below = below_floor(mesh, t, &f);
+    const bool below = below_floor(mesh, t, &f, &made_shapes_[i]);
     out.floor = std::min(out.floor, f.ratio);
     lowest_cosine = std::max(lowest_cosine, f.cosine);
     if (below) made_quality_.push_back({quality(mesh, t), t});

@@ -156,8 +156,9 @@ class Improver {
   // Tet `old`'s shape when the transaction began (live then), as Floors: its radius ratio and
   // largest dihedral cosine. Memoized: it never changes within a transaction.
   Floors shape_at_start(TetMesh& mesh, TetId old);
-  // Whether made tet t is below its floors (`floors`, when given, receives them).
-  bool below_floor(TetMesh& mesh, TetId t, Floors* floors = nullptr);
+  // Whether made tet t is below its floors (`floors`, when given, receives them). `measured`:
+  // its shape as the mesh has it now, when the caller has it (else it is looked up or measured).
+  bool below_floor(TetMesh& mesh, TetId t, Floors* floors = nullptr, const TetShape* measured = nullptr);
   // The run's F and theta, and what follows from them.
   void set_theta(double theta_deg, double floor_f);
   // Every made tet against its floors: `out`'s lowest floors, met and shortfall.
@@ -230,6 +231,7 @@ class Improver {
   TissueRemoval own_tissue_;
   PlanVeto veto_;                               // the run's, if any
   std::vector<TetId> made_, ancestors_, created_;
+  std::vector<TetShape> made_shapes_;  // made_'s shapes as collect_made() measured them
   std::vector<std::pair<double, TetId>> bad_;  // (quality, tet), worst first
   // The hosts' shapes (radius ratio, largest dihedral cosine), by host id: a host's shape at the
   // start never changes within a transaction.
@@ -252,7 +254,9 @@ class Improver {
   std::uint32_t old_vertex_plans_ = 0;  // smoothing plans of old vertices left in this pass
   // grows_bad_volume()'s scratch: the made tets outside the tool it weighs last.
   std::vector<TetId> outside_;
-  TetShape shape_of(const TetMesh& mesh, TetId t);
+  // Made tet t's shape: the memo's, else `measured` (the caller's, as the mesh has it now), else
+  // measured here; remembered.
+  TetShape shape_of(const TetMesh& mesh, TetId t, const TetShape* measured = nullptr);
   TetId host_of(TetMesh& mesh, TetId t);
 };
 
