@@ -343,6 +343,43 @@ def paired(inputs):
         ("figure", "head", "reference", "ratio", "95 % interval", "limit"), rows)
 
 
+# The cost goals a cut is held to beyond the gate's budgets (the gate keeps each figure from
+# getting worse; these say where it should get to): (what, the figure's reader, the goal, unit).
+COST_GOALS = (
+    ("instructions per cut, mean (callgrind)", lambda i: (i.median("instructions_per_cut") or {}).get("instructions_per_cut"),
+     80000, "", 0),
+    ("instructions per cut, p50 cut (callgrind)", lambda i: (i.median("instructions_per_cut") or {}).get("p50_cut"),
+     60000, "", 0),
+    ("gated sweep (bundled liver), cut p50", lambda i: (i.median("BM_CutSweep/0/iterations:1") or {}).get("p50_us"),
+     12, " us", 1),
+    ("gated sweep (bundled liver), cut p99", lambda i: (i.median("BM_CutSweep/0/iterations:1") or {}).get("p99_us"),
+     60, " us", 1),
+    ("same work on 64 copies against the liver, ids shuffled, p50 ratio",
+     lambda i: (i.median("BM_CutScalingSameWork/order:1/iterations:1") or {}).get("p50_ratio_1M_over_16k"), 1.25, "", 2),
+    ("peak memory of a cutting session, per tet", lambda i: (i.median("session_memory") or {}).get("bytes_per_tet"),
+     160, " B", 1),
+    ("8M-tet liver (refined three times), cut p50",
+     lambda i: (i.median("BM_CutSweep/3/iterations:1") or {}).get("p50_us"), 100, " us", 1),
+)
+
+
+def cost_goals(inputs):
+    if not inputs.bench:
+        return None
+    rows = []
+    for what, read, goal, unit, decimals in COST_GOALS:
+        value = read(inputs)
+        if value is None:
+            rows.append((what, "not measured", f"<= {fmt(goal, decimals)}{unit}", "-"))
+        else:
+            rows.append((what, f"{fmt(value, decimals)}{unit}", f"<= {fmt(goal, decimals)}{unit}",
+                         "met" if value <= goal else f"not met ({fmt(value / goal, 2)} x the goal)"))
+    return ["## Cost goals", "",
+            "Where a cut's cost should get to, each goal beside this run's figure (the gate's budgets only keep "
+            "the figures from getting worse). Where the instructions go, stage by stage: \"Instructions per "
+            "cut\" below; why: [performance.md](performance.md).", ""] + table(("figure", "this run", "goal", ""), rows)
+
+
 def session_memory(inputs):
     e = inputs.median("session_memory")
     if not e:
@@ -720,7 +757,7 @@ def haptic_stress(inputs):
             f"| torn or backward frames read | 0 | {h['torn'] + h['backwards']} |"]
 
 
-SECTIONS = [machine, budget_gate, cut_sweeps, swept_tool, paired, removal_requests, instructions, session_memory, paper_table1,
+SECTIONS = [machine, cost_goals, budget_gate, cut_sweeps, swept_tool, paired, removal_requests, instructions, session_memory, paper_table1,
             paper_table2,
             paper_table2_wide, strategies, quality, quality_peer, quality_sweeps, peers, engines, mechanics, haptic_stress, resection]
 
