@@ -318,7 +318,9 @@ TetMesh MeshAssembler::assemble() {
   using M = detail::MeshInternals;
   TetMesh mesh;
   const std::uint32_t nv = static_cast<std::uint32_t>(raw_.positions.size());
-  M::tet_verts(mesh) = tets_;
+  const auto tets = static_cast<std::uint32_t>(tets_.size());
+  // Moved, not copied: the build's peak is the session's (bench/session_memory.cpp).
+  M::tet_verts(mesh) = std::move(tets_);
   M::adjacency(mesh) = std::move(adj_);
   M::positions(mesh) = raw_.positions;
   auto& vert_tet = M::vertex_tet(mesh);
@@ -326,7 +328,7 @@ TetMesh MeshAssembler::assemble() {
   M::boundary_faces(mesh) = std::move(boundary_faces_);
   auto& free_next = M::free_vert_next(mesh);
   free_next.assign(nv, kNoVert);
-  M::live_tets(mesh) = static_cast<std::uint32_t>(tets_.size());
+  M::live_tets(mesh) = tets;
   for (std::uint32_t v = 0; v < nv; ++v) {
     if (offsets_[v] != offsets_[v + 1]) {
       vert_tet[v] = TetId{incidence_[offsets_[v]]};
