@@ -74,9 +74,7 @@ const char* to_string(SplitRefusal refusal) {
 
 void EdgeSplitter::reserve(std::uint32_t tets) {
   using detail::reserve_touched;
-  // Sized, not just reserved: a split reads it by tet id, and growing it there from empty would
-  // zero all of it (O(#T), 4 MB at a million tets) inside the first cut.
-  if (affected_slot_.size() < tets) affected_slot_.resize(tets, 0);
+  affected_slot_.reserve(tets);
   reserve_touched(edges_, kPlannedChildren / 4);
   reserve_touched(affected_, kPlannedChildren / 2);
   reserve_touched(shell_, 256);
@@ -103,12 +101,15 @@ bool EdgeSplitter::collect_shell(const TetMesh& mesh, const PlannedEdge& e) {
   if (!edge.valid()) return false;
   mesh.edge_shell(edge.tet, edge.edge, shell_);
   for (TetId t : shell_) {
-    std::uint32_t& slot = affected_slot_[t.value];
-    if (slot == 0) {
-      affected_.push_back({t, 0});
+    std::uint32_t slot;
+    if (const std::uint32_t* known = affected_slot_.find(t)) {
+      slot = *known;
+    } else {
       slot = static_cast<std::uint32_t>(affected_.size());
+      affected_.push_back({t, 0});
+      affected_slot_.set(t, slot);
     }
-    affected_[slot - 1].mask = static_cast<std::uint8_t>(affected_[slot - 1].mask | (1u << mesh.local_edge(t, VertId{e.lo}, VertId{e.hi})));
+    affected_[slot].mask = static_cast<std::uint8_t>(affected_[slot].mask | (1u << mesh.local_edge(t, VertId{e.lo}, VertId{e.hi})));
   }
   return true;
 }
@@ -132,7 +133,7 @@ SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, Spli
                            [](const PlannedEdge& x, const PlannedEdge& y) { return x.lo == y.lo && x.hi == y.hi; }),
                edges_.end());
 
-  if (affected_slot_.size() < mesh.tet_capacity()) affected_slot_.resize(mesh.tet_capacity(), 0);
+  affected_slot_.clear();
   affected_.clear();
   bool all_edges = true;
   for (const PlannedEdge& e : edges_)
@@ -150,7 +151,6 @@ SplitResult EdgeSplitter::split(TetMesh& mesh, std::span<const Edge> edges, Spli
     }
     if (result.ok()) apply(mesh, created, result);
   }
-  for (const AffectedTet& a : affected_) affected_slot_[a.tet.value] = 0;  // leave the scratch clean
   return result;
 }
 
@@ -236,7 +236,7 @@ void EdgeSplitter::choose_split_points(const TetMesh& mesh, SplitMethod method) 
   // Coordinate ascent: an edge's point changes the children of its shell only.
   auto shell_score = [&] {
     double worst = 1.0;
-    for (TetId u : shell_) worst = std::min(worst, children_score(mesh, affected_[affected_slot_[u.value] - 1], method));
+    for (TetId u : shell_) worst = std::min(worst, children_score(mesh, affected_[*affected_slot_.find(u)], method));
     return worst;
   };
   for (int pass = 0; pass < 2; ++pass)

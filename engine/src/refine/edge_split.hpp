@@ -20,6 +20,7 @@
 
 #include "refine/split_templates.hpp"  // FaceRule
 #include "tetcut/cut_strategies.hpp"  // SplitMethod
+#include "tetcut/detail/stamped_property.hpp"
 #include "tetcut/ids.hpp"
 #include "tetcut/mesh.hpp"
 
@@ -136,7 +137,7 @@ class EdgeSplitter {
   bool all_midpoints_ = true;  // every planned edge has t = 1/2
   std::vector<PlannedEdge> edges_;
   std::vector<AffectedTet> affected_;
-  std::vector<std::uint32_t> affected_slot_;  // per tet id: index into affected_ + 1, or 0
+  StampedMap<TetId, std::uint32_t> affected_slot_;  // an affected tet's index in affected_
   std::vector<TetId> shell_;
   std::vector<TetId> parents_;
   std::vector<std::array<std::uint8_t, 4>> labels_;      // one tet's children, local labels
