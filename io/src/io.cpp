@@ -61,10 +61,24 @@ constexpr const char* kKnownMeshExtensions = ".msh, .vtu, .vtk, .mesh, .node, .e
 std::optional<ParseError> read_file(const std::string& path, std::string& contents) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return ParseError{path, 0, std::string("cannot open file: ") + std::strerror(errno)};
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  // Sized by the file, read at once: a stream grown by doubling held up to twice the file, the
+  // largest part of a session's peak memory on a large mesh (bench/session_memory.cpp).
+  contents.clear();
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : -1;
+  in.clear();
+  if (size > 0 && in.seekg(0)) {
+    contents.resize(static_cast<std::size_t>(size));
+    in.read(contents.data(), size);
+    contents.resize(static_cast<std::size_t>(in.gcount()));
+    if (in.bad()) return ParseError{path, 0, "read error"};
+    in.clear();
+  }
+  // Whatever is there beyond the size: all of a pipe (no size to go by), what a file grew by.
+  std::ostringstream rest;
+  rest << in.rdbuf();
   if (in.bad()) return ParseError{path, 0, "read error"};
-  contents = std::move(buffer).str();
+  contents += std::move(rest).str();
   return std::nullopt;
 }
 

@@ -58,6 +58,7 @@ bool VtkArrayDecoder::block_prefix(const VtkDataArray& a, std::uint64_t n) {
 bool VtkArrayDecoder::value_bytes(const VtkDataArray& a) {
   values_.clear();
   decoded_.clear();
+  bytes_ = {};
   if (a.format == "binary") {
     if (!decode_base64(text_.substr(0, a.content_end), a.content_begin, static_cast<std::size_t>(-1), decoded_)) {
       return sink_.fail(a.content_line, "invalid base64 data in DataArray");
@@ -75,8 +76,8 @@ bool VtkArrayDecoder::value_bytes(const VtkDataArray& a) {
   }
   if (!(file_.compressor ? compressed_values(a) : uncompressed_values(a))) return false;
   const std::size_t size = vtk_type_size(a.type);
-  if (values_.size() % size != 0) {
-    return sink_.fail(a.line, "binary DataArray size " + std::to_string(values_.size()) + " is not a multiple of its " +
+  if (bytes_.size() % size != 0) {
+    return sink_.fail(a.line, "binary DataArray size " + std::to_string(bytes_.size()) + " is not a multiple of its " +
                                   std::string(a.type) + " values");
   }
   return true;
@@ -95,8 +96,9 @@ bool VtkArrayDecoder::uncompressed_values(const VtkDataArray& a) {
   if (n > available_ - hs || !block_prefix(a, hs + n)) {
     return sink_.failed() ? false : sink_.fail(a.line, "byte count " + std::to_string(n) + " exceeds file size");
   }
-  const auto* p = reinterpret_cast<const unsigned char*>(view_.data()) + hs;
-  values_.assign(p, p + n);
+  // Read where they are (the file's text or the base64 decoded block), not copied: a copy of the
+  // connectivity was a sixth of a session's peak memory (bench/session_memory.cpp).
+  bytes_ = std::span<const unsigned char>(reinterpret_cast<const unsigned char*>(view_.data()) + hs, static_cast<std::size_t>(n));
   return true;
 }
 
@@ -149,6 +151,7 @@ bool VtkArrayDecoder::compressed_values(const VtkDataArray& a) {
     }
     at += c;
   }
+  bytes_ = std::span<const unsigned char>(values_.data(), values_.size());
   return true;
 }
 
@@ -172,7 +175,7 @@ bool VtkArrayDecoder::decode(const VtkDataArray& a, std::uint64_t expected, std:
   } else {
     if (!value_bytes(a)) return false;
     const std::size_t size = vtk_type_size(a.type);
-    const std::size_t n = values_.size() / size;
+    const std::size_t n = bytes_.size() / size;
     if (expected != kAny && n != expected) {
       return sink_.fail(a.line, "expected " + std::to_string(expected) + " " + std::string(role) + " values, got " +
                                     std::to_string(n));
@@ -180,7 +183,7 @@ bool VtkArrayDecoder::decode(const VtkDataArray& a, std::uint64_t expected, std:
     out.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       T v{};
-      if (!from_bytes(i, values_.data() + i * size, v)) return false;
+      if (!from_bytes(i, bytes_.data() + i * size, v)) return false;
       out.push_back(v);
     }
   }

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -30,7 +31,7 @@ class VtkArrayDecoder {
   bool integers(const VtkDataArray& a, std::uint64_t expected, std::string_view role, std::vector<std::int64_t>& out);
 
  private:
-  // The array's values as bytes (after base64, header and decompression) in values_.
+  // The array's values as bytes (after base64, header and decompression) in bytes_.
   bool value_bytes(const VtkDataArray& a);
   // The first `n` bytes of the array's encoded block (header included) in view_; false if the
   // block holds fewer.
@@ -48,7 +49,9 @@ class VtkArrayDecoder {
   std::vector<unsigned char> decoded_;  // base64 decoded block
   std::string_view view_;               // the encoded block's bytes so far (into text_ or decoded_)
   std::uint64_t available_ = 0;         // how many bytes the block can hold at most
-  std::vector<unsigned char> values_;
+  std::vector<unsigned char> values_;  // decompressed values
+  // value_bytes()'s answer: into text_, decoded_ or values_, valid until the next call.
+  std::span<const unsigned char> bytes_;
 };
 
 }  // namespace tetcut::io_detail
