@@ -12,12 +12,11 @@
 namespace tetcut {
 namespace {
 
-// std::nextafter(x, +inf) and std::nextafter(x, 0) for a float x >= 0, as its bits: the same
-// values without a call into libm, twice per tet indexed.
+// std::nextafter(x, +inf) for a float x >= 0, as its bits: the same value without a call into
+// libm, once per tet indexed.
 float next_up(float x) {
   return x == std::numeric_limits<float>::infinity() ? x : std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) + 1);
 }
-float next_down(float x) { return x == 0.0f ? x : std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) - 1); }
 
 }  // namespace
 
@@ -109,21 +108,11 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   const Vec3 c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
   double r2 = 0.0;
   for (const Vec3& q : p) r2 = std::max(r2, dot(q - c, q - c));
-  // The centroid is a quarter of each height away from every face: a ball of radius the
-  // smallest of those (3V / (4 A_f) = |D| / (8 A_f), D = 6V) about it lies in the tet.
-  const double d6v = std::abs(dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0])));
-  double largest_face2 = 0.0;  // (2 A_f)^2
-  for (int f = 0; f < 4; ++f) {
-    const Vec3 n = cross(p[kFaceVerts[f][1]] - p[kFaceVerts[f][0]], p[kFaceVerts[f][2]] - p[kFaceVerts[f][0]]);
-    largest_face2 = std::max(largest_face2, dot(n, n));
-  }
-  const double inner = largest_face2 > 0.0 ? d6v / (4.0 * std::sqrt(largest_face2)) : 0.0;
   // Single precision: the centroid moves by at most `slack` when rounded; the outer radius grows
-  // and the inner one shrinks by that (and the radii are rounded outwards, inwards).
+  // by that (and is rounded outwards).
   const float fx = static_cast<float>(c.x), fy = static_cast<float>(c.y), fz = static_cast<float>(c.z);
   const double slack = 1e-6 * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z)) + 1e-30;
   const float outer = next_up(static_cast<float>(std::sqrt(r2) * (1.0 + 1e-6) + slack));
-  const float inner_f = inner > 2 * slack ? next_down(static_cast<float>(inner * (1.0 - 1e-6) - slack)) : 0.0f;
   const double radius = outer;
   const std::int32_t i = cell_of(c.x), j = cell_of(c.y), k = cell_of(c.z);
   if (occupied_lo_[0] > occupied_hi_[0]) {
@@ -153,7 +142,6 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   block.y[e] = fy;
   block.z[e] = fz;
   block.outer[e] = outer;
-  block.inner[e] = inner_f;
   block.tet[e] = t.value;
   where_[t.value] = {cell.tail, block.count};
   ++block.count;
@@ -176,7 +164,6 @@ void SpatialIndex::erase(TetId t) {
     hole.y[at.index] = tail.y[last];
     hole.z[at.index] = tail.z[last];
     hole.outer[at.index] = tail.outer[last];
-    hole.inner[at.index] = tail.inner[last];
     hole.tet[at.index] = tail.tet[last];
     where_[tail.tet[last]] = at;
   }
@@ -326,8 +313,7 @@ void SpatialIndex::collect(const TetMesh& mesh, const Slot& cell, const Tool& to
       if (d2 > outer * outer) continue;
       const TetId t{block.tet[e]};
       if (!mesh.is_live(t)) continue;
-      const double inner = tool.radius + block.inner[e];
-      if (d2 <= inner * inner || tet_meets_tool(mesh, t, tool)) out.push_back(t);
+      if (tet_meets_tool(mesh, t, tool)) out.push_back(t);
     }
   }
 }
