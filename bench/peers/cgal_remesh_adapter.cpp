@@ -20,12 +20,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <exception>
 #include <map>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,17 +36,7 @@ using tetcut::TetId;
 using tetcut::TetMesh;
 using tetcut::Vec3;
 using tetcut::VertId;
-using tetcut::adapters::centroid;
-using tetcut::adapters::squared_distance_to_segment;
-
-struct RemeshEngine {
-  TetMesh mesh;
-  std::vector<double> points;
-  std::vector<std::uint32_t> tets;
-  std::string error;
-};
-
-RemeshEngine* engine_of(tetcut_engine* engine) { return reinterpret_cast<RemeshEngine*>(engine); }
+using tetcut::adapters::TetMeshEngine;
 
 std::vector<std::array<std::uint32_t, 4>> corners_of(const TetMesh& mesh, const std::vector<TetId>& tets) {
   std::vector<std::array<std::uint32_t, 4>> out;
@@ -62,8 +47,6 @@ std::vector<std::array<std::uint32_t, 4>> corners_of(const TetMesh& mesh, const 
   }
   return out;
 }
-
-
 
 // The indices of `subset` in the sorted `part`.
 std::vector<std::uint32_t> places(const std::vector<TetId>& part, const std::vector<TetId>& subset) {
@@ -83,7 +66,7 @@ std::vector<TetId> part_around(const TetMesh& mesh, const std::vector<TetId>& te
   return *part;
 }
 
-int cut_tool(RemeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
+int cut_tool(TetMeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   const double radius = diameter / 2;
   const auto positions = e.mesh.positions();
   // 1. The tets meeting the ball (or capsule), conservatively.
@@ -121,10 +104,7 @@ int cut_tool(RemeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   std::vector<TetId> created;
   e.mesh.replace_tets(selection, added, &created);
   // 4. The new cells in the tool, removed and classified by CGAL.
-  std::vector<TetId> in_tool;
-  for (TetId t : created) {
-    if (squared_distance_to_segment(centroid(e.mesh, t), a, b) <= radius * radius) in_tool.push_back(t);
-  }
+  std::vector<TetId> in_tool = tetcut::adapters::centroids_in_tool(e.mesh, created, a, b, radius);
   if (in_tool.empty()) return TETCUT_ENGINE_OK;
   std::sort(in_tool.begin(), in_tool.end(), [](TetId x, TetId y) { return x.value < y.value; });
   const std::vector<TetId> around = part_around(e.mesh, in_tool, 1);
@@ -142,20 +122,8 @@ int cut_tool(RemeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   return TETCUT_ENGINE_OK;
 }
 
-tetcut_engine* create(const tetcut_engine_mesh* input, char* error, std::size_t error_size) {
-  std::optional<TetMesh> mesh = tetcut::adapters::build_from(input, error, error_size);
-  if (!mesh) return nullptr;
-  auto e = std::make_unique<RemeshEngine>();
-  e->mesh = std::move(*mesh);
-  return reinterpret_cast<tetcut_engine*>(e.release());
-}
-
-void destroy(tetcut_engine* engine) { delete engine_of(engine); }
-
-int remove_tet(tetcut_engine* engine, std::uint32_t tet) {
-  RemeshEngine& e = *engine_of(engine);
-  const TetId t{tet};
-  if (!e.mesh.is_live(t)) return TETCUT_ENGINE_REFUSED;
+// One tet, removed and classified by CGAL with a ring around it.
+int remove_one(TetMeshEngine& e, TetId t) {
   const std::vector<TetId> one{t};
   const std::vector<TetId> around = part_around(e.mesh, one, 1);
   tetcut::peers::CgalTetMesh classify;
@@ -167,31 +135,8 @@ int remove_tet(tetcut_engine* engine, std::uint32_t tet) {
   return TETCUT_ENGINE_OK;
 }
 
-int cut_capsule(tetcut_engine* engine, const double* a, const double* b, double diameter) {
-  RemeshEngine& e = *engine_of(engine);
-  try {
-    return cut_tool(e, {a[0], a[1], a[2]}, {b[0], b[1], b[2]}, diameter);
-  } catch (const std::exception& failure) {
-    e.error = failure.what();
-    return TETCUT_ENGINE_ERROR;
-  }
-}
-
-int cut_ball(tetcut_engine* engine, const double* centre, double diameter) {
-  return cut_capsule(engine, centre, centre, diameter);
-}
-
-int mesh(tetcut_engine* engine, tetcut_engine_mesh* out) {
-  RemeshEngine& e = *engine_of(engine);
-  tetcut::adapters::export_mesh(e.mesh, e.points, e.tets, out);
-  return TETCUT_ENGINE_OK;
-}
-
-const char* last_error(tetcut_engine* engine) { return engine_of(engine)->error.c_str(); }
-
-const tetcut_engine_api kApi = {TETCUT_ENGINE_ABI_VERSION, TETCUT_ENGINE_CAPSULE, "cgal-remesh",
-                                "CGAL tetrahedral_isotropic_remeshing of the tool's neighbourhood, then remove and classify",
-                                create, destroy, remove_tet, cut_ball, cut_capsule, mesh, nullptr, last_error};
+const tetcut_engine_api kApi = tetcut::adapters::TetMeshEntries<cut_tool, remove_one>::api(
+    "cgal-remesh", "CGAL tetrahedral_isotropic_remeshing of the tool's neighbourhood, then remove and classify");
 
 }  // namespace
 

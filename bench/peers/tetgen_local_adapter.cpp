@@ -21,11 +21,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <exception>
 #include <map>
 #include <optional>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,20 +36,8 @@ using tetcut::TetId;
 using tetcut::TetMesh;
 using tetcut::Vec3;
 using tetcut::VertId;
-using tetcut::adapters::centroid;
-using tetcut::adapters::squared_distance_to_segment;
+using tetcut::adapters::TetMeshEngine;
 using Face = std::array<std::uint32_t, 3>;
-
-struct TetgenEngine {
-  TetMesh mesh;
-  std::vector<double> points;
-  std::vector<std::uint32_t> tets;
-  std::string error;
-};
-
-TetgenEngine* engine_of(tetcut_engine* engine) { return reinterpret_cast<TetgenEngine*>(engine); }
-
-
 
 // The boundary faces of a set of tets (vertex ids sorted), each once, in order: every face
 // sorted, and those that occur once kept.
@@ -81,7 +66,7 @@ std::vector<Face> boundary_faces(const std::vector<TetMesh::TetVerts>& tets) {
   return out;
 }
 
-int cut_tool(TetgenEngine& e, const Vec3& a, const Vec3& b, double diameter) {
+int cut_tool(TetMeshEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   const double radius = diameter / 2;
   const auto positions = e.mesh.positions();
   const std::vector<TetId> selection = tetcut::adapters::tets_meeting_tool(e.mesh, a, b, radius);
@@ -162,58 +147,18 @@ int cut_tool(TetgenEngine& e, const Vec3& a, const Vec3& b, double diameter) {
   std::vector<TetId> created;
   e.mesh.replace_tets(part, added, &created);
   // Blind removal of the new tets in the tool.
-  std::vector<TetId> in_tool;
-  for (TetId t : created) {
-    if (squared_distance_to_segment(centroid(e.mesh, t), a, b) <= radius * radius) in_tool.push_back(t);
-  }
-  e.mesh.remove_tets(in_tool);
+  e.mesh.remove_tets(tetcut::adapters::centroids_in_tool(e.mesh, created, a, b, radius));
   return TETCUT_ENGINE_OK;
 }
 
-tetcut_engine* create(const tetcut_engine_mesh* input, char* error, std::size_t error_size) {
-  std::optional<TetMesh> mesh = tetcut::adapters::build_from(input, error, error_size);
-  if (!mesh) return nullptr;
-  auto e = std::make_unique<TetgenEngine>();
-  e->mesh = std::move(*mesh);
-  return reinterpret_cast<tetcut_engine*>(e.release());
-}
-
-void destroy(tetcut_engine* engine) { delete engine_of(engine); }
-
-int remove_tet(tetcut_engine* engine, std::uint32_t tet) {
-  TetgenEngine& e = *engine_of(engine);
-  const TetId t{tet};
-  if (!e.mesh.is_live(t)) return TETCUT_ENGINE_REFUSED;
-  const std::vector<TetId> one{t};
-  e.mesh.remove_tets(one);
+// Blind removal of one tet.
+int remove_one(TetMeshEngine& e, TetId t) {
+  e.mesh.remove_tets(std::vector<TetId>{t});
   return TETCUT_ENGINE_OK;
 }
 
-int cut_capsule(tetcut_engine* engine, const double* a, const double* b, double diameter) {
-  TetgenEngine& e = *engine_of(engine);
-  try {
-    return cut_tool(e, {a[0], a[1], a[2]}, {b[0], b[1], b[2]}, diameter);
-  } catch (const std::exception& failure) {
-    e.error = failure.what();
-    return TETCUT_ENGINE_ERROR;
-  }
-}
-
-int cut_ball(tetcut_engine* engine, const double* centre, double diameter) {
-  return cut_capsule(engine, centre, centre, diameter);
-}
-
-int mesh(tetcut_engine* engine, tetcut_engine_mesh* out) {
-  TetgenEngine& e = *engine_of(engine);
-  tetcut::adapters::export_mesh(e.mesh, e.points, e.tets, out);
-  return TETCUT_ENGINE_OK;
-}
-
-const char* last_error(tetcut_engine* engine) { return engine_of(engine)->error.c_str(); }
-
-const tetcut_engine_api kApi = {TETCUT_ENGINE_ABI_VERSION, TETCUT_ENGINE_CAPSULE, "tetgen-local",
-                                "TetGen 1.5 -rYQ on the tool's neighbourhood, then blind removal",
-                                create, destroy, remove_tet, cut_ball, cut_capsule, mesh, nullptr, last_error};
+const tetcut_engine_api kApi = tetcut::adapters::TetMeshEntries<cut_tool, remove_one>::api(
+    "tetgen-local", "TetGen 1.5 -rYQ on the tool's neighbourhood, then blind removal");
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 // What the adapters that keep their mesh in a tetcut::TetMesh share (tetcut's own, and the
 // remeshing peers', which use it for adjacency and rings between cuts): building it from
-// engine.h's arrays, giving it back as arrays with its tombstones, and the geometry of the tool.
+// engine.h's arrays, giving it back as arrays with its tombstones, the geometry of the tool, and
+// for the peers, whose whole state is the mesh, every table entry but their cut and removal.
 // Header-only: each adapter is a module of its own.
 #pragma once
 
@@ -11,7 +12,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "tetcut/mesh.hpp"
@@ -88,5 +92,66 @@ inline std::vector<TetId> tets_meeting_tool(const TetMesh& mesh, const Vec3& a, 
   }
   return out;
 }
+
+// The tets among `tets` whose centroid lies within `radius` of the segment a-b: what a peer
+// removes of the tets its remeshing made.
+inline std::vector<TetId> centroids_in_tool(const TetMesh& mesh, std::span<const TetId> tets, const Vec3& a, const Vec3& b,
+                                            double radius) {
+  std::vector<TetId> out;
+  for (TetId t : tets)
+    if (squared_distance_to_segment(centroid(mesh, t), a, b) <= radius * radius) out.push_back(t);
+  return out;
+}
+
+// The whole state of an adapter that keeps its mesh in a TetMesh and has no change log.
+struct TetMeshEngine {
+  TetMesh mesh;
+  std::vector<double> points;       // mesh()'s arrays, valid until the next call
+  std::vector<std::uint32_t> tets;
+  std::string error;                // last_error()
+};
+
+// engine.h's table for such an adapter, named `name` (version `version`): it cuts with
+// `Cut(engine, a, b, diameter)` (a ball is the capsule with a == b; an exception is
+// TETCUT_ENGINE_ERROR with its message, the mesh as it was) and removes a live tet with
+// `Remove(engine, tet)` (a dead one is refused here).
+template <int (*Cut)(TetMeshEngine&, const Vec3&, const Vec3&, double), int (*Remove)(TetMeshEngine&, TetId)>
+struct TetMeshEntries {
+  static TetMeshEngine& of(tetcut_engine* engine) { return *reinterpret_cast<TetMeshEngine*>(engine); }
+  static tetcut_engine* create(const tetcut_engine_mesh* input, char* error, std::size_t error_size) {
+    std::optional<TetMesh> mesh = build_from(input, error, error_size);
+    if (!mesh) return nullptr;
+    auto e = std::make_unique<TetMeshEngine>();
+    e->mesh = std::move(*mesh);
+    return reinterpret_cast<tetcut_engine*>(e.release());
+  }
+  static void destroy(tetcut_engine* engine) { delete &of(engine); }
+  static int remove_tet(tetcut_engine* engine, std::uint32_t tet) {
+    TetMeshEngine& e = of(engine);
+    return e.mesh.is_live(TetId{tet}) ? Remove(e, TetId{tet}) : TETCUT_ENGINE_REFUSED;
+  }
+  static int cut_capsule(tetcut_engine* engine, const double* a, const double* b, double diameter) {
+    TetMeshEngine& e = of(engine);
+    try {
+      return Cut(e, {a[0], a[1], a[2]}, {b[0], b[1], b[2]}, diameter);
+    } catch (const std::exception& failure) {
+      e.error = failure.what();
+      return TETCUT_ENGINE_ERROR;
+    }
+  }
+  static int cut_ball(tetcut_engine* engine, const double* centre, double diameter) {
+    return cut_capsule(engine, centre, centre, diameter);
+  }
+  static int mesh(tetcut_engine* engine, tetcut_engine_mesh* out) {
+    TetMeshEngine& e = of(engine);
+    export_mesh(e.mesh, e.points, e.tets, out);
+    return TETCUT_ENGINE_OK;
+  }
+  static const char* last_error(tetcut_engine* engine) { return of(engine).error.c_str(); }
+  static constexpr tetcut_engine_api api(const char* name, const char* version) {
+    return {TETCUT_ENGINE_ABI_VERSION, TETCUT_ENGINE_CAPSULE, name,       version, create, destroy, remove_tet,
+            cut_ball,                  cut_capsule,           mesh,       nullptr, last_error};
+  }
+};
 
 }  // namespace tetcut::adapters
