@@ -39,8 +39,9 @@ inline const TetMesh& corpus_mesh(const std::string& name) {
 
 // How the ids of the 64 copies below are ordered (mesh_orders.hpp): copy by copy, as they were
 // appended (copy 0 keeps the lone liver's layout); shuffled with a fixed seed (copy 0's tets
-// scattered through the whole mesh, as in a large mesh assembled or edited over time); or sorted
-// along a space-filling curve.
+// scattered through the whole mesh, as in a large mesh assembled or edited over time); or shuffled
+// and then compacted (TetMesh::compact(): the ids along a space-filling curve), as a user mends
+// the scatter.
 enum class IdOrder { kCopies, kShuffled, kCurve };
 
 // 64 disjoint copies of the bundled liver side by side (~1M tets), copy 0 the original, as raw
@@ -66,11 +67,12 @@ inline const TetMesh& replicated_corpus_liver(IdOrder order = IdOrder::kCopies) 
   auto it = cache.find(order);
   if (it != cache.end()) return it->second;
   RawMesh raw = replicated_corpus_liver_raw();
-  if (order == IdOrder::kShuffled) raw = shuffled(raw);
-  if (order == IdOrder::kCurve) raw = curve_sorted(raw);
+  if (order != IdOrder::kCopies) raw = shuffled(raw);
   // Copies of a valid liver are manifold by construction: the shell checks would cost a second
   // (several under valgrind, bench/instructions_gate.sh --cache) and find nothing.
-  return cache.emplace(order, std::move(*build_mesh(raw, {.require_manifold = false}).mesh)).first->second;
+  TetMesh& mesh = cache.emplace(order, std::move(*build_mesh(raw, {.require_manifold = false}).mesh)).first->second;
+  if (order == IdOrder::kCurve) mesh.compact();
+  return mesh;
 }
 
 }  // namespace tetcut::bench

@@ -71,8 +71,9 @@ class Mesh:
         """#V (a channel set from #V values) or #V by width, rows as `points` (a copy)."""
     def set_vertex_attribute(self, name: str, values: npt.ArrayLike) -> None: ...
     def write(self, path: str, *, binary: bool = False, compression: str = "none") -> None: ...
-    def compact(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]:
-        """(tet_old_to_new, vertex_old_to_new), -1 for a removed id."""
+    def compact(self, order: str = "curve") -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]:
+        """(tet_old_to_new, vertex_old_to_new), -1 for a removed id; new ids along a space-filling
+        curve ('curve') or in their old relative order ('kept')."""
     def to_meshio(self) -> Any:
         """A meshio.Mesh: points, one 'tetra' block, attributes as point_data, labels as cell_data 'label'."""
     def copy(self) -> Mesh:

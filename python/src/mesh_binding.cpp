@@ -568,11 +568,17 @@ void bind_mesh_files_and_copies(MeshClass& mesh) {
 
   mesh.def(
       "compact",
-      [](const MeshPtr& held) {
+      [](const MeshPtr& held, const std::string& order) {
+        IdOrder id_order = IdOrder::kAlongCurve;
+        if (order == "kept") {
+          id_order = IdOrder::kKept;
+        } else if (order != "curve") {
+          throw py::value_error("order must be 'curve' or 'kept', not '" + order + "'");
+        }
         MeshHandle& h = *held;
         MeshUse use(h);
         require_no_slot_views(h);
-        const Renumbering r = h.mesh.compact();
+        const Renumbering r = h.mesh.compact(id_order);
         h.labels.renumber(r);
         h.published.publish_all(h.mesh, h.labels);
         ++h.version;
@@ -584,11 +590,14 @@ void bind_mesh_files_and_copies(MeshClass& mesh) {
           verts[i] = r.vert_old_to_new[i].valid() ? std::int64_t{r.vert_old_to_new[i].value} : std::int64_t{-1};
         return py::make_tuple(ids_array(tets), ids_array(verts));
       },
-      signature_doc("compact", "self, /",
+      signature_doc("compact", "self, /, order='curve'",
                     "Renumbers tets and vertices densely; returns (tet_old_to_new, vertex_old_to_new), int64 arrays "
                     "indexed by old id, -1 for a removed id (so old_to_new[old_to_new >= 0] are the kept ones). "
-                    "Cutters on the mesh re-index before their next cut.")
-          .c_str());
+                    "order='curve' (the default) numbers them along a space-filling curve, so that tets near each "
+                    "other in space are near each other in memory; order='kept' keeps their relative order. "
+                    "ValueError for another order. Cutters on the mesh re-index before their next cut.")
+          .c_str(),
+      py::arg("order") = "curve");
 
   mesh.def("to_meshio", &to_meshio,
            signature_doc("to_meshio", "self, /",
@@ -603,7 +612,7 @@ void bind_mesh_files_and_copies(MeshClass& mesh) {
   mesh.def("__copy__", &copy_of, signature_doc("__copy__", "self, /", "mesh.copy().").c_str());
   mesh.def("__deepcopy__", [](const MeshPtr& held, py::handle) { return copy_of(held); }, py::arg("memo"),
            signature_doc("__deepcopy__", "self, /, memo", "mesh.copy(): a Mesh shares nothing with another.").c_str());
-  // Pickled as the live mesh, rows as `points` and `tets` (ids renumbered densely, as compact()
+  // Pickled as the live mesh, rows as `points` and `tets` (ids renumbered densely, as compact(order="kept")
   // would), with its labels and attributes; rebuilt and validated like Mesh() when unpickled.
   mesh.def(py::pickle(
       [](py::object self) {
@@ -703,7 +712,7 @@ void bind_mesh(py::module_& m) {
 Mesh(points, tets, labels=None, *, drop_unused_points=False); tetcut.read(path) and
 tetcut.from_meshio(m) make one too. Index arrays are int64 everywhere but in the zero-copy slot
 views (slot_tets: uint32, 0xFFFFFFFF for a removed tet). copy.copy, copy.deepcopy, mesh.copy()
-and pickle work (a pickled mesh comes back with its ids renumbered densely, as compact() would).
+and pickle work (a pickled mesh comes back with its ids renumbered densely, as compact(order="kept") would).
 repr: "<tetcut.Mesh V vertices, T tets>".)doc");
   mesh.def(py::init(&from_arrays), py::arg("points"), py::arg("tets"), py::arg("labels") = py::none(), py::kw_only(),
            py::arg("drop_unused_points") = false,

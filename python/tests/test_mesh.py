@@ -119,17 +119,58 @@ def test_slot_views_lock_the_mesh_until_deleted(box):
     np.testing.assert_array_equal(np.flatnonzero(box.live_vertex_mask), box.vertex_ids)
 
 
+def morton_keys(points, lo, extent):
+    """The Morton key of each point, 21 bits a coordinate (x lowest), as the engine's compact()
+    sorts by: computed here bit by bit, independently of the engine's code."""
+    cells = np.clip((points - lo) / extent * 2097151.0, 0, 2097151.0).astype(np.uint64)
+    keys = np.zeros(len(points), dtype=np.uint64)
+    for bit in range(21):
+        for axis in range(3):
+            keys |= ((cells[:, axis] >> np.uint64(bit)) & np.uint64(1)) << np.uint64(3 * bit + axis)
+    return keys
+
+
 def test_compact_renumbers_and_cutters_follow(box):
     cutter = tetcut.Cutter(box, tool_diameter=1.5)
     cutter.cut((0, 0, 0))
     before = box.hash()
     old_ids = box.tet_ids
-    tet_map, vert_map = box.compact()
+    tet_map, vert_map = box.compact(order="kept")
     assert box.hash() == before
-    np.testing.assert_array_equal(tet_map[old_ids], np.arange(box.num_tets))
+    np.testing.assert_array_equal(tet_map[old_ids], np.arange(box.num_tets))  # the relative order kept
     np.testing.assert_array_equal(box.tet_ids, np.arange(box.num_tets))
     assert (tet_map == -1).sum() == len(tet_map) - box.num_tets
     assert cutter.cut((4, 4, 4)).ok
+    assert tetcut.check(box) == []
+    with pytest.raises(ValueError, match="order must be 'curve' or 'kept'"):
+        box.compact(order="hilbert")
+
+
+def test_compact_numbers_ids_along_the_curve_by_default(box):
+    cutter = tetcut.Cutter(box, tool_diameter=1.5)
+    cutter.cut((2, 2, 4))
+    before = box.hash()
+    old_tet_ids, old_tets = box.tet_ids, box.tets
+    old_vertex_ids, old_points = box.vertex_ids, box.points
+    tet_map, vert_map = box.compact()
+    assert box.hash() == before
+    # Each tet and vertex is the one it was, under its new id.
+    np.testing.assert_array_equal(box.points[vert_map[old_vertex_ids]], old_points)
+    np.testing.assert_array_equal(box.tets[tet_map[old_tet_ids]], vert_map[old_tets])
+    # The new ids run along the curve of the live vertices' box; equal keys keep the old order.
+    points = box.points
+    lo = points.min(axis=0)
+    extent = (points.max(axis=0) - lo).max()
+    centroids = 0.25 * (points[box.tets[:, 0]] + points[box.tets[:, 1]] + points[box.tets[:, 2]] + points[box.tets[:, 3]])
+    for keys, old_to_new, old_ids in [(morton_keys(points, lo, extent), vert_map, old_vertex_ids),
+                                      (morton_keys(centroids, lo, extent), tet_map, old_tet_ids)]:
+        assert (keys[1:] >= keys[:-1]).all() and len(np.unique(keys)) > len(keys) // 2
+        new_to_old = np.empty(len(keys), dtype=np.int64)
+        new_to_old[old_to_new[old_ids]] = old_ids
+        ties = keys[1:] == keys[:-1]
+        assert (new_to_old[1:][ties] > new_to_old[:-1][ties]).all()
+    assert not np.array_equal(tet_map[old_tet_ids], np.arange(box.num_tets))  # not the old order here
+    assert cutter.cut((0, 0, 0)).ok
     assert tetcut.check(box) == []
 
 
@@ -236,7 +277,7 @@ def test_a_pickled_mesh_comes_back_compacted_with_labels_and_attributes():
     np.testing.assert_array_equal(again.points, mesh.points)
     np.testing.assert_array_equal(again.tets, mesh.tets)
     np.testing.assert_array_equal(again.labels, mesh.labels)
-    np.testing.assert_array_equal(again.tet_ids, np.arange(mesh.num_tets))  # dense ids, as compact() gives
+    np.testing.assert_array_equal(again.tet_ids, np.arange(mesh.num_tets))  # dense ids, as compact(order="kept") gives
     for name in ["scalar", "column", "uv"]:
         np.testing.assert_array_equal(again.vertex_attribute(name), mesh.vertex_attribute(name))
     assert tetcut.Cutter(again, tool_diameter=1.5).cut((2, 2, 3)).ok

@@ -45,7 +45,7 @@ const std::vector<CommandCase>& cases() {
        {"BOX", "--random", "all", "--seed", "1e3", "-o", "OUT"},
        "--seed"},
       {"cut",
-       {"MESH", "--diameter", "--from", "--to", "--step", "--swept", "--strategy", "--split", "--refinement", "--dref-factor", "--p",
+       {"MESH", "--diameter", "--from", "--to", "--step", "--swept", "--ids-along-curve", "--strategy", "--split", "--refinement", "--dref-factor", "--p",
         "--depth", "--debris-volume", "--check", "--out", "--report", "--frames"},
        {"BOX", "--diameter", "1e3x", "--from", "0,0,0", "--to", "1,1,1", "--step", "0.5"},
        "--diameter"},
@@ -157,6 +157,34 @@ TEST_F(Cli, CutIsTheScenarioSweepThatRunRuns) {
   EXPECT_EQ(cut_report->at("summary").at("cuts").get<int>(), 5);
   EXPECT_GT(cut_report->at("summary").at("tets_removed").get<int>(), 0);
   EXPECT_EQ(read_text(path("cut.msh")), read_text(path("run.msh")));
+}
+
+// `tetcut cut --ids-along-curve` is the scenario's `compact` after `mesh`: the same mesh, file for
+// file, and a valid one; the file's order otherwise, which a shuffled box shows apart.
+TEST_F(Cli, CutIdsAlongCurveIsTheScenarioCompactAfterTheMesh) {
+  write_box("box.msh", 4, 4, 4);
+  const auto cut = [&](const std::string& name, bool along_curve) {
+    std::vector<std::string> args = {"cut", path("box.msh"), "--diameter", "0.3", "--from", "0.1,0.5,0.5", "--to",
+                                     "0.9,0.5,0.5", "--step", "0.2", "--out", path(name + ".msh")};
+    if (along_curve) args.push_back("--ids-along-curve");
+    const ProcessResult r = tetcut(args);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;  // every cut checked locally
+    return r;
+  };
+  cut("file-order", false);
+  cut("along-curve", true);
+  write("curve.scn", "mesh box.msh\ncompact\ndiameter 0.3\nsweep 0.1,0.5,0.5 0.9,0.5,0.5 0.2\n");
+  ASSERT_EQ(tetcut({"run", path("curve.scn"), "--out", path("run.msh")}).exit_code, 0);
+  EXPECT_EQ(read_text(path("run.msh")), read_text(path("along-curve.msh")));
+  write("kept.scn", "mesh box.msh\ncompact kept\ndiameter 0.3\nsweep 0.1,0.5,0.5 0.9,0.5,0.5 0.2\n");
+  ASSERT_EQ(tetcut({"run", path("kept.scn"), "--out", path("kept.msh")}).exit_code, 0);
+  EXPECT_EQ(read_text(path("kept.msh")), read_text(path("file-order.msh")));  // a fresh box has no gaps
+  EXPECT_NE(read_text(path("along-curve.msh")), read_text(path("file-order.msh")));  // the ids differ
+  EXPECT_EQ(tetcut({"check", path("along-curve.msh")}).exit_code, 0);
+  write("bad.scn", "mesh box.msh\ncompact sideways\n");
+  const ProcessResult bad = tetcut({"run", path("bad.scn")});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("bad.scn:2: expected: compact [kept]"), std::string::npos) << bad.err;
 }
 
 // `tetcut cut --swept` joins the cut points by capsules: one cut fewer, each from one point to the

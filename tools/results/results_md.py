@@ -208,7 +208,7 @@ def cut_sweeps(inputs):
                      fmt(e.get("first_us")), fmt(e.get("tets_removed_per_cut")), fmt(e.get("tets_created_per_cut")),
                      fmt(e.get("allocations"), 0), fmt(e.get("unresolved"), 0)))
     same_work = {order: inputs.median(f"BM_CutScalingSameWork/order:{i}/iterations:1")
-                 for i, order in enumerate(("copies in order", "ids shuffled", "ids along a space-filling curve"))}
+                 for i, order in enumerate(("copies in order", "ids shuffled", "ids shuffled, then compact()"))}
     lines = ["## Per-cut latency", "",
              "Cautery sweeps with every cut timed (`bench/cut_bench.cpp`: the gated sweep through the bundled liver "
              "and the same paths through the refined livers; `bench/stages_bench.cpp`: a sweep along each bundled "
@@ -223,8 +223,8 @@ def cut_sweeps(inputs):
         lines += ["", f"The same work on 64 copies of the liver ({fmt(tets, 0)} tets) against the lone liver, the sweep on "
                       "copy 0, both in one process (`BM_CutScalingSameWork`): with the copies' ids in order copy 0 keeps "
                       "the lone liver's memory layout; shuffled (a fixed seed) its tets lie scattered through the whole "
-                      "mesh's memory, as a large mesh's do; sorted along a Morton curve they are near their neighbours "
-                      "again. Per-cut p50 in microseconds.", ""]
+                      "mesh's memory, as a large mesh's do; compacted (`TetMesh::compact()`: the ids along a Morton "
+                      "curve) they are near their neighbours again. Per-cut p50 in microseconds.", ""]
         lines += table(("ids of the 64 copies", "p50, liver", "p50, 64 copies", "p50 ratio", "p99 ratio"), rows)
     return lines
 

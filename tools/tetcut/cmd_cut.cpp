@@ -27,7 +27,7 @@ struct CutArgs {
   std::optional<std::string> mesh, frames;
   std::optional<double> diameter, step, dref_factor, p, debris_volume;
   opt::Improvement improvement;
-  bool swept = false;
+  bool swept = false, ids_along_curve = false;
   std::optional<Vec3> from, to;
   std::optional<std::uint64_t> depth, max_tets_created;
   std::optional<RemovalStrategy> strategy;
@@ -50,6 +50,10 @@ void add_options(CLI::App& app, CutArgs& a) {
             "join the cut points by capsules: one cut from each point to the next by every point within the "
             "tool's radius of that segment, so no tissue stays between two points whatever the step (a sweep of "
             "one point is one ball)");
+  opt::flag(app, "--ids-along-curve", a.ids_along_curve,
+            "number the mesh's tets and vertices along a space-filling curve before the first cut (the scenario "
+            "line `compact` after `mesh`), so that tets near each other in space are near each other in memory; "
+            "without it the ids are the file's order");
   opt::strategy(app, "--strategy", a.strategy, "removal strategy (default combined)");
   opt::order(app, "--order", a.order,
              "which selected tet a cut requests next (default direct-first; docs/paper.md: the paper's three "
@@ -112,7 +116,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
   CutArgs a;
   CommandParser parser(
       "cut",
-      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--swept] [--strategy S] [--order O] "
+      "tetcut cut MESH --diameter D --from X,Y,Z --to X,Y,Z --step S [--swept] [--ids-along-curve] [--strategy S] [--order O] "
       "[--neighbour-set smallest|first] [--split M] [--max-tets-created N] "
       "[--refinement auto|paper|graded] [--no-improve] [--quality-floor F] [--min-dihedral DEG] [--debris-volume V] "
       "[--keep-label L ...] "
@@ -142,6 +146,7 @@ int cmd_cut(Args args, std::ostream& out, std::ostream& err) {
 
   scenario::Scenario sweep{"tetcut cut", ".", {}};
   sweep.ops.push_back({.kind = scenario::OpKind::kMesh, .line = 1, .text = *a.mesh});
+  if (a.ids_along_curve) sweep.ops.push_back({.kind = scenario::OpKind::kCompact, .line = 1});
   sweep.ops.push_back(
       {.kind = scenario::OpKind::kSweep, .line = 2, .a = *a.from, .b = *a.to, .step = *a.step, .swept = a.swept});
   TetMesh mesh;

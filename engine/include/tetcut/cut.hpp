@@ -252,12 +252,12 @@ class Cutter {
   // and marks cleared, and prepare() run, all in the memory the Cutter already has (no
   // reallocation unless the new mesh is larger). O(#T).
   void reset();
-  // Compacts the mesh (TetMesh::compact(), ids renumbered densely) and resets this Cutter, so
+  // Compacts the mesh (TetMesh::compact(order), ids renumbered densely) and resets this Cutter, so
   // that its index never holds stale ids. Returns the renumbering. The way to compact a mesh a
   // Cutter holds: after TetMesh::compact() called directly, or an assignment to the mesh, the
   // mesh's id_epoch() has moved on and cut(), remove() refuse (ok false, the mesh untouched)
   // and tet_containing() finds nothing until reset().
-  Renumbering compact();
+  Renumbering compact(IdOrder order = IdOrder::kAlongCurve);
   // False when the mesh was compacted or assigned since this Cutter indexed it (see compact()).
   [[nodiscard]] bool indexes_current_mesh() const;
 

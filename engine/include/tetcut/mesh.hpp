@@ -35,6 +35,15 @@
 
 namespace tetcut {
 
+// The order of the ids compact() gives.
+enum class IdOrder : std::uint8_t {
+  // Sorted along the Morton curve of the live vertices' box (space_filling_curve.hpp): tets by
+  // their centroid, vertices by their position; equal keys keep their relative order.
+  kAlongCurve,
+  // The relative order they had.
+  kKept,
+};
+
 // Where each old id went in compact(): kNoTet / kNoVert for tombstones.
 struct Renumbering {
   std::vector<TetId> tet_old_to_new;
@@ -191,10 +200,12 @@ class TetMesh {
   // allocation per cut. The memory is touched too, so that no operation pays its page faults.
   void reserve(std::uint32_t tets, std::uint32_t vertices);
 
-  // Renumbers live tets and vertices densely, keeping their relative order; attributes follow.
-  // Not allowed inside a transaction. A Cutter holding this mesh must do it (Cutter::compact()):
-  // its index would hold the old ids, so it refuses to cut a mesh compacted behind its back.
-  Renumbering compact();
+  // Renumbers live tets and vertices densely; attributes follow. By default the new ids run along
+  // a space-filling curve (IdOrder): tets near each other in space get ids near each other, and
+  // so do their data, whatever order the edits left. O(#T log #T). Not allowed inside a
+  // transaction. A Cutter holding this mesh must do it (Cutter::compact()): its index would hold
+  // the old ids, so it refuses to cut a mesh compacted behind its back.
+  Renumbering compact(IdOrder order = IdOrder::kAlongCurve);
   // Moves on at compact() and at every assignment to this object, and differs between mesh
   // objects (see IdEpoch below): a Cutter compares it with the value it indexed.
   [[nodiscard]] std::uint64_t id_epoch() const { return id_epoch_.value(); }

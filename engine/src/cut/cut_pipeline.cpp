@@ -161,8 +161,8 @@ void Cutter::Pipeline::reset() {
   prepare();
 }
 
-Renumbering Cutter::Pipeline::compact() {
-  Renumbering map = mesh_.compact();
+Renumbering Cutter::Pipeline::compact(IdOrder order) {
+  Renumbering map = mesh_.compact(order);
   detail::UncuttableTets uncuttable = std::move(uncuttable_);
   reset();
   empty_history("compact()");

@@ -46,9 +46,9 @@ void Cutter::reset() {
   const MeshWriteScope writing(pipeline_->mesh(), "Cutter::reset()");
   pipeline_->reset();
 }
-Renumbering Cutter::compact() {
+Renumbering Cutter::compact(IdOrder order) {
   const MeshWriteScope writing(pipeline_->mesh(), "Cutter::compact()");
-  return pipeline_->compact();
+  return pipeline_->compact(order);
 }
 std::optional<std::string> Cutter::set_uncuttable(std::span<const TetId> tets) {
   const MeshWriteScope writing(pipeline_->mesh(), "Cutter::set_uncuttable()");

@@ -4,6 +4,7 @@
 
 #include "core/random.hpp"
 #include "test_meshes.hpp"
+#include "tetcut/bounding_box.hpp"
 #include "tetcut/canonical_hash.hpp"
 #include "tetcut/detail/local_tables.hpp"
 
@@ -180,15 +181,103 @@ TEST(ReplaceTets, CompactKeepsTheMeshAndReportsTheRenumbering) {
   std::vector<TetMesh::TetVerts> before(mesh.tet_capacity());
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
     if (mesh.is_live(TetId{t})) before[t] = mesh.tet(TetId{t});
-  const Renumbering map = mesh.compact();
-  EXPECT_EQ(mesh.tet_capacity(), tets);
-  EXPECT_EQ(canonical_hash(mesh), hash);
-  for (TetId v : victims) EXPECT_FALSE(map.tet_old_to_new[v.value].valid());
-  for (std::uint32_t t = 0; t < map.tet_old_to_new.size(); ++t) {
-    const TetId now = map.tet_old_to_new[t];
-    if (!now.valid()) continue;
-    for (int i = 0; i < 4; ++i) EXPECT_EQ(mesh.vertex(now, i), map.vert_old_to_new[before[t][i].value]);
+  std::vector<Vec3> positions_before(mesh.vertex_capacity());
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
+    if (mesh.is_live(VertId{v})) positions_before[v] = mesh.position(VertId{v});
+  for (const IdOrder order : {IdOrder::kKept, IdOrder::kAlongCurve}) {
+    SCOPED_TRACE(order == IdOrder::kKept ? "kept" : "along the curve");
+    TetMesh compacted = mesh;
+    const Renumbering map = compacted.compact(order);
+    EXPECT_EQ(compacted.tet_capacity(), tets);
+    EXPECT_EQ(canonical_hash(compacted), hash);
+    for (TetId v : victims) EXPECT_FALSE(map.tet_old_to_new[v.value].valid());
+    for (std::uint32_t t = 0; t < map.tet_old_to_new.size(); ++t) {
+      const TetId now = map.tet_old_to_new[t];
+      if (!now.valid()) continue;
+      for (int i = 0; i < 4; ++i) EXPECT_EQ(compacted.vertex(now, i), map.vert_old_to_new[before[t][i].value]);
+    }
+    for (std::uint32_t v = 0; v < map.vert_old_to_new.size(); ++v)
+      if (map.vert_old_to_new[v].valid()) {
+        EXPECT_EQ(compacted.position(map.vert_old_to_new[v]), positions_before[v]);
+      }
+    expect_matches_fresh_build(compacted);
   }
+}
+
+// The key of a point by the definition (bit i of a coordinate's cell at bit 3i + axis), written
+// here without the engine's bit tricks.
+std::uint64_t morton_key_by_definition(const Vec3& p, const Vec3& lo, double extent) {
+  std::uint64_t key = 0;
+  const double c[3] = {p.x - lo.x, p.y - lo.y, p.z - lo.z};
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto cell = static_cast<std::uint64_t>(std::clamp(c[axis] / extent * 2097151.0, 0.0, 2097151.0));
+    for (int bit = 0; bit < 21; ++bit) key |= ((cell >> bit) & 1u) << (3 * bit + axis);
+  }
+  return key;
+}
+
+// Kept: the live ids in their old order. Along the curve: keys never decrease with the new id,
+// and equal keys keep the old order, for tets (by centroid) and vertices alike.
+TEST(ReplaceTets, CompactOrdersIdsAsAsked) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(5, 4, 3));
+  SplitMix64 rng(11);
+  for (int i = 0; i < 12; ++i) {
+    const TetId victim = pick_safe_tet(mesh, rng);
+    ASSERT_TRUE(victim.valid());
+    mesh.remove_tets(std::span<const TetId>(&victim, 1));
+  }
+  std::vector<TetId> created;
+  for (int i = 0; i < 20; ++i) {  // splits put new tets at the end of the ids, far from their place
+    const TetId t = pick_safe_tet(mesh, rng);
+    created.clear();
+    split_edge(mesh, t, i % 6, created);
+  }
+  {
+    TetMesh kept = mesh;
+    const Renumbering map = kept.compact(IdOrder::kKept);
+    std::uint32_t next = 0;
+    for (TetId now : map.tet_old_to_new)
+      if (now.valid()) {
+        EXPECT_EQ(now.value, next++);
+      }
+    next = 0;
+    for (VertId now : map.vert_old_to_new)
+      if (now.valid()) {
+        EXPECT_EQ(now.value, next++);
+      }
+  }
+  const Renumbering map = mesh.compact();  // along the curve by default
+  BoundingBox box;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) box.add(mesh.position(VertId{v}));
+  const Vec3 size = box.size();
+  const double extent = std::max({size.x, size.y, size.z});
+  std::vector<std::uint32_t> tet_old(mesh.tet_capacity()), vert_old(mesh.vertex_capacity());
+  for (std::uint32_t t = 0; t < map.tet_old_to_new.size(); ++t)
+    if (map.tet_old_to_new[t].valid()) tet_old[map.tet_old_to_new[t].value] = t;
+  for (std::uint32_t v = 0; v < map.vert_old_to_new.size(); ++v)
+    if (map.vert_old_to_new[v].valid()) vert_old[map.vert_old_to_new[v].value] = v;
+  const auto expect_along_curve = [](const std::vector<std::uint64_t>& keys, const std::vector<std::uint32_t>& old) {
+    for (std::size_t n = 1; n < keys.size(); ++n) {
+      EXPECT_LE(keys[n - 1], keys[n]) << "id " << n;
+      if (keys[n - 1] == keys[n]) {
+        EXPECT_LT(old[n - 1], old[n]) << "id " << n;
+      }
+    }
+  };
+  std::vector<std::uint64_t> keys;
+  for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t) {
+    const TetMesh::TetVerts v = mesh.tet(TetId{t});
+    const Vec3 centroid = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
+    keys.push_back(morton_key_by_definition(centroid, box.lo, extent));
+  }
+  expect_along_curve(keys, tet_old);
+  bool moved = false;
+  for (std::uint32_t n = 1; n < tet_old.size(); ++n) moved = moved || tet_old[n] < tet_old[n - 1];
+  EXPECT_TRUE(moved) << "the split children should have moved towards their place";
+  keys.clear();
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
+    keys.push_back(morton_key_by_definition(mesh.position(VertId{v}), box.lo, extent));
+  expect_along_curve(keys, vert_old);
   expect_matches_fresh_build(mesh);
 }
 

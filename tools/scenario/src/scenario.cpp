@@ -155,8 +155,9 @@ ParseResult parse(const std::string& text, const std::string& name, const std::s
           op.labels.push_back(static_cast<std::uint32_t>(*label));
         }
     } else if (w == "compact") {
-      if (t.size() != 1) return fail("expected: compact");
+      if (t.size() > 2 || (t.size() == 2 && t[1] != "kept")) return fail("expected: compact [kept]");
       op.kind = OpKind::kCompact;
+      if (t.size() == 2) op.text = t[1];
     } else if (w == "undo") {
       if (t.size() != 1) return fail("expected: undo");
       op.kind = OpKind::kUndo;
@@ -273,7 +274,7 @@ class Run {
       case OpKind::kCut:
       case OpKind::kSweep: return cut(op);
       case OpKind::kRemove: return remove(op);
-      case OpKind::kCompact: compact(); return true;
+      case OpKind::kCompact: compact(op.text == "kept" ? IdOrder::kKept : IdOrder::kAlongCurve); return true;
       case OpKind::kUndo: return undo(op);
       case OpKind::kCheck: return check(op);
       case OpKind::kExpectHash:
@@ -406,9 +407,9 @@ class Run {
     return after(op);
   }
 
-  void compact() {
+  void compact(IdOrder order) {
     result_.removal += cutter_->removal_report();
-    if (const Renumbering renumbering = mesh_.compact(); labelled_) labels_.renumber(renumbering);
+    if (const Renumbering renumbering = mesh_.compact(order); labelled_) labels_.renumber(renumbering);
     cutter_.emplace(mesh_, params_);
     search_bounded_ = false;
     local_.emplace(mesh_.raw_view());

@@ -37,7 +37,11 @@
 //   undo                          take back the last cut or removal that changed the mesh
 //                                 (Cutter::undo()): the mesh bit for bit as before it, the labels
 //                                 too; the run fails when nothing is kept to take back
-//   compact                       renumber densely
+//   compact                       renumber densely, the ids along a space-filling curve
+//                                 (TetMesh::compact(): tets near each other in space get ids
+//                                 near each other); the cuts after it may differ from those on
+//                                 the old ids, where the engine breaks a tie by id
+//   compact kept                  renumber densely, the ids in their relative order
 //   check [local|full|exact]      the independent checker; the scenario fails when it objects
 //   expect hash HEX               canonical hash of the current mesh
 //   expect tets N                 live tets
@@ -80,7 +84,7 @@ enum class OpKind : std::uint8_t {
 struct Op {
   OpKind kind;
   std::uint32_t line = 0;  // 1-based, in the scenario text
-  std::string text;        // mesh path, parameter name, check level, expected hash
+  std::string text;        // mesh path, parameter name, check level, expected hash, "kept" (compact)
   std::string value;       // parameter value as written
   Vec3 a{}, b{};
   double step = 0.0;
