@@ -42,7 +42,7 @@ inline const TetMesh& corpus_mesh(const std::string& name) {
 // scattered through the whole mesh, as in a large mesh assembled or edited over time); or shuffled
 // and then compacted (TetMesh::compact(): the ids along a space-filling curve), as a user mends
 // the scatter.
-enum class IdOrder { kCopies, kShuffled, kCurve };
+enum class CopiesOrder { kCopies, kShuffled, kCurve };
 
 // 64 disjoint copies of the bundled liver side by side (~1M tets), copy 0 the original, as raw
 // arrays in copy order: a sweep over copy 0 does the work it does on the lone liver, and only the
@@ -62,16 +62,16 @@ inline RawMesh replicated_corpus_liver_raw() {
 // The 64 copies built, with their ids in `order` (cut_bench.cpp BM_CutScalingSameWork,
 // mechanics_bench.cpp BM_UpdateScalingSameWork, cut_instructions.cpp's cache sweep). Built once
 // per order and process.
-inline const TetMesh& replicated_corpus_liver(IdOrder order = IdOrder::kCopies) {
-  static std::map<IdOrder, TetMesh> cache;
+inline const TetMesh& replicated_corpus_liver(CopiesOrder order = CopiesOrder::kCopies) {
+  static std::map<CopiesOrder, TetMesh> cache;
   auto it = cache.find(order);
   if (it != cache.end()) return it->second;
   RawMesh raw = replicated_corpus_liver_raw();
-  if (order != IdOrder::kCopies) raw = shuffled(raw);
+  if (order != CopiesOrder::kCopies) raw = shuffled(raw);
   // Copies of a valid liver are manifold by construction: the shell checks would cost a second
   // (several under valgrind, bench/instructions_gate.sh --cache) and find nothing.
   TetMesh& mesh = cache.emplace(order, std::move(*build_mesh(raw, {.require_manifold = false}).mesh)).first->second;
-  if (order == IdOrder::kCurve) mesh.compact();
+  if (order == CopiesOrder::kCurve) mesh.compact(IdOrder::kAlongCurve);
   return mesh;
 }
 

@@ -223,12 +223,12 @@ BENCHMARK(BM_CutScaling)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 // The same figure with the local work held identical: the lone liver against 64 copies of it
 // (~1M tets), the sweep on copy 0 in both, interleaved in one process. This isolates what the
-// mesh's size alone costs. The argument orders the copies' ids (bench_meshes.hpp IdOrder): 0 copy
+// mesh's size alone costs. The argument orders the copies' ids (bench_meshes.hpp CopiesOrder): 0 copy
 // by copy (copy 0 keeps the lone liver's memory layout: no scan shows, but neither does a large
 // mesh's scatter), 1 shuffled with a fixed seed (copy 0's tets spread through the whole mesh's
 // memory, as a real large mesh's are), 2 sorted along a space-filling curve.
 void BM_CutScalingSameWork(benchmark::State& state) {
-  const auto order = static_cast<tetcut::bench::IdOrder>(state.range(0));
+  const auto order = static_cast<tetcut::bench::CopiesOrder>(state.range(0));
   liver_at(0);
   const tetcut::TetMesh& copies = tetcut::bench::replicated_corpus_liver(order);
   SweepResult small, large;

@@ -45,8 +45,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: cut_instructions [--shuffled-copies]\n");
     return 2;
   }
-  using tetcut::bench::IdOrder;
-  tetcut::TetMesh mesh = shuffled ? tetcut::bench::replicated_corpus_liver(IdOrder::kShuffled)
+  using tetcut::bench::CopiesOrder;
+  tetcut::TetMesh mesh = shuffled ? tetcut::bench::replicated_corpus_liver(CopiesOrder::kShuffled)
                                   : tetcut::bench::corpus_mesh("liver.msh");
   const std::vector<tetcut::Vec3> centres = tetcut::bench::gated_sweep_centres();
   const auto tets = static_cast<unsigned long long>(mesh.num_tets());
