@@ -1,7 +1,7 @@
 // TetMesh's mutations (the mesh itself: include/tetcut/mesh.hpp): vertices and tets allocated
 // and freed, replace_tets() (the one way tets change: remove some, add some, glue the faces),
-// reserve() and compact() (ids along a space-filling curve). Every write goes through note(), so that a transaction can roll it back
-// (mesh_journal.cpp).
+// reserve() and compact() (ids along a space-filling curve). Every write goes through note(), so
+// that a transaction can roll it back (mesh_journal.cpp).
 #include <algorithm>
 #include <atomic>
 #include <cassert>
@@ -340,50 +340,47 @@ Renumbering TetMesh::compact(IdOrder order) {
   const MeshWriteScope writing(*this, "TetMesh::compact()");
   assert(!journal_.active && "compact() inside a transaction");
   new_version();  // every id may mean another tet now: no undo comes back across this
-  std::vector<std::uint32_t> tet_new_to_old, vert_new_to_old_ids;
+  std::vector<TetId> tet_new_to_old;
+  std::vector<VertId> vert_new_to_old;
   tet_new_to_old.reserve(live_tets_);
-  vert_new_to_old_ids.reserve(live_vertices_);
+  vert_new_to_old.reserve(live_vertices_);
   for (std::uint32_t t = 0; t < tet_capacity(); ++t)
-    if (tet_verts_[t][0] != kDeadTetMarker) tet_new_to_old.push_back(t);
+    if (tet_verts_[t][0] != kDeadTetMarker) tet_new_to_old.push_back(TetId{t});
   for (std::uint32_t v = 0; v < vertex_capacity(); ++v)
-    if (vert_tet_[v].valid()) vert_new_to_old_ids.push_back(v);
+    if (vert_tet_[v].valid()) vert_new_to_old.push_back(VertId{v});
   if (order == IdOrder::kAlongCurve) {
     // Tets by their centroid's key, vertices by their own; ties keep the ids' order.
     BoundingBox box;
-    for (std::uint32_t v : vert_new_to_old_ids) box.add(positions_[v]);
+    for (VertId v : vert_new_to_old) box.add(positions_[v.value]);
     const MortonKey key(box);
-    const auto sort_along_curve = [](std::vector<std::uint32_t>& ids, const std::vector<std::uint64_t>& keys) {
+    std::vector<std::uint64_t> keys;
+    const auto sort_by_keys = [&keys](auto& ids) {
       const std::vector<std::uint32_t> by_key = order_by_key(keys);
-      std::vector<std::uint32_t> sorted(ids.size());
+      auto sorted = ids;
       for (std::size_t k = 0; k < ids.size(); ++k) sorted[k] = ids[by_key[k]];
       ids = std::move(sorted);
     };
-    std::vector<std::uint64_t> keys;
     keys.reserve(tet_new_to_old.size());
-    for (std::uint32_t t : tet_new_to_old) {
-      const auto& tv = tet_verts_[t];
+    for (TetId t : tet_new_to_old) {
+      const auto& tv = tet_verts_[t.value];
       keys.push_back(key(0.25 * (positions_[tv[0]] + positions_[tv[1]] + positions_[tv[2]] + positions_[tv[3]])));
     }
-    sort_along_curve(tet_new_to_old, keys);
+    sort_by_keys(tet_new_to_old);
     keys.clear();
-    for (std::uint32_t v : vert_new_to_old_ids) keys.push_back(key(positions_[v]));
-    sort_along_curve(vert_new_to_old_ids, keys);
+    for (VertId v : vert_new_to_old) keys.push_back(key(positions_[v.value]));
+    sort_by_keys(vert_new_to_old);
   }
   Renumbering map;
   map.tet_old_to_new.assign(tet_capacity(), kNoTet);
   map.vert_old_to_new.assign(vertex_capacity(), kNoVert);
   const auto nt = static_cast<std::uint32_t>(tet_new_to_old.size());
-  const auto nv = static_cast<std::uint32_t>(vert_new_to_old_ids.size());
-  for (std::uint32_t n = 0; n < nt; ++n) map.tet_old_to_new[tet_new_to_old[n]] = TetId{n};
-  std::vector<VertId> vert_new_to_old(nv);
-  for (std::uint32_t n = 0; n < nv; ++n) {
-    map.vert_old_to_new[vert_new_to_old_ids[n]] = VertId{n};
-    vert_new_to_old[n] = VertId{vert_new_to_old_ids[n]};
-  }
+  const auto nv = static_cast<std::uint32_t>(vert_new_to_old.size());
+  for (std::uint32_t n = 0; n < nt; ++n) map.tet_old_to_new[tet_new_to_old[n].value] = TetId{n};
+  for (std::uint32_t n = 0; n < nv; ++n) map.vert_old_to_new[vert_new_to_old[n].value] = VertId{n};
 
   std::vector<std::array<std::uint32_t, 4>> verts(nt), adj(nt);
   for (std::uint32_t n = 0; n < nt; ++n) {
-    const std::uint32_t t = tet_new_to_old[n];
+    const std::uint32_t t = tet_new_to_old[n].value;
     for (int i = 0; i < 4; ++i) {
       verts[n][i] = map.vert_old_to_new[tet_verts_[t][i]].value;
       const std::uint32_t a = tet_adj_[t][i];

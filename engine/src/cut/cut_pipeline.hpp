@@ -40,7 +40,7 @@ class Cutter::Pipeline {
   // The revisit order's marks, for a Cutter that uses it (prepare(), set_params()).
   void reserve_revisit();
   void reset();
-  Renumbering compact(IdOrder order = IdOrder::kAlongCurve);
+  Renumbering compact(IdOrder order);
   std::optional<std::string> set_params(const CutParams& params);
   std::optional<std::string> set_uncuttable(std::span<const TetId> tets);
   // A cut by the capsule a-b (a ball when a == b), of the tool's diameter.
