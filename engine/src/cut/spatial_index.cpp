@@ -40,7 +40,7 @@ std::size_t SpatialIndex::find_slot(std::uint64_t key) const {
   if (table_.empty()) return kNoSlot;
   const std::size_t mask = table_.size() - 1;
   for (std::size_t s = mix64(key) & mask;; s = (s + 1) & mask) {
-    if (!table_[s].used) return kNoSlot;
+    if (!table_[s].used()) return kNoSlot;
     if (table_[s].key == key) return s;
   }
 }
@@ -51,9 +51,9 @@ void SpatialIndex::grow_table() {
   table_.assign(old.empty() ? 1024 : old.size() * 2, Slot{});
   const std::size_t mask = table_.size() - 1;
   for (const Slot& o : old) {
-    if (!o.used) continue;
+    if (!o.used()) continue;
     std::size_t s = mix64(o.key) & mask;
-    while (table_[s].used) s = (s + 1) & mask;
+    while (table_[s].used()) s = (s + 1) & mask;
     table_[s] = o;
     for (std::uint32_t b = o.head; b != kNone; b = blocks_[b].next) blocks_[b].slot = static_cast<std::uint32_t>(s);
   }
@@ -63,10 +63,10 @@ std::size_t SpatialIndex::cell_for(std::uint64_t key) {
   if ((used_slots_ + 1) * 2 > table_.size()) grow_table();
   const std::size_t mask = table_.size() - 1;
   std::size_t s = mix64(key) & mask;
-  for (; table_[s].used; s = (s + 1) & mask)
+  for (; table_[s].used(); s = (s + 1) & mask)
     if (table_[s].key == key) return s;
   // Cells are never deleted: an emptied cell keeps its slot for the next tets there.
-  table_[s] = {key, kNone, kNone, 0.0, true};
+  table_[s] = {key, kNone, kNone, 0.0f};
   ++used_slots_;
   return s;
 }
@@ -87,6 +87,10 @@ void SpatialIndex::build(const TetMesh& mesh) {
   used_slots_ = 0;
   blocks_.clear();
   free_block_ = kNone;
+  // The locations' room first, at the size the cuts will want: growing it after the build would
+  // hold the old and the new array at once, the Cutter's peak.
+  where_.clear();
+  detail::reserve_touched(where_, mesh.tet_capacity() + mesh.tet_capacity() / 2 + 1024);
   where_.assign(mesh.tet_capacity(), Location{});
   entries_ = 0;
   reach_ = 0.0;
@@ -95,14 +99,13 @@ void SpatialIndex::build(const TetMesh& mesh) {
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
     if (mesh.is_live(TetId{t})) insert(mesh, TetId{t});
   // Headroom, so that the cuts that follow find locations, blocks and slots without growing.
-  detail::reserve_touched(where_, where_.size() + where_.size() / 2 + 1024);
   detail::reserve_touched(blocks_, blocks_.size() + blocks_.size() / 2 + 256);
   while ((used_slots_ + used_slots_ / 2 + 1) * 2 > table_.size()) grow_table();
 }
 
 void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   if (where_.size() <= t.value) where_.resize(std::max<std::size_t>(t.value + 1, where_.size() * 3 / 2));
-  if (where_[t.value].block != kNone) erase(t);
+  if (where_[t.value].indexed()) erase(t);
   const auto v = mesh.tet(t);
   const Vec3 p[4] = {mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]), mesh.position(v[3])};
   const Vec3 c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
@@ -113,7 +116,6 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   const float fx = static_cast<float>(c.x), fy = static_cast<float>(c.y), fz = static_cast<float>(c.z);
   const double slack = 1e-6 * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z)) + 1e-30;
   const float outer = next_up(static_cast<float>(std::sqrt(r2) * (1.0 + 1e-6) + slack));
-  const double radius = outer;
   const std::int32_t i = cell_of(c.x), j = cell_of(c.y), k = cell_of(c.z);
   if (occupied_lo_[0] > occupied_hi_[0]) {
     occupied_lo_ = occupied_hi_ = {i, j, k};
@@ -123,11 +125,10 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   }
   const std::size_t slot = cell_for(pack(i, j, k));
   Slot& cell = table_[slot];
-  cell.reach = std::max(cell.reach, radius);
-  reach_ = std::max(reach_, radius);
+  cell.reach = std::max(cell.reach, outer);
+  reach_ = std::max(reach_, static_cast<double>(outer));
   if (cell.tail == kNone || blocks_[cell.tail].count == kBlockEntries) {
     const std::uint32_t b = new_block();  // may move blocks_, never table_
-    blocks_[b].prev = cell.tail;
     blocks_[b].slot = static_cast<std::uint32_t>(slot);
     if (cell.tail == kNone) {
       cell.head = b;
@@ -143,33 +144,35 @@ void SpatialIndex::insert(const TetMesh& mesh, TetId t) {
   block.z[e] = fz;
   block.outer[e] = outer;
   block.tet[e] = t.value;
-  where_[t.value] = {cell.tail, block.count};
+  where_[t.value] = Location{cell.tail, block.count};
   ++block.count;
   ++entries_;
 }
 
 void SpatialIndex::erase(TetId t) {
-  if (t.value >= where_.size() || where_[t.value].block == kNone) return;
+  if (t.value >= where_.size() || !where_[t.value].indexed()) return;
   const Location at = where_[t.value];
   where_[t.value] = Location{};
   --entries_;
   // The cell's last entry fills the hole. The cell is the one whose chain holds the block.
-  Slot& cell = table_[blocks_[at.block].slot];
+  Slot& cell = table_[blocks_[at.block()].slot];
   Block& tail = blocks_[cell.tail];
   const std::uint32_t last = tail.count - 1;
   --tail.count;
   if (tail.tet[last] != t.value) {
-    Block& hole = blocks_[at.block];
-    hole.x[at.index] = tail.x[last];
-    hole.y[at.index] = tail.y[last];
-    hole.z[at.index] = tail.z[last];
-    hole.outer[at.index] = tail.outer[last];
-    hole.tet[at.index] = tail.tet[last];
+    Block& hole = blocks_[at.block()];
+    hole.x[at.index()] = tail.x[last];
+    hole.y[at.index()] = tail.y[last];
+    hole.z[at.index()] = tail.z[last];
+    hole.outer[at.index()] = tail.outer[last];
+    hole.tet[at.index()] = tail.tet[last];
     where_[tail.tet[last]] = at;
   }
   if (tail.count == 0 && cell.tail != cell.head) {
     const std::uint32_t b = cell.tail;
-    cell.tail = blocks_[b].prev;
+    std::uint32_t before = cell.head;
+    while (blocks_[before].next != b) before = blocks_[before].next;
+    cell.tail = before;
     blocks_[cell.tail].next = kNone;
     blocks_[b].next = free_block_;
     free_block_ = b;
@@ -231,7 +234,7 @@ void SpatialIndex::query_cells(const TetMesh& mesh, const Tool& tool, std::vecto
     // bounds empty): walk the table once; the sort below makes the visiting order irrelevant.
     cells_visited_ += table_.size();
     for (const Slot& cell : table_) {
-      if (!cell.used) continue;
+      if (!cell.used()) continue;
       const std::array<std::int32_t, 3> ijk = unpack(cell.key);
       if (ijk[0] < lo[0] || ijk[0] > hi[0] || ijk[1] < lo[1] || ijk[1] > hi[1] || ijk[2] < lo[2] || ijk[2] > hi[2]) continue;
       collect<kCapsule>(mesh, cell, tool, gap_to_cell(c_lo, c_hi, cell.key), out);
