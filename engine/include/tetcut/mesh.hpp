@@ -341,6 +341,13 @@ class TetMesh {
   void transaction_changes(std::vector<TetId>& removed, std::vector<TetId>& created) {
     changes_since(journal_.start, removed, created);
   }
+  // The tets whose neighbours the open transaction rewrote and that it did not make (a tet it made
+  // is in its `created`, or gone), appended in the journal's order, repeats and all, live or not:
+  // with the tets it made, the only tets whose boundary faces it can have changed. What the
+  // walking locator's index of boundary tets re-examines (cut/walking_locator.hpp). O(journal).
+  void rewired_tets(std::vector<TetId>& out) const;
+  // The same for a kept transaction: the tets undo(record) gives their neighbours back.
+  static void rewired_tets(const TransactionRecord& record, std::vector<TetId>& out);
 
   // ---- raw views, for the independent checker and writers ----------------------------------
   // #capacity by 4; a tombstone has kDeadTetMarker in its first entry.

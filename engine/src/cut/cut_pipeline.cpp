@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "cut/tissue_rule_veto.hpp"
 #include "tetcut/detail/reserve_touched.hpp"
@@ -59,10 +60,10 @@ Cutter::Pipeline::Pipeline(TetMesh& mesh, const CutParams& params)
     // The grid's cell is the mean edge length, so that a tet spans a few cells at most.
     : mesh_(mesh),
       params_(params),
-      index_(mesh.mean_edge_length()),
+      locator_(mesh.mean_edge_length()),
       remover_(removal_options(params)),
       selection_(params_) {
-  index_.build(mesh_);
+  locator_.build(mesh_, mesh_.mean_edge_length());
   labels_.build(mesh_);
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
@@ -87,6 +88,8 @@ void Cutter::Pipeline::prepare() {
   if (params_.order == RemovalOrder::kRevisit) reserve_revisit();
   audit_.reserve(tets);
   labels_.reserve(tets);
+  locator_.reserve(tets);
+  reserve_touched(rewired_, 16384);
   search_.reserve(tets, params_.fragment_search_bound);
   reserve_touched(fragments_, 1024);
   transaction_.reserve();
@@ -133,9 +136,10 @@ std::optional<std::string> Cutter::Pipeline::undo(ChangeLog* log) {
   undo_log_.clear();
   ChangeLog& net = log ? *log : undo_log_;
   const std::size_t first_moved = net.moved.size();
+  rewired_.clear();
+  TetMesh::rewired_tets(k.mesh, rewired_);  // what the cut rewired, the undo rewires back
   mesh_.undo(k.mesh, &net);
-  for (TetId t : k.created) index_.erase(t);
-  for (TetId t : k.removed) index_.insert(mesh_, t);
+  locator_.update(mesh_, k.created, k.removed, rewired_);
   remover_.restore_report(k.removal_before);
   last_min_dihedral_held_ = k.min_dihedral_held_before;
   transaction_.undone(k.created, k.removed, std::span<const MovedVertex>(net.moved).subspan(first_moved));
@@ -149,7 +153,7 @@ std::optional<std::string> Cutter::Pipeline::undo(ChangeLog* log) {
 
 void Cutter::Pipeline::reset() {
   empty_history("reset()");
-  index_.build(mesh_, mesh_.mean_edge_length());
+  locator_.build(mesh_, mesh_.mean_edge_length());
   labels_.build(mesh_);
   epoch_ = mesh_.id_epoch();
   scale_ = measure_scale(mesh_);
@@ -218,7 +222,7 @@ std::optional<std::string> Cutter::Pipeline::stale() const {
 
 TetId Cutter::Pipeline::tet_containing(const Vec3& p) {
   if (!indexes_current_mesh()) return kNoTet;
-  index_.query(mesh_, Tool::ball(p, 0.0), hit_);
+  locate(Tool::ball(p, 0.0));
   return hit_.empty() ? kNoTet : hit_.front();
 }
 
@@ -383,7 +387,20 @@ CutReport Cutter::Pipeline::remove(TetId t, ChangeLog* log) {
 }
 
 // Locate (paper 3.1): T_hit, the live tets meeting the tool.
-void Cutter::Pipeline::locate(const Tool& tool) { index_.query(mesh_, tool, hit_); }
+void Cutter::Pipeline::locate(const Tool& tool) {
+  locator_.query(mesh_, tool, hit_);
+#ifdef TETCUT_CHECK_LOCATE
+  // The sanitizer and fuzzing builds (CMakePresets.json) check every answer against a scan of
+  // the mesh: the walk's equality with the index it replaced, on every test and fuzz input, up to
+  // the size at which the scan would dominate the suites' time.
+  constexpr std::uint32_t kLargestScanned = 200000;
+  if (mesh_.tet_capacity() <= kLargestScanned) scan_tets_meeting(mesh_, tool, scanned_);
+  if (mesh_.tet_capacity() <= kLargestScanned && scanned_ != hit_) {
+    std::fprintf(stderr, "tetcut: the walking locator found %zu tets where a scan finds %zu\n", hit_.size(), scanned_.size());
+    std::abort();
+  }
+#endif
+}
 
 // Refine (paper 3.2), following the new tets that meet the tool.
 bool Cutter::Pipeline::refine(const Tool& tool, RefinementRule rule, CutReport& report) {
@@ -510,7 +527,7 @@ void Cutter::Pipeline::commit(CutReport& report, ChangeLog* log) {
   labels_.before_commit(mesh_, transaction_.start(), removed_);
   // The search's net change is the transaction's unless debris went since.
   const detail::CutTransaction::NetChange known{removed_, created_};
-  report.tets_created = transaction_.commit(mesh_, uncuttable_, index_, log, report.debris_pieces_removed == 0 ? &known : nullptr,
+  report.tets_created = transaction_.commit(mesh_, uncuttable_, locator_, log, report.debris_pieces_removed == 0 ? &known : nullptr,
                                             kept ? &kept->mesh : nullptr);
   report.vertices_moved = static_cast<std::uint32_t>(transaction_.net_moved().size());
   labels_.after_commit(transaction_.net_removed());

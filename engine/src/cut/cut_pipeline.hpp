@@ -1,5 +1,5 @@
-// What a Cutter holds (cut.hpp) and the walk of one cut through its stages: locate (the spatial
-// index), refine (refine/refine.hpp), select (tissue_selection.hpp), remove (removal_loop.hpp),
+// What a Cutter holds (cut.hpp) and the walk of one cut through its stages: locate
+// (walking_locator.hpp), refine (refine/refine.hpp), select (tissue_selection.hpp), remove (removal_loop.hpp),
 // improve (improve/improver.hpp), audit (tissue_audit.hpp), pieces (fragment_search.hpp),
 // commit (cut_transaction.hpp, piece_labels.hpp). Behind
 // a pointer so that the installed cut.hpp names none of these internal types; allocated once, by
@@ -18,6 +18,7 @@
 #include "cut/piece_labels.hpp"
 #include "cut/removal_loop.hpp"
 #include "cut/spatial_index.hpp"
+#include "cut/walking_locator.hpp"
 #include "cut/tissue_audit.hpp"
 #include "cut/tissue_selection.hpp"
 #include "improve/improver.hpp"
@@ -112,7 +113,11 @@ class Cutter::Pipeline {
   // Why every cut would be refused, decided when the parameters or the scale change, not per
   // cut: validate(params_) (invalid_), else check_scale() with scale_ (refusal_ holds either).
   std::optional<std::string> invalid_, refusal_;
-  SpatialIndex index_;
+  WalkingLocator locator_;
+  std::vector<TetId> rewired_;  // an undo's rewired tets, for the locator
+#ifdef TETCUT_CHECK_LOCATE
+  std::vector<TetId> scanned_;
+#endif
   Refiner refiner_;
   Remover remover_;
   detail::Improver improver_;

@@ -8,7 +8,7 @@ void CutTransaction::reserve() {
   // The working size of a cut's change; a larger cut grows them once (allocations per cut are
   // gated by ci/bench).
   constexpr std::size_t kCutScratch = 16384;
-  for (auto* list : {&net_removed_, &net_created_, &changes_.removed, &changes_.parents}) reserve_touched(*list, kCutScratch);
+  for (auto* list : {&net_removed_, &net_created_, &rewired_, &changes_.removed, &changes_.parents}) reserve_touched(*list, kCutScratch);
   reserve_touched(changes_.created, kCutScratch);
   reserve_touched(changes_.vertices, kCutScratch);
   reserve_touched(changes_.removed_vertices, kCutScratch);
@@ -29,9 +29,11 @@ void CutTransaction::roll_back(TetMesh& mesh, Remover& remover) {
   forget();
 }
 
-std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log,
+std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, WalkingLocator& locator, ChangeLog* log,
                                      const NetChange* known, TetMesh::TransactionRecord* keep) {
   uncuttable.before_commit(mesh, start_);
+  rewired_.clear();
+  mesh.rewired_tets(rewired_);  // before the commit hands the journal to `keep`
   if (log) {
     changes_.clear();
     mesh.commit(&changes_, keep);
@@ -54,8 +56,7 @@ std::uint32_t CutTransaction::commit(TetMesh& mesh, UncuttableTets& uncuttable, 
     mesh.commit(nullptr, keep);
   }
   uncuttable.after_commit(mesh);
-  for (TetId t : net_removed_) index.erase(t);
-  for (TetId t : net_created_) index.insert(mesh, t);
+  locator.update(mesh, net_removed_, net_created_, rewired_);
   return static_cast<std::uint32_t>(net_created_.size());
 }
 

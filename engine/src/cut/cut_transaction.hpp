@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/uncuttable_tets.hpp"
-#include "cut/spatial_index.hpp"
+#include "cut/walking_locator.hpp"
 #include "remove/removal.hpp"
 #include "tetcut/change_log.hpp"
 #include "tetcut/mesh.hpp"
@@ -31,7 +31,7 @@ class CutTransaction {
     std::span<const TetId> removed, created;
   };
   // `keep`: the mesh's record of the transaction, for an undo (TetMesh::commit).
-  std::uint32_t commit(TetMesh& mesh, UncuttableTets& uncuttable, SpatialIndex& index, ChangeLog* log,
+  std::uint32_t commit(TetMesh& mesh, UncuttableTets& uncuttable, WalkingLocator& locator, ChangeLog* log,
                        const NetChange* known = nullptr, TetMesh::TransactionRecord* keep = nullptr);
   // An undo's net change, as the last one's (Cutter::last_removed(), last_created(), last_moved()).
   void undone(std::span<const TetId> removed, std::span<const TetId> created, std::span<const MovedVertex> moved) {
@@ -62,6 +62,7 @@ class CutTransaction {
   RemovalReport removal_at_start_;  // the Remover's statistics when the transaction began
   ChangeLog changes_;               // the net change, derived by the journal at commit
   std::vector<TetId> net_removed_, net_created_;
+  std::vector<TetId> rewired_;  // the tets whose neighbours it rewrote, for the locator
   std::vector<MovedVertex> moved_;       // the journal's, when no log is asked for
   std::vector<RawMovedVertex> net_moved_;
   void keep_moved(std::span<const MovedVertex> moved);

@@ -82,7 +82,7 @@ std::uint32_t SpatialIndex::new_block() {
   return static_cast<std::uint32_t>(blocks_.size() - 1);
 }
 
-void SpatialIndex::build(const TetMesh& mesh) {
+void SpatialIndex::build(const TetMesh& mesh, Keep keep) {
   table_.clear();
   used_slots_ = 0;
   blocks_.clear();
@@ -97,7 +97,7 @@ void SpatialIndex::build(const TetMesh& mesh) {
   occupied_lo_ = {1, 1, 1};
   occupied_hi_ = {0, 0, 0};
   for (std::uint32_t t = 0; t < mesh.tet_capacity(); ++t)
-    if (mesh.is_live(TetId{t})) insert(mesh, TetId{t});
+    if (mesh.is_live(TetId{t}) && (!keep || keep(mesh, TetId{t}))) insert(mesh, TetId{t});
   // Headroom, so that the cuts that follow find locations, blocks and slots without growing.
   detail::reserve_touched(blocks_, blocks_.size() + blocks_.size() / 2 + 256);
   while ((used_slots_ + used_slots_ / 2 + 1) * 2 > table_.size()) grow_table();

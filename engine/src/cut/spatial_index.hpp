@@ -41,11 +41,13 @@ class SpatialIndex {
 
   // Indexes every live tet: O(#T), once. Leaves room for half as many tets again, so that the
   // operations that follow do not grow the index's arrays. Rebuilding reuses them.
-  void build(const TetMesh& mesh);
+  // With `keep`, only the live tets it accepts (the walking locator's boundary tets).
+  using Keep = bool (*)(const TetMesh&, TetId);
+  void build(const TetMesh& mesh, Keep keep = nullptr);
   // The same with another cell size (a Cutter reset onto a mesh of another scale).
-  void build(const TetMesh& mesh, double cell_size) {
+  void build(const TetMesh& mesh, double cell_size, Keep keep = nullptr) {
     cell_size_ = cell_size;
-    build(mesh);
+    build(mesh, keep);
   }
 
   void insert(const TetMesh& mesh, TetId t);
