@@ -84,5 +84,81 @@ TEST(WalkingLocator, APointWalkFromAnyTetFindsTheTetHoldingThePoint) {
   EXPECT_EQ(locator.scans(), 0u);
 }
 
+// Removes, in one committed operation, the tets whose centroid `carve` accepts, and tells the
+// locator.
+template <class Carve>
+void carve(TetMesh& mesh, WalkingLocator& locator, Carve carve) {
+  std::vector<TetId> gone;
+  for (std::uint32_t i = 0; i < mesh.tet_capacity(); ++i) {
+    if (!mesh.is_live(TetId{i})) continue;
+    const auto v = mesh.tet(TetId{i});
+    const Vec3 c = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
+    if (carve(c)) gone.push_back(TetId{i});
+  }
+  mesh.begin_transaction();
+  mesh.remove_tets(gone);
+  commit_and_update(mesh, locator);
+}
+
+// A U: a notch of whole cubes cut from the top of a bar. A walk from one arm to a point in the
+// other is blocked by the notch's wall; the segment's last crossing of the boundary enters the
+// other arm, and the walk goes on from there, without a scan. A point in the notch is outside.
+TEST(WalkingLocator, AWalkTheBoundaryBlocksGoesOnPastTheSegmentsLastCrossing) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(6, 2, 2, {0, 0, 0}, {6, 2, 2}));
+  WalkingLocator locator(1.0);
+  locator.build(mesh, 1.0);
+  carve(mesh, locator, [](const Vec3& c) { return c.x > 2 && c.x < 4 && c.z > 1; });
+  TetId left = kNoTet;
+  for (std::uint32_t i = 0; i < mesh.tet_capacity() && !left.valid(); ++i) {
+    if (!mesh.is_live(TetId{i})) continue;
+    const auto v = mesh.tet(TetId{i});
+    const Vec3 c = 0.25 * (mesh.position(v[0]) + mesh.position(v[1]) + mesh.position(v[2]) + mesh.position(v[3]));
+    if (c.x < 1 && c.z > 1) left = TetId{i};
+  }
+  ASSERT_TRUE(left.valid());
+  const Vec3 right_arm{5.3, 1.1, 1.7}, notch{3.0, 1.1, 1.5};
+  const TetId found = locator.locate_point(mesh, right_arm, left);
+  const std::vector<TetId> holding = scanned(mesh, Tool::ball(right_arm, 0.0));
+  ASSERT_FALSE(holding.empty());
+  EXPECT_TRUE(std::find(holding.begin(), holding.end(), found) != holding.end());
+  EXPECT_GE(locator.blocked_walks(), 1u) << "the walk was meant to meet the notch";
+  EXPECT_FALSE(locator.locate_point(mesh, notch, left).valid()) << "the notch is outside the mesh";
+  EXPECT_EQ(locator.scans(), 0u);
+}
+
+// Two pieces, a slab of cubes apart: a ball across the gap finds the tets of both (each piece's
+// boundary seeds its part), and a point inside the far piece is found by a walk from the near
+// piece that the gap blocks.
+TEST(WalkingLocator, AToolAcrossTwoPiecesFindsBoth) {
+  TetMesh mesh = testing::build_or_fail(make_box_mesh(6, 3, 3, {0, 0, 0}, {6, 3, 3}));
+  WalkingLocator locator(1.0);
+  locator.build(mesh, 1.0);
+  carve(mesh, locator, [](const Vec3& c) { return c.x > 2 && c.x < 3; });
+  std::vector<TetId> got;
+  const Tool across = Tool::ball({2.5, 1.5, 1.5}, 0.9);
+  locator.query(mesh, across, got);
+  ASSERT_EQ(got, scanned(mesh, across));
+  bool near = false, far = false;
+  for (TetId t : got) {
+    const Vec3 p = mesh.position(mesh.tet(t)[0]);
+    (p.x <= 2 ? near : far) = true;
+  }
+  EXPECT_TRUE(near && far) << "the ball meets both pieces";
+  const Tool in_near = Tool::ball({1.5, 1.5, 1.5}, 0.3), in_far = Tool::ball({4.5, 1.5, 1.5}, 0.3);
+  locator.query(mesh, in_near, got);
+  ASSERT_EQ(got, scanned(mesh, in_near));
+  ASSERT_FALSE(got.empty());
+  // From the near piece's answer (the coarse grid would start the query in the far piece).
+  const std::uint64_t blocked = locator.blocked_walks();
+  const TetId found = locator.locate_point(mesh, in_far.a, got.front());
+  const std::vector<TetId> holding = scanned(mesh, Tool::ball(in_far.a, 0.0));
+  EXPECT_TRUE(std::find(holding.begin(), holding.end(), found) != holding.end());
+  EXPECT_GT(locator.blocked_walks(), blocked) << "the walk from the near piece was meant to meet the gap";
+  locator.query(mesh, in_far, got);
+  ASSERT_EQ(got, scanned(mesh, in_far));
+  EXPECT_FALSE(got.empty());
+  EXPECT_EQ(locator.scans(), 0u);
+}
+
 }  // namespace
 }  // namespace tetcut
