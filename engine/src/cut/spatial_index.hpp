@@ -63,6 +63,7 @@ class SpatialIndex {
   // every gap is computed as it was for the ball alone.
   void query(const TetMesh& mesh, const Tool& tool, std::vector<TetId>& out);
 
+  [[nodiscard]] bool holds(TetId t) const { return t.value < where_.size() && where_[t.value].indexed(); }
   [[nodiscard]] double cell_size() const { return cell_size_; }
   [[nodiscard]] std::size_t entries() const { return entries_; }
   // Cells a query looked at (by key lookup or by walking the table), over the index's life: what

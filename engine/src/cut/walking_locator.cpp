@@ -78,14 +78,18 @@ void WalkingLocator::reserve(std::uint32_t tets) {
 void WalkingLocator::update(const TetMesh& mesh, std::span<const TetId> removed, std::span<const TetId> created,
                             std::span<const TetId> rewired) {
   for (TetId t : removed) boundary_.erase(t);
-  for (std::span<const TetId> list : {created, rewired})
-    for (TetId t : list) {
-      if (mesh.is_live(t) && has_boundary_face(mesh, t)) {
-        boundary_.insert(mesh, t);  // again, if it was: its shape may have changed
-      } else {
-        boundary_.erase(t);
-      }
+  // A made tet is new, or an old id whose vertex moved (ChangeLog: removed and made again): its
+  // entry is made afresh. A rewired tet kept its shape: only whether it has a boundary face can
+  // have changed, and an entry it has stays right.
+  for (TetId t : created)
+    if (mesh.is_live(t) && has_boundary_face(mesh, t)) boundary_.insert(mesh, t);
+  for (TetId t : rewired) {
+    if (!mesh.is_live(t) || !has_boundary_face(mesh, t)) {
+      boundary_.erase(t);
+    } else if (!boundary_.holds(t)) {
+      boundary_.insert(mesh, t);
     }
+  }
 }
 
 std::uint64_t WalkingLocator::coarse_key(const Vec3& p) const {
@@ -242,11 +246,13 @@ void WalkingLocator::query(const TetMesh& mesh, const Tool& tool, std::vector<Te
   queue_.clear();
   for (TetId s : seeds_)
     if (seen_.insert(s)) queue_.push_back(s);
+  // The boundary seeds meet the grown tool (the index tested them); a located end's tet holds it.
+  const std::size_t seeded = queue_.size();
   for (std::size_t i = 0; i < queue_.size(); ++i) {
     const TetId t = queue_[i];
     // The grown tool first: a tet past it (most of the ring around the answer) costs one test,
     // and a tet within it mostly answers both tests at its corners.
-    if (!tet_meets_tool(mesh, t, grown)) continue;
+    if (i >= seeded && !tet_meets_tool(mesh, t, grown)) continue;
     if (tet_meets_tool(mesh, t, tool)) out.push_back(t);
     for (int f = 0; f < 4; ++f) {
       const auto n = mesh.neighbour(t, f);
