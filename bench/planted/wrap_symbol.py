@@ -8,7 +8,7 @@ __real_SYMBOL, the function itself.
   wrap_symbol.py ARCHIVE FUNCTION OUT.cpp OUT.rsp
 
 ARCHIVE    the engine's static library, whose symbols are searched (nm, c++filt)
-FUNCTION   the start of the function's demangled name, e.g. 'tetcut::SpatialIndex::query('
+FUNCTION   the start of the function's demangled name, e.g. 'tetcut::WalkingLocator::query('
 OUT.cpp    the wrapper: x86-64 assembly that keeps every argument register across the call of
            tetcut_planted_work, so that it fits any signature
 OUT.rsp    the linker option (-Wl,--wrap=SYMBOL), for `@OUT.rsp` on the link line

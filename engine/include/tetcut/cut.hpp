@@ -4,7 +4,7 @@
 // capsule of a zero-length segment). Every stage below holds for both, "in the tool" meaning
 // within the radius of the segment:
 //
-//   locate   T_hit = live tets meeting the tool (spatial index, never a mesh scan)
+//   locate   T_hit = live tets meeting the tool (a walk through faces, never a mesh scan)
 //   refine   the loop of paper 3.2 around T_hit with D_ref = d_ref_factor x diameter, following
 //            the new tets that meet the tool
 //   select   T_removal = the refined region's tets that are inside the tool and have no edge
@@ -30,7 +30,7 @@
 //            the cut's new surface in lockstep that stops once every piece but the largest is
 //            walked (engine/src/cut/fragment_search.hpp); with CutParams::debris_volume, the
 //            detached pieces below it are removed in the same transaction.
-//   commit   the transaction, the spatial index, the change log, the piece labels.
+//   commit   the transaction, the locator's boundary tets, the change log, the piece labels.
 //
 // Atomic: the whole cut runs in a mesh transaction; if it cannot complete (a split refused for
 // degeneracy, the per-cut tet budget exceeded, a created tet the improvement pass cannot lift to

@@ -166,7 +166,7 @@ bool intersects(const Tool& tool, const Vec3& a, const Vec3& b, const Vec3& c, c
     const Vec3 delta = *q - centre;
     if (dot(delta, delta) <= r2) return true;
   }
-  // A point (the spatial index's "which tet holds p"): exactness decides points on a face.
+  // A point (the locator's "which tets hold p"): exactness decides points on a face.
   if (tool.radius <= 0.0) return distance_to_tet(centre, a, b, c, d) <= 0.0;
   // Face by face (face i opposite vertex i, outward normal n_i for a positively oriented tet):
   // the ball misses the tet when its centre lies more than r beyond one face's plane, meets it

@@ -62,8 +62,8 @@ double share_in_tool(const Tool& tool, const Vec3& a, const Vec3& b, const Vec3&
 // The same for a tet known to meet the tool (intersects() true): the test is not made again.
 double share_in_tool_meeting(const Tool& tool, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
-// Whether the live tet t meets the tool: intersects() on its corners. What the spatial index
-// asks of the tets it cannot decide, and the refinement loop of the tets it made (its focus).
+// Whether the live tet t meets the tool: intersects() on its corners. What the locator asks of
+// the tets its walk reaches, and the refinement loop of the tets it made (its focus).
 bool tet_meets_tool(const TetMesh& mesh, TetId t, const Tool& tool);
 
 }  // namespace tetcut

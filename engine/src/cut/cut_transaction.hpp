@@ -1,7 +1,7 @@
 // The transaction a cut or a removal request is: opened before its first change, then either
 // rolled back (the mesh bit for bit as before, the removal statistics as they were, so that a
 // refused cut counts none of its requests) or committed (the uncuttable set brought up to date,
-// the spatial index told what went and what came, the net change handed to the caller as the
+// the locator told what went and what came, the net change handed to the caller as the
 // mesh's journal derives it: change_log.hpp).
 #pragma once
 

@@ -49,7 +49,7 @@ std::optional<std::string> TissueAudit::run(const Context& ctx, CutReport& repor
   left_.clear();
   removal_made_.clear();
   for (const TetMesh::TetBirth& birth : ctx.removal_births) removal_made_.insert(birth.tet);
-  // T_hit is what the spatial index found meeting the tool (its test is exact); no id is reused
+  // T_hit is what the locator found meeting the tool (its test is exact); no id is reused
   // inside a transaction, so a live one was never replaced.
   for (TetId t : ctx.hit)
     if (ctx.mesh.is_live(t))
