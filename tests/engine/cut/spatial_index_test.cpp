@@ -5,18 +5,13 @@
 
 #include "core/random.hpp"
 #include "cut/spatial_index.hpp"
-#include "refine/edge_split.hpp"
+#include "changing_mesh.hpp"
 #include "test_meshes.hpp"
-#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {
 
-std::vector<TetId> brute_force(const TetMesh& mesh, const Tool& ball) {
-  std::vector<TetId> out;
-  scan_tets_meeting(mesh, ball, out);
-  return out;
-}
+using testing::scanned;
 
 TEST(ToolBall, DistanceToTetIsZeroInsideAndEuclideanOutside) {
   const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0, 0, 1};
@@ -62,20 +57,12 @@ TEST(SpatialIndex, QueriesMatchAScanThroughSplitsAndRemovals) {
     for (int q = 0; q < 10; ++q) {
       const Tool ball = Tool::ball({rng.unit() * 7 - 0.5, rng.unit() * 6 - 0.5, rng.unit() * 5 - 0.5}, rng.unit() * 1.5);
       index.query(mesh, ball, got);
-      ASSERT_EQ(got, brute_force(mesh, ball)) << "round " << round;
+      ASSERT_EQ(got, scanned(mesh, ball)) << "round " << round;
     }
-    // Change the mesh: split a few edges, or remove a tet with three boundary faces... any
-    // boundary tet will do for the index, which does not care about manifoldness.
     ChangeLog log;
-    const TetId t = testing::random_live_tet(mesh, rng);
     mesh.begin_transaction();
-    if (round % 3 == 2) {
-      mesh.remove_tets(std::span<const TetId>(&t, 1));
-    } else {
-      const int e = static_cast<int>(rng.below(6));
-      const Edge edge{mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])};
-      ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates).ok());
-    }
+    testing::change_randomly(mesh, rng, splitter, round % 3 == 2);
+    if (::testing::Test::HasFatalFailure()) return;
     mesh.commit(&log);
     index.apply(mesh, log);
   }
@@ -105,7 +92,7 @@ TEST(SpatialIndex, AQueryCostsWhatTheIndexHoldsNotWhatTheBallSpans) {
     const Tool ball = Tool::ball({3, 2.5, 2}, radius);
     index.query(mesh, ball, got);
     cost.push_back(index.cells_visited() - before);
-    ASSERT_EQ(got, brute_force(mesh, ball));
+    ASSERT_EQ(got, scanned(mesh, ball));
     ASSERT_EQ(got.size(), mesh.num_tets());
     ASSERT_TRUE(std::is_sorted(got.begin(), got.end()));
   }

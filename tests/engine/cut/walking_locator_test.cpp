@@ -5,18 +5,13 @@
 #include "core/random.hpp"
 #include "cut/spatial_index.hpp"
 #include "cut/walking_locator.hpp"
-#include "refine/edge_split.hpp"
+#include "changing_mesh.hpp"
 #include "test_meshes.hpp"
-#include "tetcut/detail/local_tables.hpp"
 
 namespace tetcut {
 namespace {
 
-std::vector<TetId> scanned(const TetMesh& mesh, const Tool& tool) {
-  std::vector<TetId> out;
-  scan_tets_meeting(mesh, tool, out);
-  return out;
-}
+using testing::scanned;
 
 // Applies one committed operation to the locator as the Cutter does: net removed and created
 // from the log, rewired from the journal before the commit.
@@ -49,15 +44,9 @@ TEST(WalkingLocator, AnswersEqualAScanThroughSplitsAndRemovals) {
       ASSERT_EQ(got, scanned(mesh, tool)) << "round " << round << " query " << q;
       nonempty += !got.empty();
     }
-    const TetId t = testing::random_live_tet(mesh, rng);
     mesh.begin_transaction();
-    if (round % 3 == 2) {
-      mesh.remove_tets(std::span<const TetId>(&t, 1));
-    } else {
-      const int e = static_cast<int>(rng.below(6));
-      const Edge edge{mesh.vertex(t, kEdgeVerts[e][0]), mesh.vertex(t, kEdgeVerts[e][1])};
-      ASSERT_TRUE(splitter.split(mesh, std::span<const Edge>(&edge, 1), SplitMethod::kTemplates).ok());
-    }
+    testing::change_randomly(mesh, rng, splitter, round % 3 == 2);
+    if (::testing::Test::HasFatalFailure()) return;
     commit_and_update(mesh, locator);
   }
   EXPECT_GT(nonempty, 300);
