@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "tetcut/detail/local_tables.hpp"
+#include "tetcut/detail/reserve_touched.hpp"
 #include "tetcut/predicates.hpp"
 
 namespace tetcut {
@@ -71,8 +72,9 @@ void WalkingLocator::build(const TetMesh& mesh, double cell_size) {
 
 void WalkingLocator::reserve(std::uint32_t tets) {
   seen_.reserve(tets);
+  // Touched, as the pipeline's own lists are: the first cut must not fault its pages in.
   constexpr std::size_t kCutScratch = 16384;
-  for (auto* list : {&queue_, &seeds_, &crossings_}) list->reserve(kCutScratch);
+  for (auto* list : {&queue_, &seeds_, &crossings_}) detail::reserve_touched(*list, kCutScratch);
 }
 
 void WalkingLocator::update(const TetMesh& mesh, std::span<const TetId> removed, std::span<const TetId> created,
