@@ -481,6 +481,8 @@ class TetMesh {
     record_old_value(array, index);
   }
   void record_old_value(Array array, std::uint32_t index);
+  // rewired_tets() of a journal's entries.
+  static void append_rewired(std::span<const JournalEntry> entries, std::vector<TetId>& out);
   // Writes back the old values of `entries`, newest first, then truncates the arrays and sets the
   // counts and list heads as `point` has them: rollback_to() and undo().
   void restore(std::span<const JournalEntry> entries, std::span<const double> attribute_values, const Savepoint& point);

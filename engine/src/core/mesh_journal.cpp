@@ -363,16 +363,6 @@ void TetMesh::interpolate_attributes_at_commit() {
 // birth. So the ids live now and dead at p are the births since p still live, and the ids live at
 // p and dead now are those freed since p (the pending list down to its head at p) not made since
 // p. No mutation changes a live tet's vertices in place.
-void TetMesh::rewired_tets(std::vector<TetId>& out) const {
-  for (const JournalEntry& e : journal_.entries)
-    if (e.array == Array::kTetAdj) out.push_back(TetId{e.index});
-}
-
-void TetMesh::rewired_tets(const TransactionRecord& record, std::vector<TetId>& out) {
-  for (const JournalEntry& e : record.entries_)
-    if (e.array == Array::kTetAdj) out.push_back(TetId{e.index});
-}
-
 void TetMesh::changes_since(const Savepoint& p, std::vector<TetId>& removed, std::vector<TetId>& created) {
   removed.clear();
   created.clear();
@@ -385,6 +375,17 @@ void TetMesh::changes_since(const Savepoint& p, std::vector<TetId>& removed, std
   }
   std::sort(removed.begin(), removed.end());
   std::sort(created.begin(), created.end());
+}
+
+void TetMesh::append_rewired(std::span<const JournalEntry> entries, std::vector<TetId>& out) {
+  for (const JournalEntry& e : entries)
+    if (e.array == Array::kTetAdj) out.push_back(TetId{e.index});
+}
+
+void TetMesh::rewired_tets(std::vector<TetId>& out) const { append_rewired(journal_.entries, out); }
+
+void TetMesh::rewired_tets(const TransactionRecord& record, std::vector<TetId>& out) {
+  append_rewired(record.entries_, out);
 }
 
 void TetMesh::ancestors_at_start(TetId t, std::vector<TetId>& out) {

@@ -57,12 +57,11 @@ const char* to_string(CutRefusal refusal) {
 }
 
 Cutter::Pipeline::Pipeline(TetMesh& mesh, const CutParams& params)
-    // The grid's cell is the mean edge length, so that a tet spans a few cells at most.
     : mesh_(mesh),
       params_(params),
-      locator_(mesh.mean_edge_length()),
       remover_(removal_options(params)),
       selection_(params_) {
+  // The boundary grid's cell is the mean edge length, so that a tet spans a few cells at most.
   locator_.build(mesh_, mesh_.mean_edge_length());
   labels_.build(mesh_);
   epoch_ = mesh_.id_epoch();
@@ -394,8 +393,9 @@ void Cutter::Pipeline::locate(const Tool& tool) {
   // the mesh: the walk's equality with the index it replaced, on every test and fuzz input, up to
   // the size at which the scan would dominate the suites' time.
   constexpr std::uint32_t kLargestScanned = 200000;
-  if (mesh_.tet_capacity() <= kLargestScanned) scan_tets_meeting(mesh_, tool, scanned_);
-  if (mesh_.tet_capacity() <= kLargestScanned && scanned_ != hit_) {
+  if (mesh_.tet_capacity() > kLargestScanned) return;
+  scan_tets_meeting(mesh_, tool, scanned_);
+  if (scanned_ != hit_) {
     std::fprintf(stderr, "tetcut: the walking locator found %zu tets where a scan finds %zu\n", hit_.size(), scanned_.size());
     std::abort();
   }

@@ -20,9 +20,9 @@ float next_up(float x) {
 
 }  // namespace
 
-std::int32_t SpatialIndex::cell_of(double x) const {
+std::int32_t SpatialIndex::cell_coordinate(double x, double cell_size) {
   // Clamped to 21 bits of signed range: a mesh a million cells wide is already absurd.
-  const double c = std::floor(x / cell_size_);
+  const double c = std::floor(x / cell_size);
   return static_cast<std::int32_t>(std::clamp(c, -1048575.0, 1048575.0));
 }
 

@@ -1,6 +1,7 @@
-// A loose uniform grid over the tets, updated incrementally as tets are created and removed, so
-// that finding the tets a tool touches (paper 3.1) never scans the mesh: a query visits the
-// cells near the tool, and an update touches one cell per changed tet.
+// A loose uniform grid over tets, updated incrementally as tets are created and removed, so that
+// finding those a tool touches never scans the mesh: a query visits the cells near the tool, and
+// an update touches one cell per changed tet. The walking locator keeps the mesh's boundary tets
+// in one (walking_locator.hpp): the seeds of its walk (paper 3.1).
 //
 // Each tet is listed once, in the cell that holds its centroid, with the sphere about the
 // centroid that holds the tet. Each cell remembers the largest sphere it ever held, and the
@@ -63,6 +64,11 @@ class SpatialIndex {
   // every gap is computed as it was for the ball alone.
   void query(const TetMesh& mesh, const Tool& tool, std::vector<TetId>& out);
 
+  // The key of the cell of side `cell_size` that holds p: what the index files a centroid under,
+  // and the walking locator's coarse grid.
+  [[nodiscard]] static std::uint64_t key_of(const Vec3& p, double cell_size) {
+    return pack(cell_coordinate(p.x, cell_size), cell_coordinate(p.y, cell_size), cell_coordinate(p.z, cell_size));
+  }
   [[nodiscard]] bool holds(TetId t) const { return t.value < where_.size() && where_[t.value].indexed(); }
   [[nodiscard]] double cell_size() const { return cell_size_; }
   [[nodiscard]] std::size_t entries() const { return entries_; }
@@ -112,7 +118,8 @@ class SpatialIndex {
     [[nodiscard]] std::uint32_t index() const { return packed % kBlockEntries; }
   };
 
-  [[nodiscard]] std::int32_t cell_of(double x) const;
+  [[nodiscard]] static std::int32_t cell_coordinate(double x, double cell_size);
+  [[nodiscard]] std::int32_t cell_of(double x) const { return cell_coordinate(x, cell_size_); }
   [[nodiscard]] static std::uint64_t pack(std::int32_t i, std::int32_t j, std::int32_t k);
   [[nodiscard]] static std::array<std::int32_t, 3> unpack(std::uint64_t key);
   template <bool kCapsule>

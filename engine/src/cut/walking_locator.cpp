@@ -19,11 +19,7 @@ constexpr int kMaxSteps = 4096;
 // thousand entries for a million tets.
 constexpr double kCoarseCells = 4.0;
 
-bool has_boundary_face(const TetMesh& mesh, TetId t) {
-  for (int f = 0; f < 4; ++f)
-    if (mesh.is_boundary_face(t, f)) return true;
-  return false;
-}
+bool has_boundary_face(const TetMesh& mesh, TetId t) { return mesh.boundary_face_count(t) > 0; }
 
 void corners(const TetMesh& mesh, TetId t, Vec3 (&q)[4]) {
   const auto v = mesh.tet(t);
@@ -95,11 +91,7 @@ void WalkingLocator::update(const TetMesh& mesh, std::span<const TetId> removed,
 }
 
 std::uint64_t WalkingLocator::coarse_key(const Vec3& p) const {
-  auto cell = [&](double x) {
-    const double c = std::floor(x / (kCoarseCells * cell_size_));
-    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::clamp(c, -1048575.0, 1048575.0)) + 1048576) & 0x1FFFFFu;
-  };
-  return (cell(p.x) << 42) | (cell(p.y) << 21) | cell(p.z);
+  return SpatialIndex::key_of(p, kCoarseCells * cell_size_);
 }
 
 double WalkingLocator::margin(const Tool& tool) const {

@@ -12,9 +12,9 @@
 //     face, a small part of the mesh, updated from what each operation rewired), which covers a
 //     tool that spans a cavity or meets two pieces: each part it meets has boundary there;
 //   - when no boundary tet meets it, the tet holding the tool's first end, found by walking
-//     from the last answer (consecutive tools overlap) or from a coarse grid of tets built with
-//     the locator (a vertex per cell: the first cut, a jump), or no tet when that end is
-//     outside the mesh (then K ∩ |M| is empty).
+//     from the last answer (consecutive tools overlap) or from a coarse grid of vertices built
+//     with the locator (the first cut, a jump), or no tet when that end is outside the mesh
+//     (then K ∩ |M| is empty).
 //
 // Rounding. The test of a tet against the tool (intersects(), plain floating point) may
 // disagree about a point two tets share, within rounding. So the walk steps through tets meeting
@@ -45,9 +45,8 @@ namespace tetcut {
 
 class WalkingLocator {
  public:
-  explicit WalkingLocator(double cell_size = 1.0) : boundary_(cell_size), cell_size_(cell_size) {}
-
-  // Indexes the boundary tets and lays the coarse grid of starting tets: O(#T), once.
+  // Indexes the boundary tets in cells of `cell_size` (about the mean edge length) and lays the
+  // coarse grid of starting vertices: O(#T), once.
   void build(const TetMesh& mesh, double cell_size);
   // Room for a cut's working size, so that a cut's walk allocates nothing.
   void reserve(std::uint32_t tets);
@@ -63,7 +62,6 @@ class WalkingLocator {
   // outside the mesh. Public for the tests, which start walks where they must be blocked.
   TetId locate_point(const TetMesh& mesh, const Vec3& p, TetId start);
 
-  [[nodiscard]] std::size_t boundary_tets() const { return boundary_.entries(); }
   // Point locations that could not be decided by walking and scanned the mesh instead.
   [[nodiscard]] std::uint64_t scans() const { return scans_; }
   // Point locations that the boundary blocked, decided by the segment to the last crossing.
@@ -80,7 +78,7 @@ class WalkingLocator {
   [[nodiscard]] double margin(const Tool& tool) const;
 
   SpatialIndex boundary_;  // the live tets with a boundary face
-  double cell_size_;
+  double cell_size_ = 1.0;  // the boundary index's cell: the mesh's mean edge length
   // The coarse grid of starts: a vertex per cell of 4 x 4 x 4 index cells, by key, sorted.
   std::vector<std::pair<std::uint64_t, VertId>> starts_;
   TetId last_ = kNoTet;  // the last answer's first tet: where the next walk starts

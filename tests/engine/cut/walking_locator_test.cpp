@@ -28,7 +28,7 @@ void commit_and_update(TetMesh& mesh, WalkingLocator& locator) {
 // and points (radius 0: the tets holding a point, as Cutter::tet_containing() asks).
 TEST(WalkingLocator, AnswersEqualAScanThroughSplitsAndRemovals) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(6, 5, 4, {0, 0, 0}, {6, 5, 4}));
-  WalkingLocator locator(1.0);
+  WalkingLocator locator;
   locator.build(mesh, 1.0);
   SplitMix64 rng(5);
   EdgeSplitter splitter;
@@ -57,7 +57,7 @@ TEST(WalkingLocator, AnswersEqualAScanThroughSplitsAndRemovals) {
 // and says no tet for a point outside.
 TEST(WalkingLocator, APointWalkFromAnyTetFindsTheTetHoldingThePoint) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(4, 3, 3, {0, 0, 0}, {4, 3, 3}));
-  WalkingLocator locator(1.0);
+  WalkingLocator locator;
   locator.build(mesh, 1.0);
   SplitMix64 rng(9);
   for (std::uint32_t start = 0; start < mesh.tet_capacity(); ++start) {
@@ -94,7 +94,7 @@ void carve(TetMesh& mesh, WalkingLocator& locator, Carve carve) {
 // other arm, and the walk goes on from there, without a scan. A point in the notch is outside.
 TEST(WalkingLocator, AWalkTheBoundaryBlocksGoesOnPastTheSegmentsLastCrossing) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(6, 2, 2, {0, 0, 0}, {6, 2, 2}));
-  WalkingLocator locator(1.0);
+  WalkingLocator locator;
   locator.build(mesh, 1.0);
   carve(mesh, locator, [](const Vec3& c) { return c.x > 2 && c.x < 4 && c.z > 1; });
   TetId left = kNoTet;
@@ -120,7 +120,7 @@ TEST(WalkingLocator, AWalkTheBoundaryBlocksGoesOnPastTheSegmentsLastCrossing) {
 // piece that the gap blocks.
 TEST(WalkingLocator, AToolAcrossTwoPiecesFindsBoth) {
   TetMesh mesh = testing::build_or_fail(make_box_mesh(6, 3, 3, {0, 0, 0}, {6, 3, 3}));
-  WalkingLocator locator(1.0);
+  WalkingLocator locator;
   locator.build(mesh, 1.0);
   carve(mesh, locator, [](const Vec3& c) { return c.x > 2 && c.x < 3; });
   std::vector<TetId> got;
